@@ -1,0 +1,114 @@
+// hs_math.h — vectors and quaternions for handspring.
+// Conventions: parameters and results by value, double precision, SI units,
+// angles in radians, right-handed frame with z up, unit quaternions w + xi + yj + zk.
+// Every function is a plain sequence of IEEE operations (no fused multiply-add:
+// build with -ffp-contract=off) so results are bit-identical across compilers.
+#ifndef HS_MATH_H
+#define HS_MATH_H
+
+#include <math.h>
+
+typedef struct hs_vec3 {
+	double x, y, z;
+} hs_vec3;
+
+typedef struct hs_quat {
+	double w, x, y, z;
+} hs_quat;
+
+#define HS_PI 3.14159265358979323846
+
+static inline hs_vec3 hs_v3(double x, double y, double z) {
+	hs_vec3 r = {x, y, z};
+	return r;
+}
+static inline hs_vec3 hs_add(hs_vec3 a, hs_vec3 b) { return hs_v3(a.x + b.x, a.y + b.y, a.z + b.z); }
+static inline hs_vec3 hs_sub(hs_vec3 a, hs_vec3 b) { return hs_v3(a.x - b.x, a.y - b.y, a.z - b.z); }
+static inline hs_vec3 hs_scale(hs_vec3 a, double s) { return hs_v3(a.x * s, a.y * s, a.z * s); }
+static inline hs_vec3 hs_neg(hs_vec3 a) { return hs_v3(-a.x, -a.y, -a.z); }
+static inline double hs_dot(hs_vec3 a, hs_vec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+static inline hs_vec3 hs_cross(hs_vec3 a, hs_vec3 b) {
+	return hs_v3(a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x);
+}
+static inline double hs_length_sq(hs_vec3 a) { return hs_dot(a, a); }
+static inline double hs_length(hs_vec3 a) { return sqrt(hs_dot(a, a)); }
+static inline double hs_distance(hs_vec3 a, hs_vec3 b) { return hs_length(hs_sub(a, b)); }
+// r = a + s b
+static inline hs_vec3 hs_mul_add(hs_vec3 a, double s, hs_vec3 b) {
+	return hs_v3(a.x + s * b.x, a.y + s * b.y, a.z + s * b.z);
+}
+static inline hs_vec3 hs_lerp(hs_vec3 a, hs_vec3 b, double t) {
+	return hs_v3(a.x + t * (b.x - a.x), a.y + t * (b.y - a.y), a.z + t * (b.z - a.z));
+}
+// unit vector along a; the zero vector stays zero (callers test the length first)
+static inline hs_vec3 hs_normalize(hs_vec3 a) {
+	double len = hs_length(a);
+	return len > 0.0 ? hs_scale(a, 1.0 / len) : a;
+}
+static inline int hs_vec3_is_finite(hs_vec3 a) { return isfinite(a.x) && isfinite(a.y) && isfinite(a.z); }
+
+static inline hs_quat hs_q(double w, double x, double y, double z) {
+	hs_quat r = {w, x, y, z};
+	return r;
+}
+static inline hs_quat hs_quat_identity(void) { return hs_q(1.0, 0.0, 0.0, 0.0); }
+// Hamilton product: rotating by r = a * b applies b first, then a
+static inline hs_quat hs_quat_mul(hs_quat a, hs_quat b) {
+	return hs_q(a.w * b.w - a.x * b.x - a.y * b.y - a.z * b.z,
+	            a.w * b.x + a.x * b.w + a.y * b.z - a.z * b.y,
+	            a.w * b.y - a.x * b.z + a.y * b.w + a.z * b.x,
+	            a.w * b.z + a.x * b.y - a.y * b.x + a.z * b.w);
+}
+static inline hs_quat hs_quat_conj(hs_quat q) { return hs_q(q.w, -q.x, -q.y, -q.z); }
+static inline double hs_quat_dot(hs_quat a, hs_quat b) { return a.w * b.w + a.x * b.x + a.y * b.y + a.z * b.z; }
+static inline hs_quat hs_quat_normalize(hs_quat q) {
+	double len = sqrt(hs_quat_dot(q, q));
+	return hs_q(q.w / len, q.x / len, q.y / len, q.z / len);
+}
+static inline int hs_quat_is_finite(hs_quat q) {
+	return isfinite(q.w) && isfinite(q.x) && isfinite(q.y) && isfinite(q.z);
+}
+// rotation by angle (rad) about a unit axis
+static inline hs_quat hs_quat_from_axis_angle(hs_vec3 unit_axis, double angle) {
+	double s = sin(0.5 * angle);
+	return hs_q(cos(0.5 * angle), unit_axis.x * s, unit_axis.y * s, unit_axis.z * s);
+}
+// v rotated by q: v + 2w (u × v) + 2 u × (u × v), u the vector part
+static inline hs_vec3 hs_quat_rotate(hs_quat q, hs_vec3 v) {
+	hs_vec3 u = hs_v3(q.x, q.y, q.z);
+	hs_vec3 t = hs_scale(hs_cross(u, v), 2.0);
+	return hs_add(hs_add(v, hs_scale(t, q.w)), hs_cross(u, t));
+}
+static inline hs_vec3 hs_quat_inv_rotate(hs_quat q, hs_vec3 v) { return hs_quat_rotate(hs_quat_conj(q), v); }
+// roll about x, then pitch about y, then yaw about z (extrinsic), radians
+static inline hs_quat hs_quat_from_rpy(double roll, double pitch, double yaw) {
+	hs_quat qx = hs_quat_from_axis_angle(hs_v3(1, 0, 0), roll);
+	hs_quat qy = hs_quat_from_axis_angle(hs_v3(0, 1, 0), pitch);
+	hs_quat qz = hs_quat_from_axis_angle(hs_v3(0, 0, 1), yaw);
+	return hs_quat_mul(qz, hs_quat_mul(qy, qx));
+}
+// angle of the rotation q in [0, pi]
+static inline double hs_quat_angle(hs_quat q) {
+	double v = sqrt(q.x * q.x + q.y * q.y + q.z * q.z);
+	return 2.0 * atan2(v, fabs(q.w));
+}
+// spherical interpolation along the shorter arc, t in [0, 1]
+static inline hs_quat hs_quat_slerp(hs_quat a, hs_quat b, double t) {
+	double c = hs_quat_dot(a, b);
+	if (c < 0.0) {
+		b = hs_q(-b.w, -b.x, -b.y, -b.z);
+		c = -c;
+	}
+	double wa, wb;
+	if (c > 0.9995) { // nearly parallel: linear blend, renormalised below
+		wa = 1.0 - t;
+		wb = t;
+	} else {
+		double th = acos(c), s = sin(th);
+		wa = sin((1.0 - t) * th) / s;
+		wb = sin(t * th) / s;
+	}
+	return hs_quat_normalize(hs_q(wa * a.w + wb * b.w, wa * a.x + wb * b.x, wa * a.y + wb * b.y, wa * a.z + wb * b.z));
+}
+
+#endif
