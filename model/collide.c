@@ -1,0 +1,197 @@
+// collide.c — interference of posed shapes: bounding spheres, then libccd on convex part pairs.
+//
+// libccd compares against absolute epsilons (DBL_EPSILON on squared lengths), so each pair is
+// handed to it in normalised coordinates, (x - origin) / (r_a + r_b): its tolerances become
+// relative to the size of the pair, the same for a 5 cm block as for a 1 m box.
+// Nothing here allocates: support points are posed on the fly from the body-frame vertices.
+#include <ccd/ccd.h>
+
+#include "handspring.h"
+
+// m added around each shape, so that faces touching within 1e-12 m always count as
+// interference instead of being left to rounding (handspring.h: hs_shapes_overlap).
+#define HS_TOUCH_MARGIN 0.5e-12
+#define HS_CCD_MAX_ITERATIONS 100UL
+// in normalised coordinates, i.e. relative to r_a + r_b
+#define HS_CCD_TOLERANCE 1e-10
+
+// One convex part posed in the world, as libccd sees it.
+typedef struct posed_part {
+	const hs_vec3 *vertices; // body frame
+	int vertex_count;
+	double sphere_radius; // > 0: an exact sphere about `center`
+	hs_vec3 pos;          // body → world: x = pos + rot(v)
+	hs_quat rot;
+	hs_vec3 center; // world: centre of the part's bounding sphere (inside the part)
+	double radius;  // m
+	hs_vec3 origin; // world point that is 0 in libccd coordinates
+	double inv_scale;
+} posed_part;
+
+static posed_part pose_part(const hs_shape *shape, int index, hs_vec3 pos, hs_quat rot) {
+	const hs_part *part = &shape->parts[index];
+	posed_part p;
+	p.vertices = shape->vertices + part->first_vertex;
+	p.vertex_count = part->vertex_count;
+	p.sphere_radius = shape->kind == HS_SHAPE_SPHERE ? shape->sphere_radius : 0.0;
+	p.pos = pos;
+	p.rot = rot;
+	p.center = hs_add(pos, hs_quat_rotate(rot, part->center));
+	p.radius = part->radius;
+	p.origin = hs_v3(0.0, 0.0, 0.0);
+	p.inv_scale = 1.0;
+	return p;
+}
+
+static hs_vec3 from_ccd(const ccd_vec3_t *v) { return hs_v3(v->v[0], v->v[1], v->v[2]); }
+
+static void to_ccd(const posed_part *p, hs_vec3 x, ccd_vec3_t *out) {
+	hs_vec3 n = hs_scale(hs_sub(x, p->origin), p->inv_scale);
+	out->v[0] = n.x;
+	out->v[1] = n.y;
+	out->v[2] = n.z;
+}
+
+// Farthest point of the (margin-inflated) part along dir; ties go to the lowest vertex index.
+static void support(const void *obj, const ccd_vec3_t *dir, ccd_vec3_t *out) {
+	const posed_part *p = obj;
+	hs_vec3 d = from_ccd(dir);
+	double len = hs_length(d);
+	hs_vec3 x;
+	if (p->sphere_radius > 0.0) {
+		x = len > 0.0 ? hs_mul_add(p->center, p->sphere_radius / len, d)
+		              : hs_add(p->center, hs_v3(p->sphere_radius, 0.0, 0.0));
+	} else {
+		hs_vec3 body_dir = hs_quat_inv_rotate(p->rot, d);
+		int best = 0;
+		double best_dot = hs_dot(body_dir, p->vertices[0]);
+		for (int i = 1; i < p->vertex_count; i++) {
+			double s = hs_dot(body_dir, p->vertices[i]);
+			if (s > best_dot) {
+				best_dot = s;
+				best = i;
+			}
+		}
+		x = hs_add(p->pos, hs_quat_rotate(p->rot, p->vertices[best]));
+	}
+	if (len > 0.0)
+		x = hs_mul_add(x, HS_TOUCH_MARGIN / len, d);
+	to_ccd(p, x, out);
+}
+
+static void center(const void *obj, ccd_vec3_t *out) {
+	const posed_part *p = obj;
+	to_ccd(p, p->center, out);
+}
+
+// Start along the line between the centres (the Minkowski difference's centre).
+static void first_dir(const void *obj1, const void *obj2, ccd_vec3_t *dir) {
+	const posed_part *a = obj1, *b = obj2;
+	hs_vec3 d = hs_sub(a->center, b->center);
+	if (!(hs_length_sq(d) > 0.0))
+		d = hs_v3(1.0, 0.0, 0.0);
+	dir->v[0] = d.x;
+	dir->v[1] = d.y;
+	dir->v[2] = d.z;
+}
+
+static void setup_ccd(ccd_t *ccd) {
+	CCD_INIT(ccd);
+	ccd->first_dir = first_dir;
+	ccd->support1 = support;
+	ccd->support2 = support;
+	ccd->center1 = center;
+	ccd->center2 = center;
+	ccd->max_iterations = HS_CCD_MAX_ITERATIONS;
+	ccd->epa_tolerance = HS_CCD_TOLERANCE;
+	ccd->mpr_tolerance = HS_CCD_TOLERANCE;
+	ccd->dist_tolerance = HS_CCD_TOLERANCE;
+}
+
+// Bounding spheres touch (within the margins). Written so that NaN poses never pass.
+static bool spheres_meet(hs_vec3 ca, double ra, hs_vec3 cb, double rb) {
+	double reach = ra + rb + 2.0 * HS_TOUCH_MARGIN;
+	return hs_length_sq(hs_sub(cb, ca)) <= reach * reach;
+}
+
+// Both parts in the pair's normalised coordinates (origin at a's centre, unit r_a + r_b).
+static void normalise_pair(posed_part *a, posed_part *b) {
+	double inv = 1.0 / (a->radius + b->radius);
+	a->origin = b->origin = a->center;
+	a->inv_scale = b->inv_scale = inv;
+}
+
+static bool valid_shape(const hs_shape *s) { return s && s->part_count > 0 && s->parts && s->vertices; }
+
+bool hs_shapes_overlap(const hs_shape *a, hs_vec3 pos_a, hs_quat rot_a, const hs_shape *b, hs_vec3 pos_b,
+                       hs_quat rot_b) {
+	if (!valid_shape(a) || !valid_shape(b) || !spheres_meet(pos_a, a->radius, pos_b, b->radius))
+		return false;
+	// two exact spheres: the bounding test is the answer
+	if (a->kind == HS_SHAPE_SPHERE && b->kind == HS_SHAPE_SPHERE)
+		return true;
+	ccd_t ccd;
+	setup_ccd(&ccd);
+	for (int i = 0; i < a->part_count; i++) {
+		posed_part pa = pose_part(a, i, pos_a, rot_a);
+		for (int j = 0; j < b->part_count; j++) {
+			posed_part pb = pose_part(b, j, pos_b, rot_b);
+			if (!spheres_meet(pa.center, pa.radius, pb.center, pb.radius))
+				continue;
+			normalise_pair(&pa, &pb);
+			if (ccdGJKIntersect(&pa, &pb, &ccd))
+				return true;
+		}
+	}
+	return false;
+}
+
+bool hs_shapes_penetration(const hs_shape *a, hs_vec3 pos_a, hs_quat rot_a, const hs_shape *b, hs_vec3 pos_b,
+                           hs_quat rot_b, double *depth, hs_vec3 *direction) {
+	if (!valid_shape(a) || !valid_shape(b) || !depth || !direction ||
+	    !spheres_meet(pos_a, a->radius, pos_b, b->radius))
+		return false;
+	double best = -1.0;
+	hs_vec3 best_dir = hs_v3(0.0, 0.0, 1.0);
+	if (a->kind == HS_SHAPE_SPHERE && b->kind == HS_SHAPE_SPHERE) {
+		// exact: along the line of centres (up when they coincide)
+		hs_vec3 d = hs_sub(pos_b, pos_a);
+		double dist = hs_length(d);
+		best = fmax(0.0, a->sphere_radius + b->sphere_radius - dist);
+		if (dist > 0.0)
+			best_dir = hs_scale(d, 1.0 / dist);
+	} else {
+		ccd_t ccd;
+		setup_ccd(&ccd);
+		for (int i = 0; i < a->part_count; i++) {
+			posed_part pa = pose_part(a, i, pos_a, rot_a);
+			for (int j = 0; j < b->part_count; j++) {
+				posed_part pb = pose_part(b, j, pos_b, rot_b);
+				if (!spheres_meet(pa.center, pa.radius, pb.center, pb.radius))
+					continue;
+				normalise_pair(&pa, &pb);
+				ccd_real_t d = 0.0;
+				ccd_vec3_t dir = {{0.0, 0.0, 0.0}}, pos;
+				if (ccdMPRPenetration(&pa, &pb, &ccd, &d, &dir, &pos) != 0)
+					continue;
+				// back to metres, without the touch margins
+				double pair_depth = fmax(0.0, d / pa.inv_scale - 2.0 * HS_TOUCH_MARGIN);
+				if (!(pair_depth > best))
+					continue;
+				best = pair_depth;
+				hs_vec3 u = from_ccd(&dir);
+				if (!(hs_length_sq(u) > 0.0)) // touching: libccd gives no direction
+					u = hs_sub(pb.center, pa.center);
+				if (hs_length_sq(u) > 0.0)
+					best_dir = hs_normalize(u);
+				else
+					best_dir = hs_v3(0.0, 0.0, 1.0);
+			}
+		}
+	}
+	if (!(best >= 0.0))
+		return false;
+	*depth = best;
+	*direction = best_dir;
+	return true;
+}
