@@ -1,0 +1,216 @@
+// motion.c — free motion and the floor of the 1999 paper (§4.1, §4.2).
+//
+// Readings fixed here (DESIGN.md leaves them open):
+//  - Gm, the motion vector of eq. 4, is the displacement the Verlet step of eq. 3 proposes this
+//    frame: P(t-dt) - P(t-2dt) + g dt². With the literal eq. 4 a resting object has Gm = 0 and
+//    nothing could ever tip; adding this frame's gravity is what makes rule (1)-(3) fall.
+//  - An object touching the floor is not translated (rules (1)-(3): "the contacting point does not
+//    move"): it only rotates about its contact vertex or contact edge.
+//  - A tipping rotation stops exactly where the next vertex reaches the floor (the smallest such
+//    angle), and the object loses its inertia there: §4.1 "inertia is not conserved and an object
+//    does not rebound after interfering with ... a floor".
+#include "internal.h"
+
+// Penetration below this depth (m) is rounding, not interference: lifting it again every frame
+// would make resting objects creep.
+#define HS_RECTIFY_SLOP 1e-12
+
+double hs_motion_pose_vertices(hs_world *world, const hs_body *body) {
+	const hs_shape *shape = &world->shapes[body->shape];
+	double zmin = INFINITY;
+	for (int i = 0; i < shape->vertex_count; ++i) {
+		hs_vec3 p = hs_add(body->pos, hs_quat_rotate(body->rot, shape->vertices[i]));
+		world->scratch_world[i] = p;
+		zmin = p.z < zmin ? p.z : zmin;
+	}
+	return zmin;
+}
+
+int hs_motion_floor_points(hs_world *world, const hs_body *body) {
+	const hs_shape *shape = &world->shapes[body->shape];
+	int n = 0;
+	for (int i = 0; i < shape->vertex_count; ++i) {
+		hs_vec3 p = world->scratch_world[i];
+		if (p.z <= world->def.floor_tolerance)
+			world->scratch_points[n++] = (hs_vec2){p.x, p.y};
+	}
+	return n;
+}
+
+// §4.2: lift the object so the vertex that penetrated deepest is on the floor.
+static void rectify(hs_world *world, hs_body *body, double zmin) {
+	if (zmin >= -HS_RECTIFY_SLOP)
+		return;
+	body->pos.z -= zmin;
+	const hs_shape *shape = &world->shapes[body->shape];
+	for (int i = 0; i < shape->vertex_count; ++i)
+		world->scratch_world[i].z -= zmin;
+}
+
+static void stop(hs_body *body) {
+	body->prev = body->pos;
+	body->spin = hs_quat_identity();
+	body->asleep = 1;
+}
+
+// Eq. 5: G' is G projected onto the floor along Gm; a motion that does not point down
+// projects straight down, the direction gravity will take it.
+static hs_vec2 project_g(hs_vec3 g, hs_vec3 gm) {
+	if (gm.z < 0.0) {
+		double s = g.z / -gm.z;
+		return (hs_vec2){g.x + s * gm.x, g.y + s * gm.y};
+	}
+	return (hs_vec2){g.x, g.y};
+}
+
+// Smallest angle in (0, limit] at which a vertex off the floor reaches z = 0 when the posed
+// vertices turn about the unit `axis` through `c`; `limit` when none does.
+static double first_touch(const hs_world *world, const hs_body *body, hs_vec3 c, hs_vec3 axis,
+                          double limit) {
+	const hs_shape *shape = &world->shapes[body->shape];
+	double best = limit;
+	for (int i = 0; i < shape->vertex_count; ++i) {
+		hs_vec3 p = world->scratch_world[i];
+		if (p.z <= world->def.floor_tolerance)
+			continue; // pivot vertices stay, other contact vertices lift (rule (3))
+		// z(θ) = h0 + A cos θ + B sin θ = h0 + M cos(θ - φ)
+		hs_vec3 r = hs_sub(p, c);
+		hs_vec3 r_par = hs_scale(axis, hs_dot(r, axis));
+		hs_vec3 r_perp = hs_sub(r, r_par);
+		double h0 = c.z + r_par.z;
+		double a = r_perp.z, b = hs_cross(axis, r_perp).z;
+		double m = sqrt(a * a + b * b);
+		if (m <= 0.0 || -h0 / m < -1.0 || -h0 / m > 1.0)
+			continue; // its circle never reaches the floor
+		double phi = atan2(b, a), alpha = acos(-h0 / m);
+		double roots[2] = {phi - alpha, phi + alpha};
+		for (int k = 0; k < 2; ++k) {
+			double t = roots[k];
+			while (t <= 0.0)
+				t += 2.0 * HS_PI;
+			while (t > 2.0 * HS_PI)
+				t -= 2.0 * HS_PI;
+			best = t < best ? t : best;
+		}
+	}
+	return best;
+}
+
+// Rules (1)-(3) of §4.2 for an unstable object: pick the contact vertex or edge and turn about it.
+static void tip(hs_world *world, hs_body *body, const hs_vec2 *hull, int hull_count, hs_vec2 g_proj,
+                hs_vec3 gm) {
+	hs_vec3 g = body->pos;
+	hs_vec3 c, line = hs_v3(0, 0, 0);
+	bool about_line = false;
+	if (hull_count == 1) {
+		c = hs_v3(hull[0].x, hull[0].y, 0.0); // rule (1)
+	} else {
+		// rule (3) renames the hull edge nearest G' as V1 V2 and follows rule (2)
+		int i = hull_count == 2 ? 0 : hs_hull_nearest_edge(hull, hull_count, g_proj);
+		hs_vec2 v1 = hull[i], v2 = hull[(i + 1) % hull_count];
+		double dx = v2.x - v1.x, dy = v2.y - v1.y;
+		double u = ((g_proj.x - v1.x) * dx + (g_proj.y - v1.y) * dy) / (dx * dx + dy * dy);
+		if (u < 0.0) { // rule (2)-a: G' beyond the line through V1: turn about V1 by rule (1)
+			c = hs_v3(v1.x, v1.y, 0.0);
+		} else if (u > 1.0) {
+			c = hs_v3(v2.x, v2.y, 0.0);
+		} else { // rule (2)-b: turn about the line V1 V2
+			about_line = true;
+			line = hs_normalize(hs_v3(dx, dy, 0.0));
+			hs_vec3 v1_3 = hs_v3(v1.x, v1.y, 0.0);
+			c = hs_mul_add(v1_3, hs_dot(hs_sub(g, v1_3), line), line); // foot of G on the line
+		}
+	}
+	// eq. 6: Gm = T + R, T ∥ CG, T ⊥ R; T is dropped (no slide, no rebound)
+	hs_vec3 cg = hs_sub(g, c);
+	double cg_len = hs_length(cg);
+	hs_vec3 cg_unit = hs_scale(cg, 1.0 / cg_len);
+	hs_vec3 r = hs_mul_add(gm, -hs_dot(gm, cg_unit), cg_unit);
+	if (about_line)
+		r = hs_mul_add(r, -hs_dot(r, line), line); // a hinge only turns G across the line
+	double r_len = hs_length(r);
+	if (!(r_len > 0.0) || !(cg_len > 0.0)) {
+		stop(body); // Gm ∥ CG: "the well-balanced state, and does not move"
+		return;
+	}
+	hs_vec3 axis = hs_normalize(hs_cross(cg, r)); // G moves along R
+	if (about_line)
+		axis = hs_dot(line, axis) >= 0.0 ? line : hs_neg(line);
+	double theta = atan(r_len / cg_len); // eq. 7
+	double touch = first_touch(world, body, c, axis, theta);
+	bool landed = touch < theta;
+	if (landed)
+		theta = touch;
+	hs_quat q = hs_quat_from_axis_angle(axis, theta);
+	hs_vec3 old = body->pos;
+	body->pos = hs_add(c, hs_quat_rotate(q, cg));
+	body->rot = hs_quat_normalize(hs_quat_mul(q, body->rot));
+	body->prev = landed ? body->pos : old;
+	rectify(world, body, hs_motion_pose_vertices(world, body));
+	world->counters.object_steps++;
+}
+
+// Stability with the hull of the floor contacts and G' (eq. 4-5, Fig. 5); tip when unstable.
+static void settle_or_tip(hs_world *world, hs_body *body, hs_vec3 gm, bool may_tip) {
+	int n = hs_motion_floor_points(world, body);
+	body->floor_contacts = n;
+	int hull_count = hs_hull_build(world->scratch_points, n, world->scratch_hull);
+	hs_vec2 g_proj = project_g(body->pos, gm);
+	if (hs_hull_contains(world->scratch_hull, hull_count, g_proj, HS_RECTIFY_SLOP)) {
+		stop(body);
+		return;
+	}
+	body->asleep = 0;
+	if (may_tip) {
+		tip(world, body, world->scratch_hull, hull_count, g_proj, gm);
+		body->floor_contacts = hs_motion_floor_points(world, body);
+	}
+}
+
+// Eq. 3: P(t) = 2P(t - dt) - P(t - 2dt) + g dt², and the carried-over relative rotation.
+static void fly(hs_world *world, hs_body *body) {
+	double dt = world->def.dt;
+	hs_vec3 gm = hs_add(hs_sub(body->pos, body->prev), hs_scale(world->def.gravity, dt * dt));
+	body->prev = body->pos;
+	body->pos = hs_add(body->pos, gm);
+	body->rot = hs_quat_normalize(hs_quat_mul(body->spin, body->rot));
+	world->counters.object_steps++;
+
+	const hs_shape *shape = &world->shapes[body->shape];
+	if (world->def.skip_work && body->pos.z - shape->radius > world->def.floor_tolerance) {
+		body->floor_contacts = 0; // the bounding sphere is clear of the floor
+		return;
+	}
+	world->counters.floor_checks++;
+	double zmin = hs_motion_pose_vertices(world, body);
+	if (zmin > world->def.floor_tolerance) {
+		body->floor_contacts = 0;
+		return;
+	}
+	rectify(world, body, zmin);
+	body->spin = hs_quat_identity(); // §4.1: rotation inertia ends at the floor
+	body->grounded = 1;
+	settle_or_tip(world, body, gm, false); // landing: tipping starts next frame
+}
+
+// In floor contact: no translation; stable → rest, otherwise rules (1)-(3).
+static void on_floor(hs_world *world, hs_body *body) {
+	double dt = world->def.dt;
+	hs_vec3 gm = hs_add(hs_sub(body->pos, body->prev), hs_scale(world->def.gravity, dt * dt));
+	world->counters.floor_checks++;
+	double zmin = hs_motion_pose_vertices(world, body);
+	if (zmin > world->def.floor_tolerance) { // lifted off (moved by a hand): fly again
+		body->grounded = 0;
+		fly(world, body);
+		return;
+	}
+	rectify(world, body, zmin);
+	settle_or_tip(world, body, gm, true);
+}
+
+void hs_motion_step(hs_world *world, hs_body *body) {
+	if (body->grounded)
+		on_floor(world, body);
+	else
+		fly(world, body);
+}

@@ -1,0 +1,278 @@
+// world.c — a world with a fixed dt that owns its shapes and objects and steps them.
+// Everything is allocated when the world is built; hs_world_step never allocates.
+#include <stdlib.h>
+#include <string.h>
+
+#include "internal.h"
+
+hs_world_def hs_default_world_def(void) {
+	hs_world_def def;
+	memset(&def, 0, sizeof def);
+	def.dt = 1.0 / 60.0;
+	def.gravity = hs_v3(0.0, 0.0, -9.81);
+	def.floor_tolerance = 1e-6;
+	def.max_objects = 64;
+	def.max_shapes = 16;
+	def.stacking = HS_STACKING_PAPER;
+	def.grasp_threshold_deg = 90.0;
+	def.skip_work = true;
+	return def;
+}
+
+hs_object_def hs_default_object_def(void) {
+	hs_object_def def;
+	memset(&def, 0, sizeof def);
+	def.orientation = hs_quat_identity();
+	def.density = 500.0;
+	return def;
+}
+
+static void set_status(hs_status *status, hs_status value) {
+	if (status)
+		*status = value;
+}
+
+static bool valid_def(const hs_world_def *def) {
+	return def && isfinite(def->dt) && def->dt > 0.0 && hs_vec3_is_finite(def->gravity) &&
+	       isfinite(def->floor_tolerance) && def->floor_tolerance > 0.0 && def->max_objects >= 0 &&
+	       def->max_objects <= 10000000 && def->max_shapes >= 1 && def->max_shapes <= 100000 &&
+	       isfinite(def->grasp_threshold_deg) && def->grasp_threshold_deg > 0.0 &&
+	       def->grasp_threshold_deg <= 180.0 &&
+	       (def->stacking == HS_STACKING_PAPER || def->stacking == HS_STACKING_SUPPORT);
+}
+
+hs_world *hs_world_create(const hs_world_def *def, hs_status *status) {
+	if (!valid_def(def)) {
+		set_status(status, HS_ERR_INVALID_ARGUMENT);
+		return NULL;
+	}
+	hs_world *world = calloc(1, sizeof *world);
+	if (!world) {
+		set_status(status, HS_ERR_NO_MEMORY);
+		return NULL;
+	}
+	world->def = *def;
+	world->shapes = calloc((size_t)def->max_shapes, sizeof *world->shapes);
+	world->bodies = calloc(def->max_objects > 0 ? (size_t)def->max_objects : 1, sizeof *world->bodies);
+	if (!world->shapes || !world->bodies) {
+		hs_world_destroy(world);
+		set_status(status, HS_ERR_NO_MEMORY);
+		return NULL;
+	}
+	set_status(status, HS_OK);
+	return world;
+}
+
+static void free_shape_arrays(hs_shape *shape) {
+	free(shape->parts);
+	free(shape->vertices);
+	free(shape->faces);
+	free(shape->face_vertices);
+	free(shape->edges);
+}
+
+void hs_world_destroy(hs_world *world) {
+	if (!world)
+		return;
+	for (int i = 0; i < world->shape_count; ++i)
+		free_shape_arrays(&world->shapes[i]);
+	free(world->shapes);
+	free(world->bodies);
+	free(world->scratch_world);
+	free(world->scratch_points);
+	free(world->scratch_hull);
+	free(world);
+}
+
+static void *copy_array(const void *src, int count, size_t size) {
+	if (count <= 0)
+		return NULL;
+	void *dst = malloc((size_t)count * size);
+	if (dst)
+		memcpy(dst, src, (size_t)count * size);
+	return dst;
+}
+
+static bool copy_shape(hs_shape *dst, const hs_shape *src) {
+	*dst = *src;
+	dst->parts = copy_array(src->parts, src->part_count, sizeof *src->parts);
+	dst->vertices = copy_array(src->vertices, src->vertex_count, sizeof *src->vertices);
+	dst->faces = copy_array(src->faces, src->face_count, sizeof *src->faces);
+	dst->face_vertices = copy_array(src->face_vertices, src->face_vertex_count, sizeof *src->face_vertices);
+	dst->edges = copy_array(src->edges, src->edge_count, sizeof *src->edges);
+	if ((src->part_count > 0 && !dst->parts) || (src->vertex_count > 0 && !dst->vertices) ||
+	    (src->face_count > 0 && !dst->faces) || (src->face_vertex_count > 0 && !dst->face_vertices) ||
+	    (src->edge_count > 0 && !dst->edges)) {
+		free_shape_arrays(dst);
+		return false;
+	}
+	return true;
+}
+
+// Scratch for the floor test sized for the largest shape (room for a closing hull point).
+static bool reserve_scratch(hs_world *world, int vertex_count) {
+	if (vertex_count <= world->scratch_capacity)
+		return true;
+	size_t n = (size_t)vertex_count + 1;
+	hs_vec3 *posed = realloc(world->scratch_world, n * sizeof *posed);
+	if (posed)
+		world->scratch_world = posed;
+	hs_vec2 *points = realloc(world->scratch_points, n * sizeof *points);
+	if (points)
+		world->scratch_points = points;
+	hs_vec2 *hull = realloc(world->scratch_hull, n * sizeof *hull);
+	if (hull)
+		world->scratch_hull = hull;
+	if (!posed || !points || !hull)
+		return false;
+	world->scratch_capacity = vertex_count;
+	return true;
+}
+
+hs_shape_id hs_world_add_shape(hs_world *world, const hs_shape *shape, hs_status *status) {
+	hs_shape_id none = {0};
+	if (!world || !shape || shape->vertex_count <= 0 || !shape->vertices || !(shape->volume > 0.0)) {
+		set_status(status, HS_ERR_INVALID_ARGUMENT);
+		return none;
+	}
+	if (world->shape_count >= world->def.max_shapes) {
+		set_status(status, HS_ERR_CAPACITY);
+		return none;
+	}
+	if (!reserve_scratch(world, shape->vertex_count) || !copy_shape(&world->shapes[world->shape_count], shape)) {
+		set_status(status, HS_ERR_NO_MEMORY);
+		return none;
+	}
+	set_status(status, HS_OK);
+	hs_shape_id id = {(uint32_t)++world->shape_count};
+	return id;
+}
+
+static bool valid_shape_id(const hs_world *world, hs_shape_id id) {
+	return world && id.index1 >= 1 && id.index1 <= (uint32_t)world->shape_count;
+}
+
+const hs_shape *hs_world_shape(const hs_world *world, hs_shape_id id) {
+	return valid_shape_id(world, id) ? &world->shapes[id.index1 - 1] : NULL;
+}
+
+hs_object_id hs_world_add_object(hs_world *world, const hs_object_def *def, hs_status *status) {
+	hs_object_id none = {0};
+	if (!world || !def || !valid_shape_id(world, def->shape) || !hs_vec3_is_finite(def->position) ||
+	    !hs_vec3_is_finite(def->velocity) || !hs_vec3_is_finite(def->angular_velocity) ||
+	    !hs_quat_is_finite(def->orientation) || !isfinite(def->density) || !(def->density > 0.0) ||
+	    fabs(sqrt(hs_quat_dot(def->orientation, def->orientation)) - 1.0) > 1e-6) {
+		set_status(status, HS_ERR_INVALID_ARGUMENT);
+		return none;
+	}
+	if (world->object_count >= world->def.max_objects) {
+		set_status(status, HS_ERR_CAPACITY);
+		return none;
+	}
+	double dt = world->def.dt;
+	hs_body *body = &world->bodies[world->object_count];
+	memset(body, 0, sizeof *body);
+	body->shape = (int)def->shape.index1 - 1;
+	body->pos = def->position;
+	body->rot = hs_quat_normalize(def->orientation);
+	// P(-dt) on the exact parabola, so eq. 3 reproduces P0 + v t + g t²/2 at every frame
+	body->prev = hs_add(hs_sub(def->position, hs_scale(def->velocity, dt)),
+	                    hs_scale(world->def.gravity, 0.5 * dt * dt));
+	double w = hs_length(def->angular_velocity);
+	body->spin = w > 0.0 ? hs_quat_from_axis_angle(hs_scale(def->angular_velocity, 1.0 / w), w * dt)
+	                     : hs_quat_identity();
+	body->mass = def->density * world->shapes[body->shape].volume;
+	if (hs_motion_pose_vertices(world, body) <= world->def.floor_tolerance) {
+		body->grounded = 1;
+		body->floor_contacts = hs_motion_floor_points(world, body);
+	}
+	set_status(status, HS_OK);
+	hs_object_id id = {(uint32_t)++world->object_count};
+	return id;
+}
+
+static const hs_body *body_of(const hs_world *world, hs_object_id id) {
+	if (!world || id.index1 < 1 || id.index1 > (uint32_t)world->object_count)
+		return NULL;
+	return &world->bodies[id.index1 - 1];
+}
+
+hs_status hs_world_object_state(const hs_world *world, hs_object_id id, hs_object_state *out) {
+	const hs_body *body = body_of(world, id);
+	if (!body || !out)
+		return HS_ERR_INVALID_ARGUMENT;
+	out->position = body->pos;
+	out->orientation = body->rot;
+	out->velocity = hs_scale(hs_sub(body->pos, body->prev), 1.0 / world->def.dt);
+	out->contact = (hs_contact_state)body->contact;
+	out->floor_contacts = body->floor_contacts;
+	out->resting = body->asleep != 0;
+	return HS_OK;
+}
+
+int hs_world_object_count(const hs_world *world) { return world ? world->object_count : 0; }
+
+hs_object_id hs_world_object_at(const hs_world *world, int i) {
+	hs_object_id id = {0};
+	if (world && i >= 0 && i < world->object_count)
+		id.index1 = (uint32_t)i + 1;
+	return id;
+}
+
+static bool body_is_finite(const hs_body *body) {
+	return hs_vec3_is_finite(body->pos) && hs_vec3_is_finite(body->prev) && hs_quat_is_finite(body->rot) &&
+	       hs_quat_is_finite(body->spin);
+}
+
+hs_status hs_world_step(hs_world *world) {
+	if (!world)
+		return HS_ERR_INVALID_ARGUMENT;
+	for (int i = 0; i < world->object_count; ++i) {
+		hs_body *body = &world->bodies[i];
+		if (body->held)
+			continue;
+		if (body->asleep && world->def.skip_work) {
+			world->counters.sleeping_skips++; // resting objects cost nothing until touched
+			continue;
+		}
+		hs_body saved = *body;
+		hs_motion_step(world, body);
+		if (!body_is_finite(body)) { // never let a NaN spread: freeze the object and count it
+			*body = saved;
+			world->counters.numeric_faults++;
+		}
+	}
+	world->frame++;
+	return HS_OK;
+}
+
+long hs_world_frame(const hs_world *world) { return world ? world->frame : 0; }
+double hs_world_time(const hs_world *world) { return world ? (double)world->frame * world->def.dt : 0.0; }
+double hs_world_dt(const hs_world *world) { return world ? world->def.dt : 0.0; }
+
+static uint64_t fnv1a(uint64_t h, const void *data, size_t size) {
+	const unsigned char *p = data;
+	for (size_t i = 0; i < size; ++i) {
+		h ^= p[i];
+		h *= 1099511628211ull;
+	}
+	return h;
+}
+
+uint64_t hs_world_hash(const hs_world *world) {
+	uint64_t h = 14695981039346656037ull;
+	if (!world)
+		return h;
+	for (int i = 0; i < world->object_count; ++i) {
+		const hs_body *b = &world->bodies[i];
+		double pose[7] = {b->pos.x, b->pos.y, b->pos.z, b->rot.w, b->rot.x, b->rot.y, b->rot.z};
+		h = fnv1a(h, pose, sizeof pose);
+		h = fnv1a(h, &b->contact, sizeof b->contact);
+	}
+	return h;
+}
+
+hs_world_counters hs_world_get_counters(const hs_world *world) {
+	hs_world_counters none = {0, 0, 0, 0};
+	return world ? world->counters : none;
+}
