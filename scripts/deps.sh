@@ -1,0 +1,45 @@
+#!/bin/sh
+# Installs what handspring needs, when it is missing: Debian packages through apt-get as root,
+# otherwise the exact command to run. `deps.sh bench` adds the benchmark peers (ODE, MuJoCo);
+# `deps.sh fuzz` adds clang and its runtime for libFuzzer.
+set -eu
+
+need=""
+has_file() { [ -e "$1" ]; }
+has_cmd() { command -v "$1" >/dev/null 2>&1; }
+
+has_cmd pkg-config || need="$need pkg-config"
+has_file /usr/include/cmocka.h || need="$need libcmocka-dev"
+has_file /usr/include/ccd/ccd.h || need="$need libccd-dev"
+has_file /usr/include/gsl/gsl_odeiv2.h || need="$need libgsl-dev"
+has_file /usr/include/yaml.h || need="$need libyaml-dev"
+has_cmd gnuplot || need="$need gnuplot-nox"
+
+for extra in "$@"; do
+	case "$extra" in
+	bench)
+		has_file /usr/include/ode/ode.h || need="$need libode-dev"
+		has_file /usr/include/mujoco/mujoco.h || need="$need libmujoco-dev"
+		;;
+	fuzz)
+		has_cmd clang || need="$need clang"
+		ls /usr/lib/llvm-*/lib/clang/*/lib/linux/libclang_rt.fuzzer-x86_64.a >/dev/null 2>&1 ||
+			need="$need libclang-rt-dev"
+		;;
+	esac
+done
+
+[ -z "$need" ] && exit 0
+
+if [ "$(id -u)" = 0 ] && has_cmd apt-get; then
+	echo "deps: installing$need" >&2
+	export DEBIAN_FRONTEND=noninteractive
+	apt-get update -qq >&2
+	# shellcheck disable=SC2086
+	apt-get install -y -qq --no-install-recommends $need >&2
+	exit 0
+fi
+
+echo "deps: missing Debian packages:$need" >&2
+echo "deps: install them with: sudo apt-get install -y$need" >&2
+exit 1
