@@ -1,0 +1,362 @@
+// test_bad_input.c — bad scenario input ends with one clear message (file:line: what), exit
+// status 2, no crash, no leak. Every tests/bad/*.yaml starts with "# expect: <exact stderr line>";
+// the tool ($HS_TOOL, default build/handspring) and hs_scenario_load must both give that line.
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <setjmp.h>
+#include <cmocka.h>
+
+#include "test_util.h"
+
+#include <dirent.h>
+#include <fcntl.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#define BAD_DIR "tests/bad"
+#define EXPECT_PREFIX "# expect: "
+
+static const char *tool_path(void) {
+	const char *t = getenv("HS_TOOL");
+	return t && *t ? t : "build/handspring";
+}
+
+static char *read_fd(int fd) {
+	size_t cap = 256, n = 0;
+	char *buf = malloc(cap);
+	assert_non_null(buf);
+	lseek(fd, 0, SEEK_SET);
+	for (;;) {
+		if (n + 1 >= cap) {
+			cap *= 2;
+			buf = realloc(buf, cap);
+			assert_non_null(buf);
+		}
+		ssize_t got = read(fd, buf + n, cap - n - 1);
+		if (got <= 0)
+			break;
+		n += (size_t)got;
+	}
+	buf[n] = '\0';
+	return buf;
+}
+
+typedef struct tool_result {
+	int status; // exit status, or -1 when the tool did not exit normally
+	char *out, *err;
+} tool_result;
+
+// Runs the tool with `args` (NULL-terminated, without argv[0]); stdout and stderr go to temp files.
+static tool_result run_tool(const char *const *args) {
+	char out_name[] = "/tmp/hs_bad_out_XXXXXX", err_name[] = "/tmp/hs_bad_err_XXXXXX";
+	int out = mkstemp(out_name), err = mkstemp(err_name);
+	assert_true(out >= 0 && err >= 0);
+	unlink(out_name);
+	unlink(err_name);
+	const char *argv[16];
+	int argc = 0;
+	argv[argc++] = tool_path();
+	for (int i = 0; args[i] && argc < 15; ++i)
+		argv[argc++] = args[i];
+	argv[argc] = NULL;
+	fflush(stdout);
+	fflush(stderr);
+	pid_t pid = fork();
+	assert_true(pid >= 0);
+	if (pid == 0) {
+		dup2(out, 1);
+		dup2(err, 2);
+		execv(argv[0], (char *const *)argv);
+		_exit(127);
+	}
+	int wstatus = 0;
+	assert_int_equal(waitpid(pid, &wstatus, 0), pid);
+	tool_result r = {WIFEXITED(wstatus) ? WEXITSTATUS(wstatus) : -1, read_fd(out), read_fd(err)};
+	close(out);
+	close(err);
+	if (r.status == 127)
+		print_error("could not run %s (set HS_TOOL to the built tool)\n", argv[0]);
+	return r;
+}
+
+static void free_result(tool_result *r) {
+	free(r->out);
+	free(r->err);
+}
+
+// The tool and the library both report `expected` for `path`.
+static void expect_bad(const char *path, const char *expected) {
+	const char *args[] = {"run", path, NULL};
+	tool_result r = run_tool(args);
+	char *want = malloc(strlen(expected) + 2);
+	assert_non_null(want);
+	strcpy(want, expected);
+	strcat(want, "\n");
+	if (strcmp(r.err, want) != 0)
+		print_error("%s:\n  stderr:   %s  expected: %s", path, r.err, want);
+	assert_string_equal(r.err, want);
+	assert_string_equal(r.out, ""); // nothing half-run on stdout
+	assert_int_equal(r.status, 2);
+	free(want);
+	free_result(&r);
+
+	hs_error err;
+	memset(&err, 'x', sizeof err);
+	hs_scenario *s = hs_scenario_load(path, &err);
+	assert_null(s);
+	assert_string_equal(err.message, expected);
+}
+
+// ---------------------------------------------------------------------------------------------
+// the corpus: one test per file
+
+static void test_corpus_file(void **state) {
+	const char *path = *state;
+	FILE *f = fopen(path, "rb");
+	assert_non_null(f);
+	char line[1024] = "";
+	char *got = fgets(line, sizeof line, f);
+	fclose(f);
+	assert_non_null(got);
+	if (strncmp(line, EXPECT_PREFIX, strlen(EXPECT_PREFIX)) != 0)
+		fail_msg("%s: the first line must be '" EXPECT_PREFIX "<exact stderr line>'", path);
+	line[strcspn(line, "\r\n")] = '\0';
+	expect_bad(path, line + strlen(EXPECT_PREFIX));
+}
+
+static int compare_strings(const void *a, const void *b) { return strcmp(*(char *const *)a, *(char *const *)b); }
+
+// ---------------------------------------------------------------------------------------------
+// files that cannot be committed, or depend on the machine
+
+static char *temp_path(const char *name) {
+	char *p = malloc(256);
+	assert_non_null(p);
+	snprintf(p, 256, "/tmp/hs_bad_%ld_%s", (long)getpid(), name);
+	return p;
+}
+
+static void write_bytes(const char *path, const void *data, size_t n) {
+	FILE *f = fopen(path, "wb");
+	assert_non_null(f);
+	assert_int_equal(fwrite(data, 1, n, f), n);
+	assert_int_equal(fclose(f), 0);
+}
+
+static void test_directory(void **state) {
+	(void)state;
+	expect_bad(BAD_DIR, BAD_DIR ":1: cannot read: Is a directory");
+}
+
+static void test_missing_file(void **state) {
+	(void)state;
+	char *path = temp_path("missing.yaml");
+	char want[512];
+	snprintf(want, sizeof want, "%s:1: cannot read: No such file or directory", path);
+	expect_bad(path, want);
+	free(path);
+}
+
+static void test_binary_file(void **state) {
+	(void)state;
+	static const unsigned char elf[] = {0x7f, 'E', 'L', 'F', 2, 1, 1, 0, 0, 0, '\n', 0xff, 0xfe, 0x00, 0x12};
+	char *path = temp_path("binary.yaml");
+	write_bytes(path, elf, sizeof elf);
+	char want[512];
+	snprintf(want, sizeof want, "%s:1: not a text file (NUL byte at byte 7)", path);
+	expect_bad(path, want);
+	remove(path);
+	free(path);
+}
+
+static void test_invalid_utf8(void **state) {
+	(void)state;
+	static const char text[] = "description: ok\ndt: 1/60 \xff\xfe\nduration: 1\n";
+	char *path = temp_path("utf8.yaml");
+	write_bytes(path, text, sizeof text - 1);
+	char want[512];
+	snprintf(want, sizeof want, "%s:2: not a text file: invalid leading UTF-8 octet (byte 25)", path);
+	expect_bad(path, want);
+	remove(path);
+	free(path);
+}
+
+static const char valid_scenario[] = "# a valid scenario, cut and damaged below\n"
+                                     "description: truncation and damage must never crash\n"
+                                     "dt: 1/60\n"
+                                     "duration: 0.1\n"
+                                     "model: { stacking: support, floor_tolerance: 1e-6 }\n"
+                                     "objects:\n"
+                                     "  - name: a\n"
+                                     "    shape: l_block\n"
+                                     "    size: [0.1, 0.05, 0.1]\n"
+                                     "    thickness: 0.02\n"
+                                     "    position: [0, 0, 0.2]\n"
+                                     "    rpy_deg: [0, 10, 0]\n"
+                                     "  - { name: b, shape: polyhedron, vertices: [[0,0,0],[1,0,0],[0,1,0],[0,0,1]],\n"
+                                     "      faces: [[0,2,1],[0,1,3],[0,3,2],[1,2,3]], position: [1, 0, 1] }\n"
+                                     "expect:\n"
+                                     "  - { object: '*', at: end, above: 0 }\n"
+                                     "  - { object: a, lands_at: 0.05, tolerance: 1 }\n";
+
+// A loaded scenario, or exactly one "PATH:LINE: ..." message.
+static void expect_clean_outcome(const char *path) {
+	hs_error err;
+	hs_scenario *s = hs_scenario_load(path, &err);
+	if (s) {
+		while (hs_scenario_step(s)) {
+		}
+		hs_scenario_check(s, NULL);
+		hs_scenario_destroy(s);
+		return;
+	}
+	size_t n = strlen(path);
+	assert_memory_equal(err.message, path, n);
+	assert_int_equal(err.message[n], ':');
+	const char *p = err.message + n + 1;
+	assert_true(*p >= '1' && *p <= '9');
+	while (*p >= '0' && *p <= '9')
+		++p;
+	assert_int_equal(p[0], ':');
+	assert_int_equal(p[1], ' ');
+	assert_true(strlen(p) > 3);
+	assert_null(strchr(err.message, '\n'));
+}
+
+static void test_every_truncation(void **state) {
+	(void)state;
+	char *path = temp_path("cut.yaml");
+	size_t n = sizeof valid_scenario - 1;
+	write_bytes(path, valid_scenario, n);
+	hs_error err;
+	hs_scenario *s = hs_scenario_load(path, &err);
+	if (!s)
+		fail_msg("the uncut scenario must load: %s", err.message);
+	hs_scenario_destroy(s);
+	for (size_t cut = 0; cut < n; ++cut) {
+		write_bytes(path, valid_scenario, cut);
+		expect_clean_outcome(path);
+	}
+	remove(path);
+	free(path);
+}
+
+static void test_damaged_bytes(void **state) {
+	(void)state;
+	static const char damage[] = {'[', ']', '{', ':', '-', '\t', '"', '*', '&', '!', '#', 'x', '9', '\n'};
+	char *path = temp_path("damaged.yaml");
+	size_t n = sizeof valid_scenario - 1;
+	char *copy = malloc(n);
+	assert_non_null(copy);
+	for (size_t i = 0; i < n; i += 3) {
+		for (size_t d = 0; d < sizeof damage; ++d) {
+			memcpy(copy, valid_scenario, n);
+			copy[i] = damage[d];
+			write_bytes(path, copy, n);
+			expect_clean_outcome(path);
+		}
+	}
+	free(copy);
+	remove(path);
+	free(path);
+}
+
+// Usage errors: a message and exit status 2; --help: exit status 0.
+static void test_usage(void **state) {
+	(void)state;
+	static const char *const cases[][4] = {
+	    {NULL},
+	    {"frobnicate", NULL},
+	    {"run", NULL},
+	    {"run", "a.yaml", "b.yaml", NULL},
+	    {"run", "--bogus", "a.yaml", NULL},
+	    {"run", "a.yaml", "--out", NULL},
+	    {"list", "--dir", NULL},
+	    {"all", "extra", NULL},
+	};
+	for (size_t i = 0; i < sizeof cases / sizeof cases[0]; ++i) {
+		tool_result r = run_tool(cases[i]);
+		assert_int_equal(r.status, 2);
+		assert_true(strlen(r.err) > 0);
+		assert_non_null(strstr(r.err, "usage: handspring"));
+		free_result(&r);
+	}
+	static const char *const helps[][3] = {{"--help", NULL}, {"run", "--help", NULL}, {"list", "--help", NULL},
+	                                       {"all", "--help", NULL}};
+	for (size_t i = 0; i < sizeof helps / sizeof helps[0]; ++i) {
+		tool_result r = run_tool(helps[i]);
+		assert_int_equal(r.status, 0);
+		assert_non_null(strstr(r.out, "usage: handspring"));
+		assert_string_equal(r.err, "");
+		free_result(&r);
+	}
+}
+
+// A catalog folder that does not exist is bad input for list and all.
+static void test_missing_catalog(void **state) {
+	(void)state;
+	char *dir = temp_path("no_such_dir");
+	const char *args[] = {"all", "--dir", dir, NULL};
+	tool_result r = run_tool(args);
+	char want[512];
+	snprintf(want, sizeof want, "%s: cannot read: No such file or directory\n", dir);
+	assert_string_equal(r.err, want);
+	assert_int_equal(r.status, 2);
+	free_result(&r);
+	const char *list_args[] = {"list", "--dir", dir, NULL};
+	r = run_tool(list_args);
+	assert_string_equal(r.err, want);
+	assert_int_equal(r.status, 2);
+	free_result(&r);
+	free(dir);
+}
+
+int main(void) {
+	// one test per corpus file, in name order
+	DIR *d = opendir(BAD_DIR);
+	if (!d) {
+		fprintf(stderr, "test_bad_input: cannot open " BAD_DIR " (run from the top folder)\n");
+		return 1;
+	}
+	char **paths = NULL;
+	size_t count = 0;
+	struct dirent *e;
+	while ((e = readdir(d)) != NULL) {
+		size_t n = strlen(e->d_name);
+		if (n <= 5 || strcmp(e->d_name + n - 5, ".yaml") != 0)
+			continue;
+		paths = realloc(paths, (count + 1) * sizeof *paths);
+		paths[count] = malloc(strlen(BAD_DIR) + n + 2);
+		sprintf(paths[count], "%s/%s", BAD_DIR, e->d_name);
+		count++;
+	}
+	closedir(d);
+	if (count < 14) {
+		fprintf(stderr, "test_bad_input: " BAD_DIR " holds %zu files; the corpus needs at least 14\n", count);
+		return 1;
+	}
+	qsort(paths, count, sizeof *paths, compare_strings);
+	static const struct CMUnitTest fixed[] = {
+	    cmocka_unit_test(test_directory),       cmocka_unit_test(test_missing_file),
+	    cmocka_unit_test(test_binary_file),     cmocka_unit_test(test_invalid_utf8),
+	    cmocka_unit_test(test_every_truncation), cmocka_unit_test(test_damaged_bytes),
+	    cmocka_unit_test(test_usage),           cmocka_unit_test(test_missing_catalog),
+	};
+	size_t nfixed = sizeof fixed / sizeof fixed[0];
+	struct CMUnitTest *tests = calloc(count + nfixed, sizeof *tests);
+	for (size_t i = 0; i < count; ++i) {
+		tests[i].name = paths[i];
+		tests[i].test_func = test_corpus_file;
+		tests[i].initial_state = paths[i];
+	}
+	memcpy(tests + count, fixed, sizeof fixed);
+	int failed = _cmocka_run_group_tests("bad_input", tests, count + nfixed, NULL, NULL);
+	for (size_t i = 0; i < count; ++i)
+		free(paths[i]);
+	free(paths);
+	free(tests);
+	return failed;
+}

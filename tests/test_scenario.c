@@ -1,0 +1,603 @@
+// test_scenario.c — scenario loading (dt fractions, defaults, orientation), every expectation
+// predicate passing and failing on small scenarios written to /tmp, trajectories, their
+// comparison, and the catalog.
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <setjmp.h>
+#include <cmocka.h>
+
+#include "test_util.h"
+
+#include <dirent.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+static char temp_dir[64];
+
+static int make_temp_dir(void **state) {
+	(void)state;
+	strcpy(temp_dir, "/tmp/hs_scenario_XXXXXX");
+	return mkdtemp(temp_dir) ? 0 : -1;
+}
+
+static int remove_tree(const char *path) {
+	struct stat st;
+	if (lstat(path, &st) != 0)
+		return 0;
+	if (S_ISDIR(st.st_mode)) {
+		DIR *d = opendir(path);
+		struct dirent *e;
+		while (d && (e = readdir(d)) != NULL) {
+			if (strcmp(e->d_name, ".") == 0 || strcmp(e->d_name, "..") == 0)
+				continue;
+			char sub[1024];
+			snprintf(sub, sizeof sub, "%s/%s", path, e->d_name);
+			remove_tree(sub);
+		}
+		if (d)
+			closedir(d);
+	}
+	return remove(path);
+}
+
+static int remove_temp_dir(void **state) {
+	(void)state;
+	return remove_tree(temp_dir) == 0 ? 0 : -1;
+}
+
+// Writes `text` to temp_dir/name (subfolders created); returns the path (static buffer).
+static const char *write_file(const char *name, const char *text) {
+	static char path[512];
+	snprintf(path, sizeof path, "%s/%s", temp_dir, name);
+	for (char *p = path + strlen(temp_dir) + 1; *p; ++p)
+		if (*p == '/') {
+			*p = '\0';
+			mkdir(path, 0777);
+			*p = '/';
+		}
+	FILE *f = fopen(path, "w");
+	assert_non_null(f);
+	fputs(text, f);
+	assert_int_equal(fclose(f), 0);
+	return path;
+}
+
+static hs_scenario *load_text(const char *name, const char *text) {
+	hs_error err;
+	hs_scenario *s = hs_scenario_load(write_file(name, text), &err);
+	if (!s)
+		fail_msg("%s", err.message);
+	return s;
+}
+
+static void load_error(const char *name, const char *text, const char *expected_suffix) {
+	hs_error err;
+	const char *path = write_file(name, text);
+	hs_scenario *s = hs_scenario_load(path, &err);
+	assert_null(s);
+	char want[1024];
+	snprintf(want, sizeof want, "%s:%s", path, expected_suffix);
+	assert_string_equal(err.message, want);
+}
+
+static void run_all(hs_scenario *s) {
+	while (hs_scenario_step(s)) {
+	}
+}
+
+// ---------------------------------------------------------------------------------------------
+// loading
+
+#define ONE_CUBE "objects:\n  - { name: a, shape: cube, size: 0.1, position: [0, 0, 1] }\n"
+
+static void test_dt_fraction(void **state) {
+	(void)state;
+	static const struct {
+		const char *dt;
+		double value;
+		const char *duration;
+		long frames;
+	} cases[] = {
+	    {"1/60", 1.0 / 60.0, "1", 60},        {"0.01", 0.01, "0.5", 50},       {"\" 1 / 30 \"", 1.0 / 30.0, "0.1", 3},
+	    {"1/12", 1.0 / 12.0, "1", 12},        {"1/2000", 1.0 / 2000.0, "0.01", 20}, {"0.0005", 0.0005, "0.001", 2},
+	    {"1/16", 1.0 / 16.0, "0.09375", 2}, // exactly 1.5 frames rounds half away from zero (llround)
+	};
+	for (size_t i = 0; i < sizeof cases / sizeof cases[0]; ++i) {
+		char text[512];
+		snprintf(text, sizeof text, "description: dt\ndt: %s\nduration: %s\n" ONE_CUBE, cases[i].dt, cases[i].duration);
+		hs_scenario *s = load_text("dt.yaml", text);
+		assert_true(hs_scenario_dt(s) == cases[i].value); // exact: a/b is one division
+		assert_true(hs_world_dt(hs_scenario_world(s)) == cases[i].value);
+		assert_int_equal(hs_scenario_frame_count(s), cases[i].frames);
+		long steps = 0;
+		while (hs_scenario_step(s))
+			steps++;
+		assert_int_equal(steps, cases[i].frames);
+		assert_int_equal(hs_world_frame(hs_scenario_world(s)), cases[i].frames);
+		assert_false(hs_scenario_step(s));
+		hs_scenario_destroy(s);
+	}
+	load_error("dt.yaml", "description: dt\ndt: 1/0\nduration: 1\n" ONE_CUBE, "2: 'dt' divides by zero: 1/0");
+	load_error("dt.yaml", "description: dt\ndt: 1/2001\nduration: 1\n" ONE_CUBE,
+	           "2: 'dt' must be within [1/2000, 1/12] s, got 1/2001");
+	load_error("dt.yaml", "description: dt\ndt: 1/nan\nduration: 1\n" ONE_CUBE, "2: 'dt' must be finite, got 1/nan");
+	load_error("dt.yaml", "description: dt\ndt: 1/60/2\nduration: 1\n" ONE_CUBE,
+	           "2: 'dt' must be a number, got '1/60/2'");
+	load_error("dt.yaml", "description: dt\ndt: 1/60\nduration: 0.001\n" ONE_CUBE,
+	           "3: 'duration' must be at least one frame (dt = 0.0166667 s), got 0.001");
+}
+
+static void test_defaults(void **state) {
+	(void)state;
+	hs_scenario *s = load_text("defaults.yaml", "# no name: the file's base name\n"
+	                                            "description: the defaults\n"
+	                                            "dt: 1/60\n"
+	                                            "duration: 0.5\n" ONE_CUBE);
+	assert_string_equal(hs_scenario_name(s), "defaults");
+	assert_string_equal(hs_scenario_description(s), "the defaults");
+	assert_int_equal(hs_scenario_object_count(s), 1);
+	assert_string_equal(hs_scenario_object_name(s, 0), "a");
+	assert_null(hs_scenario_object_name(s, 1));
+	assert_null(hs_scenario_object_name(s, -1));
+	assert_int_equal(hs_scenario_expectation_count(s), 0);
+	hs_world *w = hs_scenario_world(s);
+	hs_object_state st;
+	assert_int_equal(hs_world_object_state(w, hs_world_object_at(w, 0), &st), HS_OK);
+	assert_true(st.position.z == 1.0);
+	assert_true(st.orientation.w == 1.0 && st.orientation.x == 0.0 && st.orientation.y == 0.0 && st.orientation.z == 0.0);
+	run_all(s);
+	assert_int_equal(hs_scenario_check(s, NULL), 0);
+	assert_int_equal(hs_world_object_state(w, hs_world_object_at(w, 0), &st), HS_OK);
+	assert_true(st.position.z < 1.0); // default gravity pulls down along -z
+	assert_near(st.position.x, 0.0, 0.0);
+	hs_scenario_destroy(s);
+
+	// zero gravity: nothing moves
+	s = load_text("still.yaml", "description: no gravity\ndt: 1/60\nduration: 0.5\ngravity: [0, 0, 0]\n" ONE_CUBE);
+	w = hs_scenario_world(s);
+	run_all(s);
+	assert_int_equal(hs_world_object_state(w, hs_world_object_at(w, 0), &st), HS_OK);
+	assert_true(st.position.z == 1.0);
+	hs_scenario_destroy(s);
+}
+
+static void test_orientation_and_model(void **state) {
+	(void)state;
+	hs_scenario *s = load_text("pose.yaml", "name: pose\n"
+	                                        "description: orientations\n"
+	                                        "dt: 0.01\n"
+	                                        "duration: 0.01\n"
+	                                        "model: { grasp_threshold_deg: 60, stacking: support, floor_tolerance: 1e-5,"
+	                                        " skip_work: false }\n"
+	                                        "objects:\n"
+	                                        "  - { name: r, shape: box, size: [0.1, 0.2, 0.3], position: [0, 0, 1],"
+	                                        " rpy_deg: [10, 20, 30] }\n"
+	                                        "  - { name: q, shape: pyramid, size: [0.1, 0.1], position: [1, 0, 1],"
+	                                        " quat: [0.7071067811865476, 0, 0, 0.7071067811865476] }\n"
+	                                        "  - { name: e, shape: ellipsoid, size: [0.1, 0.05, 0.05], position: [2, 0, 1],"
+	                                        " velocity: [1, 0, 0], angular_velocity_deg: [0, 0, 90], density: 800 }\n"
+	                                        "  - { name: s, shape: sphere, size: 0.05, position: [3, 0, 1] }\n"
+	                                        "  - { name: l, shape: l_block, size: [0.1, 0.05, 0.1], thickness: 0.02,"
+	                                        " position: [4, 0, 1] }\n");
+	hs_world *w = hs_scenario_world(s);
+	hs_object_state st;
+	assert_int_equal(hs_world_object_state(w, hs_world_object_at(w, 0), &st), HS_OK);
+	hs_quat want = hs_quat_from_rpy(10.0 * (HS_PI / 180.0), 20.0 * (HS_PI / 180.0), 30.0 * (HS_PI / 180.0));
+	assert_near(st.orientation.w, want.w, 1e-15); // the documented formula (the world may renormalise)
+	assert_near(st.orientation.x, want.x, 1e-15);
+	assert_near(st.orientation.y, want.y, 1e-15);
+	assert_near(st.orientation.z, want.z, 1e-15);
+	assert_int_equal(hs_world_object_state(w, hs_world_object_at(w, 1), &st), HS_OK);
+	assert_near(st.orientation.w, sqrt(0.5), 1e-15);
+	assert_near(st.orientation.z, sqrt(0.5), 1e-15);
+	assert_near(hs_quat_dot(st.orientation, st.orientation), 1.0, 1e-15);
+	assert_int_equal(hs_world_object_count(w), 5);
+	assert_int_equal(hs_world_shape(w, (hs_shape_id){4})->kind, HS_SHAPE_SPHERE);
+	assert_int_equal(hs_world_shape(w, (hs_shape_id){5})->kind, HS_SHAPE_L_BLOCK);
+	hs_scenario_destroy(s);
+}
+
+static void test_polyhedron(void **state) {
+	(void)state;
+	hs_scenario *s = load_text("tet.yaml", "description: a tetrahedron\ndt: 1/60\nduration: 0.1\nobjects:\n"
+	                                       "  - name: tet\n"
+	                                       "    shape: polyhedron\n"
+	                                       "    vertices: [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]]\n"
+	                                       "    faces: [[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]]\n"
+	                                       "    position: [0, 0, 2]\n");
+	const hs_shape *shape = hs_world_shape(hs_scenario_world(s), (hs_shape_id){1});
+	assert_int_equal(shape->kind, HS_SHAPE_POLYHEDRON);
+	assert_int_equal(shape->vertex_count, 4);
+	assert_near(shape->volume, 1.0 / 6.0, 1e-12);
+	hs_scenario_destroy(s);
+}
+
+// In-process messages beyond the tests/bad corpus.
+static void test_load_errors(void **state) {
+	(void)state;
+	const char *head = "description: e\ndt: 1/60\nduration: 1\n";
+	char text[1024];
+	snprintf(text, sizeof text, "%sobjects:\n  - { name: a, shape: cube, size: 0.1 }\n", head);
+	load_error("e.yaml", text, "5: object 'a' is missing 'position'");
+	snprintf(text, sizeof text, "%sobjects:\n  - { shape: cube, size: 0.1, position: [0, 0, 1] }\n", head);
+	load_error("e.yaml", text, "5: object 1 is missing 'name'");
+	snprintf(text, sizeof text, "%sobjects:\n  - { name: a, shape: cube, size: 2000, position: [0, 0, 1] }\n", head);
+	load_error("e.yaml", text, "5: 'size' must be within (0, 1000] m, got 2000");
+	snprintf(text, sizeof text, "%sobjects:\n  - { name: a, shape: box, size: [0.1, 0, 0.1], position: [0, 0, 1] }\n", head);
+	load_error("e.yaml", text, "5: 'size' must be within (0, 1000] m, got 0");
+	snprintf(text, sizeof text, "%sobjects:\n  - { name: a, shape: cube, size: 0.1, position: [0, 0, 1], vertices: [] }\n",
+	         head);
+	load_error("e.yaml", text, "5: 'vertices' is only for shape polyhedron");
+	snprintf(text, sizeof text, "%s" ONE_CUBE "expect:\n  - { object: a, at: end, near: [0, 0, 1], tolerance: 0 }\n", head);
+	load_error("e.yaml", text, "7: 'tolerance' must be > 0, got 0");
+	snprintf(text, sizeof text, "%s" ONE_CUBE "expect:\n  - { object: a, at: end }\n", head);
+	load_error("e.yaml", text,
+	           "7: expect clause needs a predicate: near, resting, floor_contacts, on_face, below, above, lands_at, still or "
+	           "contact_sequence");
+	snprintf(text, sizeof text, "%s" ONE_CUBE "expect:\n  - { object: a, still: true, at: end }\n", head);
+	load_error("e.yaml", text, "7: 'at' is not used by 'still'");
+	snprintf(text, sizeof text, "%s" ONE_CUBE "expect:\n  - { object: a, still: true, from: 2 }\n", head);
+	load_error("e.yaml", text, "7: 'from' must be a time within [0, 1] s, got 2");
+	snprintf(text, sizeof text, "%s" ONE_CUBE "expect:\n  - { object: a, contact_sequence: [0, 4] }\n", head);
+	load_error("e.yaml", text, "7: 'contact_sequence' must be within [0, 3], got 4");
+	snprintf(text, sizeof text, "%s" ONE_CUBE "expect:\n  - { object: a, at: end, floor_contacts: 2.5 }\n", head);
+	load_error("e.yaml", text, "7: 'floor_contacts' must be an integer, got '2.5'");
+	snprintf(text, sizeof text, "%s" ONE_CUBE "stylus: {}\n", head);
+	load_error("e.yaml", text, "6: unknown key 'stylus' in scenario");
+	snprintf(text, sizeof text, "%s" ONE_CUBE "expect: { object: a }\n", head);
+	load_error("e.yaml", text, "6: 'expect' must be a list of clauses, got a mapping");
+	load_error("e.yaml", "description: e\ndt:\nduration: 1\n" ONE_CUBE, "2: 'dt' must be a number, got nothing");
+	load_error("e.yaml", "# only a comment\n", "1: empty file: a scenario needs description, dt, duration and objects");
+}
+
+// ---------------------------------------------------------------------------------------------
+// expectations: a dropped cube (lands near t = 0.30 s and rests flat) and a box already resting
+
+static const char drop_scenario[] = "description: a dropped cube and a resting box\n"
+                                    "dt: 1/60\n"
+                                    "duration: 1.5\n"
+                                    "objects:\n"
+                                    "  - { name: block, shape: cube, size: 0.1, position: [0, 0, 0.5] }\n"
+                                    "  - { name: base, shape: box, size: [0.2, 0.2, 0.1], position: [1, 0, 0.05] }\n"
+                                    "  - { name: high, shape: cube, size: 0.1, position: [2, 0, 100] }\n"
+                                    "expect:\n";
+
+// Loads the drop scenario with one clause, runs it, returns the failures and the report.
+static int check_clause(const char *clause, char *report, size_t report_size) {
+	char text[2048];
+	snprintf(text, sizeof text, "%s  - %s\n", drop_scenario, clause);
+	hs_scenario *s = load_text("drop.yaml", text);
+	run_all(s);
+	char *buf = NULL;
+	size_t size = 0;
+	FILE *r = open_memstream(&buf, &size);
+	assert_non_null(r);
+	int failed = hs_scenario_check(s, r);
+	fclose(r);
+	snprintf(report, report_size, "%s", buf);
+	free(buf);
+	int lines = hs_scenario_expectation_count(s);
+	hs_scenario_destroy(s);
+	// one line per check, each starting PASS or FAIL
+	int counted = 0;
+	for (const char *p = report; *p; p = strchr(p, '\n') + 1) {
+		assert_true(strncmp(p, "PASS  ", 6) == 0 || strncmp(p, "FAIL  ", 6) == 0);
+		counted++;
+	}
+	assert_int_equal(counted, lines);
+	return failed;
+}
+
+static void expect_pass(const char *clause, const char *measured) {
+	char report[4096];
+	int failed = check_clause(clause, report, sizeof report);
+	if (failed != 0 || !strstr(report, measured))
+		fail_msg("%s\nshould pass with '%s', got:\n%s", clause, measured, report);
+}
+
+static void expect_fail(const char *clause, const char *measured) {
+	char report[4096];
+	int failed = check_clause(clause, report, sizeof report);
+	if (failed != 1 || strncmp(report, "FAIL", 4) != 0 || !strstr(report, measured))
+		fail_msg("%s\nshould fail once with '%s', got:\n%s", clause, measured, report);
+}
+
+static void test_near(void **state) {
+	(void)state;
+	expect_pass("{ object: block, at: end, near: [0, 0, 0.05], tolerance: 1e-9 }", "distance 0 m");
+	expect_fail("{ object: block, at: end, near: [0.1, 0, 0.05], tolerance: 0.05 }", "distance 0.1 m");
+	// only the chosen axes count
+	expect_pass("{ object: block, at: end, near: [0, 0, 7], tolerance: 1e-9, axes: xy }", "on xy");
+	expect_pass("{ object: high, at: 0, near: [5, 0, 100], tolerance: 1e-9, axes: zy }", "distance 0 m");
+	expect_fail("{ object: high, at: 0, near: [5, 0, 100], tolerance: 1, axes: x }", "distance 3 m");
+}
+
+static void test_resting_and_contacts(void **state) {
+	(void)state;
+	expect_pass("{ object: block, at: end, resting: true }", "resting true");
+	expect_fail("{ object: block, at: end, resting: false }", "resting true");
+	expect_pass("{ object: block, at: 0.1, resting: false }", "resting false");
+	expect_pass("{ object: block, at: end, floor_contacts: 4 }", "floor_contacts 4");
+	expect_fail("{ object: block, at: end, floor_contacts: 3 }", "floor_contacts 4");
+	expect_pass("{ object: block, at: 0, floor_contacts: 0 }", "floor_contacts 0");
+	expect_pass("{ object: base, at: end, on_face: true }", "floor_contacts 4");
+	expect_fail("{ object: high, at: end, on_face: true }", "floor_contacts 0");
+	expect_pass("{ object: high, at: end, on_face: false }", "floor_contacts 0");
+}
+
+static void test_below_above_and_at(void **state) {
+	(void)state;
+	expect_pass("{ object: block, at: 0.1, below: 0.5 }", "z ");
+	expect_fail("{ object: block, at: 0, below: 0.5 }", "z 0.5 m"); // strictly below
+	expect_pass("{ object: block, at: end, above: 0.04 }", "z 0.05 m");
+	expect_fail("{ object: block, at: end, above: 0.06 }", "z 0.05 m");
+
+	// `at: t` checks the state after frame llround(t / dt): find z at frames 5, 6, 7 and bracket frame 6
+	char text[2048];
+	snprintf(text, sizeof text, "%s  - { object: block, at: end, resting: true }\n", drop_scenario);
+	hs_scenario *s = load_text("drop.yaml", text);
+	hs_world *w = hs_scenario_world(s);
+	double z[8];
+	for (int f = 0; f < 8; ++f) {
+		hs_object_state st;
+		assert_int_equal(hs_world_object_state(w, hs_world_object_at(w, 0), &st), HS_OK);
+		z[f] = st.position.z;
+		assert_true(hs_scenario_step(s));
+	}
+	hs_scenario_destroy(s);
+	assert_true(z[5] > z[6] && z[6] > z[7]);
+	char clause[256];
+	// t = 0.1 s → frame 6 (0.1 × 60 = 6); t = 0.09 s → frame 5 (5.4 rounds down); t = 0.11 s → frame 7 (6.6)
+	snprintf(clause, sizeof clause, "{ object: block, at: 0.1, below: %.17g }", 0.5 * (z[5] + z[6]));
+	expect_pass(clause, "at t = 0.1 s");
+	snprintf(clause, sizeof clause, "{ object: block, at: 0.1, above: %.17g }", 0.5 * (z[6] + z[7]));
+	expect_pass(clause, "at t = 0.1 s");
+	snprintf(clause, sizeof clause, "{ object: block, at: 0.09, above: %.17g }", 0.5 * (z[5] + z[6]));
+	expect_pass(clause, "at t = 0.0833333 s");
+	snprintf(clause, sizeof clause, "{ object: block, at: 0.11, below: %.17g }", 0.5 * (z[6] + z[7]));
+	expect_pass(clause, "at t = 0.116667 s");
+}
+
+static void test_lands_at(void **state) {
+	(void)state;
+	// free fall from 0.45 m (bottom face) takes sqrt(2 · 0.45 / 9.81) = 0.303 s
+	expect_pass("{ object: block, lands_at: 0.3, tolerance: 0.05 }", "landed at t = ");
+	expect_fail("{ object: block, lands_at: 1.0, tolerance: 0.05 }", "landed at t = ");
+	expect_fail("{ object: high, lands_at: 1.0, tolerance: 0.5 }", "never landed");
+	expect_fail("{ object: base, lands_at: 0, tolerance: 0.5 }", "never left the floor");
+}
+
+static void test_still(void **state) {
+	(void)state;
+	expect_pass("{ object: block, still: true, from: 1.2 }", "unchanged");
+	expect_fail("{ object: block, still: true }", "moved at frame 1 ");
+	expect_pass("{ object: block, still: false }", "moved at frame 1 ");
+	expect_pass("{ object: base, still: true, from: 0.5 }", "unchanged");
+	expect_fail("{ object: high, still: true, from: 0.5 }", "moved at frame 31 ");
+	expect_pass("{ object: high, still: true, from: 1.5 }", "unchanged"); // no frame after the last one
+}
+
+static void test_contact_sequence(void **state) {
+	(void)state;
+	expect_pass("{ object: block, contact_sequence: [0] }", "[0]");
+	expect_fail("{ object: block, contact_sequence: [0, 2, 0] }", "[0]");
+	expect_fail("{ object: block, contact_sequence: [2] }", "[0]");
+}
+
+static void test_every_object(void **state) {
+	(void)state;
+	char report[4096];
+	int failed = check_clause("{ object: '*', at: end, above: 0.04 }", report, sizeof report);
+	assert_int_equal(failed, 0);
+	assert_non_null(strstr(report, "line 9: block above"));
+	assert_non_null(strstr(report, "line 9: base above"));
+	assert_non_null(strstr(report, "line 9: high above"));
+	failed = check_clause("{ object: '*', at: end, on_face: true }", report, sizeof report);
+	assert_int_equal(failed, 1); // only `high`, still in the air
+	assert_non_null(strstr(report, "FAIL  line 9: high on_face"));
+}
+
+static void test_check_before_the_end(void **state) {
+	(void)state;
+	char text[2048];
+	snprintf(text, sizeof text, "%s  - { object: block, at: end, resting: true }\n  - { object: block, at: 0, below: 1 }\n",
+	         drop_scenario);
+	hs_scenario *s = load_text("drop.yaml", text);
+	assert_true(hs_scenario_step(s));
+	char *buf = NULL;
+	size_t size = 0;
+	FILE *r = open_memstream(&buf, &size);
+	assert_int_equal(hs_scenario_check(s, r), 1);
+	fclose(r);
+	assert_non_null(strstr(buf, "not reached: the run stopped at frame 1 of 90"));
+	assert_non_null(strstr(buf, "PASS  line 10: block below 1 m at t = 0 s"));
+	free(buf);
+	hs_scenario_destroy(s);
+}
+
+// ---------------------------------------------------------------------------------------------
+// trajectories
+
+static char *trajectory_of(const char *text, size_t *size) {
+	hs_scenario *s = load_text("traj.yaml", text);
+	char *buf = NULL;
+	FILE *out = open_memstream(&buf, size);
+	hs_trajectory_write_header(out);
+	hs_trajectory_write_frame(out, s);
+	while (hs_scenario_step(s))
+		hs_trajectory_write_frame(out, s);
+	fclose(out);
+	hs_scenario_destroy(s);
+	return buf;
+}
+
+static void test_trajectory_rows(void **state) {
+	(void)state;
+	size_t size;
+	char *csv = trajectory_of("description: t\ndt: 1/12\nduration: 0.1667\nobjects:\n"
+	                          "  - { name: a, shape: cube, size: 0.1, position: [0, 0, 1] }\n"
+	                          "  - { name: b, shape: cube, size: 0.1, position: [1, 0, 0.05] }\n",
+	                          &size);
+	const char *header = "frame,t,object,x,y,z,qw,qx,qy,qz,contact,floor,resting,hash\n";
+	assert_memory_equal(csv, header, strlen(header));
+	int rows = 0;
+	for (const char *p = csv; (p = strchr(p, '\n')) && p[1]; ++p)
+		rows++;
+	assert_int_equal(rows, 2 * 3); // 2 objects × frames 0, 1, 2
+	const char *first = csv + strlen(header);
+	assert_memory_equal(first, "0,0,a,0,0,1,1,0,0,0,0,0,0,", 26);
+	const char *hash = first + 26; // 16 lowercase hex digits
+	for (int i = 0; i < 16; ++i)
+		assert_true((hash[i] >= '0' && hash[i] <= '9') || (hash[i] >= 'a' && hash[i] <= 'f'));
+	assert_int_equal(hash[16], '\n');
+	assert_non_null(strstr(csv, "\n0,0,b,1,0,0.050000000000000003,1,0,0,0,0,4,"));
+	assert_non_null(strstr(csv, "\n2,0.16666666666666666,b,")); // t = frame × dt, 17 digits
+	free(csv);
+}
+
+static bool compare_texts(const char *golden, const char *now, double tolerance, char *why, size_t n) {
+	FILE *g = fmemopen((void *)golden, strlen(golden), "r"), *a = fmemopen((void *)now, strlen(now), "r");
+	assert_non_null(g);
+	assert_non_null(a);
+	bool same = hs_trajectory_compare(g, a, tolerance, "case", why, n);
+	fclose(g);
+	fclose(a);
+	return same;
+}
+
+#define H "frame,t,object,x,y,z,qw,qx,qy,qz,contact,floor,resting,hash\n"
+#define ROW(f, obj, z, contact, hash) #f ",0.5," obj ",0,0," z ",1,0,0,0," contact ",0,0," hash "\n"
+
+static void test_compare(void **state) {
+	(void)state;
+	const char *golden = "# a comment\n# regenerate with make golden\n" H ROW(0, "a", "1", "0", "00000000000000aa")
+	    ROW(0, "b", "0.5", "0", "00000000000000aa") ROW(1, "a", "0.9", "0", "00000000000000bb")
+	        ROW(1, "b", "0.5", "2", "00000000000000bb") ROW(2, "a", "0.8", "0", "00000000000000cc")
+	            ROW(2, "b", "0.5", "0", "00000000000000cc");
+	char why[512];
+	// itself, and itself without comments
+	assert_true(compare_texts(golden, golden, 0.0, why, sizeof why));
+	assert_string_equal(why, "");
+	assert_true(compare_texts(golden, strstr(golden, H), 0.0, why, sizeof why));
+	// within tolerance, with a different hash: not a failure
+	const char *close = H ROW(0, "a", "1", "0", "00000000000000aa") ROW(0, "b", "0.5", "0", "00000000000000aa")
+	    ROW(1, "a", "0.9", "0", "00000000000000bb") ROW(1, "b", "0.50000000000001", "2", "1234567890abcdef")
+	        ROW(2, "a", "0.8", "0", "00000000000000cc") ROW(2, "b", "0.5", "0", "00000000000000cc");
+	assert_true(compare_texts(golden, close, 1e-12, why, sizeof why));
+	assert_false(compare_texts(golden, close, 1e-15, why, sizeof why));
+	// beyond tolerance: frame, object, field, both values as written, the difference now - golden
+	const char *far = H ROW(0, "a", "1", "0", "00000000000000aa") ROW(0, "b", "0.5", "0", "00000000000000aa")
+	    ROW(1, "a", "0.9", "0", "00000000000000bb") ROW(1, "b", "0.5078125", "2", "00000000000000bb");
+	assert_false(compare_texts(golden, far, 1e-3, why, sizeof why));
+	assert_string_equal(why, "case: frame 1, object b, field z: golden 0.5, now 0.5078125 (difference 0.00781)");
+	// a contact state must agree exactly
+	const char *contact = H ROW(0, "a", "1", "0", "00000000000000aa") ROW(0, "b", "0.5", "0", "00000000000000aa")
+	    ROW(1, "a", "0.9", "0", "00000000000000bb") ROW(1, "b", "0.5", "0", "00000000000000bb");
+	assert_false(compare_texts(golden, contact, 1.0, why, sizeof why));
+	assert_string_equal(why, "case: frame 1, object b, field contact: golden 2, now 0 (difference -2)");
+	// fewer frames
+	const char *shorter = H ROW(0, "a", "1", "0", "00000000000000aa") ROW(0, "b", "0.5", "0", "00000000000000aa")
+	    ROW(1, "a", "0.9", "0", "00000000000000bb") ROW(1, "b", "0.5", "2", "00000000000000bb");
+	assert_false(compare_texts(golden, shorter, 0.0, why, sizeof why));
+	assert_string_equal(why, "case: golden has 3 frames, now 2");
+	assert_false(compare_texts(shorter, golden, 0.0, why, sizeof why));
+	assert_string_equal(why, "case: golden has 2 frames, now 3");
+	// an object renamed
+	const char *renamed = H ROW(0, "a", "1", "0", "00000000000000aa") ROW(0, "c", "0.5", "0", "00000000000000aa");
+	assert_false(compare_texts(golden, renamed, 0.0, why, sizeof why));
+	assert_string_equal(why, "case: frame 0, object b, field object: golden b, now c");
+	// a wrong header, a short row, non-numbers
+	assert_false(compare_texts(golden, "frame,t\n", 0.0, why, sizeof why));
+	assert_string_equal(why, "case: now line 1: header is not '" "frame,t,object,x,y,z,qw,qx,qy,qz,contact,floor,resting,hash'");
+	assert_false(compare_texts(golden, H "0,0,a\n", 0.0, why, sizeof why));
+	assert_string_equal(why, "case: now line 2: expected 14 fields, got 3");
+	assert_false(compare_texts(golden, H ROW(0, "a", "zz", "0", "00000000000000aa"), 0.0, why, sizeof why));
+	assert_string_equal(why, "case: now line 2: field z is not a number: 'zz'");
+	assert_false(compare_texts("", golden, 0.0, why, sizeof why));
+	assert_string_equal(why, "case: golden file is empty (no header)");
+	// NaN equals NaN (a frozen object's state is still reproducible); NaN against a number does not
+	const char *nan_row = H ROW(0, "a", "nan", "0", "00000000000000aa");
+	assert_true(compare_texts(nan_row, nan_row, 0.0, why, sizeof why));
+	assert_false(compare_texts(nan_row, H ROW(0, "a", "1", "0", "00000000000000aa"), 1e9, why, sizeof why));
+	assert_string_equal(why, "case: frame 0, object a, field z: golden nan, now 1 (difference nan)");
+	// why may be NULL
+	assert_false(hs_trajectory_compare(NULL, NULL, 0.0, NULL, NULL, 0));
+}
+
+// ---------------------------------------------------------------------------------------------
+// catalog
+
+static void test_catalog(void **state) {
+	(void)state;
+	const char *text = "description: c\ndt: 1/60\nduration: 0.1\n" ONE_CUBE;
+	write_file("cat/zeta.yaml", text);
+	write_file("cat/alpha.yaml", text);
+	write_file("cat/hand/flick.yaml", text);
+	write_file("cat/hand/deep/grasp.yaml", text);
+	write_file("cat/notes.txt", "not a scenario");
+	write_file("cat/.hidden.yaml", text);
+	write_file("cat/README.md", "docs");
+	char dir[256];
+	snprintf(dir, sizeof dir, "%s/cat", temp_dir);
+	hs_catalog c;
+	hs_error err;
+	assert_true(hs_catalog_load(dir, &c, &err));
+	assert_int_equal(c.count, 4);
+	assert_string_equal(c.names[0], "alpha");
+	assert_string_equal(c.names[1], "hand/deep/grasp");
+	assert_string_equal(c.names[2], "hand/flick");
+	assert_string_equal(c.names[3], "zeta");
+	char want[512];
+	snprintf(want, sizeof want, "%s/hand/flick.yaml", dir);
+	assert_string_equal(c.paths[2], want);
+	// each catalog file loads, and a scenario's name is its base name
+	hs_scenario *s = hs_scenario_load(c.paths[2], &err);
+	assert_non_null(s);
+	assert_string_equal(hs_scenario_name(s), "flick");
+	hs_scenario_destroy(s);
+	hs_catalog_free(&c);
+	assert_int_equal(c.count, 0);
+	assert_null(c.names);
+
+	// a trailing slash gives the same paths without "//"
+	snprintf(dir, sizeof dir, "%s/cat/", temp_dir);
+	assert_true(hs_catalog_load(dir, &c, &err));
+	assert_string_equal(c.paths[2], want);
+	hs_catalog_free(&c);
+
+	// empty and missing folders
+	snprintf(dir, sizeof dir, "%s/cat_empty", temp_dir);
+	mkdir(dir, 0777);
+	assert_true(hs_catalog_load(dir, &c, &err));
+	assert_int_equal(c.count, 0);
+	hs_catalog_free(&c);
+	snprintf(dir, sizeof dir, "%s/cat_missing", temp_dir);
+	assert_false(hs_catalog_load(dir, &c, &err));
+	snprintf(want, sizeof want, "%s: cannot read: No such file or directory", dir);
+	assert_string_equal(err.message, want);
+}
+
+int main(void) {
+	const struct CMUnitTest tests[] = {
+	    cmocka_unit_test(test_dt_fraction),
+	    cmocka_unit_test(test_defaults),
+	    cmocka_unit_test(test_orientation_and_model),
+	    cmocka_unit_test(test_polyhedron),
+	    cmocka_unit_test(test_load_errors),
+	    cmocka_unit_test(test_near),
+	    cmocka_unit_test(test_resting_and_contacts),
+	    cmocka_unit_test(test_below_above_and_at),
+	    cmocka_unit_test(test_lands_at),
+	    cmocka_unit_test(test_still),
+	    cmocka_unit_test(test_contact_sequence),
+	    cmocka_unit_test(test_every_object),
+	    cmocka_unit_test(test_check_before_the_end),
+	    cmocka_unit_test(test_trajectory_rows),
+	    cmocka_unit_test(test_compare),
+	    cmocka_unit_test(test_catalog),
+	};
+	return cmocka_run_group_tests_name("scenario", tests, make_temp_dir, remove_temp_dir);
+}

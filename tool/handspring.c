@@ -1,0 +1,415 @@
+// handspring — the command-line tool: a thin shell over the library (handspring.h).
+//
+//   handspring list [--dir DIR]                         the catalog, one scenario per line
+//   handspring run FILE [--out TRAJ.csv]                one scenario: summary, expectations, hash
+//   handspring all [--dir DIR] [--out-dir DIR] [--golden-dir DIR]
+//                                                        the whole catalog and a summary table
+//
+// Exit status: 0 all expectations pass, 1 an expectation failed, 2 bad input or usage.
+#include <errno.h>
+#include <inttypes.h>
+#include <stdbool.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+
+#include "handspring.h"
+
+enum { EXIT_PASS = 0, EXIT_FAILED = 1, EXIT_BAD_INPUT = 2 };
+
+static const char *const usage_main =
+    "usage: handspring <command> [options]\n"
+    "commands:\n"
+    "  list [--dir DIR]                                   list the scenarios of a catalog\n"
+    "  run FILE [--out TRAJ.csv]                          run one scenario and check its expectations\n"
+    "  all [--dir DIR] [--out-dir DIR] [--golden-dir DIR] run every scenario of a catalog\n"
+    "Run 'handspring <command> --help' for the options of a command.\n";
+
+static const char *const usage_list =
+    "usage: handspring list [--dir DIR]\n"
+    "Lists every scenario below DIR (default: scenarios): its name, then its description.\n";
+
+static const char *const usage_run =
+    "usage: handspring run FILE [--out TRAJ.csv]\n"
+    "Runs the scenario FILE and prints its name, frames, objects, one PASS/FAIL line per expectation\n"
+    "with the measured value, and the final state hash.\n"
+    "  --out TRAJ.csv  also write the trajectory (one row per object per frame, frame 0 included)\n"
+    "Exit status: 0 every expectation passed, 1 one failed, 2 bad input (one error line on stderr).\n";
+
+static const char *const usage_all =
+    "usage: handspring all [--dir DIR] [--out-dir DIR] [--golden-dir DIR]\n"
+    "Runs every scenario below --dir (default: scenarios) and prints a summary table.\n"
+    "  --out-dir DIR     write each trajectory to DIR/<name>.csv (subfolders are created)\n"
+    "  --golden-dir DIR  write each trajectory as a golden file DIR/<name>.csv (what 'make golden' does)\n"
+    "Exit status: 0 every scenario passed, 1 one failed, 2 bad input.\n";
+
+static int usage_error(const char *command, const char *usage, const char *fmt, const char *arg) {
+	fprintf(stderr, "handspring%s%s: ", command ? " " : "", command ? command : "");
+	fprintf(stderr, fmt, arg);
+	fprintf(stderr, "\n%s", usage);
+	return EXIT_BAD_INPUT;
+}
+
+static bool is_help(const char *arg) { return strcmp(arg, "--help") == 0 || strcmp(arg, "-h") == 0; }
+
+// "--name VALUE" or "--name=VALUE" at argv[*i]; advances *i past the value.
+static bool option_value(int argc, char **argv, int *i, const char *name, const char **value, bool *missing) {
+	size_t n = strlen(name);
+	if (strncmp(argv[*i], name, n) != 0)
+		return false;
+	if (argv[*i][n] == '=') {
+		*value = argv[*i] + n + 1;
+		*missing = **value == '\0';
+		return true;
+	}
+	if (argv[*i][n] != '\0')
+		return false;
+	if (*i + 1 >= argc) {
+		*missing = true;
+		return true;
+	}
+	*value = argv[++*i];
+	*missing = false;
+	return true;
+}
+
+// Like mkdir -p for the folder that will hold `file`.
+static bool make_parent_dirs(const char *file) {
+	char *path = malloc(strlen(file) + 1);
+	if (!path)
+		return false;
+	strcpy(path, file);
+	bool ok = true;
+	for (char *p = path + 1; ok && *p; ++p) {
+		if (*p != '/')
+			continue;
+		*p = '\0';
+		struct stat st;
+		if (mkdir(path, 0777) != 0 && !(errno == EEXIST && stat(path, &st) == 0 && S_ISDIR(st.st_mode)))
+			ok = false;
+		*p = '/';
+	}
+	free(path);
+	return ok;
+}
+
+static char *join_csv(const char *dir, const char *name) {
+	size_t n = strlen(dir) + strlen(name) + 6;
+	char *r = malloc(n);
+	if (r)
+		snprintf(r, n, "%s/%s.csv", dir, name);
+	return r;
+}
+
+// An output file written under a temporary name and renamed when complete, so that an
+// interrupted run never leaves a half-written golden behind.
+typedef struct output {
+	char *path, *temp;
+	FILE *file;
+} output;
+
+static bool output_open(output *o, const char *path) {
+	memset(o, 0, sizeof *o);
+	size_t n = strlen(path) + 5;
+	o->path = malloc(strlen(path) + 1);
+	o->temp = malloc(n);
+	if (!o->path || !o->temp)
+		return false;
+	strcpy(o->path, path);
+	snprintf(o->temp, n, "%s.tmp", path);
+	if (!make_parent_dirs(path))
+		return false;
+	o->file = fopen(o->temp, "w");
+	return o->file != NULL;
+}
+
+// Closes, then renames to the final name when `keep`; false (and errno) on any write error.
+static bool output_close(output *o, bool keep) {
+	bool ok = true;
+	if (o->file) {
+		ok = !ferror(o->file);
+		ok = fclose(o->file) == 0 && ok;
+		o->file = NULL;
+		if (ok && keep)
+			ok = rename(o->temp, o->path) == 0;
+		if (!ok || !keep)
+			remove(o->temp);
+	}
+	return ok;
+}
+
+static void output_free(output *o) {
+	free(o->path);
+	free(o->temp);
+	memset(o, 0, sizeof *o);
+}
+
+// Runs every frame, writing the trajectory to each open file.
+static void run_scenario(hs_scenario *s, FILE **outs, int out_count) {
+	for (int k = 0; k < out_count; ++k)
+		if (outs[k]) {
+			hs_trajectory_write_header(outs[k]);
+			hs_trajectory_write_frame(outs[k], s);
+		}
+	while (hs_scenario_step(s))
+		for (int k = 0; k < out_count; ++k)
+			if (outs[k])
+				hs_trajectory_write_frame(outs[k], s);
+}
+
+static int cmd_run(int argc, char **argv) {
+	const char *file = NULL, *out = NULL;
+	for (int i = 0; i < argc; ++i) {
+		bool missing = false;
+		if (is_help(argv[i])) {
+			fputs(usage_run, stdout);
+			return EXIT_PASS;
+		} else if (option_value(argc, argv, &i, "--out", &out, &missing)) {
+			if (missing)
+				return usage_error("run", usage_run, "%s needs a file name", "--out");
+		} else if (argv[i][0] == '-' && argv[i][1] != '\0') {
+			return usage_error("run", usage_run, "unknown option '%s'", argv[i]);
+		} else if (file) {
+			return usage_error("run", usage_run, "one scenario file only, got also '%s'", argv[i]);
+		} else {
+			file = argv[i];
+		}
+	}
+	if (!file)
+		return usage_error("run", usage_run, "%s", "missing the scenario FILE");
+	hs_error err;
+	hs_scenario *s = hs_scenario_load(file, &err);
+	if (!s) {
+		fprintf(stderr, "%s\n", err.message);
+		return EXIT_BAD_INPUT;
+	}
+	output o;
+	memset(&o, 0, sizeof o);
+	if (out && !output_open(&o, out)) {
+		fprintf(stderr, "handspring: cannot write %s: %s\n", out, strerror(errno));
+		output_free(&o);
+		hs_scenario_destroy(s);
+		return EXIT_BAD_INPUT;
+	}
+	FILE *outs[1] = {o.file};
+	run_scenario(s, outs, 1);
+	bool written = output_close(&o, true);
+	output_free(&o);
+	if (!written) {
+		fprintf(stderr, "handspring: cannot write %s: %s\n", out, strerror(errno));
+		hs_scenario_destroy(s);
+		return EXIT_BAD_INPUT;
+	}
+	hs_world *world = hs_scenario_world(s);
+	printf("scenario: %s\n", hs_scenario_name(s));
+	printf("  %s\n", hs_scenario_description(s));
+	printf("frames:   %ld (dt %.9g s, %.9g s)\n", hs_world_frame(world), hs_scenario_dt(s),
+	       (double)hs_world_frame(world) * hs_scenario_dt(s));
+	printf("objects:  %d\n", hs_scenario_object_count(s));
+	int failed = hs_scenario_check(s, stdout);
+	int total = hs_scenario_expectation_count(s);
+	printf("expectations: %d/%d passed\n", total - failed, total);
+	printf("final hash: %016" PRIx64 "\n", hs_world_hash(world));
+	if (out)
+		printf("trajectory: %s\n", out);
+	printf("%s\n", failed ? "FAIL" : "PASS");
+	hs_scenario_destroy(s);
+	return failed ? EXIT_FAILED : EXIT_PASS;
+}
+
+static bool parse_dir_option(int argc, char **argv, int *i, const char *name, const char **value, int *status,
+                             const char *command, const char *usage) {
+	bool missing = false;
+	if (!option_value(argc, argv, i, name, value, &missing))
+		return false;
+	if (missing)
+		*status = usage_error(command, usage, "%s needs a folder", name);
+	return true;
+}
+
+static int cmd_list(int argc, char **argv) {
+	const char *dir = "scenarios";
+	for (int i = 0; i < argc; ++i) {
+		int status = -1;
+		if (is_help(argv[i])) {
+			fputs(usage_list, stdout);
+			return EXIT_PASS;
+		}
+		if (parse_dir_option(argc, argv, &i, "--dir", &dir, &status, "list", usage_list)) {
+			if (status >= 0)
+				return status;
+			continue;
+		}
+		return usage_error("list", usage_list, argv[i][0] == '-' ? "unknown option '%s'" : "unexpected argument '%s'",
+		                   argv[i]);
+	}
+	hs_catalog catalog;
+	hs_error err;
+	if (!hs_catalog_load(dir, &catalog, &err)) {
+		fprintf(stderr, "%s\n", err.message);
+		return EXIT_BAD_INPUT;
+	}
+	int width = 4;
+	for (int i = 0; i < catalog.count; ++i)
+		if ((int)strlen(catalog.names[i]) > width)
+			width = (int)strlen(catalog.names[i]);
+	int status = EXIT_PASS;
+	for (int i = 0; i < catalog.count; ++i) {
+		hs_scenario *s = hs_scenario_load(catalog.paths[i], &err);
+		if (!s) {
+			fprintf(stderr, "%s\n", err.message);
+			printf("%-*s  (cannot load: see the error above)\n", width, catalog.names[i]);
+			status = EXIT_BAD_INPUT;
+			continue;
+		}
+		printf("%-*s  %s\n", width, catalog.names[i], hs_scenario_description(s));
+		hs_scenario_destroy(s);
+	}
+	hs_catalog_free(&catalog);
+	return status;
+}
+
+static int cmd_all(int argc, char **argv) {
+	const char *dir = "scenarios", *out_dir = NULL, *golden_dir = NULL;
+	for (int i = 0; i < argc; ++i) {
+		int status = -1;
+		if (is_help(argv[i])) {
+			fputs(usage_all, stdout);
+			return EXIT_PASS;
+		}
+		if (parse_dir_option(argc, argv, &i, "--dir", &dir, &status, "all", usage_all) ||
+		    parse_dir_option(argc, argv, &i, "--out-dir", &out_dir, &status, "all", usage_all) ||
+		    parse_dir_option(argc, argv, &i, "--golden-dir", &golden_dir, &status, "all", usage_all)) {
+			if (status >= 0)
+				return status;
+			continue;
+		}
+		return usage_error("all", usage_all, argv[i][0] == '-' ? "unknown option '%s'" : "unexpected argument '%s'",
+		                   argv[i]);
+	}
+	hs_catalog catalog;
+	hs_error err;
+	if (!hs_catalog_load(dir, &catalog, &err)) {
+		fprintf(stderr, "%s\n", err.message);
+		return EXIT_BAD_INPUT;
+	}
+	if (catalog.count == 0) { // an empty run proves nothing: say so
+		fprintf(stderr, "%s: no scenario files (*.yaml)\n", dir);
+		hs_catalog_free(&catalog);
+		return EXIT_BAD_INPUT;
+	}
+	int width = 8;
+	for (int i = 0; i < catalog.count; ++i)
+		if ((int)strlen(catalog.names[i]) > width)
+			width = (int)strlen(catalog.names[i]);
+	printf("%-*s  %9s  %7s  %11s  %-16s  %s\n", width, "scenario", "frames", "objects", "expect", "final hash", "result");
+	int passed = 0, failed = 0, bad = 0;
+	char *details = NULL; // FAIL lines, printed under the table
+	size_t details_size = 0;
+	FILE *log = open_memstream(&details, &details_size);
+	for (int i = 0; i < catalog.count; ++i) {
+		const char *name = catalog.names[i];
+		hs_scenario *s = hs_scenario_load(catalog.paths[i], &err);
+		if (!s) {
+			fprintf(stderr, "%s\n", err.message);
+			printf("%-*s  %9s  %7s  %11s  %-16s  %s\n", width, name, "-", "-", "-", "-", "BAD INPUT");
+			bad++;
+			continue;
+		}
+		output outs[2];
+		memset(outs, 0, sizeof outs);
+		const char *dirs[2] = {out_dir, golden_dir};
+		bool io_ok = true;
+		for (int k = 0; k < 2 && io_ok; ++k) {
+			if (!dirs[k])
+				continue;
+			char *path = join_csv(dirs[k], name);
+			io_ok = path && output_open(&outs[k], path);
+			if (!io_ok)
+				fprintf(stderr, "handspring: cannot write %s: %s\n", path ? path : name, strerror(errno));
+			else if (k == 1)
+				fprintf(outs[k].file,
+				        "# handspring golden trajectory of scenario %s (%s)\n"
+				        "# regenerate with make golden\n",
+				        name, catalog.paths[i]);
+			free(path);
+		}
+		FILE *files[2] = {outs[0].file, outs[1].file};
+		if (io_ok)
+			run_scenario(s, files, 2);
+		for (int k = 0; k < 2; ++k) {
+			if (!output_close(&outs[k], io_ok) && io_ok) {
+				fprintf(stderr, "handspring: cannot write %s: %s\n", outs[k].path, strerror(errno));
+				io_ok = false;
+			}
+			output_free(&outs[k]);
+		}
+		if (!io_ok) {
+			printf("%-*s  %9s  %7s  %11s  %-16s  %s\n", width, name, "-", "-", "-", "-", "WRITE ERROR");
+			bad++;
+			hs_scenario_destroy(s);
+			continue;
+		}
+		char *report = NULL;
+		size_t report_size = 0;
+		FILE *r = open_memstream(&report, &report_size);
+		int fails = hs_scenario_check(s, r);
+		if (r)
+			fclose(r);
+		int total = hs_scenario_expectation_count(s);
+		char expect[32];
+		snprintf(expect, sizeof expect, "%d/%d", total - fails, total);
+		printf("%-*s  %9ld  %7d  %11s  %016" PRIx64 "  %s\n", width, name, hs_world_frame(hs_scenario_world(s)),
+		       hs_scenario_object_count(s), expect, hs_world_hash(hs_scenario_world(s)), fails ? "FAIL" : "PASS");
+		fflush(stdout);
+		if (fails) {
+			failed++;
+			for (char *line = report; line && *line;) { // keep only the FAIL lines
+				char *end = strchr(line, '\n');
+				size_t n = end ? (size_t)(end - line) : strlen(line);
+				if (log && strncmp(line, "FAIL", 4) == 0)
+					fprintf(log, "%s: %.*s\n", name, (int)n, line);
+				line = end ? end + 1 : line + n;
+			}
+		} else {
+			passed++;
+		}
+		free(report);
+		hs_scenario_destroy(s);
+	}
+	if (log)
+		fclose(log);
+	if (details && details_size > 0)
+		printf("\n%s", details);
+	free(details);
+	printf("\n%d scenarios: %d passed, %d failed", catalog.count, passed, failed);
+	if (bad)
+		printf(", %d bad input", bad);
+	printf("\n");
+	if (golden_dir && bad == 0)
+		printf("goldens written to %s/\n", golden_dir);
+	hs_catalog_free(&catalog);
+	return bad ? EXIT_BAD_INPUT : failed ? EXIT_FAILED : EXIT_PASS;
+}
+
+int main(int argc, char **argv) {
+	if (argc < 2)
+		return usage_error(NULL, usage_main, "%s", "missing a command");
+	const char *command = argv[1];
+	if (is_help(command) || strcmp(command, "help") == 0) {
+		fputs(usage_main, stdout);
+		return EXIT_PASS;
+	}
+	if (strcmp(command, "--version") == 0) {
+		printf("handspring %s\n", HS_VERSION);
+		return EXIT_PASS;
+	}
+	if (strcmp(command, "list") == 0)
+		return cmd_list(argc - 2, argv + 2);
+	if (strcmp(command, "run") == 0)
+		return cmd_run(argc - 2, argv + 2);
+	if (strcmp(command, "all") == 0)
+		return cmd_all(argc - 2, argv + 2);
+	return usage_error(NULL, usage_main, "unknown command '%s'", command);
+}
