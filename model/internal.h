@@ -21,7 +21,14 @@ typedef struct hs_body {
 	uint8_t asleep;   // stable and at rest: skipped until something touches it
 	uint8_t held;     // moved by a hand this frame: free motion does not run
 	double mass;      // kg: density × volume (spring model)
+	hs_vec3 vel;      // m/s: the spring model integrates velocity explicitly
 } hs_body;
+
+// The Responsive Workbench spring model (spring.c, tracker.c): present only in worlds that use it.
+typedef struct hs_spring_system hs_spring_system;
+// One frame of the spring model for every object of the world (replaces the 1999 motion).
+void hs_spring_step(hs_world *world);
+void hs_spring_system_destroy(hs_spring_system *system);
 
 struct hs_world {
 	hs_world_def def;
@@ -36,6 +43,7 @@ struct hs_world {
 	hs_vec2 *scratch_hull;
 	long frame;
 	hs_world_counters counters;
+	hs_spring_system *spring; // NULL unless the world runs the spring model
 };
 
 // hull.c — 2D convex hull of floor contact points (§4.2, Fig. 5)

@@ -74,6 +74,7 @@ static void free_shape_arrays(hs_shape *shape) {
 void hs_world_destroy(hs_world *world) {
 	if (!world)
 		return;
+	hs_spring_system_destroy(world->spring);
 	for (int i = 0; i < world->shape_count; ++i)
 		free_shape_arrays(&world->shapes[i]);
 	free(world->shapes);
@@ -182,6 +183,7 @@ hs_object_id hs_world_add_object(hs_world *world, const hs_object_def *def, hs_s
 	body->spin = w > 0.0 ? hs_quat_from_axis_angle(hs_scale(def->angular_velocity, 1.0 / w), w * dt)
 	                     : hs_quat_identity();
 	body->mass = def->density * world->shapes[body->shape].volume;
+	body->vel = def->velocity;
 	if (hs_motion_pose_vertices(world, body) <= world->def.floor_tolerance) {
 		body->grounded = 1;
 		body->floor_contacts = hs_motion_floor_points(world, body);
@@ -227,6 +229,11 @@ static bool body_is_finite(const hs_body *body) {
 hs_status hs_world_step(hs_world *world) {
 	if (!world)
 		return HS_ERR_INVALID_ARGUMENT;
+	if (world->spring) { // the workbench model replaces the 1999 motion in its worlds
+		hs_spring_step(world);
+		world->frame++;
+		return HS_OK;
+	}
 	for (int i = 0; i < world->object_count; ++i) {
 		hs_body *body = &world->bodies[i];
 		if (body->held)
