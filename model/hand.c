@@ -1,0 +1,479 @@
+// hand.c — the glove-driven virtual hand of the 1999 paper (§3.1, §5.1): sensor mapping,
+// forward kinematics of the 20 check points and 60 check lines, and named postures.
+//
+// Frames. The wrist frame (pose from the tracker) has x toward the fingertips, y toward the
+// thumb of a right hand, z out of the back of the hand (the palm faces −z). The palm frame is
+// the wrist frame turned by wrist pitch (about y) and then yaw (about z); every finger hangs off
+// the palm frame. A left hand is computed as a right hand and mirrored (y → −y) in the wrist
+// frame, before the wrist pose is applied.
+//
+// Every joint rotation is built from a runtime angle (sensor value × 0.5°), and fixed design
+// rotations use exact cosines (rational, half-angle by sqrt, which is correctly rounded), so no
+// sin/cos of a literal is ever folded at compile time with a result that could differ from libm's.
+//
+// Contract notes not written in handspring.h: `def` must be non-NULL and valid (finite, positive
+// lengths and radius) for every function here; a NULL `sensors`, `joints` or output array makes
+// the call return without writing anything (hs_hand_joints_from_sensors then returns zero angles).
+// The functions never allocate.
+#include <assert.h>
+#include <math.h>
+#include <stdbool.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <string.h>
+
+#include "handspring.h"
+
+// rad per sensor unit: 0.5° (paper §5.1)
+#define HS_RAD_PER_UNIT (HS_PI / 360.0)
+// sensor units per rad
+#define HS_UNITS_PER_RAD (360.0 / HS_PI)
+// the wrist sensors read 128 at a straight wrist
+#define HS_WRIST_ZERO 128
+
+// ---------------------------------------------------------------------------------------------
+// Defaults
+
+hs_hand_def hs_default_hand_def(void) {
+	// Typical adult right hand (round numbers within anthropometric ranges for adults): MCP
+	// knuckles at the far edge of the palm, fingers about 2 cm apart, the thumb's CMC joint near
+	// the wrist on the thumb side, below the palm.
+	hs_hand_def d;
+	memset(&d, 0, sizeof d); // padding too: a definition may be hashed or compared bytewise
+	d.left = false;
+	d.finger_radius = 0.008;
+	static const double lengths[5][3] = {
+	    {0.040, 0.032, 0.027}, // thumb: metacarpal, proximal, distal
+	    {0.040, 0.025, 0.020}, // index: proximal, middle, distal phalanx
+	    {0.045, 0.028, 0.021}, // middle
+	    {0.042, 0.027, 0.020}, // ring
+	    {0.033, 0.020, 0.018}, // little
+	};
+	for (int f = 0; f < 5; f++)
+		for (int s = 0; s < 3; s++)
+			d.segment_length[f][s] = lengths[f][s];
+	d.base[0] = hs_v3(0.020, 0.025, -0.015); // thumb CMC
+	d.base[1] = hs_v3(0.095, 0.025, 0.0);    // index MCP
+	d.base[2] = hs_v3(0.095, 0.005, 0.0);    // middle MCP
+	d.base[3] = hs_v3(0.092, -0.013, 0.0);   // ring MCP
+	d.base[4] = hs_v3(0.090, -0.030, 0.0);   // little MCP
+	d.dip_per_pip = 2.0 / 3.0;               // DIP is not sensed (DESIGN.md)
+	return d;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Sensors ↔ angles
+
+hs_hand_joints hs_hand_joints_from_sensors(const hs_hand_def *def, const uint8_t sensors[HS_GLOVE_SENSORS]) {
+	assert(def != NULL);
+	hs_hand_joints j = {0};
+	if (sensors == NULL)
+		return j;
+	const uint8_t *v = sensors;
+	j.thumb_roll = (double)v[HS_SENSOR_THUMB_ROLL] * HS_RAD_PER_UNIT;
+	j.thumb_mcp = (double)v[HS_SENSOR_THUMB_MCP] * HS_RAD_PER_UNIT;
+	j.thumb_ip = (double)v[HS_SENSOR_THUMB_IP] * HS_RAD_PER_UNIT;
+	j.thumb_abduction = (double)v[HS_SENSOR_THUMB_ABDUCTION] * HS_RAD_PER_UNIT;
+	for (int f = 0; f < 4; f++) {
+		j.mcp[f] = (double)v[HS_SENSOR_INDEX_MCP + 2 * f] * HS_RAD_PER_UNIT;
+		j.pip[f] = (double)v[HS_SENSOR_INDEX_PIP + 2 * f] * HS_RAD_PER_UNIT;
+		j.dip[f] = def->dip_per_pip * j.pip[f];
+	}
+	for (int a = 0; a < 3; a++)
+		j.abduction[a] = (double)v[HS_SENSOR_INDEX_MIDDLE_ABDUCTION + a] * HS_RAD_PER_UNIT;
+	j.palm_arch = (double)v[HS_SENSOR_PALM_ARCH] * HS_RAD_PER_UNIT;
+	j.wrist_pitch = ((double)v[HS_SENSOR_WRIST_PITCH] - HS_WRIST_ZERO) * HS_RAD_PER_UNIT;
+	j.wrist_yaw = ((double)v[HS_SENSOR_WRIST_YAW] - HS_WRIST_ZERO) * HS_RAD_PER_UNIT;
+	return j;
+}
+
+// nearest sensor unit of an angle (rad), plus `zero`, clamped to 0..255; NaN reads as `zero`
+static uint8_t sensor_from_angle(double angle, int zero) {
+	if (isnan(angle))
+		return (uint8_t)zero;
+	double u = round(angle * HS_UNITS_PER_RAD) + (double)zero;
+	if (u < 0.0)
+		u = 0.0;
+	if (u > 255.0)
+		u = 255.0;
+	return (uint8_t)u;
+}
+
+void hs_hand_sensors_from_angles(const hs_hand_joints *joints, uint8_t sensors[HS_GLOVE_SENSORS]) {
+	if (joints == NULL || sensors == NULL)
+		return;
+	const hs_hand_joints *j = joints;
+	sensors[HS_SENSOR_THUMB_ROLL] = sensor_from_angle(j->thumb_roll, 0);
+	sensors[HS_SENSOR_THUMB_MCP] = sensor_from_angle(j->thumb_mcp, 0);
+	sensors[HS_SENSOR_THUMB_IP] = sensor_from_angle(j->thumb_ip, 0);
+	sensors[HS_SENSOR_THUMB_ABDUCTION] = sensor_from_angle(j->thumb_abduction, 0);
+	for (int f = 0; f < 4; f++) {
+		sensors[HS_SENSOR_INDEX_MCP + 2 * f] = sensor_from_angle(j->mcp[f], 0);
+		sensors[HS_SENSOR_INDEX_PIP + 2 * f] = sensor_from_angle(j->pip[f], 0);
+	}
+	for (int a = 0; a < 3; a++)
+		sensors[HS_SENSOR_INDEX_MIDDLE_ABDUCTION + a] = sensor_from_angle(j->abduction[a], 0);
+	sensors[HS_SENSOR_PALM_ARCH] = sensor_from_angle(j->palm_arch, 0);
+	sensors[HS_SENSOR_WRIST_PITCH] = sensor_from_angle(j->wrist_pitch, HS_WRIST_ZERO);
+	sensors[HS_SENSOR_WRIST_YAW] = sensor_from_angle(j->wrist_yaw, HS_WRIST_ZERO);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Kinematics
+
+static const hs_vec3 X_AXIS = {1.0, 0.0, 0.0};
+static const hs_vec3 Y_AXIS = {0.0, 1.0, 0.0};
+static const hs_vec3 Z_AXIS = {0.0, 0.0, 1.0};
+
+// A rotation about a coordinate axis given by its exact cosine c and the sign of its sine:
+// q = (cos θ/2, sin θ/2 · axis), with cos θ/2 = √((1 + c)/2), |sin θ/2| = √((1 − c)/2).
+static hs_quat exact_rotation(hs_vec3 axis, double c, double sign) {
+	double w = sqrt(0.5 * (1.0 + c)), s = sign * sqrt(0.5 * (1.0 - c));
+	return hs_q(w, axis.x * s, axis.y * s, axis.z * s);
+}
+
+// A joint rotation by a runtime angle. The volatile round trip keeps the compiler from folding
+// sin/cos of an angle it can see as a constant (e.g. a posture's fixed sensor value) with its own
+// correctly rounded arithmetic, which libm at run time need not match in the last bit.
+static hs_quat joint_rotation(hs_vec3 axis, double angle) {
+	volatile double opaque = angle;
+	return hs_quat_from_axis_angle(axis, opaque);
+}
+
+// Thumb design (not sensed; the paper's Fig. 1 leaves it open). At zero sensors the thumb's
+// metacarpal points along x turned 22.6° toward +y (cos = 12/13) about the palm z, and tilted
+// 16.3° toward the palm (cos = 24/25) about its own y: an open thumb beside the palm. The thumb's
+// own frame has x along the bone and z out of the nail; with roll 0 the nail faces +y of the
+// metacarpal frame, so flexion (about the thumb's local y, like a finger) swings the thumb
+// across the palm toward the fingers; roll turns the nail toward +z, and at roll 90° flexion
+// swings it straight toward the palm side (−z): opposition, pad facing the fingertips.
+// Thumb abduction turns the metacarpal further toward +y, about the palm z.
+#define THUMB_SPLAY_COS (12.0 / 13.0)
+#define THUMB_TILT_COS (24.0 / 25.0)
+
+static hs_quat thumb_splay(void) { return exact_rotation(Z_AXIS, THUMB_SPLAY_COS, 1.0); }
+// tilt toward −z (about +y), then the −90° turn about x that puts the nail (local z) on +y
+static hs_quat thumb_tilt_and_nail(void) {
+	hs_quat tilt = exact_rotation(Y_AXIS, THUMB_TILT_COS, 1.0);
+	hs_quat nail = exact_rotation(X_AXIS, 0.0, -1.0);
+	return hs_quat_mul(tilt, nail);
+}
+
+// The palm arch rolls the ring and little finger bases toward the palm (this fraction of the
+// arch angle), about the line through the middle finger's MCP parallel to the palm's x.
+static const double ARCH_SHARE[4] = {0.0, 0.0, 0.5, 1.0};
+
+// One hand in its palm frame, right-handed: check points and segment orientations.
+typedef struct hand_pose {
+	hs_vec3 points[HS_HAND_POINTS];
+	hs_quat segment[15]; // finger × 3 + segment: x along the bone, z toward the back (nail)
+} hand_pose;
+
+// Points and frames of one chain from its base frame `q` and its three flexions; the first
+// flexion (thumb: none, the metacarpal is rigid in its base frame) is in flex[0].
+static void chain(const hs_hand_def *def, int f, hs_vec3 base, hs_quat q, const double flex[3], hand_pose *out) {
+	hs_vec3 p = base;
+	out->points[f * 4] = p;
+	for (int s = 0; s < 3; s++) {
+		if (flex[s] != 0.0)
+			q = hs_quat_mul(q, joint_rotation(Y_AXIS, flex[s]));
+		out->segment[f * 3 + s] = q;
+		p = hs_add(p, hs_quat_rotate(q, hs_v3(def->segment_length[f][s], 0.0, 0.0)));
+		out->points[f * 4 + s + 1] = p;
+	}
+}
+
+static void thumb_pose(const hs_hand_def *def, const hs_hand_joints *j, hand_pose *out) {
+	hs_quat q = hs_quat_mul(thumb_splay(), joint_rotation(Z_AXIS, j->thumb_abduction));
+	q = hs_quat_mul(q, thumb_tilt_and_nail());
+	q = hs_quat_mul(q, joint_rotation(X_AXIS, j->thumb_roll));
+	const double flex[3] = {0.0, j->thumb_mcp, j->thumb_ip};
+	chain(def, 0, def->base[0], q, flex, out);
+}
+
+static void finger_pose(const hs_hand_def *def, const hs_hand_joints *j, int k, hand_pose *out) {
+	int f = k + 1; // k: 0 index .. 3 little
+	// abduction about the palm z at the MCP: middle fixed, index toward +y, ring and little toward −y
+	double spread = 0.0;
+	if (k == 0)
+		spread = j->abduction[0];
+	else if (k == 2)
+		spread = -j->abduction[1];
+	else if (k == 3)
+		spread = -(j->abduction[1] + j->abduction[2]);
+	hs_quat q = joint_rotation(Z_AXIS, spread);
+	hs_vec3 base = def->base[f];
+	double arch = ARCH_SHARE[k] * j->palm_arch;
+	if (arch != 0.0) {
+		// positive roll about x moves a base on the −y side of the pivot toward −z (the palm)
+		hs_quat roll = joint_rotation(X_AXIS, arch);
+		hs_vec3 pivot = hs_v3(base.x, def->base[2].y, def->base[2].z);
+		base = hs_add(pivot, hs_quat_rotate(roll, hs_sub(base, pivot)));
+		q = hs_quat_mul(roll, q);
+	}
+	const double flex[3] = {j->mcp[k], j->pip[k], j->dip[k]};
+	chain(def, f, base, q, flex, out);
+}
+
+// the whole hand in the wrist frame of a right hand
+static void hand_pose_wrist(const hs_hand_def *def, const hs_hand_joints *j, hand_pose *out) {
+	thumb_pose(def, j, out);
+	for (int k = 0; k < 4; k++)
+		finger_pose(def, j, k, out);
+	if (j->wrist_pitch == 0.0 && j->wrist_yaw == 0.0)
+		return; // palm frame = wrist frame
+	hs_quat palm = hs_quat_mul(joint_rotation(Z_AXIS, j->wrist_yaw),
+	                           joint_rotation(Y_AXIS, j->wrist_pitch));
+	for (int i = 0; i < HS_HAND_POINTS; i++)
+		out->points[i] = hs_quat_rotate(palm, out->points[i]);
+	for (int s = 0; s < 15; s++)
+		out->segment[s] = hs_quat_mul(palm, out->segment[s]);
+}
+
+static hs_vec3 mirror_if(bool left, hs_vec3 v) { return left ? hs_v3(v.x, -v.y, v.z) : v; }
+
+void hs_hand_kinematics(const hs_hand_def *def, hs_vec3 wrist_position, hs_quat wrist_orientation,
+                        const uint8_t sensors[HS_GLOVE_SENSORS], hs_vec3 points[HS_HAND_POINTS],
+                        hs_vec3 lines[HS_HAND_LINES][2]) {
+	assert(def != NULL);
+	if (sensors == NULL)
+		return;
+	hs_hand_joints j = hs_hand_joints_from_sensors(def, sensors);
+	hand_pose pose;
+	hand_pose_wrist(def, &j, &pose);
+	if (points != NULL)
+		for (int i = 0; i < HS_HAND_POINTS; i++)
+			points[i] = hs_add(wrist_position,
+			                   hs_quat_rotate(wrist_orientation, mirror_if(def->left, pose.points[i])));
+	if (lines == NULL)
+		return;
+	// check lines (§3.1): the 4 long edges of a square prism around each segment, edge e offset
+	// from the axis by r along the segment's local +y, −y, +z, −z
+	double r = def->finger_radius;
+	const hs_vec3 offsets[4] = {{0.0, r, 0.0}, {0.0, -r, 0.0}, {0.0, 0.0, r}, {0.0, 0.0, -r}};
+	for (int s = 0; s < 15; s++) {
+		int f = s / 3, k = s % 3;
+		hs_vec3 a = pose.points[f * 4 + k], b = pose.points[f * 4 + k + 1];
+		for (int e = 0; e < 4; e++) {
+			hs_vec3 off = hs_quat_rotate(pose.segment[s], offsets[e]);
+			hs_vec3 ends[2] = {hs_add(a, off), hs_add(b, off)};
+			for (int t = 0; t < 2; t++)
+				lines[s * 4 + e][t] = hs_add(wrist_position,
+				                             hs_quat_rotate(wrist_orientation, mirror_if(def->left, ends[t])));
+		}
+	}
+}
+
+// ---------------------------------------------------------------------------------------------
+// Postures
+
+// sensor value a × full, rounded to the nearest unit (a in 0..1)
+static uint8_t scaled(double a, int full) { return (uint8_t)round(a * (double)full); }
+
+// Full fist (sensor units): fingers MCP 90°, PIP 100° (DIP follows); the thumb folded across
+// the middle phalanges of the index and middle fingers (roll 10°, MCP 40°, IP 60°).
+#define FIST_MCP 180
+#define FIST_PIP 200
+#define FIST_THUMB_ROLL 20
+#define FIST_THUMB_MCP 80
+#define FIST_THUMB_IP 120
+// Pinch: the index finger at MCP 50°, PIP 60°; the thumb is solved to meet its tip.
+#define PINCH_INDEX_MCP 100
+#define PINCH_INDEX_PIP 120
+// Grasp: index and middle curl along a fixed schedule in the width w (sensor units at knots,
+// linear between): MCP 30°, PIP 80° at 1 cm; PIP 51° at 5 cm; MCP 40°, PIP 25° at 12 cm. Up to
+// 5 cm the fingertips hook down behind the object's far face; wider, the fingers keep enough
+// curl that the object's top may rise ~1.5 cm above the fingertips without touching a finger.
+#define GRASP_MIN 0.01
+#define GRASP_MAX 0.12
+typedef struct grasp_knot {
+	double width; // m
+	int mcp, pip; // sensor units
+} grasp_knot;
+static const grasp_knot GRASP_KNOTS[3] = {{GRASP_MIN, 60, 160}, {0.05, 60, 102}, {GRASP_MAX, 80, 50}};
+// largest miss of a solved thumb tip, relative to the metacarpal length
+#define REACH_TOLERANCE 0.05
+
+static void set_open(uint8_t s[HS_GLOVE_SENSORS]) {
+	for (int i = 0; i < HS_GLOVE_SENSORS; i++)
+		s[i] = 0;
+	s[HS_SENSOR_WRIST_PITCH] = HS_WRIST_ZERO;
+	s[HS_SENSOR_WRIST_YAW] = HS_WRIST_ZERO;
+}
+
+static bool def_is_valid(const hs_hand_def *def) {
+	if (!(isfinite(def->finger_radius) && def->finger_radius > 0.0) || !isfinite(def->dip_per_pip))
+		return false;
+	for (int f = 0; f < 5; f++) {
+		if (!hs_vec3_is_finite(def->base[f]))
+			return false;
+		for (int s = 0; s < 3; s++)
+			if (!(isfinite(def->segment_length[f][s]) && def->segment_length[f][s] > 0.0))
+				return false;
+	}
+	return true;
+}
+
+static hs_vec3 right_hand_point(const hs_hand_def *def, const uint8_t s[HS_GLOVE_SENSORS], int i) {
+	hs_hand_joints j = hs_hand_joints_from_sensors(def, s);
+	hand_pose pose;
+	hand_pose_wrist(def, &j, &pose);
+	return pose.points[i];
+}
+
+static hs_vec3 thumb_tip(const hs_hand_def *def, const uint8_t s[HS_GLOVE_SENSORS]) {
+	hs_hand_joints j = hs_hand_joints_from_sensors(def, s);
+	hand_pose pose;
+	thumb_pose(def, &j, &pose);
+	return pose.points[3];
+}
+
+// Places the thumb tip at `target` (right hand, palm frame = wrist frame, abduction as set in s):
+// closed-form inverse kinematics for roll, MCP and IP, rounded to sensor units, then the best of
+// the neighbouring unit combinations (roll, MCP, IP ± 1, abduction + 0..1), compared in a fixed
+// order with a strict '<' so the result is deterministic. False when the target is out of reach.
+static bool thumb_reach(const hs_hand_def *def, hs_vec3 target, uint8_t s[HS_GLOVE_SENSORS]) {
+	hs_hand_joints j = hs_hand_joints_from_sensors(def, s);
+	// metacarpal frame before roll: splay, abduction, tilt; its x along the bone
+	hs_quat m = hs_quat_mul(hs_quat_mul(thumb_splay(), joint_rotation(Z_AXIS, j.thumb_abduction)),
+	                        exact_rotation(Y_AXIS, THUMB_TILT_COS, 1.0));
+	hs_vec3 d = hs_quat_inv_rotate(m, hs_sub(target, def->base[0]));
+	// In the metacarpal frame the nail after roll φ points along (0, cos φ, sin φ), the pad the
+	// other way, and flexion keeps the proximal and distal bones in the plane of x and the pad:
+	// tip = (L0 + a, −b cos φ, −b sin φ), (a, b) the planar two-bone reach.
+	double l0 = def->segment_length[0][0], l1 = def->segment_length[0][1], l2 = def->segment_length[0][2];
+	double a = d.x - l0, b = sqrt(d.y * d.y + d.z * d.z);
+	double roll = atan2(-d.z, -d.y);
+	double c = (a * a + b * b - l1 * l1 - l2 * l2) / (2.0 * l1 * l2);
+	if (!(c >= -1.0 && c <= 1.0))
+		return false;
+	double ip = acos(c);
+	double mcp = atan2(b, a) - atan2(l2 * sin(ip), l1 + l2 * cos(ip));
+	hs_hand_joints want = j;
+	want.thumb_roll = roll;
+	want.thumb_mcp = mcp;
+	want.thumb_ip = ip;
+	uint8_t guess[HS_GLOVE_SENSORS];
+	hs_hand_sensors_from_angles(&want, guess);
+	const int keys[3] = {HS_SENSOR_THUMB_ROLL, HS_SENSOR_THUMB_MCP, HS_SENSOR_THUMB_IP};
+	uint8_t trial[HS_GLOVE_SENSORS], best[HS_GLOVE_SENSORS];
+	for (int i = 0; i < HS_GLOVE_SENSORS; i++)
+		trial[i] = best[i] = s[i];
+	double best_err = INFINITY;
+	for (int ab = 0; ab <= 1; ab++) {
+		int abd = (int)s[HS_SENSOR_THUMB_ABDUCTION] + ab;
+		if (abd > 255)
+			continue;
+		for (int n = 0; n < 27; n++) {
+			int step[3] = {n % 3 - 1, (n / 3) % 3 - 1, n / 9 - 1};
+			bool inside = true;
+			for (int k = 0; k < 3; k++) {
+				int v = (int)guess[keys[k]] + step[k];
+				if (v < 0 || v > 255)
+					inside = false;
+				else
+					trial[keys[k]] = (uint8_t)v;
+			}
+			if (!inside)
+				continue;
+			trial[HS_SENSOR_THUMB_ABDUCTION] = (uint8_t)abd;
+			double err = hs_distance(thumb_tip(def, trial), target);
+			if (err < best_err) {
+				best_err = err;
+				for (int i = 0; i < HS_GLOVE_SENSORS; i++)
+					best[i] = trial[i];
+			}
+		}
+	}
+	// out of the glove's range (an angle clamped to 0..127.5°): the tip misses by far more than
+	// the few tenths of a millimetre one sensor unit moves it
+	if (!(best_err <= REACH_TOLERANCE * l0))
+		return false;
+	for (int i = 0; i < HS_GLOVE_SENSORS; i++)
+		s[i] = best[i];
+	return true;
+}
+
+// Grasp of a w-wide object from above (palm down): index and middle fingertips on the far (+x)
+// face, the thumb tip on the near (−x) face, each tip r/2 inside its face, so the thumb tip sits
+// at the fingertip mean − (w − r) x̂. The fingers follow the closure schedule above (a smaller
+// object, a tighter curl); the thumb is then solved to the target computed from the fingers'
+// rounded sensor values, so the grip axis is +x to within one sensor unit of the thumb.
+// Ring and little fingers are folded as in a full fist, away from a small object.
+static hs_status grasp(const hs_hand_def *def, double w, uint8_t s[HS_GLOVE_SENSORS]) {
+	set_open(s);
+	int k = w <= GRASP_KNOTS[1].width ? 0 : 1;
+	const grasp_knot *a = &GRASP_KNOTS[k], *b = &GRASP_KNOTS[k + 1];
+	double t = (w - a->width) / (b->width - a->width);
+	uint8_t mcp = (uint8_t)round((double)a->mcp + t * (double)(b->mcp - a->mcp));
+	uint8_t pip = (uint8_t)round((double)a->pip + t * (double)(b->pip - a->pip));
+	s[HS_SENSOR_INDEX_MCP] = s[HS_SENSOR_MIDDLE_MCP] = mcp;
+	s[HS_SENSOR_INDEX_PIP] = s[HS_SENSOR_MIDDLE_PIP] = pip;
+	s[HS_SENSOR_RING_MCP] = s[HS_SENSOR_LITTLE_MCP] = FIST_MCP;
+	s[HS_SENSOR_RING_PIP] = s[HS_SENSOR_LITTLE_PIP] = FIST_PIP;
+	hs_vec3 tips = hs_scale(hs_add(right_hand_point(def, s, 7), right_hand_point(def, s, 11)), 0.5);
+	hs_vec3 target = hs_sub(tips, hs_v3(w - def->finger_radius, 0.0, 0.0));
+	return thumb_reach(def, target, s) ? HS_OK : HS_ERR_INVALID_ARGUMENT;
+}
+
+static hs_status pinch(const hs_hand_def *def, double amount, uint8_t s[HS_GLOVE_SENSORS]) {
+	uint8_t full[HS_GLOVE_SENSORS];
+	set_open(full);
+	full[HS_SENSOR_INDEX_MCP] = PINCH_INDEX_MCP;
+	full[HS_SENSOR_INDEX_PIP] = PINCH_INDEX_PIP;
+	if (!thumb_reach(def, right_hand_point(def, full, 7), full))
+		return HS_ERR_INVALID_ARGUMENT;
+	set_open(s);
+	for (int i = 0; i < HS_SENSOR_WRIST_PITCH; i++)
+		s[i] = scaled(amount, full[i]);
+	return HS_OK;
+}
+
+hs_status hs_hand_posture(const hs_hand_def *def, hs_posture posture, double amount,
+                          uint8_t sensors[HS_GLOVE_SENSORS]) {
+	if (def == NULL || sensors == NULL || !def_is_valid(def))
+		return HS_ERR_INVALID_ARGUMENT;
+	switch (posture) {
+	case HS_POSTURE_OPEN: // amount is not used
+		set_open(sensors);
+		return HS_OK;
+	case HS_POSTURE_FIST:
+	case HS_POSTURE_POINT:
+		if (!(amount >= 0.0 && amount <= 1.0))
+			return HS_ERR_INVALID_ARGUMENT;
+		set_open(sensors);
+		for (int k = posture == HS_POSTURE_POINT ? 1 : 0; k < 4; k++) {
+			sensors[HS_SENSOR_INDEX_MCP + 2 * k] = scaled(amount, FIST_MCP);
+			sensors[HS_SENSOR_INDEX_PIP + 2 * k] = scaled(amount, FIST_PIP);
+		}
+		sensors[HS_SENSOR_THUMB_ROLL] = scaled(amount, FIST_THUMB_ROLL);
+		sensors[HS_SENSOR_THUMB_MCP] = scaled(amount, FIST_THUMB_MCP);
+		sensors[HS_SENSOR_THUMB_IP] = scaled(amount, FIST_THUMB_IP);
+		return HS_OK;
+	case HS_POSTURE_PINCH:
+		if (!(amount >= 0.0 && amount <= 1.0))
+			return HS_ERR_INVALID_ARGUMENT;
+		return pinch(def, amount, sensors);
+	case HS_POSTURE_GRASP:
+		if (!(amount >= GRASP_MIN && amount <= GRASP_MAX))
+			return HS_ERR_INVALID_ARGUMENT;
+		return grasp(def, amount, sensors);
+	}
+	return HS_ERR_INVALID_ARGUMENT;
+}
+
+void hs_hand_grip(const hs_hand_def *def, const uint8_t sensors[HS_GLOVE_SENSORS], hs_vec3 *center,
+                  hs_vec3 *axis) {
+	assert(def != NULL);
+	if (sensors == NULL)
+		return;
+	hs_vec3 p[HS_HAND_POINTS];
+	hs_hand_kinematics(def, hs_v3(0.0, 0.0, 0.0), hs_quat_identity(), sensors, p, NULL);
+	hs_vec3 thumb = p[3], fingers = hs_scale(hs_add(p[7], p[11]), 0.5);
+	hs_vec3 d = hs_sub(fingers, thumb);
+	double len = hs_length(d);
+	if (center != NULL)
+		*center = hs_scale(hs_add(thumb, fingers), 0.5);
+	if (axis != NULL) // the tips coincide: +x of the wrist frame
+		*axis = len > 0.0 ? hs_scale(d, 1.0 / len) : hs_v3(1.0, 0.0, 0.0);
+}

@@ -1,0 +1,688 @@
+// test_hand.c — the glove hand (1999 paper §3.1, §5.1): sensor mapping, forward kinematics of the
+// check points and check lines, and the named postures (grasp solved to a given width).
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+
+#include <cmocka.h>
+
+#include "test_util.h"
+
+#define DEG (HS_PI / 180.0)
+#define EPS 1e-12
+
+static void open_sensors(uint8_t s[HS_GLOVE_SENSORS]) {
+	for (int i = 0; i < HS_GLOVE_SENSORS; i++)
+		s[i] = 0;
+	s[HS_SENSOR_WRIST_PITCH] = 128;
+	s[HS_SENSOR_WRIST_YAW] = 128;
+}
+
+// check points of a hand with its wrist at the origin, unrotated (the wrist frame)
+static void points_of(const hs_hand_def *def, const uint8_t s[HS_GLOVE_SENSORS], hs_vec3 p[HS_HAND_POINTS]) {
+	hs_hand_kinematics(def, hs_v3(0, 0, 0), hs_quat_identity(), s, p, NULL);
+}
+
+static hs_vec3 finger_mean(const hs_vec3 p[HS_HAND_POINTS]) { return hs_scale(hs_add(p[7], p[11]), 0.5); }
+
+// sensor values that exercise every joint at once
+static void busy_sensors(uint8_t s[HS_GLOVE_SENSORS]) {
+	static const uint8_t v[HS_GLOVE_SENSORS] = {37, 51, 64, 23, 91, 47, 120, 33, 150, 71, 170, 99, 19, 27, 13, 41, 151, 109};
+	for (int i = 0; i < HS_GLOVE_SENSORS; i++)
+		s[i] = v[i];
+}
+
+// ---------------------------------------------------------------------------------------------
+// Sensors ↔ angles
+
+static void test_sensor_mapping(void **state) {
+	(void)state;
+	hs_hand_def def = hs_default_hand_def();
+	uint8_t s[HS_GLOVE_SENSORS];
+	open_sensors(s);
+	hs_hand_joints j = hs_hand_joints_from_sensors(&def, s);
+	assert_true(j.thumb_roll == 0.0 && j.thumb_mcp == 0.0 && j.mcp[3] == 0.0 && j.palm_arch == 0.0);
+	assert_true(j.wrist_pitch == 0.0 && j.wrist_yaw == 0.0); // 128 is a straight wrist
+
+	for (int i = 0; i < HS_GLOVE_SENSORS; i++)
+		s[i] = 1;
+	j = hs_hand_joints_from_sensors(&def, s);
+	const double unit = 0.5 * DEG;
+	assert_near(j.thumb_roll, unit, EPS);
+	assert_near(j.thumb_mcp, unit, EPS);
+	assert_near(j.thumb_ip, unit, EPS);
+	assert_near(j.thumb_abduction, unit, EPS);
+	for (int f = 0; f < 4; f++) {
+		assert_near(j.mcp[f], unit, EPS);
+		assert_near(j.pip[f], unit, EPS);
+	}
+	for (int a = 0; a < 3; a++)
+		assert_near(j.abduction[a], unit, EPS);
+	assert_near(j.palm_arch, unit, EPS);
+	assert_near(j.wrist_pitch, -127.0 * unit, EPS);
+	assert_near(j.wrist_yaw, -127.0 * unit, EPS);
+
+	for (int i = 0; i < HS_GLOVE_SENSORS; i++)
+		s[i] = 255;
+	j = hs_hand_joints_from_sensors(&def, s);
+	assert_near(j.thumb_roll, 127.5 * DEG, EPS);
+	assert_near(j.pip[2], 127.5 * DEG, EPS);
+	assert_near(j.wrist_pitch, 63.5 * DEG, EPS);
+	assert_near(j.wrist_yaw, 63.5 * DEG, EPS);
+
+	// each channel lands in its own field
+	s[HS_SENSOR_RING_PIP] = 10;
+	s[HS_SENSOR_MIDDLE_RING_ABDUCTION] = 20;
+	s[HS_SENSOR_WRIST_YAW] = 0;
+	j = hs_hand_joints_from_sensors(&def, s);
+	assert_near(j.pip[2], 5.0 * DEG, EPS);
+	assert_near(j.pip[1], 127.5 * DEG, EPS);
+	assert_near(j.abduction[1], 10.0 * DEG, EPS);
+	assert_near(j.wrist_yaw, -64.0 * DEG, EPS);
+
+	// no sensors: zero angles
+	j = hs_hand_joints_from_sensors(&def, NULL);
+	assert_true(j.thumb_roll == 0.0 && j.pip[0] == 0.0 && j.wrist_yaw == 0.0);
+}
+
+static void test_round_trip(void **state) {
+	(void)state;
+	hs_hand_def def = hs_default_hand_def();
+	for (int v = 0; v < 256; v++) {
+		uint8_t s[HS_GLOVE_SENSORS], back[HS_GLOVE_SENSORS];
+		for (int i = 0; i < HS_GLOVE_SENSORS; i++)
+			s[i] = (uint8_t)((v + 17 * i) % 256); // every value on every channel
+		hs_hand_joints j = hs_hand_joints_from_sensors(&def, s);
+		hs_hand_sensors_from_angles(&j, back);
+		assert_memory_equal(s, back, HS_GLOVE_SENSORS);
+	}
+	// rounding to the nearest unit and clamping to 0..255
+	hs_hand_joints j = {0};
+	j.thumb_roll = 0.26 * DEG;   // 0.52 unit → 1
+	j.thumb_mcp = 0.24 * DEG;    // 0.48 unit → 0
+	j.thumb_ip = 200.0 * DEG;    // → 255
+	j.mcp[0] = -5.0 * DEG;       // → 0
+	j.pip[3] = NAN;              // → 0
+	j.wrist_pitch = -100.0 * DEG; // → 0
+	j.wrist_yaw = NAN;           // → 128 (straight)
+	uint8_t s[HS_GLOVE_SENSORS];
+	hs_hand_sensors_from_angles(&j, s);
+	assert_int_equal(s[HS_SENSOR_THUMB_ROLL], 1);
+	assert_int_equal(s[HS_SENSOR_THUMB_MCP], 0);
+	assert_int_equal(s[HS_SENSOR_THUMB_IP], 255);
+	assert_int_equal(s[HS_SENSOR_INDEX_MCP], 0);
+	assert_int_equal(s[HS_SENSOR_LITTLE_PIP], 0);
+	assert_int_equal(s[HS_SENSOR_WRIST_PITCH], 0);
+	assert_int_equal(s[HS_SENSOR_WRIST_YAW], 128);
+	j.wrist_pitch = 10.0 * DEG;
+	j.wrist_yaw = 90.0 * DEG;
+	hs_hand_sensors_from_angles(&j, s);
+	assert_int_equal(s[HS_SENSOR_WRIST_PITCH], 148);
+	assert_int_equal(s[HS_SENSOR_WRIST_YAW], 255);
+	// NULL in, nothing written
+	s[0] = 77;
+	hs_hand_sensors_from_angles(NULL, s);
+	assert_int_equal(s[0], 77);
+}
+
+static void test_dip_coupling(void **state) {
+	(void)state;
+	hs_hand_def def = hs_default_hand_def();
+	assert_near(def.dip_per_pip, 2.0 / 3.0, 1e-15);
+	uint8_t s[HS_GLOVE_SENSORS];
+	open_sensors(s);
+	s[HS_SENSOR_INDEX_PIP] = 90;  // 45°
+	s[HS_SENSOR_LITTLE_PIP] = 180; // 90°
+	hs_hand_joints j = hs_hand_joints_from_sensors(&def, s);
+	assert_near(j.dip[0], 30.0 * DEG, EPS);
+	assert_near(j.dip[3], 60.0 * DEG, EPS);
+	assert_near(j.dip[1], 0.0, EPS);
+	// the distal bone turns by PIP + DIP: index PIP 45° → distal at 75° below +x
+	hs_vec3 p[HS_HAND_POINTS];
+	points_of(&def, s, p);
+	hs_vec3 distal = hs_sub(p[7], p[6]);
+	double l = def.segment_length[1][2];
+	assert_vec3_near(distal, hs_v3(l * cos(75.0 * DEG), 0, -l * sin(75.0 * DEG)), EPS);
+	def.dip_per_pip = 0.5;
+	j = hs_hand_joints_from_sensors(&def, s);
+	assert_near(j.dip[0], 22.5 * DEG, EPS);
+	points_of(&def, s, p);
+	distal = hs_sub(p[7], p[6]);
+	assert_vec3_near(distal, hs_v3(l * cos(67.5 * DEG), 0, -l * sin(67.5 * DEG)), EPS);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Kinematics
+
+static void test_default_dimensions(void **state) {
+	(void)state;
+	hs_hand_def def = hs_default_hand_def();
+	assert_false(def.left);
+	assert_near(def.finger_radius, 0.008, 1e-15);
+	assert_near(def.segment_length[1][0] + def.segment_length[1][1] + def.segment_length[1][2], 0.085, 1e-15);
+	for (int f = 1; f < 5; f++) {
+		assert_true(def.base[f].x >= 0.09 && def.base[f].x <= 0.095); // MCPs at the palm's far edge
+		assert_near(def.base[f].z, 0.0, 0.0);
+		if (f > 1) // fingers spaced ~2 cm, index on the thumb side
+			assert_true(def.base[f - 1].y - def.base[f].y > 2.0 * def.finger_radius);
+	}
+	assert_true(def.base[0].x < 0.05 && def.base[0].y > 0.0 && def.base[0].z < 0.0); // thumb CMC
+}
+
+static void test_open_hand(void **state) {
+	(void)state;
+	hs_hand_def def = hs_default_hand_def();
+	uint8_t s[HS_GLOVE_SENSORS];
+	assert_int_equal(hs_hand_posture(&def, HS_POSTURE_OPEN, 0.0, s), HS_OK);
+	uint8_t open[HS_GLOVE_SENSORS];
+	open_sensors(open);
+	assert_memory_equal(s, open, HS_GLOVE_SENSORS);
+	hs_vec3 p[HS_HAND_POINTS];
+	points_of(&def, s, p);
+	for (int f = 1; f < 5; f++) {
+		double along = 0.0;
+		for (int k = 0; k < 4; k++) {
+			assert_vec3_near(p[f * 4 + k], hs_add(def.base[f], hs_v3(along, 0, 0)), EPS);
+			assert_true(p[f * 4 + k].z == 0.0); // a flat hand: every finger point in the palm plane
+			if (k < 3)
+				along += def.segment_length[f][k];
+		}
+	}
+	double index_length = def.segment_length[1][0] + def.segment_length[1][1] + def.segment_length[1][2];
+	assert_vec3_near(p[7], hs_add(def.base[1], hs_v3(index_length, 0, 0)), EPS);
+	// the wrist pose moves the hand rigidly
+	hs_vec3 at = hs_v3(0.3, -0.2, 0.5);
+	hs_vec3 q[HS_HAND_POINTS];
+	hs_hand_kinematics(&def, at, hs_quat_identity(), s, q, NULL);
+	for (int i = 0; i < HS_HAND_POINTS; i++)
+		assert_vec3_near(q[i], hs_add(at, p[i]), EPS);
+}
+
+static void test_index_mcp_90(void **state) {
+	(void)state;
+	hs_hand_def def = hs_default_hand_def();
+	uint8_t s[HS_GLOVE_SENSORS];
+	open_sensors(s);
+	s[HS_SENSOR_INDEX_MCP] = 180; // 90°: flexion curls toward −z, the palm side
+	hs_vec3 p[HS_HAND_POINTS];
+	points_of(&def, s, p);
+	const double *l = def.segment_length[1];
+	hs_vec3 mcp = def.base[1];
+	assert_vec3_near(p[4], mcp, EPS);
+	assert_vec3_near(p[5], hs_add(mcp, hs_v3(0, 0, -l[0])), EPS);
+	assert_vec3_near(p[6], hs_add(mcp, hs_v3(0, 0, -l[0] - l[1])), EPS);
+	assert_vec3_near(p[7], hs_add(mcp, hs_v3(0, 0, -l[0] - l[1] - l[2])), EPS);
+	// the other fingers stay flat
+	assert_vec3_near(p[11], hs_add(def.base[2], hs_v3(0.094, 0, 0)), EPS);
+}
+
+static void test_abduction_and_arch(void **state) {
+	(void)state;
+	hs_hand_def def = hs_default_hand_def();
+	uint8_t s[HS_GLOVE_SENSORS];
+	open_sensors(s);
+	s[HS_SENSOR_INDEX_MIDDLE_ABDUCTION] = 40; // 20°: index toward +y
+	s[HS_SENSOR_MIDDLE_RING_ABDUCTION] = 20;  // 10°: ring toward −y
+	s[HS_SENSOR_RING_LITTLE_ABDUCTION] = 30;  // little by 10° + 15°
+	hs_vec3 p[HS_HAND_POINTS];
+	points_of(&def, s, p);
+	double li = def.segment_length[1][0] + def.segment_length[1][1] + def.segment_length[1][2];
+	double lr = def.segment_length[3][0] + def.segment_length[3][1] + def.segment_length[3][2];
+	double ll = def.segment_length[4][0] + def.segment_length[4][1] + def.segment_length[4][2];
+	assert_vec3_near(p[7], hs_add(def.base[1], hs_v3(li * cos(20 * DEG), li * sin(20 * DEG), 0)), EPS);
+	assert_vec3_near(p[11], hs_add(def.base[2], hs_v3(0.094, 0, 0)), EPS); // middle fixed
+	assert_vec3_near(p[15], hs_add(def.base[3], hs_v3(lr * cos(10 * DEG), -lr * sin(10 * DEG), 0)), EPS);
+	assert_vec3_near(p[19], hs_add(def.base[4], hs_v3(ll * cos(25 * DEG), -ll * sin(25 * DEG), 0)), EPS);
+
+	// palm arch 60°: ring base rolled 30°, little 60° toward the palm about the middle MCP's line
+	open_sensors(s);
+	s[HS_SENSOR_PALM_ARCH] = 120;
+	s[HS_SENSOR_LITTLE_MCP] = 180;
+	points_of(&def, s, p);
+	hs_vec3 pivot = def.base[2];
+	double dr = def.base[3].y - pivot.y, dl = def.base[4].y - pivot.y; // both negative
+	assert_vec3_near(p[12], hs_v3(def.base[3].x, pivot.y + dr * cos(30 * DEG), dr * sin(30 * DEG)), EPS);
+	hs_vec3 little = hs_v3(def.base[4].x, pivot.y + dl * cos(60 * DEG), dl * sin(60 * DEG));
+	assert_vec3_near(p[16], little, EPS);
+	assert_true(p[16].z < -0.02); // toward the palm side
+	// the little finger now flexes toward the middle of the palm: −z turned toward +y by 60°
+	double l0 = def.segment_length[4][0];
+	assert_vec3_near(p[17], hs_add(little, hs_v3(0, l0 * sin(60 * DEG), -l0 * cos(60 * DEG))), EPS);
+	assert_vec3_near(p[4], def.base[1], EPS); // index and middle untouched
+	assert_vec3_near(p[8], def.base[2], EPS);
+}
+
+static void test_wrist_rotations(void **state) {
+	(void)state;
+	hs_hand_def def = hs_default_hand_def();
+	uint8_t s[HS_GLOVE_SENSORS];
+	busy_sensors(s);
+	s[HS_SENSOR_WRIST_PITCH] = 128;
+	s[HS_SENSOR_WRIST_YAW] = 128;
+	hs_vec3 p[HS_HAND_POINTS], q[HS_HAND_POINTS];
+	hs_vec3 lp[HS_HAND_LINES][2], lq[HS_HAND_LINES][2];
+	hs_hand_kinematics(&def, hs_v3(0, 0, 0), hs_quat_identity(), s, p, lp);
+
+	// wrist pose turned 90° about z: (x, y, z) → (−y, x, z) about the wrist point
+	hs_vec3 at = hs_v3(1.0, 2.0, 0.5);
+	hs_hand_kinematics(&def, at, hs_quat_from_rpy(0, 0, 90 * DEG), s, q, lq);
+	for (int i = 0; i < HS_HAND_POINTS; i++)
+		assert_vec3_near(q[i], hs_add(at, hs_v3(-p[i].y, p[i].x, p[i].z)), EPS);
+	for (int i = 0; i < HS_HAND_LINES; i++)
+		for (int t = 0; t < 2; t++)
+			assert_vec3_near(lq[i][t], hs_add(at, hs_v3(-lp[i][t].y, lp[i][t].x, lp[i][t].z)), EPS);
+
+	// wrist yaw sensor +45° (the palm turns about the wrist frame's z)
+	s[HS_SENSOR_WRIST_YAW] = 128 + 90;
+	points_of(&def, s, q);
+	double c = cos(45 * DEG), sn = sin(45 * DEG);
+	for (int i = 0; i < HS_HAND_POINTS; i++)
+		assert_vec3_near(q[i], hs_v3(c * p[i].x - sn * p[i].y, sn * p[i].x + c * p[i].y, p[i].z), EPS);
+
+	// wrist pitch sensor +30° (about y: x toward −z, the palm side)
+	s[HS_SENSOR_WRIST_YAW] = 128;
+	s[HS_SENSOR_WRIST_PITCH] = 128 + 60;
+	points_of(&def, s, q);
+	c = cos(30 * DEG);
+	sn = sin(30 * DEG);
+	for (int i = 0; i < HS_HAND_POINTS; i++)
+		assert_vec3_near(q[i], hs_v3(c * p[i].x + sn * p[i].z, p[i].y, -sn * p[i].x + c * p[i].z), EPS);
+	assert_true(q[11].z < -0.05);
+}
+
+static void test_left_hand_mirrors(void **state) {
+	(void)state;
+	hs_hand_def right = hs_default_hand_def(), left = right;
+	left.left = true;
+	uint8_t s[HS_GLOVE_SENSORS];
+	busy_sensors(s);
+	hs_vec3 pr[HS_HAND_POINTS], pl[HS_HAND_POINTS];
+	hs_vec3 lr[HS_HAND_LINES][2], ll[HS_HAND_LINES][2];
+	hs_hand_kinematics(&right, hs_v3(0, 0, 0), hs_quat_identity(), s, pr, lr);
+	hs_hand_kinematics(&left, hs_v3(0, 0, 0), hs_quat_identity(), s, pl, ll);
+	for (int i = 0; i < HS_HAND_POINTS; i++)
+		assert_vec3_near(pl[i], hs_v3(pr[i].x, -pr[i].y, pr[i].z), 0.0);
+	for (int i = 0; i < HS_HAND_LINES; i++)
+		for (int t = 0; t < 2; t++)
+			assert_vec3_near(ll[i][t], hs_v3(lr[i][t].x, -lr[i][t].y, lr[i][t].z), 0.0);
+	assert_true(pl[0].y < 0.0); // the left thumb is on −y of its wrist frame
+	// mirrored in the wrist frame, then posed: a turned left hand is its turned mirror image
+	hs_quat rot = hs_quat_from_rpy(0.3, -0.7, 1.1);
+	hs_vec3 at = hs_v3(0.1, 0.2, 0.3), q[HS_HAND_POINTS];
+	hs_hand_kinematics(&left, at, rot, s, q, NULL);
+	for (int i = 0; i < HS_HAND_POINTS; i++)
+		assert_vec3_near(q[i], hs_add(at, hs_quat_rotate(rot, pl[i])), EPS);
+}
+
+// every check line is a long edge of its segment's prism: parallel to the axis, r from it
+static void check_lines_geometry(const hs_hand_def *def, hs_vec3 at, hs_quat rot, const uint8_t s[HS_GLOVE_SENSORS]) {
+	hs_vec3 p[HS_HAND_POINTS], l[HS_HAND_LINES][2];
+	hs_hand_kinematics(def, at, rot, s, p, l);
+	double r = def->finger_radius;
+	for (int seg = 0; seg < 15; seg++) {
+		int f = seg / 3, k = seg % 3;
+		hs_vec3 a = p[f * 4 + k], b = p[f * 4 + k + 1];
+		hs_vec3 axis = hs_sub(b, a);
+		assert_near(hs_length(axis), def->segment_length[f][k], EPS);
+		hs_vec3 off[4];
+		for (int e = 0; e < 4; e++) {
+			const hs_vec3 *line = l[seg * 4 + e];
+			off[e] = hs_sub(line[0], a);
+			assert_vec3_near(hs_sub(line[1], b), off[e], EPS); // parallel, same offset at both ends
+			assert_near(hs_length(off[e]), r, EPS);             // exactly r from the axis
+			assert_near(hs_dot(off[e], axis), 0.0, EPS);        // perpendicular offset
+		}
+		// a square prism: ±y and ±z of the segment
+		assert_vec3_near(off[1], hs_neg(off[0]), EPS);
+		assert_vec3_near(off[3], hs_neg(off[2]), EPS);
+		assert_near(hs_dot(off[0], off[2]), 0.0, EPS);
+	}
+}
+
+static void test_check_lines(void **state) {
+	(void)state;
+	hs_hand_def def = hs_default_hand_def();
+	uint8_t s[HS_GLOVE_SENSORS];
+	busy_sensors(s);
+	check_lines_geometry(&def, hs_v3(0, 0, 0), hs_quat_identity(), s);
+	check_lines_geometry(&def, hs_v3(-0.4, 0.25, 1.2), hs_quat_from_rpy(0.4, 0.9, -2.0), s);
+	def.left = true;
+	def.finger_radius = 0.011;
+	check_lines_geometry(&def, hs_v3(0.1, 0, 0.3), hs_quat_from_rpy(-1.0, 0.2, 0.5), s);
+	def = hs_default_hand_def();
+	assert_int_equal(hs_hand_posture(&def, HS_POSTURE_GRASP, 0.05, s), HS_OK);
+	check_lines_geometry(&def, hs_v3(0, 0, 0.2), hs_quat_from_rpy(0, 0, 0.3), s);
+	// open hand, index finger: lines at y ± r and z ± r along the finger
+	open_sensors(s);
+	hs_vec3 l[HS_HAND_LINES][2];
+	hs_hand_kinematics(&def, hs_v3(0, 0, 0), hs_quat_identity(), s, NULL, l);
+	double r = def.finger_radius;
+	const hs_vec3 offs[4] = {{0, r, 0}, {0, -r, 0}, {0, 0, r}, {0, 0, -r}};
+	for (int e = 0; e < 4; e++) {
+		assert_vec3_near(l[(1 * 3 + 0) * 4 + e][0], hs_add(def.base[1], offs[e]), EPS);
+		assert_vec3_near(l[(1 * 3 + 2) * 4 + e][1], hs_add(def.base[1], hs_add(hs_v3(0.085, 0, 0), offs[e])), EPS);
+	}
+}
+
+static void test_thumb_opposition(void **state) {
+	(void)state;
+	hs_hand_def def = hs_default_hand_def();
+	uint8_t s[HS_GLOVE_SENSORS];
+	hs_vec3 p[HS_HAND_POINTS];
+	double l1 = def.segment_length[0][1];
+	// roll 0: MCP flexion swings the thumb across the palm (toward −y, the fingers), in the
+	// plane of the palm-side tilted metacarpal
+	open_sensors(s);
+	points_of(&def, s, p);
+	hs_vec3 meta = hs_normalize(hs_sub(p[1], p[0]));
+	assert_true(meta.x > 0.8 && meta.y > 0.0 && meta.z < 0.0);
+	s[HS_SENSOR_THUMB_MCP] = 180;
+	points_of(&def, s, p);
+	hs_vec3 prox = hs_sub(p[2], p[1]);
+	assert_near(hs_dot(prox, meta), 0.0, EPS);
+	assert_true(prox.y < -0.9 * l1);
+	assert_near(prox.z, 0.0, 1e-3 * l1);
+	// roll 90°: the same flexion swings it toward the palm side (−z): opposition
+	s[HS_SENSOR_THUMB_ROLL] = 180;
+	points_of(&def, s, p);
+	prox = hs_sub(p[2], p[1]);
+	assert_near(hs_dot(prox, meta), 0.0, EPS);
+	assert_true(prox.z < -0.9 * l1);
+	assert_near(prox.y, 0.0, 0.3 * l1);
+	// thumb abduction turns the metacarpal about the palm z toward +y
+	open_sensors(s);
+	s[HS_SENSOR_THUMB_ABDUCTION] = 60; // 30°
+	points_of(&def, s, p);
+	hs_vec3 turned = hs_normalize(hs_sub(p[1], p[0]));
+	assert_near(turned.z, meta.z, EPS);
+	assert_near(atan2(turned.y, turned.x) - atan2(meta.y, meta.x), 30 * DEG, 1e-9);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Postures
+
+// does the segment a–b meet the axis-aligned box |x − c| ≤ h (slab clipping)?
+static bool segment_meets_box(hs_vec3 a, hs_vec3 b, hs_vec3 c, double h) {
+	double lo = 0.0, hi = 1.0;
+	double pa[3] = {a.x - c.x, a.y - c.y, a.z - c.z}, d[3] = {b.x - a.x, b.y - a.y, b.z - a.z};
+	for (int k = 0; k < 3; k++) {
+		if (d[k] == 0.0) {
+			if (fabs(pa[k]) > h)
+				return false;
+			continue;
+		}
+		double t0 = (-h - pa[k]) / d[k], t1 = (h - pa[k]) / d[k];
+		if (t0 > t1) {
+			double t = t0;
+			t0 = t1;
+			t1 = t;
+		}
+		lo = t0 > lo ? t0 : lo;
+		hi = t1 < hi ? t1 : hi;
+		if (lo > hi)
+			return false;
+	}
+	return true;
+}
+
+static bool inside_box(hs_vec3 p, hs_vec3 c, double h) {
+	return fabs(p.x - c.x) < h && fabs(p.y - c.y) < h && fabs(p.z - c.z) < h;
+}
+
+static void test_grasp_width(void **state) {
+	(void)state;
+	hs_hand_def def = hs_default_hand_def();
+	double r = def.finger_radius;
+	// one sensor unit (0.5°) moves the thumb tip by 0.3–0.6 mm (its reach from the CMC); rounding
+	// the solved angles alone misses by up to ~0.35 mm, the best neighbouring units by < 0.2 mm
+	const double resolution = 0.2e-3;
+	for (int k = 0; k <= 220; k++) {
+		double w = k == 220 ? 0.12 : 0.01 + 0.0005 * k;
+		uint8_t s[HS_GLOVE_SENSORS];
+		assert_int_equal(hs_hand_posture(&def, HS_POSTURE_GRASP, w, s), HS_OK);
+		assert_int_equal(s[HS_SENSOR_WRIST_PITCH], 128);
+		assert_int_equal(s[HS_SENSOR_WRIST_YAW], 128);
+		hs_vec3 p[HS_HAND_POINTS];
+		points_of(&def, s, p);
+		hs_vec3 thumb = p[3], fingers = finger_mean(p);
+		hs_vec3 d = hs_sub(fingers, thumb);
+		assert_near(hs_length(d), w - r, resolution);
+		assert_true(d.x / hs_length(d) >= cos(10 * DEG)); // the grip axis is the wrist's +x
+		assert_true(thumb.z < 0.0 && fingers.z < 0.0); // both below the palm
+		// ring and little folded: their MCPs flexed at least 80°
+		assert_true(s[HS_SENSOR_RING_MCP] >= 160 && s[HS_SENSOR_LITTLE_MCP] >= 160);
+		// the grip of the posture is the same thumb → fingers axis
+		hs_vec3 center, axis;
+		hs_hand_grip(&def, s, &center, &axis);
+		assert_vec3_near(center, hs_scale(hs_add(thumb, fingers), 0.5), EPS);
+		assert_vec3_near(axis, hs_scale(d, 1.0 / hs_length(d)), EPS);
+	}
+}
+
+static void test_grasp_reported_widths(void **state) {
+	(void)state;
+	hs_hand_def def = hs_default_hand_def();
+	const double widths[3] = {0.03, 0.05, 0.08};
+	for (int k = 0; k < 3; k++) {
+		double w = widths[k];
+		uint8_t s[HS_GLOVE_SENSORS];
+		assert_int_equal(hs_hand_posture(&def, HS_POSTURE_GRASP, w, s), HS_OK);
+		hs_vec3 center, axis;
+		hs_hand_grip(&def, s, &center, &axis);
+		hs_vec3 p[HS_HAND_POINTS];
+		points_of(&def, s, p);
+		double gap = hs_distance(finger_mean(p), p[3]);
+		print_message("grasp w = %.3f m: thumb-finger %.6f m (error %+.3f mm), axis %.2f deg from +x, "
+		              "centre (%.4f, %.4f, %.4f)\n",
+		              w, gap, 1e3 * (gap - (w - def.finger_radius)), acos(axis.x) / DEG, center.x, center.y,
+		              center.z);
+		assert_near(gap, w - def.finger_radius, 0.2e-3);
+		assert_true(acos(axis.x) < 10 * DEG);
+		assert_true(center.z < 0.0);
+	}
+}
+
+// Only the three tips are inside a w-cube held in the grasp, faces along the wrist axes: for a
+// small cube centred at the grip, for a wide one whose top is 1 cm above the fingertips (wider
+// objects are held near their top: the curled fingers leave no room for a centred one).
+static void check_object_clear(double w, double top_above_tips) {
+	hs_hand_def def = hs_default_hand_def();
+	double h = 0.5 * w;
+	uint8_t s[HS_GLOVE_SENSORS];
+	assert_int_equal(hs_hand_posture(&def, HS_POSTURE_GRASP, w, s), HS_OK);
+	hs_vec3 p[HS_HAND_POINTS], l[HS_HAND_LINES][2], c, axis;
+	hs_hand_kinematics(&def, hs_v3(0, 0, 0), hs_quat_identity(), s, p, l);
+	hs_hand_grip(&def, s, &c, &axis);
+	if (top_above_tips > 0.0)
+		c.z += top_above_tips - h;
+	for (int i = 0; i < HS_HAND_POINTS; i++) {
+		bool tip = i == 3 || i == 7 || i == 11;
+		if (inside_box(p[i], c, h) != tip)
+			fail_msg("w = %.3f: check point %d %s the object", w, i, tip ? "outside" : "inside");
+	}
+	// tips just inside opposite x faces
+	assert_near(p[3].x, c.x - h + 0.5 * def.finger_radius, 0.2e-3);
+	assert_near(finger_mean(p).x, c.x + h - 0.5 * def.finger_radius, 0.2e-3);
+	if (w <= 0.04) // ring and little lines clear of a small object
+		for (int j = 3 * 3 * 4; j < HS_HAND_LINES; j++)
+			assert_false(segment_meets_box(l[j][0], l[j][1], c, h));
+}
+
+static void test_grasp_object_clear(void **state) {
+	(void)state;
+	check_object_clear(0.03, 0.0);
+	check_object_clear(0.04, 0.0);
+	check_object_clear(0.05, 0.0);
+	for (int k = 0; k <= 8; k++)
+		check_object_clear(0.08 + 0.005 * k, 0.01);
+}
+
+static void test_grasp_left_hand(void **state) {
+	(void)state;
+	hs_hand_def right = hs_default_hand_def(), left = right;
+	left.left = true;
+	uint8_t sr[HS_GLOVE_SENSORS], sl[HS_GLOVE_SENSORS];
+	assert_int_equal(hs_hand_posture(&right, HS_POSTURE_GRASP, 0.05, sr), HS_OK);
+	assert_int_equal(hs_hand_posture(&left, HS_POSTURE_GRASP, 0.05, sl), HS_OK);
+	assert_memory_equal(sr, sl, HS_GLOVE_SENSORS); // same glove reading, mirrored hand
+	hs_vec3 cr, ar, cl, al;
+	hs_hand_grip(&right, sr, &cr, &ar);
+	hs_hand_grip(&left, sl, &cl, &al);
+	assert_vec3_near(cl, hs_v3(cr.x, -cr.y, cr.z), 0.0);
+	assert_vec3_near(al, hs_v3(ar.x, -ar.y, ar.z), 0.0);
+}
+
+static void test_fist_and_point(void **state) {
+	(void)state;
+	hs_hand_def def = hs_default_hand_def();
+	uint8_t s[HS_GLOVE_SENSORS], open[HS_GLOVE_SENSORS];
+	open_sensors(open);
+	assert_int_equal(hs_hand_posture(&def, HS_POSTURE_FIST, 0.0, s), HS_OK);
+	assert_memory_equal(s, open, HS_GLOVE_SENSORS);
+	assert_int_equal(hs_hand_posture(&def, HS_POSTURE_FIST, 1.0, s), HS_OK);
+	for (int k = 0; k < 4; k++) {
+		assert_int_equal(s[HS_SENSOR_INDEX_MCP + 2 * k], 180); // 90°
+		assert_int_equal(s[HS_SENSOR_INDEX_PIP + 2 * k], 200); // 100°
+	}
+	assert_int_equal(s[HS_SENSOR_WRIST_PITCH], 128);
+	// the thumb folds across the fingers: roll 10°, MCP 40°, IP 60°
+	assert_int_equal(s[HS_SENSOR_THUMB_ROLL], 20);
+	assert_int_equal(s[HS_SENSOR_THUMB_MCP], 80);
+	assert_int_equal(s[HS_SENSOR_THUMB_IP], 120);
+	assert_int_equal(s[HS_SENSOR_THUMB_ABDUCTION], 0);
+	hs_vec3 p[HS_HAND_POINTS];
+	points_of(&def, s, p);
+	assert_true(p[3].y < def.base[1].y && p[3].z < 0.0);
+	for (int f = 1; f < 5; f++) { // every fingertip folded back under the palm
+		assert_true(p[f * 4 + 3].x < def.base[f].x - 0.015);
+		assert_true(p[f * 4 + 3].z < -0.005);
+	}
+	uint8_t half[HS_GLOVE_SENSORS];
+	assert_int_equal(hs_hand_posture(&def, HS_POSTURE_FIST, 0.5, half), HS_OK);
+	assert_int_equal(half[HS_SENSOR_RING_MCP], 90);
+	assert_int_equal(half[HS_SENSOR_RING_PIP], 100);
+	assert_int_equal(half[HS_SENSOR_THUMB_MCP], s[HS_SENSOR_THUMB_MCP] / 2);
+
+	assert_int_equal(hs_hand_posture(&def, HS_POSTURE_POINT, 1.0, s), HS_OK);
+	assert_int_equal(s[HS_SENSOR_INDEX_MCP], 0);
+	assert_int_equal(s[HS_SENSOR_INDEX_PIP], 0);
+	for (int k = 1; k < 4; k++)
+		assert_int_equal(s[HS_SENSOR_INDEX_MCP + 2 * k], 180);
+	assert_true(s[HS_SENSOR_THUMB_MCP] > 0);
+	points_of(&def, s, p);
+	assert_vec3_near(p[7], hs_add(def.base[1], hs_v3(0.085, 0, 0)), EPS); // index straight
+	assert_true(p[11].x < def.base[2].x);
+}
+
+static void test_pinch(void **state) {
+	(void)state;
+	hs_hand_def def = hs_default_hand_def();
+	double last = INFINITY;
+	for (int k = 0; k <= 10; k++) {
+		uint8_t s[HS_GLOVE_SENSORS];
+		assert_int_equal(hs_hand_posture(&def, HS_POSTURE_PINCH, 0.1 * k, s), HS_OK);
+		hs_vec3 p[HS_HAND_POINTS];
+		points_of(&def, s, p);
+		double gap = hs_distance(p[3], p[7]);
+		assert_true(gap < last); // the thumb tip closes on the index tip
+		last = gap;
+		if (k == 0) {
+			uint8_t open[HS_GLOVE_SENSORS];
+			open_sensors(open);
+			assert_memory_equal(s, open, HS_GLOVE_SENSORS);
+		}
+	}
+	assert_true(last < 0.3e-3); // the tips meet at amount 1, to the sensor resolution
+}
+
+static void test_invalid_arguments(void **state) {
+	(void)state;
+	hs_hand_def def = hs_default_hand_def();
+	uint8_t s[HS_GLOVE_SENSORS];
+	const double bad_widths[] = {0.0099, 0.1201, -0.05, 0.0, NAN, INFINITY};
+	for (size_t i = 0; i < sizeof bad_widths / sizeof bad_widths[0]; i++)
+		assert_int_equal(hs_hand_posture(&def, HS_POSTURE_GRASP, bad_widths[i], s), HS_ERR_INVALID_ARGUMENT);
+	assert_int_equal(hs_hand_posture(&def, HS_POSTURE_GRASP, 0.01, s), HS_OK);
+	assert_int_equal(hs_hand_posture(&def, HS_POSTURE_GRASP, 0.12, s), HS_OK);
+	const double bad_amounts[] = {-0.01, 1.01, NAN, -INFINITY};
+	const hs_posture ranged[] = {HS_POSTURE_FIST, HS_POSTURE_PINCH, HS_POSTURE_POINT};
+	for (size_t p = 0; p < 3; p++)
+		for (size_t i = 0; i < sizeof bad_amounts / sizeof bad_amounts[0]; i++)
+			assert_int_equal(hs_hand_posture(&def, ranged[p], bad_amounts[i], s), HS_ERR_INVALID_ARGUMENT);
+	assert_int_equal(hs_hand_posture(NULL, HS_POSTURE_OPEN, 0.0, s), HS_ERR_INVALID_ARGUMENT);
+	assert_int_equal(hs_hand_posture(&def, HS_POSTURE_OPEN, 0.0, NULL), HS_ERR_INVALID_ARGUMENT);
+	assert_int_equal(hs_hand_posture(&def, (hs_posture)99, 0.5, s), HS_ERR_INVALID_ARGUMENT);
+	hs_hand_def broken = def;
+	broken.finger_radius = 0.0;
+	assert_int_equal(hs_hand_posture(&broken, HS_POSTURE_OPEN, 0.0, s), HS_ERR_INVALID_ARGUMENT);
+	broken = def;
+	broken.segment_length[2][1] = NAN;
+	assert_int_equal(hs_hand_posture(&broken, HS_POSTURE_FIST, 0.5, s), HS_ERR_INVALID_ARGUMENT);
+	broken = def;
+	broken.base[0].z = INFINITY;
+	assert_int_equal(hs_hand_posture(&broken, HS_POSTURE_GRASP, 0.05, s), HS_ERR_INVALID_ARGUMENT);
+	// a thumb too short to reach across: the grasp cannot be formed
+	broken = def;
+	for (int k = 0; k < 3; k++)
+		broken.segment_length[0][k] = 0.005;
+	assert_int_equal(hs_hand_posture(&broken, HS_POSTURE_GRASP, 0.05, s), HS_ERR_INVALID_ARGUMENT);
+	assert_int_equal(hs_hand_posture(&broken, HS_POSTURE_PINCH, 1.0, s), HS_ERR_INVALID_ARGUMENT);
+	// a thumb hung below the fingertips would have to roll backward, outside the glove's range
+	broken = def;
+	broken.base[0].z = -0.09;
+	assert_int_equal(hs_hand_posture(&broken, HS_POSTURE_GRASP, 0.05, s), HS_ERR_INVALID_ARGUMENT);
+	assert_int_equal(hs_hand_posture(&broken, HS_POSTURE_PINCH, 1.0, s), HS_ERR_INVALID_ARGUMENT);
+}
+
+static void test_null_sensors_write_nothing(void **state) {
+	(void)state;
+	hs_hand_def def = hs_default_hand_def();
+	hs_vec3 p[HS_HAND_POINTS], l[HS_HAND_LINES][2];
+	for (int i = 0; i < HS_HAND_POINTS; i++)
+		p[i] = hs_v3(7, 7, 7);
+	for (int i = 0; i < HS_HAND_LINES; i++)
+		l[i][0] = l[i][1] = hs_v3(7, 7, 7);
+	hs_hand_kinematics(&def, hs_v3(0, 0, 0), hs_quat_identity(), NULL, p, l);
+	for (int i = 0; i < HS_HAND_POINTS; i++)
+		assert_vec3_near(p[i], hs_v3(7, 7, 7), 0.0);
+	for (int i = 0; i < HS_HAND_LINES; i++)
+		assert_vec3_near(l[i][1], hs_v3(7, 7, 7), 0.0);
+	hs_vec3 c = hs_v3(7, 7, 7), a = hs_v3(7, 7, 7);
+	hs_hand_grip(&def, NULL, &c, &a);
+	assert_vec3_near(c, hs_v3(7, 7, 7), 0.0);
+	assert_vec3_near(a, hs_v3(7, 7, 7), 0.0);
+	// outputs may be left out one at a time
+	uint8_t s[HS_GLOVE_SENSORS];
+	busy_sensors(s);
+	hs_hand_kinematics(&def, hs_v3(0, 0, 0), hs_quat_identity(), s, NULL, l);
+	hs_hand_kinematics(&def, hs_v3(0, 0, 0), hs_quat_identity(), s, p, NULL);
+	assert_vec3_near(hs_sub(l[0][0], p[0]), hs_neg(hs_sub(l[1][0], p[0])), EPS);
+	hs_hand_grip(&def, s, NULL, &a);
+	assert_near(hs_length(a), 1.0, EPS);
+}
+
+int main(void) {
+	const struct CMUnitTest tests[] = {
+	    cmocka_unit_test(test_sensor_mapping),
+	    cmocka_unit_test(test_round_trip),
+	    cmocka_unit_test(test_dip_coupling),
+	    cmocka_unit_test(test_default_dimensions),
+	    cmocka_unit_test(test_open_hand),
+	    cmocka_unit_test(test_index_mcp_90),
+	    cmocka_unit_test(test_abduction_and_arch),
+	    cmocka_unit_test(test_wrist_rotations),
+	    cmocka_unit_test(test_left_hand_mirrors),
+	    cmocka_unit_test(test_check_lines),
+	    cmocka_unit_test(test_thumb_opposition),
+	    cmocka_unit_test(test_grasp_width),
+	    cmocka_unit_test(test_grasp_reported_widths),
+	    cmocka_unit_test(test_grasp_object_clear),
+	    cmocka_unit_test(test_grasp_left_hand),
+	    cmocka_unit_test(test_fist_and_point),
+	    cmocka_unit_test(test_pinch),
+	    cmocka_unit_test(test_invalid_arguments),
+	    cmocka_unit_test(test_null_sensors_write_nothing),
+	};
+	return cmocka_run_group_tests_name("hand", tests, NULL, NULL);
+}
