@@ -148,6 +148,7 @@ typedef struct hs_world_def {
 	double floor_tolerance;     ///< m: vertices this close to z = 0 are floor contacts (default 1e-6)
 	int max_objects;            ///< capacity, allocated at creation (default 64)
 	int max_shapes;             ///< capacity, allocated at creation (default 16)
+	int max_hands;              ///< capacity, allocated at creation (default 2)
 	hs_stacking stacking;       ///< default HS_STACKING_PAPER
 	double grasp_threshold_deg; ///< deg: two contact normals this far apart make a grasp (default 90)
 	bool skip_work;             ///< bounding-volume rejection and sleeping on (default true); off only to measure what they save
@@ -219,8 +220,115 @@ typedef struct hs_world_counters {
 	long sleeping_skips;  ///< object-frames skipped because the object was asleep
 	long floor_checks;    ///< object-frames whose vertices were tested against the floor
 	long numeric_faults;  ///< non-finite values caught (the object is frozen, never propagated)
+	long hand_tests;      ///< object-frames tested against a hand after the bounding-volume check
+	long dropped_contacts;///< contacts beyond the world's capacity (never expected; counted, not lost silently)
 } hs_world_counters;
 hs_world_counters hs_world_get_counters(const hs_world *world);
+
+// ---------------------------------------------------------------------------------------------
+// Hands (1999 paper §3, §5.1): wrist pose from the tracker plus 18 glove sensors.
+
+#define HS_GLOVE_SENSORS 18 ///< 8 bit each, 0.5 deg per unit
+#define HS_HAND_POINTS 20   ///< check points: 4 per finger
+#define HS_HAND_LINES 60    ///< check lines: 4 long edges of each of the 15 finger segments
+
+/// Glove sensor layout (DESIGN.md). Flexion, abduction, roll and arch: angle = v × 0.5 deg.
+/// Wrist pitch and yaw are signed: angle = (v − 128) × 0.5 deg.
+enum hs_glove_sensor {
+	HS_SENSOR_THUMB_ROLL = 0,
+	HS_SENSOR_THUMB_MCP,
+	HS_SENSOR_THUMB_IP,
+	HS_SENSOR_THUMB_ABDUCTION,
+	HS_SENSOR_INDEX_MCP,
+	HS_SENSOR_INDEX_PIP,
+	HS_SENSOR_MIDDLE_MCP,
+	HS_SENSOR_MIDDLE_PIP,
+	HS_SENSOR_RING_MCP,
+	HS_SENSOR_RING_PIP,
+	HS_SENSOR_LITTLE_MCP,
+	HS_SENSOR_LITTLE_PIP,
+	HS_SENSOR_INDEX_MIDDLE_ABDUCTION,
+	HS_SENSOR_MIDDLE_RING_ABDUCTION,
+	HS_SENSOR_RING_LITTLE_ABDUCTION,
+	HS_SENSOR_PALM_ARCH,
+	HS_SENSOR_WRIST_PITCH,
+	HS_SENSOR_WRIST_YAW,
+};
+
+/// Fingers 0 thumb, 1 index, 2 middle, 3 ring, 4 little. Check point i = finger × 4 + joint with
+/// joint 0 MCP (thumb: CMC), 1 PIP (thumb: MCP), 2 DIP (thumb: IP), 3 tip. Check line
+/// j = (finger × 3 + segment) × 4 + edge, segment s joining check points s and s + 1.
+typedef struct hs_hand_def {
+	bool left;                   ///< mirror image of the right hand (thumb on −y of the wrist frame)
+	double finger_radius;        ///< m: check lines lie this far from the finger axis
+	double segment_length[5][3]; ///< m: per finger, its three segments from the base outward
+	hs_vec3 base[5];             ///< m: MCP (thumb: CMC) in the wrist frame of a right hand
+	double dip_per_pip;          ///< DIP = dip_per_pip × PIP (not sensed; default 2/3)
+} hs_hand_def;
+
+/// Adult defaults. Wrist frame: x toward the fingertips, y toward the thumb (right hand),
+/// z out of the back of the hand (the palm faces −z).
+hs_hand_def hs_default_hand_def(void);
+
+/// Joint angles in radians.
+typedef struct hs_hand_joints {
+	double thumb_roll, thumb_mcp, thumb_ip, thumb_abduction;
+	double mcp[4], pip[4], dip[4]; ///< index, middle, ring, little
+	double abduction[3];           ///< index–middle, middle–ring, ring–little
+	double palm_arch, wrist_pitch, wrist_yaw;
+} hs_hand_joints;
+
+hs_hand_joints hs_hand_joints_from_sensors(const hs_hand_def *def, const uint8_t sensors[HS_GLOVE_SENSORS]);
+/// Angles (rad) → sensor values, rounded to the nearest unit and clamped to 0..255.
+void hs_hand_sensors_from_angles(const hs_hand_joints *joints, uint8_t sensors[HS_GLOVE_SENSORS]);
+
+/// Forward kinematics: the 20 check points and the 60 check lines (two endpoints each), world frame.
+void hs_hand_kinematics(const hs_hand_def *def, hs_vec3 wrist_position, hs_quat wrist_orientation,
+                        const uint8_t sensors[HS_GLOVE_SENSORS], hs_vec3 points[HS_HAND_POINTS],
+                        hs_vec3 lines[HS_HAND_LINES][2]);
+
+typedef enum hs_posture {
+	HS_POSTURE_OPEN,  ///< flat hand
+	HS_POSTURE_FIST,  ///< amount 0..1 from open to a full fist
+	HS_POSTURE_PINCH, ///< amount 0..1: thumb tip toward index tip
+	HS_POSTURE_POINT, ///< amount 0..1: all but the index finger curled
+	HS_POSTURE_GRASP, ///< amount = width (m) of the object held between thumb and fingertips
+} hs_posture;
+
+/// Sensor values of a named posture. HS_ERR_INVALID_ARGUMENT for an amount out of range.
+hs_status hs_hand_posture(const hs_hand_def *def, hs_posture posture, double amount,
+                          uint8_t sensors[HS_GLOVE_SENSORS]);
+
+/// The grip of a posture in the wrist frame: the midpoint between the thumb tip and the mean of
+/// the index and middle fingertips, and the unit axis from the thumb tip toward them.
+void hs_hand_grip(const hs_hand_def *def, const uint8_t sensors[HS_GLOVE_SENSORS], hs_vec3 *center,
+                  hs_vec3 *axis);
+
+typedef struct hs_hand_id {
+	uint32_t index1; ///< index + 1; 0 is the null handle
+} hs_hand_id;
+
+/// Adds a hand to the world (open, at the origin, touching nothing until it is set).
+hs_hand_id hs_world_add_hand(hs_world *world, const hs_hand_def *def, hs_status *status);
+/// Sets a hand's wrist pose and glove sensors for the next step.
+hs_status hs_world_set_hand(hs_world *world, hs_hand_id hand, hs_vec3 wrist_position,
+                            hs_quat wrist_orientation, const uint8_t sensors[HS_GLOVE_SENSORS]);
+/// The hand's check points after the last step.
+hs_status hs_world_hand_points(const hs_world *world, hs_hand_id hand, hs_vec3 points[HS_HAND_POINTS]);
+
+/// One contact between a finger part and an object, found in the last step.
+typedef struct hs_contact {
+	hs_object_id object;
+	hs_hand_id hand;
+	int part;       ///< check point index (face contact) or check line index (edge contact)
+	bool edge;      ///< true: check line against an edge (B); false: check point in a face (A)
+	int feature;    ///< the face or edge index of the object's shape
+	hs_vec3 point;  ///< m: the contact point C on the object's surface
+	hs_vec3 normal; ///< face normal, or the edge's pseudo-normal (from G to the edge), world frame
+} hs_contact;
+
+/// Copies up to `max` contacts of the last step into `out`; returns how many there were.
+int hs_world_contacts(const hs_world *world, hs_contact *out, int max);
 
 // ---------------------------------------------------------------------------------------------
 // Scenarios: a YAML file that builds a world, drives it and states what must happen.
@@ -287,5 +395,162 @@ void hs_trajectory_write_frame(FILE *out, hs_scenario *scenario);
 /// "LABEL: frame F, object O, field X: golden G, now N (difference D)".
 bool hs_trajectory_compare(FILE *golden, FILE *actual, double tolerance, const char *label, char *why,
                            size_t why_size);
+
+// ---------------------------------------------------------------------------------------------
+// Spring model (Responsive Workbench): a tracked stylus moves objects through a critically damped
+// spring (Koutek & Post, §4). A world runs it once hs_world_enable_springs has been called; from
+// then on hs_world_step advances every object by this model instead of the 1999 free motion.
+//
+// Per frame: hs_world_set_stylus gives the stylus pose and button at the END of the coming frame
+// (the stylus moves linearly from its previous pose during the frame), then hs_world_step. Button
+// edges take effect at the end of the frame: a press attaches the spring (direct pick, catch, or
+// the 'I want this one' candidate), a release drops (hand at rest) or throws (hand moving).
+// Objects keep their orientation (no torque, §4.2); spheres collide as exact spheres, every other
+// shape as its world-axis bounding box. In spring worlds hs_object_state.contact is
+// HS_CONTACT_GRASP for the object on the spring, HS_CONTACT_NONE otherwise, and `resting` means
+// lying still on the floor.
+
+/// How the per-frame spring-damper equation is integrated.
+typedef enum hs_integrator {
+	HS_INTEGRATOR_EXACT = 0,             ///< closed-form critically damped solution: exact for any dt (default)
+	HS_INTEGRATOR_IMPLICIT_EULER,        ///< backward Euler: unconditionally stable, first order
+	HS_INTEGRATOR_SEMI_IMPLICIT_EULER,   ///< symplectic Euler: benchmark only, unstable for large ω dt
+	HS_INTEGRATOR_RK4,                   ///< classic Runge–Kutta: benchmark only, unstable for ω dt ≳ 2.8
+} hs_integrator;
+
+/// Optional walls: vertical planes bounding the table top to [x_min, x_max] × [y_min, y_max] (m).
+typedef struct hs_spring_walls {
+	bool enabled; ///< default false
+	double x_min, x_max, y_min, y_max;
+} hs_spring_walls;
+
+typedef struct hs_spring_def {
+	hs_integrator integrator;  ///< default HS_INTEGRATOR_EXACT
+	double friction_static;    ///< μ: no sliding while the horizontal force ≤ μ N (default 0.5)
+	double friction_sliding;   ///< μ while sliding, ≤ friction_static (default 0.5: the paper's constant μ)
+	double restitution;        ///< e in [0, 1] for object–object collisions (default 1: elastic)
+	hs_spring_walls walls;     ///< default disabled
+	/// Rest length x0(m) = rest_length_ref · (m / rest_mass_ref)^rest_exponent, clamped to
+	/// [rest_length_min, rest_length_max] (m). Defaults 0.10 m at 1 kg, exponent 1/3, [0.01, 1.0] m:
+	/// x0 grows like the size of an object of fixed density (1 g → 1 cm, 1000 kg → 1 m).
+	double rest_length_ref;
+	double rest_mass_ref;      ///< kg (default 1)
+	double rest_exponent;      ///< default 1/3
+	double rest_length_min, rest_length_max;
+	double tracker_rate;       ///< Hz: tracker samples per second (default 50, §5.1)
+	int tracker_window;        ///< samples in the velocity fit, 3..HS_TRACKER_CAPACITY (default 9)
+	double rest_speed;         ///< m/s: a moving hand comes to rest below this speed (default 0.10)
+	double motion_speed;       ///< m/s: a resting hand starts moving above this speed (default 0.20)
+	double catch_radius;       ///< m: a press this close to a flying object's surface catches it (default 0.05)
+	double grab_range;         ///< m: a press attaches the candidate only this close to its surface (default 0.5)
+	double select_range;       ///< m: length of the selection ray (default 2.0)
+	bool noise;                ///< seeded tracker noise on (default false)
+	unsigned long noise_seed;  ///< seed of the gsl_rng_mt19937 generator (default 1)
+	double noise_position;     ///< m RMS per axis (default 0.762e-3: the Fastrak's 0.03 inch)
+	double noise_orientation;  ///< rad RMS per axis (default 0.15°)
+} hs_spring_def;
+
+hs_spring_def hs_default_spring_def(void);
+
+/// Switches a world to the spring model and allocates everything it needs (for up to the world's
+/// max_objects). Calling it again replaces the model and resets stylus, spring and tracker.
+hs_status hs_world_enable_springs(hs_world *world, const hs_spring_def *def);
+/// True when the world runs the spring model.
+bool hs_world_springs_enabled(const hs_world *world);
+
+/// The stylus pose (m, unit quaternion) and button at the end of the next frame.
+hs_status hs_world_set_stylus(hs_world *world, hs_vec3 position, hs_quat orientation, bool button);
+
+/// Attaches the spring to an object now, whatever the button (scripts and tests); a later button
+/// release detaches it as usual.
+hs_status hs_world_spring_attach(hs_world *world, hs_object_id id);
+/// Detaches the spring now as a drop: the object keeps its own velocity.
+hs_status hs_world_spring_detach(hs_world *world);
+
+/// How the spring got its object.
+typedef enum hs_attach_kind {
+	HS_ATTACH_NONE = 0,
+	HS_ATTACH_PICK,   ///< the stylus was inside the object (direct picking)
+	HS_ATTACH_CATCH,  ///< the object was flying, within catch_radius of the stylus or around it
+	HS_ATTACH_SELECT, ///< the 'I want this one' candidate, within grab_range
+	HS_ATTACH_API,    ///< hs_world_spring_attach
+} hs_attach_kind;
+
+/// The stylus and the spring after the last step.
+typedef struct hs_spring_state {
+	hs_object_id attached;      ///< the object on the spring (null handle when none)
+	hs_attach_kind attach_kind;
+	hs_object_id candidate;     ///< the selection candidate ('I want this one', §3), null when none
+	hs_vec3 stylus;             ///< m
+	hs_quat stylus_orientation;
+	bool button;
+	hs_vec3 stylus_velocity;    ///< m/s over the last frame
+	double length;              ///< m: |G − stylus| (0 when nothing is attached)
+	double extension;           ///< m: length − x0, negative when compressed (0 when nothing is attached)
+	hs_vec3 force;              ///< N: spring + damper force on the attached object
+} hs_spring_state;
+hs_status hs_world_spring_state(const hs_world *world, hs_spring_state *out);
+
+/// Spring-model quantities of one object.
+typedef struct hs_spring_object {
+	double mass;        ///< kg: density × volume
+	double rest_length; ///< m: x0 of the object's spring
+	double stiffness;   ///< N/m: k = m g / (0.2 x0), so hanging stretches it by 0.2 x0 (§4.2)
+	double damping;     ///< N s/m: c = 2 √(k m), critical (§4.3)
+	double omega;       ///< rad/s: √(k / m)
+	hs_vec3 velocity;   ///< m/s: the integrated velocity at the end of the last frame
+	bool on_floor;      ///< supported by the floor
+	bool sliding;       ///< on the floor and moving against sliding friction
+	bool attached;      ///< on the spring
+} hs_spring_object;
+hs_status hs_world_spring_object(const hs_world *world, hs_object_id id, hs_spring_object *out);
+
+#define HS_TRACKER_CAPACITY 64 ///< samples kept in the tracker's ring buffer
+
+typedef enum hs_tracker_event {
+	HS_TRACKER_EVENT_NONE = 0,
+	HS_TRACKER_EVENT_MOTION_START, ///< the hand was at rest and its speed rose above motion_speed
+	HS_TRACKER_EVENT_MOTION_END,   ///< the hand was moving and its speed fell below rest_speed
+} hs_tracker_event;
+
+typedef struct hs_tracker_sample {
+	double time;      ///< s
+	hs_vec3 position; ///< m (with noise when the noise model is on)
+	hs_quat orientation;
+	bool button;
+} hs_tracker_sample;
+
+/// What the tracker daemon knows after the last step (§3, §5.1).
+typedef struct hs_tracker_state {
+	long sample_count;          ///< samples taken since the model was enabled
+	hs_tracker_sample newest;   ///< the last sample (zero when none)
+	hs_vec3 velocity;           ///< m/s at the newest sample: quadratic least-squares fit
+	hs_vec3 acceleration;       ///< m/s²
+	double speed;               ///< m/s: |velocity|
+	hs_vec3 heading;            ///< unit direction of the hand's path over the fit window (zero until known)
+	bool at_rest;
+	hs_tracker_event last_event;
+	double last_event_time;     ///< s
+	long motion_starts, motion_ends;
+} hs_tracker_state;
+hs_status hs_world_tracker_state(const hs_world *world, hs_tracker_state *out);
+/// A stored sample: age 0 is the newest, up to min(sample_count, HS_TRACKER_CAPACITY) − 1.
+hs_status hs_world_tracker_sample(const hs_world *world, int age, hs_tracker_sample *out);
+
+typedef enum hs_release_kind {
+	HS_RELEASE_NONE = 0,
+	HS_RELEASE_DROP,  ///< released with the hand at rest: the object keeps its own velocity and falls
+	HS_RELEASE_THROW, ///< released with the hand moving: the object takes the hand's velocity
+} hs_release_kind;
+
+typedef struct hs_release {
+	hs_release_kind kind;
+	hs_object_id object;
+	double time;        ///< s
+	hs_vec3 velocity;   ///< m/s the object left the spring with
+	double hand_speed;  ///< m/s: the tracker's speed estimate at release
+} hs_release;
+/// The last release (kind HS_RELEASE_NONE before the first one).
+hs_status hs_world_spring_last_release(const hs_world *world, hs_release *out);
 
 #endif

@@ -22,7 +22,25 @@ typedef struct hs_body {
 	uint8_t held;     // moved by a hand this frame: free motion does not run
 	double mass;      // kg: density × volume (spring model)
 	hs_vec3 vel;      // m/s: the spring model integrates velocity explicitly
+	hs_quat rot_prev; // orientation at t - dt: a released object keeps rot * rot_prev⁻¹ (§4.1)
+	int grasped_by;   // hand index + 1 holding it (0: none)
+	hs_vec3 grip_pos; // pose in the grasping wrist frame, fixed when the grasp began (§3.2 (2))
+	hs_quat grip_rot;
+	uint8_t carried;  // moved along with a hand-moved object this frame (§4.3)
 } hs_body;
+
+// A hand: wrist pose, glove sensors and its check points now and one frame ago.
+typedef struct hs_hand {
+	hs_hand_def def;
+	hs_vec3 wrist_pos;
+	hs_quat wrist_rot;
+	uint8_t sensors[HS_GLOVE_SENSORS];
+	hs_vec3 points[HS_HAND_POINTS], prev_points[HS_HAND_POINTS];
+	hs_vec3 lines[HS_HAND_LINES][2], prev_lines[HS_HAND_LINES][2];
+	hs_vec3 center; // bounding sphere of the check points and lines
+	double radius;
+	bool placed; // set at least once: before that its previous points are its current ones
+} hs_hand;
 
 // The Responsive Workbench spring model (spring.c, tracker.c): present only in worlds that use it.
 typedef struct hs_spring_system hs_spring_system;
@@ -44,6 +62,11 @@ struct hs_world {
 	long frame;
 	hs_world_counters counters;
 	hs_spring_system *spring; // NULL unless the world runs the spring model
+	int hand_count;
+	hs_hand *hands; // def.max_hands of them
+	int contact_count, contact_capacity;
+	hs_contact *contacts; // this frame's hand contacts, grouped by object
+	int *queue;           // objects to move along with a moved one (§4.3), max_objects long
 };
 
 // hull.c — 2D convex hull of floor contact points (§4.2, Fig. 5)
@@ -64,5 +87,45 @@ void hs_motion_step(hs_world *world, hs_body *body);
 double hs_motion_pose_vertices(hs_world *world, const hs_body *body);
 // Counts vertices within the floor tolerance and stores their (x, y) in world->scratch_points.
 int hs_motion_floor_points(hs_world *world, const hs_body *body);
+
+// contact.c — hand-object contacts (1999 paper §3.2: (A) points in faces, (B) lines across edges)
+
+// Appends the contacts of every hand with the object to world->contacts; returns how many.
+int hs_contact_detect(hs_world *world, int object);
+// Fig. 2: the contact state of a set of contacts (grasp when two normals are >= threshold apart).
+hs_contact_state hs_contact_classify(const hs_contact *contacts, int count, double grasp_threshold_deg);
+
+// manipulate.c — object motion by the hand (eq. 1-2, grasp, push) and interference among objects (§4.3)
+
+// Eq. 1-2: moves the surface point c of the body toward b (translation T ∥ CG, rotation about G).
+void hs_push_at_one_point(hs_body *body, hs_vec3 c, hs_vec3 b);
+// One frame of the hands: detect, classify, move touched objects, release the untouched.
+void hs_manipulate(hs_world *world);
+// §4.3: true when an untouched free object interferes with another and so ignores gravity.
+bool hs_object_interferes(const hs_world *world, int object);
+// True when the object's bounding sphere overlaps the hand's.
+bool hs_hand_near(const hs_world *world, const hs_hand *hand, int object);
+
+// input.c — hand input scripts: keyframes or a recorded glove+tracker file, sampled per frame
+
+typedef struct hs_hand_key {
+	double t;      // s
+	hs_vec3 wrist; // m
+	hs_quat rot;
+	double sensors[HS_GLOVE_SENSORS]; // sensor units, interpolated linearly, rounded when applied
+} hs_hand_key;
+
+typedef struct hs_hand_script {
+	int key_count;
+	hs_hand_key *keys; // strictly increasing t
+} hs_hand_script;
+
+// The hand at time t: positions and sensors linear between keys, orientation by slerp; before
+// the first key and after the last the nearest key holds.
+void hs_hand_script_sample(const hs_hand_script *script, double t, hs_vec3 *wrist, hs_quat *rot,
+                           uint8_t sensors[HS_GLOVE_SENSORS]);
+// Reads a recorded glove+tracker CSV (header t,x,y,z,qw,qx,qy,qz,s0..s17; any rate) into keys.
+// Errors are "SHOWN_PATH:LINE: what is wrong".
+bool hs_record_load(const char *path, const char *shown_path, hs_hand_script *script, hs_error *err);
 
 #endif

@@ -13,6 +13,7 @@ hs_world_def hs_default_world_def(void) {
 	def.floor_tolerance = 1e-6;
 	def.max_objects = 64;
 	def.max_shapes = 16;
+	def.max_hands = 2;
 	def.stacking = HS_STACKING_PAPER;
 	def.grasp_threshold_deg = 90.0;
 	def.skip_work = true;
@@ -36,6 +37,7 @@ static bool valid_def(const hs_world_def *def) {
 	return def && isfinite(def->dt) && def->dt > 0.0 && hs_vec3_is_finite(def->gravity) &&
 	       isfinite(def->floor_tolerance) && def->floor_tolerance > 0.0 && def->max_objects >= 0 &&
 	       def->max_objects <= 10000000 && def->max_shapes >= 1 && def->max_shapes <= 100000 &&
+	       def->max_hands >= 0 && def->max_hands <= 64 &&
 	       isfinite(def->grasp_threshold_deg) && def->grasp_threshold_deg > 0.0 &&
 	       def->grasp_threshold_deg <= 180.0 &&
 	       (def->stacking == HS_STACKING_PAPER || def->stacking == HS_STACKING_SUPPORT);
@@ -53,8 +55,14 @@ hs_world *hs_world_create(const hs_world_def *def, hs_status *status) {
 	}
 	world->def = *def;
 	world->shapes = calloc((size_t)def->max_shapes, sizeof *world->shapes);
-	world->bodies = calloc(def->max_objects > 0 ? (size_t)def->max_objects : 1, sizeof *world->bodies);
-	if (!world->shapes || !world->bodies) {
+	size_t objects = def->max_objects > 0 ? (size_t)def->max_objects : 1;
+	world->bodies = calloc(objects, sizeof *world->bodies);
+	world->queue = calloc(objects, sizeof *world->queue);
+	world->hands = calloc(def->max_hands > 0 ? (size_t)def->max_hands : 1, sizeof *world->hands);
+	// every check point and line of every hand in up to 4 objects' parts at once
+	world->contact_capacity = (def->max_hands > 0 ? def->max_hands : 1) * (HS_HAND_POINTS + HS_HAND_LINES) * 4;
+	world->contacts = calloc((size_t)world->contact_capacity, sizeof *world->contacts);
+	if (!world->shapes || !world->bodies || !world->queue || !world->hands || !world->contacts) {
 		hs_world_destroy(world);
 		set_status(status, HS_ERR_NO_MEMORY);
 		return NULL;
@@ -79,6 +87,9 @@ void hs_world_destroy(hs_world *world) {
 		free_shape_arrays(&world->shapes[i]);
 	free(world->shapes);
 	free(world->bodies);
+	free(world->queue);
+	free(world->hands);
+	free(world->contacts);
 	free(world->scratch_world);
 	free(world->scratch_points);
 	free(world->scratch_hull);
@@ -176,6 +187,7 @@ hs_object_id hs_world_add_object(hs_world *world, const hs_object_def *def, hs_s
 	body->shape = (int)def->shape.index1 - 1;
 	body->pos = def->position;
 	body->rot = hs_quat_normalize(def->orientation);
+	body->rot_prev = body->rot;
 	// P(-dt) on the exact parabola, so eq. 3 reproduces P0 + v t + g t²/2 at every frame
 	body->prev = hs_add(hs_sub(def->position, hs_scale(def->velocity, dt)),
 	                    hs_scale(world->def.gravity, 0.5 * dt * dt));
@@ -234,20 +246,35 @@ hs_status hs_world_step(hs_world *world) {
 		world->frame++;
 		return HS_OK;
 	}
+	if (world->hand_count > 0) // a scene without hands never runs the hand subsystem
+		hs_manipulate(world);
 	for (int i = 0; i < world->object_count; ++i) {
 		hs_body *body = &world->bodies[i];
-		if (body->held)
+		if (body->held || body->carried)
 			continue;
 		if (body->asleep && world->def.skip_work) {
 			world->counters.sleeping_skips++; // resting objects cost nothing until touched
 			continue;
 		}
 		hs_body saved = *body;
+		if (!body->asleep && world->def.stacking == HS_STACKING_PAPER && hs_object_interferes(world, i)) {
+			// §4.3: interfering objects not touched by the hand are not affected by gravity and inertia
+			body->prev = body->pos;
+			body->spin = hs_quat_identity();
+			body->asleep = 1;
+			continue;
+		}
+		body->rot_prev = body->rot;
 		hs_motion_step(world, body);
 		if (!body_is_finite(body)) { // never let a NaN spread: freeze the object and count it
 			*body = saved;
 			world->counters.numeric_faults++;
 		}
+	}
+	for (int h = 0; h < world->hand_count; ++h) { // a hand not set again stays where it is
+		hs_hand *hand = &world->hands[h];
+		memcpy(hand->prev_points, hand->points, sizeof hand->points);
+		memcpy(hand->prev_lines, hand->lines, sizeof hand->lines);
 	}
 	world->frame++;
 	return HS_OK;
@@ -280,6 +307,97 @@ uint64_t hs_world_hash(const hs_world *world) {
 }
 
 hs_world_counters hs_world_get_counters(const hs_world *world) {
-	hs_world_counters none = {0, 0, 0, 0};
+	hs_world_counters none;
+	memset(&none, 0, sizeof none);
 	return world ? world->counters : none;
+}
+
+hs_hand_id hs_world_add_hand(hs_world *world, const hs_hand_def *def, hs_status *status) {
+	hs_hand_id none = {0};
+	if (!world || !def || !(def->finger_radius > 0.0) || !isfinite(def->finger_radius) ||
+	    !(def->dip_per_pip >= 0.0) || !isfinite(def->dip_per_pip)) {
+		set_status(status, HS_ERR_INVALID_ARGUMENT);
+		return none;
+	}
+	for (int f = 0; f < 5; ++f) {
+		if (!hs_vec3_is_finite(def->base[f])) {
+			set_status(status, HS_ERR_INVALID_ARGUMENT);
+			return none;
+		}
+		for (int s = 0; s < 3; ++s)
+			if (!(def->segment_length[f][s] > 0.0) || !isfinite(def->segment_length[f][s])) {
+				set_status(status, HS_ERR_INVALID_ARGUMENT);
+				return none;
+			}
+	}
+	if (world->hand_count >= world->def.max_hands) {
+		set_status(status, HS_ERR_CAPACITY);
+		return none;
+	}
+	hs_hand *hand = &world->hands[world->hand_count];
+	memset(hand, 0, sizeof *hand);
+	hand->def = *def;
+	hand->wrist_rot = hs_quat_identity();
+	hand->radius = -1.0; // touches nothing until it is set
+	set_status(status, HS_OK);
+	hs_hand_id id = {(uint32_t)++world->hand_count};
+	return id;
+}
+
+static hs_hand *hand_of(const hs_world *world, hs_hand_id id) {
+	if (!world || id.index1 < 1 || id.index1 > (uint32_t)world->hand_count)
+		return NULL;
+	return &world->hands[id.index1 - 1];
+}
+
+hs_status hs_world_set_hand(hs_world *world, hs_hand_id id, hs_vec3 wrist_position, hs_quat wrist_orientation,
+                            const uint8_t sensors[HS_GLOVE_SENSORS]) {
+	hs_hand *hand = hand_of(world, id);
+	if (!hand || !sensors || !hs_vec3_is_finite(wrist_position) || !hs_quat_is_finite(wrist_orientation) ||
+	    fabs(sqrt(hs_quat_dot(wrist_orientation, wrist_orientation)) - 1.0) > 1e-6)
+		return HS_ERR_INVALID_ARGUMENT;
+	hand->wrist_pos = wrist_position;
+	hand->wrist_rot = hs_quat_normalize(wrist_orientation);
+	memcpy(hand->sensors, sensors, sizeof hand->sensors);
+	hs_hand_kinematics(&hand->def, hand->wrist_pos, hand->wrist_rot, hand->sensors, hand->points, hand->lines);
+	if (!hand->placed) { // no motion before the first pose
+		memcpy(hand->prev_points, hand->points, sizeof hand->points);
+		memcpy(hand->prev_lines, hand->lines, sizeof hand->lines);
+		hand->placed = true;
+	}
+	// bounding sphere about the mean check point, over points and line ends
+	hs_vec3 c = hs_v3(0, 0, 0);
+	for (int i = 0; i < HS_HAND_POINTS; ++i)
+		c = hs_add(c, hand->points[i]);
+	c = hs_scale(c, 1.0 / HS_HAND_POINTS);
+	double r_sq = 0.0;
+	for (int j = 0; j < HS_HAND_LINES; ++j)
+		for (int k = 0; k < 2; ++k) {
+			double d = hs_length_sq(hs_sub(hand->lines[j][k], c));
+			r_sq = d > r_sq ? d : r_sq;
+		}
+	for (int i = 0; i < HS_HAND_POINTS; ++i) {
+		double d = hs_length_sq(hs_sub(hand->points[i], c));
+		r_sq = d > r_sq ? d : r_sq;
+	}
+	hand->center = c;
+	hand->radius = sqrt(r_sq);
+	return HS_OK;
+}
+
+hs_status hs_world_hand_points(const hs_world *world, hs_hand_id id, hs_vec3 points[HS_HAND_POINTS]) {
+	const hs_hand *hand = hand_of(world, id);
+	if (!hand || !points)
+		return HS_ERR_INVALID_ARGUMENT;
+	memcpy(points, hand->points, sizeof hand->points);
+	return HS_OK;
+}
+
+int hs_world_contacts(const hs_world *world, hs_contact *out, int max) {
+	if (!world)
+		return 0;
+	int n = world->contact_count;
+	for (int i = 0; i < n && i < max && out; ++i)
+		out[i] = world->contacts[i];
+	return n;
 }

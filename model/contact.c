@@ -1,0 +1,189 @@
+// contact.c — contacts between hands and objects (1999 paper §3.1-3.2, Fig. 2, Fig. 4).
+//
+// Everything is computed in the object's body frame, whose origin is G, against each convex part:
+//  (A) a check point inside the part touches the face it entered through along its motion
+//      relative to the object (the face nearest to it when it was already inside);
+//  (B) a check line crossing the part touches an edge when it enters and leaves through the two
+//      faces that meet at that edge; the contact normal is the pseudo-normal from G to the edge.
+//      A line through two faces that do not meet presses the face nearest to its middle.
+#include "internal.h"
+
+// Grasp when n_i · n_j <= cos(threshold) + eps: with a bare comparison rounding would decide the
+// 90 deg case (two adjoining cube faces) and two builds could disagree (DESIGN.md).
+#define HS_GRASP_EPS 1e-9
+
+static hs_vec3 to_body(const hs_body *body, hs_vec3 p) { return hs_quat_inv_rotate(body->rot, hs_sub(p, body->pos)); }
+static hs_vec3 to_world(const hs_body *body, hs_vec3 p) { return hs_add(body->pos, hs_quat_rotate(body->rot, p)); }
+
+static bool inside_part(const hs_shape *shape, const hs_part *part, hs_vec3 p) {
+	for (int f = part->first_face; f < part->first_face + part->face_count; ++f)
+		if (hs_dot(shape->faces[f].normal, p) >= shape->faces[f].offset)
+			return false;
+	return true;
+}
+
+static int nearest_face(const hs_shape *shape, const hs_part *part, hs_vec3 p) {
+	int best = part->first_face;
+	double best_depth = INFINITY;
+	for (int f = part->first_face; f < part->first_face + part->face_count; ++f) {
+		double depth = shape->faces[f].offset - hs_dot(shape->faces[f].normal, p);
+		if (depth < best_depth) {
+			best_depth = depth;
+			best = f;
+		}
+	}
+	return best;
+}
+
+// Cyrus-Beck clip of a → b against the part: the parameters and faces where it enters and leaves.
+typedef struct clip {
+	double t_in, t_out;
+	int face_in, face_out; // -1 where the segment's end is already inside
+	bool hit;
+} clip;
+
+static clip clip_segment(const hs_shape *shape, const hs_part *part, hs_vec3 a, hs_vec3 b) {
+	clip c = {0.0, 1.0, -1, -1, false};
+	hs_vec3 d = hs_sub(b, a);
+	for (int f = part->first_face; f < part->first_face + part->face_count; ++f) {
+		double num = shape->faces[f].offset - hs_dot(shape->faces[f].normal, a);
+		double den = hs_dot(shape->faces[f].normal, d);
+		if (den == 0.0) {
+			if (num <= 0.0)
+				return c; // parallel and outside this face's plane
+			continue;
+		}
+		double t = num / den;
+		if (den < 0.0) { // entering through this face
+			if (t > c.t_in) {
+				c.t_in = t;
+				c.face_in = f;
+			}
+		} else if (t < c.t_out) {
+			c.t_out = t;
+			c.face_out = f;
+		}
+	}
+	c.hit = c.t_in < c.t_out;
+	return c;
+}
+
+static int edge_between(const hs_shape *shape, const hs_part *part, int f1, int f2) {
+	for (int e = part->first_edge; e < part->first_edge + part->edge_count; ++e) {
+		const hs_edge *edge = &shape->edges[e];
+		if ((edge->faces[0] == f1 && edge->faces[1] == f2) || (edge->faces[0] == f2 && edge->faces[1] == f1))
+			return e;
+	}
+	return -1;
+}
+
+// Closest point on segment a-b to segment c-d (both in the same frame).
+static hs_vec3 closest_on_first(hs_vec3 a, hs_vec3 b, hs_vec3 c, hs_vec3 d) {
+	hs_vec3 u = hs_sub(b, a), v = hs_sub(d, c), w = hs_sub(a, c);
+	double uu = hs_dot(u, u), uv = hs_dot(u, v), vv = hs_dot(v, v), uw = hs_dot(u, w), vw = hs_dot(v, w);
+	double den = uu * vv - uv * uv;
+	double s = den > 0.0 ? (uv * vw - vv * uw) / den : 0.0;
+	s = s < 0.0 ? 0.0 : (s > 1.0 ? 1.0 : s);
+	return hs_mul_add(a, s, u);
+}
+
+static void push_contact(hs_world *world, int object, int hand, int part, bool edge, int feature, hs_vec3 point,
+                         hs_vec3 normal) {
+	if (world->contact_count >= world->contact_capacity) {
+		world->counters.dropped_contacts++;
+		return;
+	}
+	hs_contact *c = &world->contacts[world->contact_count++];
+	c->object.index1 = (uint32_t)object + 1;
+	c->hand.index1 = (uint32_t)hand + 1;
+	c->part = part;
+	c->edge = edge;
+	c->feature = feature;
+	c->point = point;
+	c->normal = normal;
+}
+
+static void detect_part(hs_world *world, int object, int h, const hs_part *part) {
+	const hs_body *body = &world->bodies[object];
+	const hs_shape *shape = &world->shapes[body->shape];
+	const hs_hand *hand = &world->hands[h];
+	// (A) check points against faces
+	for (int i = 0; i < HS_HAND_POINTS; ++i) {
+		hs_vec3 b = to_body(body, hand->points[i]);
+		if (!inside_part(shape, part, b))
+			continue;
+		hs_vec3 a = to_body(body, hand->prev_points[i]);
+		clip c = clip_segment(shape, part, a, b);
+		int face;
+		hs_vec3 point;
+		if (c.face_in >= 0) { // entered this frame: the face crossed along the motion
+			face = c.face_in;
+			point = hs_lerp(a, b, c.t_in);
+		} else {
+			face = nearest_face(shape, part, b);
+			const hs_face *f = &shape->faces[face];
+			point = hs_mul_add(b, f->offset - hs_dot(f->normal, b), f->normal);
+		}
+		push_contact(world, object, h, i, false, face, to_world(body, point),
+		             hs_quat_rotate(body->rot, shape->faces[face].normal));
+	}
+	// (B) check lines against edges
+	for (int j = 0; j < HS_HAND_LINES; ++j) {
+		hs_vec3 p0 = to_body(body, hand->lines[j][0]), p1 = to_body(body, hand->lines[j][1]);
+		clip c = clip_segment(shape, part, p0, p1);
+		if (!c.hit || c.face_in < 0 || c.face_out < 0)
+			continue; // misses, or an end is inside: that is the check points' business
+		int e = edge_between(shape, part, c.face_in, c.face_out);
+		if (e >= 0) {
+			hs_vec3 ea = shape->vertices[shape->edges[e].a], eb = shape->vertices[shape->edges[e].b];
+			hs_vec3 point = closest_on_first(ea, eb, p0, p1);
+			hs_vec3 dir = hs_normalize(hs_sub(eb, ea));
+			hs_vec3 foot = hs_mul_add(ea, -hs_dot(ea, dir), dir); // foot of the perpendicular from G = 0
+			push_contact(world, object, h, HS_HAND_POINTS + j, true, e, to_world(body, point),
+			             hs_quat_rotate(body->rot, hs_normalize(foot)));
+		} else {
+			hs_vec3 mid = hs_lerp(p0, p1, 0.5 * (c.t_in + c.t_out));
+			int face = nearest_face(shape, part, mid);
+			const hs_face *f = &shape->faces[face];
+			hs_vec3 point = hs_mul_add(mid, f->offset - hs_dot(f->normal, mid), f->normal);
+			push_contact(world, object, h, HS_HAND_POINTS + j, false, face, to_world(body, point),
+			             hs_quat_rotate(body->rot, f->normal));
+		}
+	}
+}
+
+int hs_contact_detect(hs_world *world, int object) {
+	int before = world->contact_count;
+	const hs_body *body = &world->bodies[object];
+	const hs_shape *shape = &world->shapes[body->shape];
+	for (int h = 0; h < world->hand_count; ++h) {
+		const hs_hand *hand = &world->hands[h];
+		if (world->def.skip_work && !hs_hand_near(world, hand, object))
+			continue; // bounding-volume rejection before the narrow tests (Fig. 2)
+		world->counters.hand_tests++;
+		for (int p = 0; p < shape->part_count; ++p) {
+			const hs_part *part = &shape->parts[p];
+			if (world->def.skip_work) {
+				hs_vec3 c = to_world(body, part->center);
+				double r = part->radius + hand->radius;
+				if (hs_length_sq(hs_sub(c, hand->center)) > r * r)
+					continue;
+			}
+			detect_part(world, object, h, part);
+		}
+	}
+	return world->contact_count - before;
+}
+
+hs_contact_state hs_contact_classify(const hs_contact *contacts, int count, double grasp_threshold_deg) {
+	if (count == 0)
+		return HS_CONTACT_NONE;
+	if (count == 1)
+		return HS_CONTACT_PUSH_ONE;
+	double limit = cos(grasp_threshold_deg * (HS_PI / 180.0)) + HS_GRASP_EPS;
+	for (int i = 0; i < count; ++i)
+		for (int j = i + 1; j < count; ++j)
+			if (hs_dot(contacts[i].normal, contacts[j].normal) <= limit)
+				return HS_CONTACT_GRASP; // any two normals at >= the threshold (§3.2 (2))
+	return HS_CONTACT_PUSH_MANY;
+}

@@ -1,0 +1,173 @@
+// manipulate.c — how the hand moves objects (1999 paper §3.2, Fig. 2-3) and how objects
+// interfering with a moved object follow it (§4.3, paper mode).
+#include "internal.h"
+
+bool hs_hand_near(const hs_world *world, const hs_hand *hand, int object) {
+	const hs_body *body = &world->bodies[object];
+	double r = world->shapes[body->shape].radius + hand->radius;
+	return hs_length_sq(hs_sub(body->pos, hand->center)) <= r * r;
+}
+
+static bool bodies_overlap(const hs_world *world, int i, int j) {
+	const hs_body *a = &world->bodies[i], *b = &world->bodies[j];
+	const hs_shape *sa = &world->shapes[a->shape], *sb = &world->shapes[b->shape];
+	double r = sa->radius + sb->radius;
+	if (hs_length_sq(hs_sub(a->pos, b->pos)) > r * r)
+		return false; // bounding spheres apart: no narrow test
+	return hs_shapes_overlap(sa, a->pos, a->rot, sb, b->pos, b->rot);
+}
+
+bool hs_object_interferes(const hs_world *world, int object) {
+	for (int j = 0; j < world->object_count; ++j)
+		if (j != object && bodies_overlap(world, object, j))
+			return true;
+	return false;
+}
+
+// Eq. 1-2: C on the surface is moved to B, the finger point now. CB = T + R with T ∥ CG:
+// translate by T, turn about the axis through G along R × CG by atan(|R| / |CG|), so C moves along R.
+void hs_push_at_one_point(hs_body *body, hs_vec3 c, hs_vec3 b) {
+	hs_vec3 cb = hs_sub(b, c), cg = hs_sub(body->pos, c);
+	double cg_len = hs_length(cg);
+	if (!(cg_len > 0.0)) { // C at G: nothing to turn about
+		body->pos = hs_add(body->pos, cb);
+		return;
+	}
+	hs_vec3 cg_unit = hs_scale(cg, 1.0 / cg_len);
+	hs_vec3 t = hs_scale(cg_unit, hs_dot(cb, cg_unit));
+	hs_vec3 r = hs_sub(cb, t);
+	body->pos = hs_add(body->pos, t);
+	double r_len = hs_length(r);
+	if (r_len > 0.0) { // R = 0: CB ∥ CG, translation only
+		hs_vec3 axis = hs_normalize(hs_cross(r, cg));
+		hs_quat q = hs_quat_from_axis_angle(axis, atan(r_len / cg_len));
+		body->rot = hs_quat_normalize(hs_quat_mul(q, body->rot));
+	}
+}
+
+// Where the finger part of a contact is now: the check point, or for an edge contact the point
+// of the check line nearest the contact point.
+static hs_vec3 part_position(const hs_hand *hand, const hs_contact *c) {
+	if (c->part < HS_HAND_POINTS)
+		return hand->points[c->part];
+	const hs_vec3 *line = hand->lines[c->part - HS_HAND_POINTS];
+	hs_vec3 d = hs_sub(line[1], line[0]);
+	double len_sq = hs_length_sq(d);
+	double u = len_sq > 0.0 ? hs_dot(hs_sub(c->point, line[0]), d) / len_sq : 0.0;
+	u = u < 0.0 ? 0.0 : (u > 1.0 ? 1.0 : u);
+	return hs_mul_add(line[0], u, d);
+}
+
+static hs_vec3 part_displacement(const hs_hand *hand, const hs_contact *c) {
+	if (c->part < HS_HAND_POINTS)
+		return hs_sub(hand->points[c->part], hand->prev_points[c->part]);
+	int j = c->part - HS_HAND_POINTS;
+	hs_vec3 d0 = hs_sub(hand->lines[j][0], hand->prev_lines[j][0]);
+	hs_vec3 d1 = hs_sub(hand->lines[j][1], hand->prev_lines[j][1]);
+	return hs_scale(hs_add(d0, d1), 0.5);
+}
+
+// The hand that holds a grasped object: the one already holding it while it still touches it,
+// else the one with the most contacts (the lower index on a tie).
+static int grasping_hand(const hs_world *world, const hs_body *body, const hs_contact *cs, int n) {
+	int counts[64] = {0};
+	int hands = world->hand_count < 64 ? world->hand_count : 64;
+	for (int k = 0; k < n; ++k)
+		if ((int)cs[k].hand.index1 - 1 < hands)
+			counts[cs[k].hand.index1 - 1]++;
+	if (body->grasped_by > 0 && body->grasped_by <= hands && counts[body->grasped_by - 1] > 0)
+		return body->grasped_by - 1;
+	int best = 0;
+	for (int h = 1; h < hands; ++h)
+		if (counts[h] > counts[best])
+			best = h;
+	return best;
+}
+
+// §4.2 rectification for an object the hand pushed into the floor.
+static void keep_above_floor(hs_world *world, hs_body *body) {
+	double zmin = hs_motion_pose_vertices(world, body);
+	if (zmin < 0.0)
+		body->pos.z -= zmin;
+}
+
+// §4.3, paper mode: every object interfering with a moved object is translated with it, and so on.
+static void carry_along(hs_world *world, int moved, hs_vec3 d) {
+	if (world->def.stacking != HS_STACKING_PAPER || !(hs_length_sq(d) > 0.0))
+		return;
+	int head = 0, tail = 0;
+	world->queue[tail++] = moved;
+	while (head < tail) {
+		int i = world->queue[head++];
+		for (int j = 0; j < world->object_count; ++j) {
+			hs_body *b = &world->bodies[j];
+			if (j == moved || b->held || b->carried || !bodies_overlap(world, i, j))
+				continue;
+			b->pos = hs_add(b->pos, d);
+			b->prev = hs_add(b->prev, d); // carried, not thrown: no inertia is gained
+			b->carried = 1;
+			b->asleep = 0;
+			keep_above_floor(world, b);
+			world->queue[tail++] = j;
+		}
+	}
+}
+
+// Eq. 3 on release: the object flies on with the motion and the turn of its last frame.
+static void release(hs_body *body) {
+	body->spin = hs_quat_normalize(hs_quat_mul(body->rot, hs_quat_conj(body->rot_prev)));
+	body->grasped_by = 0;
+	body->grounded = 0;
+	body->asleep = 0;
+}
+
+void hs_manipulate(hs_world *world) {
+	world->contact_count = 0;
+	for (int i = 0; i < world->object_count; ++i)
+		world->bodies[i].carried = 0;
+	for (int i = 0; i < world->object_count; ++i) {
+		hs_body *body = &world->bodies[i];
+		int first = world->contact_count;
+		int n = hs_contact_detect(world, i);
+		const hs_contact *cs = &world->contacts[first];
+		hs_contact_state state = hs_contact_classify(cs, n, world->def.grasp_threshold_deg);
+		bool was_held = body->held != 0;
+		body->contact = (uint8_t)state;
+		body->held = 0;
+		if (state == HS_CONTACT_NONE) {
+			if (was_held)
+				release(body);
+			continue;
+		}
+		hs_vec3 old_pos = body->pos;
+		hs_quat old_rot = body->rot;
+		if (state == HS_CONTACT_GRASP) {
+			int h = grasping_hand(world, body, cs, n);
+			const hs_hand *hand = &world->hands[h];
+			if (body->grasped_by != h + 1) { // the grasp begins: fix the pose in the wrist frame
+				body->grasped_by = h + 1;
+				body->grip_pos = hs_quat_inv_rotate(hand->wrist_rot, hs_sub(body->pos, hand->wrist_pos));
+				body->grip_rot = hs_quat_normalize(hs_quat_mul(hs_quat_conj(hand->wrist_rot), body->rot));
+			}
+			body->pos = hs_add(hand->wrist_pos, hs_quat_rotate(hand->wrist_rot, body->grip_pos));
+			body->rot = hs_quat_normalize(hs_quat_mul(hand->wrist_rot, body->grip_rot));
+		} else if (state == HS_CONTACT_PUSH_ONE) {
+			body->grasped_by = 0;
+			const hs_hand *hand = &world->hands[cs[0].hand.index1 - 1];
+			hs_push_at_one_point(body, cs[0].point, part_position(hand, &cs[0]));
+		} else { // push at several points: translate by the parts' mean displacement (§3.2 (3))
+			body->grasped_by = 0;
+			hs_vec3 sum = hs_v3(0, 0, 0);
+			for (int k = 0; k < n; ++k)
+				sum = hs_add(sum, part_displacement(&world->hands[cs[k].hand.index1 - 1], &cs[k]));
+			body->pos = hs_add(body->pos, hs_scale(sum, 1.0 / n));
+		}
+		keep_above_floor(world, body);
+		body->prev = old_pos;
+		body->rot_prev = old_rot;
+		body->held = 1;
+		body->asleep = 0;
+		body->grounded = 0;
+		carry_along(world, i, hs_sub(body->pos, old_pos));
+	}
+}

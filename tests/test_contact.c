@@ -1,0 +1,270 @@
+// test_contact.c — hand contacts (A) and (B), classification (Fig. 2) and the motions of §3.2,
+// with check points placed by hand (no kinematics) and expectations computed by hand.
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <string.h>
+
+#include <cmocka.h>
+
+#include "internal.h"
+#include "test_util.h"
+
+#define FAR hs_v3(100, 100, 100)
+
+// A unit cube (faces at ±0.5 about G) with G at (0, 0, 2), out of the floor's reach, and one hand
+// whose parts are all far away until a test puts some of them somewhere.
+static hs_world *cube_world(void) {
+	hs_world_def def = hs_default_world_def();
+	hs_world *w = hs_world_create(&def, NULL);
+	hs_shape *cube = hs_shape_box(hs_v3(1, 1, 1), NULL);
+	hs_object_def od = hs_default_object_def();
+	od.shape = hs_world_add_shape(w, cube, NULL);
+	hs_shape_destroy(cube);
+	od.position = hs_v3(0, 0, 2);
+	assert_int_equal(hs_world_add_object(w, &od, NULL).index1, 1);
+	hs_hand_def hd = hs_default_hand_def();
+	assert_int_equal(hs_world_add_hand(w, &hd, NULL).index1, 1);
+	hs_hand *hand = &w->hands[0];
+	for (int i = 0; i < HS_HAND_POINTS; ++i)
+		hand->points[i] = hand->prev_points[i] = FAR;
+	for (int j = 0; j < HS_HAND_LINES; ++j)
+		hand->lines[j][0] = hand->lines[j][1] = hand->prev_lines[j][0] = hand->prev_lines[j][1] = FAR;
+	hand->center = hs_v3(0, 0, 2);
+	hand->radius = 1000; // the bounding test is not what these tests are about
+	hand->placed = true;
+	return w;
+}
+
+static void move_point(hs_world *w, int i, hs_vec3 from, hs_vec3 to) {
+	w->hands[0].prev_points[i] = from;
+	w->hands[0].points[i] = to;
+}
+
+static hs_contact contact(const hs_world *w, int k) { return w->contacts[k]; }
+
+// (A) a check point that entered through the top face touches it where it crossed.
+static void test_point_enters_face(void **state) {
+	(void)state;
+	hs_world *w = cube_world();
+	move_point(w, 3, hs_v3(0.1, 0.2, 2.7), hs_v3(0.1, 0.2, 2.3));
+	assert_int_equal(hs_contact_detect(w, 0), 1);
+	hs_contact c = contact(w, 0);
+	assert_false(c.edge);
+	assert_int_equal(c.part, 3);
+	assert_vec3_near(c.normal, hs_v3(0, 0, 1), 1e-15);
+	assert_vec3_near(c.point, hs_v3(0.1, 0.2, 2.5), 1e-15);
+	hs_world_destroy(w);
+}
+
+// (A) a point that was already inside touches the face nearest to it.
+static void test_point_inside_nearest_face(void **state) {
+	(void)state;
+	hs_world *w = cube_world();
+	move_point(w, 0, hs_v3(-0.45, 0, 2.1), hs_v3(-0.44, 0, 2.1));
+	assert_int_equal(hs_contact_detect(w, 0), 1);
+	assert_vec3_near(contact(w, 0).normal, hs_v3(-1, 0, 0), 1e-15);
+	assert_vec3_near(contact(w, 0).point, hs_v3(-0.5, 0, 2.1), 1e-15);
+	hs_world_destroy(w);
+}
+
+// (A) a point on the surface is not inside; entering exactly through an edge picks one of the two
+// faces, the same one every time (array order), never both.
+static void test_point_at_edge_and_surface(void **state) {
+	(void)state;
+	hs_world *w = cube_world();
+	move_point(w, 0, hs_v3(-0.6, 0, 2), hs_v3(-0.5, 0, 2)); // exactly on the face plane
+	assert_int_equal(hs_contact_detect(w, 0), 0);
+	w->contact_count = 0;
+	move_point(w, 0, hs_v3(0.6, 0, 2.6), hs_v3(0.4, 0, 2.4)); // crosses the edge x = z - 2 = 0.5
+	assert_int_equal(hs_contact_detect(w, 0), 1);
+	hs_vec3 n = contact(w, 0).normal;
+	assert_true((n.x == 1 && n.z == 0) || (n.x == 0 && n.z == 1));
+	assert_vec3_near(contact(w, 0).point, hs_v3(0.5, 0, 2.5), 1e-15);
+	hs_world_destroy(w);
+}
+
+// (B) a check line cutting the corner wedge of an edge touches that edge; its pseudo-normal
+// points from G to the edge (Fig. 4).
+static void test_line_crosses_edge(void **state) {
+	(void)state;
+	hs_world *w = cube_world();
+	hs_hand *hand = &w->hands[0];
+	hand->lines[7][0] = hs_v3(0.25, 0, 2.6); // enters the top at t = 0.25, leaves +x at t = 0.625
+	hand->lines[7][1] = hs_v3(0.65, 0, 2.2);
+	assert_int_equal(hs_contact_detect(w, 0), 1);
+	hs_contact c = contact(w, 0);
+	assert_true(c.edge);
+	assert_int_equal(c.part, HS_HAND_POINTS + 7);
+	assert_vec3_near(c.normal, hs_v3(sqrt(0.5), 0, sqrt(0.5)), 1e-15);
+	assert_vec3_near(c.point, hs_v3(0.5, 0, 2.5), 1e-15);
+	hs_world_destroy(w);
+}
+
+// (B) a line through two opposite faces presses the face nearest its middle; a line ending inside
+// is left to the check points.
+static void test_line_across_and_line_ending_inside(void **state) {
+	(void)state;
+	hs_world *w = cube_world();
+	hs_hand *hand = &w->hands[0];
+	hand->lines[0][0] = hs_v3(-1, 0, 2.45);
+	hand->lines[0][1] = hs_v3(1, 0, 2.45);
+	assert_int_equal(hs_contact_detect(w, 0), 1);
+	assert_false(contact(w, 0).edge);
+	assert_vec3_near(contact(w, 0).normal, hs_v3(0, 0, 1), 1e-15);
+	assert_vec3_near(contact(w, 0).point, hs_v3(0, 0, 2.5), 1e-15);
+	w->contact_count = 0;
+	hand->lines[0][1] = hs_v3(0, 0, 2.45);
+	assert_int_equal(hs_contact_detect(w, 0), 0);
+	hs_world_destroy(w);
+}
+
+static hs_contact with_normal(hs_vec3 n) {
+	hs_contact c;
+	memset(&c, 0, sizeof c);
+	c.normal = n;
+	return c;
+}
+
+// Fig. 2: none / one point / grasp (two normals >= threshold apart) / several points.
+static void test_classification(void **state) {
+	(void)state;
+	hs_contact cs[3] = {with_normal(hs_v3(1, 0, 0)), with_normal(hs_v3(0, 1, 0)), with_normal(hs_v3(1, 0, 0))};
+	assert_int_equal(hs_contact_classify(cs, 0, 90), HS_CONTACT_NONE);
+	assert_int_equal(hs_contact_classify(cs, 1, 90), HS_CONTACT_PUSH_ONE);
+	assert_int_equal(hs_contact_classify(cs, 2, 90), HS_CONTACT_GRASP); // adjoining faces: exactly 90
+	assert_int_equal(hs_contact_classify(cs, 2, 91), HS_CONTACT_PUSH_MANY);
+	hs_contact same[2] = {cs[0], cs[2]};
+	assert_int_equal(hs_contact_classify(same, 2, 90), HS_CONTACT_PUSH_MANY);
+	// 90 deg reached through rounding (cos(pi/2) is 6e-17, not 0): the tolerance decides, not the ulp
+	hs_vec3 n = hs_quat_rotate(hs_quat_from_axis_angle(hs_v3(0, 0, 1), HS_PI / 2 + 1e-12), hs_v3(1, 0, 0));
+	hs_contact rounded[2] = {cs[0], with_normal(n)};
+	assert_int_equal(hs_contact_classify(rounded, 2, 90), HS_CONTACT_GRASP);
+	hs_vec3 m = hs_quat_rotate(hs_quat_from_axis_angle(hs_v3(0, 0, 1), 89.0 * HS_PI / 180), hs_v3(1, 0, 0));
+	hs_contact short_of[2] = {cs[0], with_normal(m)};
+	assert_int_equal(hs_contact_classify(short_of, 2, 90), HS_CONTACT_PUSH_MANY);
+	// three contacts: any pair at the threshold makes a grasp (Fig. 4)
+	hs_contact three[3] = {cs[0], cs[2], with_normal(hs_v3(-1, 0, 0))};
+	assert_int_equal(hs_contact_classify(three, 3, 90), HS_CONTACT_GRASP);
+}
+
+static hs_body body_at(hs_vec3 g) {
+	hs_body b;
+	memset(&b, 0, sizeof b);
+	b.pos = g;
+	b.rot = hs_quat_identity();
+	return b;
+}
+
+// Eq. 1-2 with R = 0 (CB ∥ CG): translation only.
+static void test_push_r_zero(void **state) {
+	(void)state;
+	hs_body b = body_at(hs_v3(0, 0, 2));
+	hs_push_at_one_point(&b, hs_v3(-0.5, 0, 2), hs_v3(-0.45, 0, 2));
+	assert_vec3_near(b.pos, hs_v3(0.05, 0, 2), 1e-15);
+	assert_near(hs_quat_angle(b.rot), 0, 0);
+}
+
+// Eq. 1-2 with T = 0 (CB ⟂ CG): rotation only, by atan(|R| / |CG|) about R × CG, C moving along R.
+static void test_push_t_zero(void **state) {
+	(void)state;
+	hs_body b = body_at(hs_v3(0, 0, 2));
+	hs_push_at_one_point(&b, hs_v3(-0.5, 0, 2), hs_v3(-0.5, 0.1, 2));
+	assert_vec3_near(b.pos, hs_v3(0, 0, 2), 0);
+	assert_near(hs_quat_angle(b.rot), atan(0.1 / 0.5), 1e-15);
+	hs_vec3 c_now = hs_quat_rotate(b.rot, hs_v3(-0.5, 0, 0));
+	assert_true(c_now.y > 0); // C went toward B
+	assert_near(c_now.x, -0.5 * cos(atan(0.2)), 1e-15);
+}
+
+// Eq. 1-2 off-centre: T = (CB·ĉg) ĉg, R = CB - T, computed by hand for C = (-0.5, 0.3), CB = (0.05, 0).
+static void test_push_off_centre(void **state) {
+	(void)state;
+	hs_body b = body_at(hs_v3(0, 0, 2));
+	hs_push_at_one_point(&b, hs_v3(-0.5, 0.3, 2), hs_v3(-0.45, 0.3, 2));
+	double cg = sqrt(0.34), tx = 0.05 * 0.25 / 0.34, ty = -0.05 * 0.15 / 0.34;
+	assert_vec3_near(b.pos, hs_v3(tx, ty, 2), 1e-15);
+	double rx = 0.05 - tx, ry = -ty;
+	assert_near(hs_quat_angle(b.rot), atan(sqrt(rx * rx + ry * ry) / cg), 1e-15);
+	assert_near(b.rot.z, -sin(0.5 * atan(sqrt(rx * rx + ry * ry) / cg)), 1e-15); // about -z: clockwise
+}
+
+// Push at several points: translate by the mean displacement, no turn (§3.2 (3)).
+static void test_push_many_translates(void **state) {
+	(void)state;
+	hs_world *w = cube_world();
+	move_point(w, 3, hs_v3(-0.6, 0.2, 2), hs_v3(-0.45, 0.2, 2));
+	move_point(w, 7, hs_v3(-0.6, -0.3, 2), hs_v3(-0.40, -0.3, 2));
+	hs_manipulate(w);
+	assert_int_equal(w->bodies[0].contact, HS_CONTACT_PUSH_MANY);
+	assert_vec3_near(w->bodies[0].pos, hs_v3(0.175, 0, 2), 1e-15);
+	assert_near(hs_quat_angle(w->bodies[0].rot), 0, 0);
+	hs_world_destroy(w);
+}
+
+// Grasp: the pose in the wrist frame is kept; open the hand and it flies on with its last motion.
+static void test_grasp_follow_release(void **state) {
+	(void)state;
+	hs_world *w = cube_world();
+	hs_hand *hand = &w->hands[0];
+	move_point(w, 3, hs_v3(-0.6, 0, 2), hs_v3(-0.45, 0, 2)); // two opposite faces: 180 deg
+	move_point(w, 7, hs_v3(0.6, 0, 2), hs_v3(0.45, 0, 2));
+	hs_world_step(w);
+	assert_int_equal(w->bodies[0].contact, HS_CONTACT_GRASP);
+	assert_vec3_near(w->bodies[0].pos, hs_v3(0, 0, 2), 0); // held where it was grasped
+	for (int k = 1; k <= 3; ++k) { // the wrist and fingers rise 0.1 per frame and turn 10 deg about z
+		hs_vec3 lift = hs_v3(0, 0, 0.1 * k);
+		hand->wrist_pos = lift;
+		hand->wrist_rot = hs_quat_from_axis_angle(hs_v3(0, 0, 1), k * 10 * HS_PI / 180);
+		hs_vec3 tip3 = hs_add(hs_quat_rotate(hand->wrist_rot, hs_v3(-0.45, 0, 2)), hs_v3(0, 0, 0));
+		hs_vec3 tip7 = hs_quat_rotate(hand->wrist_rot, hs_v3(0.45, 0, 2));
+		hand->points[3] = hs_add(tip3, lift);
+		hand->points[7] = hs_add(tip7, lift);
+		hs_world_step(w);
+		assert_int_equal(w->bodies[0].contact, HS_CONTACT_GRASP);
+		assert_vec3_near(w->bodies[0].pos, hs_add(hs_quat_rotate(hand->wrist_rot, hs_v3(0, 0, 2)), lift), 1e-14);
+	}
+	hs_vec3 last = w->bodies[0].pos, before = w->bodies[0].prev;
+	hand->points[3] = hand->points[7] = FAR; // the hand opens
+	hs_world_step(w);
+	assert_int_equal(w->bodies[0].contact, HS_CONTACT_NONE);
+	hs_vec3 expected = hs_add(hs_add(last, hs_sub(last, before)), hs_v3(0, 0, -9.81 / 3600)); // eq. 3
+	assert_vec3_near(w->bodies[0].pos, expected, 1e-14);
+	assert_near(hs_quat_angle(w->bodies[0].spin), 10 * HS_PI / 180, 1e-12); // keeps turning
+	hs_world_destroy(w);
+}
+
+// §4.3 paper mode: an object interfering with a moved object is translated with it.
+static void test_paper_mode_carries_interfering(void **state) {
+	(void)state;
+	hs_world *w = cube_world();
+	hs_object_def od = hs_default_object_def();
+	od.shape.index1 = 1;
+	od.position = hs_v3(0.95, 0, 2); // overlaps the first cube by 0.05
+	hs_world_add_object(w, &od, NULL);
+	move_point(w, 3, hs_v3(-0.6, 0, 2), hs_v3(-0.45, 0, 2)); // push the first cube by 0.05 along x
+	hs_world_step(w);
+	assert_vec3_near(w->bodies[0].pos, hs_v3(0.05, 0, 2), 1e-15);
+	assert_vec3_near(w->bodies[1].pos, hs_v3(1.0, 0, 2), 1e-15);
+	assert_true(w->bodies[1].carried);
+	hs_world_destroy(w);
+}
+
+int main(void) {
+	const struct CMUnitTest tests[] = {
+	    cmocka_unit_test(test_point_enters_face),
+	    cmocka_unit_test(test_point_inside_nearest_face),
+	    cmocka_unit_test(test_point_at_edge_and_surface),
+	    cmocka_unit_test(test_line_crosses_edge),
+	    cmocka_unit_test(test_line_across_and_line_ending_inside),
+	    cmocka_unit_test(test_classification),
+	    cmocka_unit_test(test_push_r_zero),
+	    cmocka_unit_test(test_push_t_zero),
+	    cmocka_unit_test(test_push_off_centre),
+	    cmocka_unit_test(test_push_many_translates),
+	    cmocka_unit_test(test_grasp_follow_release),
+	    cmocka_unit_test(test_paper_mode_carries_interfering),
+	};
+	return cmocka_run_group_tests_name("contact", tests, NULL, NULL);
+}
