@@ -14,7 +14,7 @@
 #include <sys/stat.h>
 #include <yaml.h>
 
-#include "handspring.h"
+#include "internal.h"
 
 #if defined(__GNUC__)
 #define HS_PRINTF(f, a) __attribute__((format(printf, f, a)))
@@ -37,6 +37,7 @@ static const size_t MAX_FILE_BYTES = (size_t)256 << 20; // a scenario is text; t
 static const double MIN_DT = 1.0 / 2000.0, MAX_DT = 1.0 / 12.0; // s: the hand paper ran at 12–17 fps
 static const double MAX_LENGTH = 1000.0;                     // m: largest size accepted
 static const double QUAT_NORM_TOLERANCE = 1e-6;
+enum { MAX_HANDS = 64, MAX_HAND_KEYS = 100000 };
 
 // ---------------------------------------------------------------------------------------------
 // expectations
@@ -113,6 +114,11 @@ struct hs_scenario {
 	unsigned char *seq_last; // the last state seen, recorded or not
 	hs_status step_status;
 	long failed_frame;
+	// hands and their input scripts (1999 paper §5.1: glove + tracker), sampled every frame
+	int hand_count;
+	char **hand_names;
+	hs_hand_id *hand_ids;
+	hs_hand_script *scripts;
 };
 
 // ---------------------------------------------------------------------------------------------
@@ -892,6 +898,264 @@ static bool read_objects(parser *p, const yaml_node_t *node, hs_world_def def) {
 	return true;
 }
 
+
+// ---------------------------------------------------------------------------------------------
+// hands: keyframes or a recorded glove + tracker file
+
+static void drive_hands(hs_scenario *s, double t) {
+	for (int h = 0; h < s->hand_count; ++h) {
+		hs_vec3 wrist;
+		hs_quat rot;
+		uint8_t sensors[HS_GLOVE_SENSORS];
+		hs_hand_script_sample(&s->scripts[h], t, &wrist, &rot, sensors);
+		hs_world_set_hand(s->world, s->hand_ids[h], wrist, rot, sensors);
+	}
+}
+
+static const char *const posture_names[] = {"open", "fist", "pinch", "point", "grasp"};
+
+// posture: a word (open, fist, pinch, point) or a one-key mapping { fist: 0.5 } / { grasp: 0.05 }
+static bool read_posture(parser *p, const yaml_node_t *node, const hs_hand_def *def, double out[HS_GLOVE_SENSORS]) {
+	int which = -1;
+	double amount = 1.0;
+	const yaml_node_t *amount_node = node;
+	if (is_scalar(node)) {
+		for (int i = 0; i < 5; ++i)
+			if (scalar_is(node, posture_names[i]))
+				which = i;
+		if (which == HS_POSTURE_GRASP)
+			return fail(p, node, "posture 'grasp' needs the object's width: { grasp: 0.05 }");
+	} else if (node->type == YAML_MAPPING_NODE && node->data.mapping.pairs.top - node->data.mapping.pairs.start == 1) {
+		const yaml_node_t *k = yaml_document_get_node(p->doc, node->data.mapping.pairs.start[0].key);
+		amount_node = yaml_document_get_node(p->doc, node->data.mapping.pairs.start[0].value);
+		for (int i = 0; k && is_scalar(k) && i < 5; ++i)
+			if (scalar_is(k, posture_names[i]))
+				which = i;
+		if (which >= 0 && !read_number(p, amount_node, posture_names[which], &amount))
+			return false;
+	}
+	if (which < 0)
+		return fail(p, node, "'posture' must be open, fist, pinch, point or a mapping like { grasp: 0.05 }, got %s",
+		            got(node).text);
+	uint8_t sensors[HS_GLOVE_SENSORS];
+	if (hs_hand_posture(def, (hs_posture)which, amount, sensors) != HS_OK)
+		return fail(p, amount_node, which == HS_POSTURE_GRASP ? "posture 'grasp' width must be within [0.01, 0.12] m, got %s"
+		                                                      : "posture '%s' amount must be within [0, 1], got %s",
+		            which == HS_POSTURE_GRASP ? show(amount_node).text : posture_names[which], show(amount_node).text);
+	for (int i = 0; i < HS_GLOVE_SENSORS; ++i)
+		out[i] = sensors[i];
+	return true;
+}
+
+static bool read_sensor_list(parser *p, const yaml_node_t *node, double out[HS_GLOVE_SENSORS]) {
+	if (node->type != YAML_SEQUENCE_NODE)
+		return fail(p, node, "'sensors' must be a list of 18 integers from 0 to 255, got %s", got(node).text);
+	if (sequence_length(node) != HS_GLOVE_SENSORS)
+		return fail(p, node, "'sensors' must be a list of 18 integers from 0 to 255, got %ld", sequence_length(node));
+	for (int i = 0; i < HS_GLOVE_SENSORS; ++i) {
+		long v;
+		if (!read_integer(p, sequence_item(p, node, i), "sensors", 0, 255, &v))
+			return false;
+		out[i] = (double)v;
+	}
+	return true;
+}
+
+// 18 joint angles in degrees, in the sensor order of handspring.h
+static bool read_angle_list(parser *p, const yaml_node_t *node, double out[HS_GLOVE_SENSORS]) {
+	double deg[HS_GLOVE_SENSORS];
+	const yaml_node_t *elements[HS_GLOVE_SENSORS];
+	if (!read_numbers(p, node, "angles_deg", HS_GLOVE_SENSORS, " in the glove's sensor order", deg, elements))
+		return false;
+	for (int i = 0; i < HS_GLOVE_SENSORS; ++i) {
+		bool wrist = i == HS_SENSOR_WRIST_PITCH || i == HS_SENSOR_WRIST_YAW;
+		double lo = wrist ? -64.0 : 0.0, hi = wrist ? 63.5 : 127.5; // what 8 bits at 0.5 deg can say
+		if (!(deg[i] >= lo && deg[i] <= hi))
+			return fail(p, elements[i], "'angles_deg' entry %d must be within [%g, %g] deg, got %s", i + 1, lo, hi,
+			            show(elements[i]).text);
+		out[i] = deg[i] / 0.5 + (wrist ? 128.0 : 0.0);
+	}
+	return true;
+}
+
+enum { K_T, K_WRIST, K_GRIP, K_RPY, K_QUAT, K_POSTURE, K_SENSORS, K_ANGLES, K_COUNT };
+static const char *const key_keys[K_COUNT] = {"t", "wrist", "grip", "rpy_deg", "quat", "posture", "sensors", "angles_deg"};
+
+static bool exclusive(parser *p, const fields *f, int a, int b) {
+	if (f->key[a] && f->key[b])
+		return fail(p, before(f->key[a], f->key[b]) ? f->key[b] : f->key[a], "'%s' and '%s' are exclusive: give one",
+		            key_keys[a], key_keys[b]);
+	return true;
+}
+
+static bool read_key(parser *p, const yaml_node_t *node, const hs_hand_def *def, const hs_hand_key *previous,
+                     hs_hand_key *key) {
+	if (node->type != YAML_MAPPING_NODE)
+		return fail(p, node, "a hand key must be a mapping like { t: 0, wrist: [x, y, z], posture: open }, got %s",
+		            got(node).text);
+	fields f;
+	if (!read_mapping(p, node, key_keys, K_COUNT, "hand key", &f))
+		return false;
+	if (!f.value[K_T])
+		return fail(p, node, "hand key is missing 't'");
+	if (!read_time(p, f.value[K_T], "t", &key->t))
+		return false;
+	if (previous && !(key->t > previous->t))
+		return fail(p, f.value[K_T], "hand keys must go forward in time: t = %s after t = %g", show(f.value[K_T]).text,
+		            previous->t);
+	if (!exclusive(p, &f, K_WRIST, K_GRIP) || !exclusive(p, &f, K_RPY, K_QUAT) ||
+	    !exclusive(p, &f, K_POSTURE, K_SENSORS) || !exclusive(p, &f, K_POSTURE, K_ANGLES) ||
+	    !exclusive(p, &f, K_SENSORS, K_ANGLES))
+		return false;
+	if (!previous && !f.value[K_WRIST] && !f.value[K_GRIP])
+		return fail(p, node, "the first hand key needs 'wrist' or 'grip'");
+	// what a key leaves out it keeps from the key before (the first: identity, open hand)
+	key->rot = previous ? previous->rot : hs_quat_identity();
+	key->wrist = previous ? previous->wrist : hs_v3(0, 0, 0);
+	if (previous) {
+		memcpy(key->sensors, previous->sensors, sizeof key->sensors);
+	} else {
+		uint8_t open[HS_GLOVE_SENSORS];
+		hs_hand_posture(def, HS_POSTURE_OPEN, 0.0, open);
+		for (int i = 0; i < HS_GLOVE_SENSORS; ++i)
+			key->sensors[i] = open[i];
+	}
+	if (f.value[K_RPY]) {
+		hs_vec3 rpy;
+		if (!read_vec3(p, f.value[K_RPY], "rpy_deg", &rpy))
+			return false;
+		key->rot = hs_quat_from_rpy(rpy.x * (HS_PI / 180.0), rpy.y * (HS_PI / 180.0), rpy.z * (HS_PI / 180.0));
+	}
+	if (f.value[K_QUAT]) {
+		double q[4];
+		if (!read_numbers(p, f.value[K_QUAT], "quat", 4, " [w, x, y, z]", q, NULL))
+			return false;
+		double norm = sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
+		if (!(fabs(norm - 1.0) <= QUAT_NORM_TOLERANCE))
+			return fail(p, f.value[K_QUAT], "'quat' must have norm 1 (within %g), got norm %.9g", QUAT_NORM_TOLERANCE, norm);
+		key->rot = hs_quat_normalize(hs_q(q[0], q[1], q[2], q[3]));
+	}
+	if (f.value[K_POSTURE] && !read_posture(p, f.value[K_POSTURE], def, key->sensors))
+		return false;
+	if (f.value[K_SENSORS] && !read_sensor_list(p, f.value[K_SENSORS], key->sensors))
+		return false;
+	if (f.value[K_ANGLES] && !read_angle_list(p, f.value[K_ANGLES], key->sensors))
+		return false;
+	if (f.value[K_WRIST] && !read_vec3(p, f.value[K_WRIST], "wrist", &key->wrist))
+		return false;
+	if (f.value[K_GRIP]) { // place the wrist so the posture's grip centre lands on this point
+		hs_vec3 grip, center, axis;
+		if (!read_vec3(p, f.value[K_GRIP], "grip", &grip))
+			return false;
+		uint8_t sensors[HS_GLOVE_SENSORS];
+		for (int i = 0; i < HS_GLOVE_SENSORS; ++i)
+			sensors[i] = (uint8_t)lround(key->sensors[i]);
+		hs_hand_grip(def, sensors, &center, &axis);
+		key->wrist = hs_sub(grip, hs_quat_rotate(key->rot, center));
+	}
+	return true;
+}
+
+enum { H_NAME, H_SIDE, H_FINGER_RADIUS, H_KEYS, H_RECORD, H_COUNT };
+static const char *const hand_keys[H_COUNT] = {"name", "side", "finger_radius", "keys", "record"};
+
+// The recorded file's path: relative to the scenario's folder.
+static char *sibling_path(const char *scenario_path, const char *file) {
+	size_t dir = 0;
+	const char *slash = strrchr(scenario_path, '/');
+	if (slash && file[0] != '/')
+		dir = (size_t)(slash - scenario_path) + 1;
+	char *out = malloc(dir + strlen(file) + 1);
+	if (out) {
+		memcpy(out, scenario_path, dir);
+		strcpy(out + dir, file);
+	}
+	return out;
+}
+
+static bool read_hand(parser *p, const yaml_node_t *node, int index, const char *path) {
+	hs_scenario *s = p->s;
+	if (node->type != YAML_MAPPING_NODE)
+		return fail(p, node, "hand %d must be a mapping, got %s", index + 1, got(node).text);
+	fields f;
+	if (!read_mapping(p, node, hand_keys, H_COUNT, "hand", &f))
+		return false;
+	if (!f.value[H_NAME])
+		return fail(p, node, "hand %d is missing 'name'", index + 1);
+	if (!read_text(p, f.value[H_NAME], "name", &s->hand_names[index]))
+		return false;
+	for (int h = 0; h < index; ++h)
+		if (strcmp(s->hand_names[h], s->hand_names[index]) == 0)
+			return fail(p, f.value[H_NAME], "duplicate hand name '%s'", s->hand_names[index]);
+	hs_hand_def def = hs_default_hand_def();
+	if (f.value[H_SIDE]) {
+		if (scalar_is(f.value[H_SIDE], "left"))
+			def.left = true;
+		else if (!scalar_is(f.value[H_SIDE], "right"))
+			return fail(p, f.value[H_SIDE], "'side' must be left or right, got %s", got(f.value[H_SIDE]).text);
+	}
+	if (f.value[H_FINGER_RADIUS]) {
+		if (!read_number(p, f.value[H_FINGER_RADIUS], "finger_radius", &def.finger_radius))
+			return false;
+		if (!(def.finger_radius > 0.0 && def.finger_radius <= 0.05))
+			return fail(p, f.value[H_FINGER_RADIUS], "'finger_radius' must be within (0, 0.05] m, got %s",
+			            show(f.value[H_FINGER_RADIUS]).text);
+	}
+	if (!f.value[H_KEYS] && !f.value[H_RECORD])
+		return fail(p, node, "hand '%s' needs 'keys' or 'record'", s->hand_names[index]);
+	if (f.value[H_KEYS] && f.value[H_RECORD])
+		return fail(p, before(f.key[H_KEYS], f.key[H_RECORD]) ? f.key[H_RECORD] : f.key[H_KEYS],
+		            "'keys' and 'record' are exclusive: give one");
+	hs_hand_script *script = &s->scripts[index];
+	if (f.value[H_KEYS]) {
+		const yaml_node_t *keys = f.value[H_KEYS];
+		if (keys->type != YAML_SEQUENCE_NODE)
+			return fail(p, keys, "'keys' must be a list of 1 to %d keys, got %s", MAX_HAND_KEYS, got(keys).text);
+		if (sequence_length(keys) < 1 || sequence_length(keys) > MAX_HAND_KEYS)
+			return fail(p, keys, "'keys' must be a list of 1 to %d keys, got %ld", MAX_HAND_KEYS, sequence_length(keys));
+		script->keys = calloc((size_t)sequence_length(keys), sizeof *script->keys);
+		if (!script->keys)
+			return fail(p, keys, "out of memory");
+		for (long k = 0; k < sequence_length(keys); ++k) {
+			if (!read_key(p, sequence_item(p, keys, k), &def, k ? &script->keys[k - 1] : NULL, &script->keys[k]))
+				return false;
+			script->key_count = (int)k + 1;
+		}
+	} else {
+		char *file = NULL;
+		if (!read_text(p, f.value[H_RECORD], "record", &file))
+			return false;
+		char *full = sibling_path(path, file);
+		free(file);
+		if (!full)
+			return fail(p, f.value[H_RECORD], "out of memory");
+		bool ok = hs_record_load(full, full, script, p->err);
+		free(full);
+		if (!ok)
+			return false;
+	}
+	hs_status status = HS_OK;
+	s->hand_ids[index] = hs_world_add_hand(s->world, &def, &status);
+	if (s->hand_ids[index].index1 == 0)
+		return fail(p, node, "hand '%s': cannot add it to the world: %s", s->hand_names[index], hs_status_string(status));
+	return true;
+}
+
+static bool read_hands(parser *p, const yaml_node_t *node, const char *path) {
+	hs_scenario *s = p->s;
+	long n = sequence_length(node);
+	s->hand_names = calloc((size_t)n, sizeof *s->hand_names);
+	s->hand_ids = calloc((size_t)n, sizeof *s->hand_ids);
+	s->scripts = calloc((size_t)n, sizeof *s->scripts);
+	if (!s->hand_names || !s->hand_ids || !s->scripts)
+		return fail(p, node, "out of memory");
+	s->hand_count = (int)n;
+	for (int h = 0; h < s->hand_count; ++h)
+		if (!read_hand(p, sequence_item(p, node, h), h, path))
+			return false;
+	return true;
+}
+
 // Index of the object named by a scalar, or -1.
 static int find_object(const parser *p, const yaml_node_t *node) {
 	size_t n = node->data.scalar.length;
@@ -1226,13 +1490,14 @@ static void record(hs_scenario *s) {
 // public: load, destroy, step
 
 static bool read_scenario(parser *p, const yaml_node_t *root, const char *path) {
-	static const char *const keys[] = {"name", "description", "dt", "duration", "gravity", "model", "objects", "expect"};
+	static const char *const keys[] = {"name",    "description", "dt",     "duration", "gravity",
+	                                   "model",   "objects",     "expect", "hands"};
 	hs_scenario *s = p->s;
 	if (root->type != YAML_MAPPING_NODE)
 		return fail(p, root, "a scenario must be a mapping of keys (description, dt, duration, objects, ...), got %s",
 		            got(root).text);
 	fields f;
-	if (!read_mapping(p, root, keys, 8, "scenario", &f))
+	if (!read_mapping(p, root, keys, 9, "scenario", &f))
 		return false;
 	size_t base_len;
 	const char *base = base_name(path, &base_len);
@@ -1265,7 +1530,17 @@ static bool read_scenario(parser *p, const yaml_node_t *root, const char *path) 
 		return false;
 	if (f.value[5] && !read_model(p, f.value[5], &def))
 		return false;
+	if (f.value[8]) {
+		if (f.value[8]->type != YAML_SEQUENCE_NODE)
+			return fail(p, f.value[8], "'hands' must be a list of 1 to %d hands, got %s", MAX_HANDS, got(f.value[8]).text);
+		if (sequence_length(f.value[8]) < 1 || sequence_length(f.value[8]) > MAX_HANDS)
+			return fail(p, f.value[8], "'hands' must be a list of 1 to %d hands, got %ld", MAX_HANDS,
+			            sequence_length(f.value[8]));
+		def.max_hands = (int)sequence_length(f.value[8]);
+	}
 	if (!read_objects(p, f.value[6], def))
+		return false;
+	if (f.value[8] && !read_hands(p, f.value[8], path))
 		return false;
 	if (f.value[7] && !read_expect(p, f.value[7]))
 		return false;
@@ -1334,7 +1609,8 @@ hs_scenario *hs_scenario_load(const char *path, hs_error *err) {
 		hs_scenario_destroy(s);
 		return NULL;
 	}
-	record(s); // frame 0: the initial state
+	drive_hands(s, 0.0); // the hands' first pose: no motion before frame 1
+	record(s);           // frame 0: the initial state
 	return s;
 }
 
@@ -1359,6 +1635,13 @@ void hs_scenario_destroy(hs_scenario *s) {
 	free(s->seq_len);
 	free(s->seq_overflow);
 	free(s->seq_last);
+	for (int h = 0; h < s->hand_count; ++h) {
+		free(s->hand_names ? s->hand_names[h] : NULL);
+		free(s->scripts ? s->scripts[h].keys : NULL);
+	}
+	free(s->hand_names);
+	free(s->hand_ids);
+	free(s->scripts);
 	free(s);
 }
 
@@ -1380,6 +1663,7 @@ int hs_scenario_expectation_count(const hs_scenario *s) {
 bool hs_scenario_step(hs_scenario *s) {
 	if (!s || s->frame >= s->frames || s->step_status != HS_OK)
 		return false;
+	drive_hands(s, (double)(s->frame + 1) * s->dt);
 	hs_status status = hs_world_step(s->world);
 	if (status != HS_OK) { // reported by hs_scenario_check as a failure
 		s->step_status = status;
