@@ -113,6 +113,11 @@ static void carry_along(hs_world *world, int moved, hs_vec3 d) {
 	}
 }
 
+static void follow_wrist(hs_body *body, const hs_hand *hand) {
+	body->pos = hs_add(hand->wrist_pos, hs_quat_rotate(hand->wrist_rot, body->grip_pos));
+	body->rot = hs_quat_normalize(hs_quat_mul(hand->wrist_rot, body->grip_rot));
+}
+
 // Eq. 3 on release: the object flies on with the motion and the turn of its last frame.
 static void release(hs_body *body) {
 	body->spin = hs_quat_normalize(hs_quat_mul(body->rot, hs_quat_conj(body->rot_prev)));
@@ -128,9 +133,27 @@ void hs_manipulate(hs_world *world) {
 	for (int i = 0; i < world->object_count; ++i) {
 		hs_body *body = &world->bodies[i];
 		int first = world->contact_count;
-		int n = hs_contact_detect(world, i);
+		hs_vec3 old_pos = body->pos;
+		hs_quat old_rot = body->rot;
+		hs_contact_state state = HS_CONTACT_NONE;
+		int n = 0;
+		if (body->grasped_by > 0) {
+			// a held object moves with its wrist (§3.2 (2)); the grasp continues while the fingers,
+			// seen from the object so moved, still grasp it
+			follow_wrist(body, &world->hands[body->grasped_by - 1]);
+			n = hs_contact_detect(world, i);
+			state = hs_contact_classify(&world->contacts[first], n, world->def.grasp_threshold_deg);
+			if (state != HS_CONTACT_GRASP) {
+				body->pos = old_pos;
+				body->rot = old_rot;
+				world->contact_count = first;
+			}
+		}
+		if (state != HS_CONTACT_GRASP) {
+			n = hs_contact_detect(world, i);
+			state = hs_contact_classify(&world->contacts[first], n, world->def.grasp_threshold_deg);
+		}
 		const hs_contact *cs = &world->contacts[first];
-		hs_contact_state state = hs_contact_classify(cs, n, world->def.grasp_threshold_deg);
 		bool was_held = body->held != 0;
 		body->contact = (uint8_t)state;
 		body->held = 0;
@@ -139,8 +162,6 @@ void hs_manipulate(hs_world *world) {
 				release(body);
 			continue;
 		}
-		hs_vec3 old_pos = body->pos;
-		hs_quat old_rot = body->rot;
 		if (state == HS_CONTACT_GRASP) {
 			int h = grasping_hand(world, body, cs, n);
 			const hs_hand *hand = &world->hands[h];
@@ -149,8 +170,7 @@ void hs_manipulate(hs_world *world) {
 				body->grip_pos = hs_quat_inv_rotate(hand->wrist_rot, hs_sub(body->pos, hand->wrist_pos));
 				body->grip_rot = hs_quat_normalize(hs_quat_mul(hs_quat_conj(hand->wrist_rot), body->rot));
 			}
-			body->pos = hs_add(hand->wrist_pos, hs_quat_rotate(hand->wrist_rot, body->grip_pos));
-			body->rot = hs_quat_normalize(hs_quat_mul(hand->wrist_rot, body->grip_rot));
+			follow_wrist(body, hand);
 		} else if (state == HS_CONTACT_PUSH_ONE) {
 			body->grasped_by = 0;
 			const hs_hand *hand = &world->hands[cs[0].hand.index1 - 1];
