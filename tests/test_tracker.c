@@ -1,0 +1,453 @@
+// test_tracker.c — the tracker daemon (§3, §5.1): 50 Hz sampling from any frame rate, velocity and
+// acceleration estimates with and without the Fastrak noise model, rest / motion events, drop
+// versus throw (§4.4), catch, and 'I want this one' selection.
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+
+#include <cmocka.h>
+
+#include <gsl/gsl_rng.h>
+
+#include "spring_internal.h"
+#include "test_util.h"
+
+static const hs_vec3 EARTH = {0.0, 0.0, -9.81};
+
+static hs_world *spring_world(double dt, const hs_spring_def *sd) {
+	hs_world_def def = hs_default_world_def();
+	def.dt = dt;
+	def.gravity = EARTH;
+	hs_status st;
+	hs_world *w = hs_world_create(&def, &st);
+	assert_non_null(w);
+	hs_spring_def d = sd ? *sd : hs_default_spring_def();
+	assert_int_equal(hs_world_enable_springs(w, &d), HS_OK);
+	return w;
+}
+
+static hs_object_id add_sphere(hs_world *w, double r, double mass, hs_vec3 pos, hs_vec3 vel) {
+	hs_status st;
+	hs_shape *shape = hs_shape_sphere(r, &st);
+	assert_non_null(shape);
+	hs_shape_id sid = hs_world_add_shape(w, shape, &st);
+	assert_int_equal(st, HS_OK);
+	hs_object_def od = hs_default_object_def();
+	od.shape = sid;
+	od.position = pos;
+	od.velocity = vel;
+	od.density = mass / shape->volume;
+	hs_shape_destroy(shape);
+	hs_object_id id = hs_world_add_object(w, &od, &st);
+	assert_int_equal(st, HS_OK);
+	return id;
+}
+
+static void stylus_at(hs_world *w, hs_vec3 p, bool button) {
+	assert_int_equal(hs_world_set_stylus(w, p, hs_quat_identity(), button), HS_OK);
+}
+
+static void step(hs_world *w) { assert_int_equal(hs_world_step(w), HS_OK); }
+
+static hs_tracker_state tracker_of(hs_world *w) {
+	hs_tracker_state t;
+	assert_int_equal(hs_world_tracker_state(w, &t), HS_OK);
+	return t;
+}
+
+static hs_spring_state spring_of(hs_world *w) {
+	hs_spring_state s;
+	assert_int_equal(hs_world_spring_state(w, &s), HS_OK);
+	return s;
+}
+
+static hs_vec3 pos_of(hs_world *w, hs_object_id id) {
+	hs_object_state s;
+	assert_int_equal(hs_world_object_state(w, id, &s), HS_OK);
+	return s.position;
+}
+
+// The least-squares quadratic is exact on linear and quadratic paths (to rounding).
+static void test_estimates_exact_on_polynomial_paths(void **state) {
+	(void)state;
+	hs_spring_def sd = hs_default_spring_def();
+	for (int window = 3; window <= 16; window += 13) {
+		sd.tracker_window = window;
+		hs_tracker tr;
+		hs_tracker_init(&tr, &sd, NULL, 0.0);
+		hs_vec3 p0 = hs_v3(0.3, -0.2, 1.1), v = hs_v3(0.7, -1.3, 0.25);
+		for (int k = 0; k < 40; ++k) { // linear: p = p0 + v t
+			double t = 0.02 * k;
+			hs_tracker_record(&tr, t, hs_mul_add(p0, t, v), hs_quat_identity(), false);
+			if (k >= 1) {
+				assert_vec3_near(tr.velocity, v, 1e-12);
+				assert_vec3_near(tr.acceleration, hs_v3(0, 0, 0), 1e-9);
+			}
+		}
+		hs_tracker_init(&tr, &sd, NULL, 0.0);
+		hs_vec3 a = hs_v3(-2.0, 0.5, -9.81);
+		for (int k = 0; k < 40; ++k) { // quadratic: p = p0 + v t + a t²/2
+			double t = 0.02 * k;
+			hs_tracker_record(&tr, t, hs_add(hs_mul_add(p0, t, v), hs_scale(a, 0.5 * t * t)), hs_quat_identity(),
+			                  false);
+			if (k >= 2) {
+				assert_vec3_near(tr.velocity, hs_mul_add(v, t, a), 1e-11);
+				assert_vec3_near(tr.acceleration, a, 1e-8);
+			}
+		}
+		assert_int_equal(tr.count, 40);
+	}
+}
+
+// With the Fastrak's 0.762 mm RMS noise, the window-9 fit's velocity error is 0.0181 m/s RMS per axis
+// (σ √(Σ w²) of the fit's weights, tracker.c). Over 3000 samples the measured RMS must lie within 10 %
+// of that and no error may exceed 5.5 σ (a 4e-8 chance per draw); without noise the error is zero.
+static void test_velocity_estimate_with_noise(void **state) {
+	(void)state;
+	hs_spring_def sd = hs_default_spring_def();
+	gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
+	assert_non_null(rng);
+	gsl_rng_set(rng, 2024);
+	hs_tracker tr;
+	hs_tracker_init(&tr, &sd, rng, 0.0);
+	hs_vec3 p0 = hs_v3(0.0, 0.2, 1.0), v = hs_v3(0.8, 0.1, -0.4);
+	const double sigma_v = 0.01805;
+	double sum2 = 0.0, worst = 0.0;
+	int n = 0;
+	for (int k = 0; k < 3000; ++k) {
+		double t = 0.02 * k;
+		hs_tracker_record(&tr, t, hs_mul_add(p0, t, v), hs_quat_identity(), false);
+		if (k < sd.tracker_window)
+			continue;
+		hs_vec3 err = hs_sub(tr.velocity, v);
+		double e[3] = {err.x, err.y, err.z};
+		for (int i = 0; i < 3; ++i) {
+			sum2 += e[i] * e[i];
+			worst = fabs(e[i]) > worst ? fabs(e[i]) : worst;
+			n++;
+		}
+	}
+	double rms = sqrt(sum2 / n);
+	printf("tracker velocity noise: RMS %.4f m/s per axis (predicted %.4f), worst %.4f m/s\n", rms, sigma_v, worst);
+	assert_near(rms, sigma_v, 0.1 * sigma_v);
+	assert_true(worst < 5.5 * sigma_v);
+	// the noisy samples scatter about the path by the Fastrak's 0.762 mm
+	hs_tracker_sample s;
+	assert_true(hs_tracker_sample_at(&tr, 0, &s));
+	assert_true(fabs(s.position.x - (p0.x + v.x * s.time)) < 5.0 * 0.762e-3);
+	assert_true(hs_length(hs_sub(s.position, hs_mul_add(p0, s.time, v))) > 0.0);
+	gsl_rng_free(rng);
+}
+
+// 50 Hz from any frame rate: one sample per 20 ms tick, the stylus interpolated within the frame.
+static void test_resampling_at_50_hz(void **state) {
+	(void)state;
+	const double dts[] = {1.0 / 12, 1.0 / 60, 1.0 / 1000, 1.0 / 50};
+	const long frames[] = {12, 60, 1000, 50};
+	for (int k = 0; k < 4; ++k) {
+		hs_world *w = spring_world(dts[k], NULL);
+		hs_vec3 p0 = hs_v3(0.1, 0.2, 0.3), v = hs_v3(0.5, -0.25, 0.125);
+		stylus_at(w, p0, false);
+		for (long f = 1; f <= frames[k]; ++f) {
+			stylus_at(w, hs_mul_add(p0, (double)f * dts[k], v), false);
+			step(w);
+		}
+		hs_tracker_state ts = tracker_of(w);
+		assert_int_equal(ts.sample_count, 51); // t = 0, 0.02, ..., 1.00
+		for (int age = 0; age < 51 && age < HS_TRACKER_CAPACITY; ++age) {
+			hs_tracker_sample s;
+			assert_int_equal(hs_world_tracker_sample(w, age, &s), HS_OK);
+			assert_near(s.time, 0.02 * (50 - age), 1e-12);
+			assert_vec3_near(s.position, hs_mul_add(p0, s.time, v), 1e-12);
+		}
+		assert_vec3_near(ts.velocity, v, 1e-9);
+		hs_tracker_sample s;
+		assert_int_equal(hs_world_tracker_sample(w, 51, &s), HS_ERR_INVALID_ARGUMENT);
+		hs_world_destroy(w);
+	}
+}
+
+// Rest → motion start above 0.20 m/s → motion end below 0.10 m/s; between the two nothing changes.
+// The hand changes speed smoothly (smoothstep over 0.5 s), as a hand does: a quadratic fit overshoots
+// at a kink of the path, by 40 % for a sudden start.
+static void test_rest_and_motion_events(void **state) {
+	(void)state;
+	const double dt = 1.0 / 100;
+	hs_world *w = spring_world(dt, NULL);
+	hs_vec3 p = hs_v3(0, 0, 0.5);
+	const double levels[] = {0.0, 0.15, 0.5, 0.15, 0.05, 0.0};
+	// after each phase: 0 at rest; 0.15 m/s, between the thresholds: still at rest; 0.5 m/s: moving;
+	// back to 0.15 m/s: still moving; 0.05 m/s: at rest; still
+	const bool at_rest_after[] = {true, true, false, false, true, true};
+	const long starts_after[] = {0, 0, 1, 1, 1, 1}, ends_after[] = {0, 0, 0, 0, 1, 1};
+	stylus_at(w, p, false);
+	double speed = 0.0;
+	for (int phase = 0; phase < 6; ++phase) {
+		double from = speed, to = levels[phase];
+		double lo = INFINITY, hi = 0.0; // estimated speed during the hold
+		for (int f = 0; f < 150; ++f) { // 0.5 s of transition, 1 s of hold
+			double u = f < 50 ? (f + 1) / 50.0 : 1.0;
+			speed = from + (to - from) * u * u * (3.0 - 2.0 * u);
+			p.x += speed * dt;
+			stylus_at(w, p, false);
+			step(w);
+			if (f >= 75) {
+				double s = tracker_of(w).speed;
+				lo = s < lo ? s : lo;
+				hi = s > hi ? s : hi;
+			}
+		}
+		hs_tracker_state ts = tracker_of(w);
+		assert_near(lo, to, 1e-9); // steady speed: estimated exactly
+		assert_near(hi, to, 1e-9);
+		assert_true(ts.at_rest == at_rest_after[phase]);
+		assert_int_equal(ts.motion_starts, starts_after[phase]);
+		assert_int_equal(ts.motion_ends, ends_after[phase]);
+		if (phase == 2) {
+			assert_int_equal(ts.last_event, HS_TRACKER_EVENT_MOTION_START);
+			assert_true(ts.last_event_time > 3.0 && ts.last_event_time < 3.5); // in the 0.15 → 0.5 ramp
+		}
+		if (phase == 4) {
+			assert_int_equal(ts.last_event, HS_TRACKER_EVENT_MOTION_END);
+			assert_true(ts.last_event_time > 6.0 && ts.last_event_time < 6.5); // in the 0.15 → 0.05 ramp
+		}
+	}
+	hs_world_destroy(w);
+}
+
+// With the noise model on, a resting hand stays 'at rest' (5.5 σ below the rest threshold).
+static void test_noisy_rest_stays_at_rest(void **state) {
+	(void)state;
+	hs_spring_def sd = hs_default_spring_def();
+	sd.noise = true;
+	sd.noise_seed = 99;
+	hs_world *w = spring_world(1.0 / 60, &sd);
+	stylus_at(w, hs_v3(0.1, 0.1, 0.4), false);
+	double top = 0.0;
+	for (int f = 0; f < 600; ++f) {
+		step(w);
+		double speed = tracker_of(w).speed;
+		if (f >= 12) // once the fit window is full (9 samples = 0.16 s)
+			top = speed > top ? speed : top;
+	}
+	printf("noisy resting hand: highest speed estimate %.4f m/s over 10 s\n", top);
+	hs_tracker_state ts = tracker_of(w);
+	assert_true(ts.at_rest);
+	assert_int_equal(ts.motion_starts, 0);
+	assert_true(top > 0.0 && top < 0.2);
+	hs_tracker_sample s;
+	assert_int_equal(hs_world_tracker_sample(w, 0, &s), HS_OK);
+	assert_true(hs_quat_angle(s.orientation) > 0.0 && hs_quat_angle(s.orientation) < 5.0 * 0.15 * HS_PI / 180.0 * 2.0);
+	hs_world_destroy(w);
+}
+
+// Carry an object at constant speed `speed` from the first frame, release the button after 0.5 s.
+static hs_release release_at_speed(double speed, hs_vec3 *object_velocity) {
+	hs_world *w = spring_world(1.0 / 60, NULL);
+	hs_object_id ball = add_sphere(w, 0.03, 0.1, hs_v3(0, 0, 0.9), hs_v3(0, 0, 0));
+	hs_vec3 s = hs_v3(0, 0, 1.0);
+	stylus_at(w, s, true);
+	assert_int_equal(hs_world_spring_attach(w, ball), HS_OK);
+	for (int f = 0; f < 30; ++f) {
+		s.x += speed / 60;
+		stylus_at(w, s, true);
+		step(w);
+	}
+	assert_int_equal(spring_of(w).attached.index1, ball.index1);
+	s.x += speed / 60;
+	stylus_at(w, s, false);
+	step(w);
+	assert_int_equal(spring_of(w).attached.index1, 0);
+	hs_release r;
+	assert_int_equal(hs_world_spring_last_release(w, &r), HS_OK);
+	assert_int_equal(r.object.index1, ball.index1);
+	hs_spring_object o;
+	assert_int_equal(hs_world_spring_object(w, ball, &o), HS_OK);
+	*object_velocity = o.velocity;
+	hs_world_destroy(w);
+	return r;
+}
+
+// §4.4: released at rest → drop; released while moving → throw with the hand's velocity.
+// The line is motion_speed (0.20 m/s): 1 % below stays a drop, 1 % above is a throw.
+static void test_drop_versus_throw_threshold(void **state) {
+	(void)state;
+	hs_vec3 v;
+	hs_release below = release_at_speed(0.99 * 0.20, &v);
+	assert_int_equal(below.kind, HS_RELEASE_DROP);
+	assert_near(below.hand_speed, 0.99 * 0.20, 1e-9);
+	assert_vec3_near(below.velocity, v, 0.0); // the object kept its own velocity
+	hs_release above = release_at_speed(1.01 * 0.20, &v);
+	assert_int_equal(above.kind, HS_RELEASE_THROW);
+	assert_vec3_near(above.velocity, hs_v3(1.01 * 0.20, 0, 0), 1e-9); // the hand's velocity
+	assert_vec3_near(v, above.velocity, 0.0);
+	assert_near(above.time, 31.0 / 60.0, 1e-12);
+}
+
+// The same path released in motion and after coming to rest: throw, then drop; the thrown object
+// flies off with the hand's velocity, the dropped one falls straight down.
+static void test_drop_and_throw_on_one_path(void **state) {
+	(void)state;
+	for (int rest = 0; rest < 2; ++rest) {
+		hs_world *w = spring_world(1.0 / 60, NULL);
+		hs_object_id ball = add_sphere(w, 0.03, 0.1, hs_v3(0, 0, 0.03), hs_v3(0, 0, 0));
+		hs_vec3 s = hs_v3(0, 0, 0.03);
+		stylus_at(w, s, true); // inside the ball: direct picking
+		step(w);
+		hs_spring_state ss = spring_of(w);
+		assert_int_equal(ss.attached.index1, ball.index1);
+		assert_int_equal(ss.attach_kind, HS_ATTACH_PICK);
+		for (int f = 0; f < 60; ++f) { // lift to 0.5 m
+			s.z += 0.45 / 60;
+			stylus_at(w, s, true);
+			step(w);
+		}
+		for (int f = 0; f < 60; ++f) { // swing out along x at up to 1.5 m/s
+			double t = (f + 1) / 60.0;
+			s.x = 0.75 * t * t;
+			stylus_at(w, s, true);
+			step(w);
+		}
+		if (rest)
+			for (int f = 0; f < 60; ++f)
+				step(w); // the hand stops and rests for 1 s
+		hs_vec3 before = pos_of(w, ball);
+		if (!rest) // the hand goes on moving while the button comes up
+			s.x = 0.75 * (61.0 / 60.0) * (61.0 / 60.0);
+		stylus_at(w, s, false);
+		step(w);
+		hs_release r;
+		assert_int_equal(hs_world_spring_last_release(w, &r), HS_OK);
+		assert_int_equal(r.kind, rest ? HS_RELEASE_DROP : HS_RELEASE_THROW);
+		if (!rest)
+			assert_near(r.velocity.x, 1.5, 0.02);
+		for (int f = 0; f < 120; ++f)
+			step(w);
+		hs_vec3 after = pos_of(w, ball);
+		assert_true(after.z == 0.03); // on the floor
+		if (rest)
+			assert_near(after.x, before.x, 0.01); // straight down
+		else
+			assert_true(after.x > before.x + 0.3); // flew on
+		hs_world_destroy(w);
+	}
+}
+
+// §4.4 catch: pressing the button next to a flying object attaches the spring; it stops and hangs.
+static void test_catch(void **state) {
+	(void)state;
+	hs_world *w = spring_world(1.0 / 60, NULL);
+	hs_vec3 p0 = hs_v3(-0.6, 0, 0.6), v0 = hs_v3(2.0, 0, 1.0);
+	hs_object_id ball = add_sphere(w, 0.04, 0.2, p0, v0);
+	double tc = 0.3; // where the ball will be at 0.3 s
+	hs_vec3 s = hs_v3(p0.x + v0.x * tc, 0.02, p0.z + v0.z * tc - 0.5 * 9.81 * tc * tc);
+	stylus_at(w, s, false);
+	bool pressed = false;
+	for (int f = 0; f < 40 && !pressed; ++f) {
+		step(w);
+		double d = hs_distance(pos_of(w, ball), s) - 0.04;
+		if (d < 0.04) { // within reach: press for the next frame
+			stylus_at(w, s, true);
+			step(w);
+			pressed = true;
+		}
+	}
+	assert_true(pressed);
+	hs_spring_state ss = spring_of(w);
+	assert_int_equal(ss.attached.index1, ball.index1);
+	assert_int_equal(ss.attach_kind, HS_ATTACH_CATCH);
+	for (int f = 0; f < 240; ++f) {
+		stylus_at(w, s, true);
+		step(w);
+	}
+	hs_spring_object o;
+	assert_int_equal(hs_world_spring_object(w, ball, &o), HS_OK);
+	assert_near(hs_length(o.velocity), 0.0, 1e-6); // decelerated and stopped
+	ss = spring_of(w);
+	assert_near(ss.extension, 0.2 * o.rest_length, 1e-6); // hanging at rest
+	hs_vec3 p = pos_of(w, ball);
+	assert_near(p.x, s.x, 1e-6);
+	assert_near(p.y, s.y, 1e-6);
+	hs_world_destroy(w);
+}
+
+// A button press far from everything attaches nothing; a press at rest next to a resting object
+// that was never a candidate attaches nothing either.
+static void test_press_in_empty_space(void **state) {
+	(void)state;
+	hs_world *w = spring_world(1.0 / 60, NULL);
+	add_sphere(w, 0.05, 0.5, hs_v3(0.5, 0, 0.05), hs_v3(0, 0, 0));
+	stylus_at(w, hs_v3(0.3, 0, 0.05), true);
+	step(w);
+	hs_spring_state ss = spring_of(w);
+	assert_int_equal(ss.attached.index1, 0);
+	assert_int_equal(ss.candidate.index1, 0);
+	hs_world_destroy(w);
+}
+
+// §3 'I want this one': the hand moves toward one of three objects; the ray along its velocity
+// picks that one; a press then attaches it. Inside an object, direct picking wins.
+static void test_selection_among_three(void **state) {
+	(void)state;
+	for (int target = 0; target < 3; ++target) {
+		hs_world *w = spring_world(1.0 / 60, NULL);
+		hs_object_id ids[3];
+		hs_vec3 centres[3];
+		for (int i = 0; i < 3; ++i) {
+			centres[i] = hs_v3(0.6, -0.3 + 0.3 * i, 0.05);
+			ids[i] = add_sphere(w, 0.05, 0.5, centres[i], hs_v3(0, 0, 0));
+		}
+		hs_vec3 s = hs_v3(0, 0, 0.15);
+		hs_vec3 dir = hs_normalize(hs_sub(centres[target], s));
+		stylus_at(w, s, false);
+		for (int f = 0; f < 10; ++f) // at rest: no candidate yet
+			step(w);
+		assert_int_equal(spring_of(w).candidate.index1, 0);
+		for (int f = 0; f < 45; ++f) { // 0.75 s at 0.5 m/s toward the target (0.375 m of 0.61 m)
+			s = hs_mul_add(s, 0.5 / 60, dir);
+			stylus_at(w, s, false);
+			step(w);
+		}
+		assert_int_equal(spring_of(w).candidate.index1, ids[target].index1);
+		for (int f = 0; f < 30; ++f) // stop: the candidate stays
+			step(w);
+		assert_true(tracker_of(w).at_rest);
+		assert_int_equal(spring_of(w).candidate.index1, ids[target].index1);
+		stylus_at(w, s, true);
+		step(w);
+		hs_spring_state ss = spring_of(w);
+		assert_int_equal(ss.attached.index1, ids[target].index1);
+		assert_int_equal(ss.attach_kind, HS_ATTACH_SELECT);
+		hs_world_destroy(w);
+	}
+	// direct picking: the stylus inside the middle object, at rest
+	hs_world *w = spring_world(1.0 / 60, NULL);
+	hs_object_id ids[3];
+	for (int i = 0; i < 3; ++i)
+		ids[i] = add_sphere(w, 0.05, 0.5, hs_v3(0.6, -0.3 + 0.3 * i, 0.05), hs_v3(0, 0, 0));
+	stylus_at(w, hs_v3(0.61, 0.01, 0.06), false);
+	step(w);
+	assert_int_equal(spring_of(w).candidate.index1, ids[1].index1);
+	stylus_at(w, hs_v3(0.61, 0.01, 0.06), true);
+	step(w);
+	assert_int_equal(spring_of(w).attached.index1, ids[1].index1);
+	assert_int_equal(spring_of(w).attach_kind, HS_ATTACH_PICK);
+	hs_world_destroy(w);
+}
+
+int main(void) {
+	const struct CMUnitTest tests[] = {
+	    cmocka_unit_test(test_estimates_exact_on_polynomial_paths),
+	    cmocka_unit_test(test_velocity_estimate_with_noise),
+	    cmocka_unit_test(test_resampling_at_50_hz),
+	    cmocka_unit_test(test_rest_and_motion_events),
+	    cmocka_unit_test(test_noisy_rest_stays_at_rest),
+	    cmocka_unit_test(test_drop_versus_throw_threshold),
+	    cmocka_unit_test(test_drop_and_throw_on_one_path),
+	    cmocka_unit_test(test_catch),
+	    cmocka_unit_test(test_press_in_empty_space),
+	    cmocka_unit_test(test_selection_among_three),
+	};
+	return cmocka_run_group_tests_name("tracker", tests, NULL, NULL);
+}
