@@ -48,7 +48,9 @@ typedef enum predicate {
 	PRED_FLOOR_CONTACTS,
 	PRED_ON_FACE,
 	PRED_BELOW,
-	PRED_ABOVE, // the predicates above take `at`
+	PRED_ABOVE,
+	PRED_MOVED,
+	PRED_TURNED, // the predicates above take `at`
 	PRED_LANDS_AT,
 	PRED_STILL,
 	PRED_CONTACT_SEQUENCE,
@@ -56,10 +58,11 @@ typedef enum predicate {
 } predicate;
 
 static const char *const predicate_names[PRED_COUNT] = {
-    "near", "resting", "floor_contacts", "on_face", "below", "above", "lands_at", "still", "contact_sequence",
+    "near", "resting", "floor_contacts", "on_face", "below", "above", "moved", "turned_deg",
+    "lands_at", "still", "contact_sequence",
 };
 
-static bool predicate_uses_at(predicate p) { return p <= PRED_ABOVE; }
+static bool predicate_uses_at(predicate p) { return p <= PRED_TURNED; }
 
 // One `expect` clause as written.
 typedef struct clause {
@@ -119,6 +122,7 @@ struct hs_scenario {
 	char **hand_names;
 	hs_hand_id *hand_ids;
 	hs_hand_script *scripts;
+	hs_object_state *initial; // every object at frame 0 (moved, turned_deg)
 };
 
 // ---------------------------------------------------------------------------------------------
@@ -1175,8 +1179,8 @@ static int find_object(const parser *p, const yaml_node_t *node) {
 
 enum { E_OBJECT = PRED_COUNT, E_AT, E_TOLERANCE, E_AXES, E_FROM, E_COUNT };
 static const char *const expect_keys[E_COUNT] = {
-    "near", "resting", "floor_contacts", "on_face", "below", "above", "lands_at", "still", "contact_sequence",
-    "object", "at", "tolerance", "axes", "from",
+    "near", "resting", "floor_contacts", "on_face", "below", "above", "moved", "turned_deg",
+    "lands_at", "still", "contact_sequence", "object", "at", "tolerance", "axes", "from",
 };
 
 static bool read_clause(parser *p, const yaml_node_t *node, clause *c) {
@@ -1210,8 +1214,8 @@ static bool read_clause(parser *p, const yaml_node_t *node, clause *c) {
 	}
 	if (pred < 0)
 		return fail(p, node,
-		            "expect clause needs a predicate: near, resting, floor_contacts, on_face, below, above, lands_at, "
-		            "still or contact_sequence");
+		            "expect clause needs a predicate: near, resting, floor_contacts, on_face, below, above, moved, "
+		            "turned_deg, lands_at, still or contact_sequence");
 	c->pred = (predicate)pred;
 	const char *pn = predicate_names[pred];
 	const yaml_node_t *v = f.value[pred];
@@ -1283,6 +1287,13 @@ static bool read_clause(parser *p, const yaml_node_t *node, clause *c) {
 	case PRED_ABOVE:
 		if (!read_number(p, v, pn, &c->value))
 			return false;
+		break;
+	case PRED_MOVED:
+	case PRED_TURNED:
+		if (!read_number(p, v, pn, &c->value))
+			return false;
+		if (!(c->value >= 0.0))
+			return fail(p, v, "'%s' must be >= 0, got %s", pn, show(v).text);
 		break;
 	case PRED_LANDS_AT:
 		if (!read_time(p, v, pn, &c->value))
@@ -1610,7 +1621,15 @@ hs_scenario *hs_scenario_load(const char *path, hs_error *err) {
 		return NULL;
 	}
 	drive_hands(s, 0.0); // the hands' first pose: no motion before frame 1
-	record(s);           // frame 0: the initial state
+	s->initial = calloc((size_t)s->object_count, sizeof *s->initial);
+	if (!s->initial) {
+		set_error(err, path, 1, "out of memory");
+		hs_scenario_destroy(s);
+		return NULL;
+	}
+	for (int i = 0; i < s->object_count; ++i)
+		s->initial[i] = state_of(s, i);
+	record(s); // frame 0: the initial state
 	return s;
 }
 
@@ -1639,6 +1658,7 @@ void hs_scenario_destroy(hs_scenario *s) {
 		free(s->hand_names ? s->hand_names[h] : NULL);
 		free(s->scripts ? s->scripts[h].keys : NULL);
 	}
+	free(s->initial);
 	free(s->hand_names);
 	free(s->hand_ids);
 	free(s->scripts);
@@ -1726,6 +1746,19 @@ static bool evaluate(const hs_scenario *s, const check *k, char *what, size_t wn
 		snprintf(what, wn, "%s %.9g m %s", predicate_names[c->pred], c->value, when);
 		snprintf(measured, mn, "z %.9g m", st->position.z);
 		return c->pred == PRED_BELOW ? st->position.z < c->value : st->position.z > c->value;
+	case PRED_MOVED: { // at least this far (m) from where it started
+		double d = hs_distance(st->position, s->initial[k->object].position);
+		snprintf(what, wn, "moved at least %.9g m %s", c->value, when);
+		snprintf(measured, mn, "moved %.6g m", d);
+		return d >= c->value;
+	}
+	case PRED_TURNED: { // turned at least this much (deg) from how it started
+		hs_quat rel = hs_quat_mul(st->orientation, hs_quat_conj(s->initial[k->object].orientation));
+		double a = hs_quat_angle(rel) * (180.0 / HS_PI);
+		snprintf(what, wn, "turned at least %.9g deg %s", c->value, when);
+		snprintf(measured, mn, "turned %.6g deg", a);
+		return a >= c->value;
+	}
 	case PRED_LANDS_AT: {
 		snprintf(what, wn, "lands at t = %g s within %g s", c->value, c->tolerance);
 		long f = s->landed_frame[k->object];
