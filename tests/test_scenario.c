@@ -235,7 +235,7 @@ static void test_load_errors(void **state) {
 	load_error("e.yaml", text, "7: 'tolerance' must be > 0, got 0");
 	snprintf(text, sizeof text, "%s" ONE_CUBE "expect:\n  - { object: a, at: end }\n", head);
 	load_error("e.yaml", text,
-	           "7: expect clause needs a predicate: near, resting, floor_contacts, on_face, below, above, lands_at, still or "
+	           "7: expect clause needs a predicate: near, resting, floor_contacts, on_face, below, above, moved, turned_deg, lands_at, still or "
 	           "contact_sequence");
 	snprintf(text, sizeof text, "%s" ONE_CUBE "expect:\n  - { object: a, still: true, at: end }\n", head);
 	load_error("e.yaml", text, "7: 'at' is not used by 'still'");
