@@ -87,6 +87,16 @@ void hs_motion_step(hs_world *world, hs_body *body);
 double hs_motion_pose_vertices(hs_world *world, const hs_body *body);
 // Counts vertices within the floor tolerance and stores their (x, y) in world->scratch_points.
 int hs_motion_floor_points(hs_world *world, const hs_body *body);
+// Eq. 4-5 with the `count` contact points in world->scratch_points on the plane z = height:
+// stable → the body stops (true); otherwise it tips by rules (1)-(3) when `may_tip`.
+bool hs_motion_settle(hs_world *world, hs_body *body, int count, double height, hs_vec3 gm, bool may_tip);
+
+// support.c — the 'support' stacking mode: objects rest on the faces of objects under them
+
+// After its free step: lifts a body out of the objects it sank into and settles it on them.
+void hs_support_step(hs_world *world, int object);
+// A hand moved `object`: objects resting on or against it wake up and look again.
+void hs_support_wake_neighbours(hs_world *world, int object);
 
 // contact.c — hand-object contacts (1999 paper §3.2: (A) points in faces, (B) lines across edges)
 

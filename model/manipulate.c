@@ -188,6 +188,9 @@ void hs_manipulate(hs_world *world) {
 		body->held = 1;
 		body->asleep = 0;
 		body->grounded = 0;
-		carry_along(world, i, hs_sub(body->pos, old_pos));
+		if (world->def.stacking == HS_STACKING_SUPPORT)
+			hs_support_wake_neighbours(world, i); // what rested on it or against it looks again
+		else
+			carry_along(world, i, hs_sub(body->pos, old_pos));
 	}
 }

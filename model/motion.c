@@ -53,11 +53,11 @@ static void stop(hs_body *body) {
 	body->asleep = 1;
 }
 
-// Eq. 5: G' is G projected onto the floor along Gm; a motion that does not point down
-// projects straight down, the direction gravity will take it.
-static hs_vec2 project_g(hs_vec3 g, hs_vec3 gm) {
+// Eq. 5: G' is G projected onto the contact plane z = height along Gm; a motion that does not
+// point down projects straight down, the direction gravity will take it.
+static hs_vec2 project_g(hs_vec3 g, hs_vec3 gm, double height) {
 	if (gm.z < 0.0) {
-		double s = g.z / -gm.z;
+		double s = (g.z - height) / -gm.z;
 		return (hs_vec2){g.x + s * gm.x, g.y + s * gm.y};
 	}
 	return (hs_vec2){g.x, g.y};
@@ -97,13 +97,13 @@ static double first_touch(const hs_world *world, const hs_body *body, hs_vec3 c,
 }
 
 // Rules (1)-(3) of §4.2 for an unstable object: pick the contact vertex or edge and turn about it.
-static void tip(hs_world *world, hs_body *body, const hs_vec2 *hull, int hull_count, hs_vec2 g_proj,
-                hs_vec3 gm) {
+static void tip(hs_world *world, hs_body *body, const hs_vec2 *hull, int hull_count, double height,
+                hs_vec2 g_proj, hs_vec3 gm) {
 	hs_vec3 g = body->pos;
 	hs_vec3 c, line = hs_v3(0, 0, 0);
 	bool about_line = false;
 	if (hull_count == 1) {
-		c = hs_v3(hull[0].x, hull[0].y, 0.0); // rule (1)
+		c = hs_v3(hull[0].x, hull[0].y, height); // rule (1)
 	} else {
 		// rule (3) renames the hull edge nearest G' as V1 V2 and follows rule (2)
 		int i = hull_count == 2 ? 0 : hs_hull_nearest_edge(hull, hull_count, g_proj);
@@ -111,13 +111,13 @@ static void tip(hs_world *world, hs_body *body, const hs_vec2 *hull, int hull_co
 		double dx = v2.x - v1.x, dy = v2.y - v1.y;
 		double u = ((g_proj.x - v1.x) * dx + (g_proj.y - v1.y) * dy) / (dx * dx + dy * dy);
 		if (u < 0.0) { // rule (2)-a: G' beyond the line through V1: turn about V1 by rule (1)
-			c = hs_v3(v1.x, v1.y, 0.0);
+			c = hs_v3(v1.x, v1.y, height);
 		} else if (u > 1.0) {
-			c = hs_v3(v2.x, v2.y, 0.0);
+			c = hs_v3(v2.x, v2.y, height);
 		} else { // rule (2)-b: turn about the line V1 V2
 			about_line = true;
 			line = hs_normalize(hs_v3(dx, dy, 0.0));
-			hs_vec3 v1_3 = hs_v3(v1.x, v1.y, 0.0);
+			hs_vec3 v1_3 = hs_v3(v1.x, v1.y, height);
 			c = hs_mul_add(v1_3, hs_dot(hs_sub(g, v1_3), line), line); // foot of G on the line
 		}
 	}
@@ -150,21 +150,24 @@ static void tip(hs_world *world, hs_body *body, const hs_vec2 *hull, int hull_co
 	world->counters.object_steps++;
 }
 
-// Stability with the hull of the floor contacts and G' (eq. 4-5, Fig. 5); tip when unstable.
-static void settle_or_tip(hs_world *world, hs_body *body, hs_vec3 gm, bool may_tip) {
-	int n = hs_motion_floor_points(world, body);
-	body->floor_contacts = n;
-	int hull_count = hs_hull_build(world->scratch_points, n, world->scratch_hull);
-	hs_vec2 g_proj = project_g(body->pos, gm);
+bool hs_motion_settle(hs_world *world, hs_body *body, int count, double height, hs_vec3 gm, bool may_tip) {
+	int hull_count = hs_hull_build(world->scratch_points, count, world->scratch_hull);
+	hs_vec2 g_proj = project_g(body->pos, gm, height);
 	if (hs_hull_contains(world->scratch_hull, hull_count, g_proj, HS_RECTIFY_SLOP)) {
 		stop(body);
-		return;
+		return true;
 	}
 	body->asleep = 0;
-	if (may_tip) {
-		tip(world, body, world->scratch_hull, hull_count, g_proj, gm);
+	if (may_tip)
+		tip(world, body, world->scratch_hull, hull_count, height, g_proj, gm);
+	return false;
+}
+
+// Stability with the hull of the floor contacts and G' (eq. 4-5, Fig. 5); tip when unstable.
+static void settle_or_tip(hs_world *world, hs_body *body, hs_vec3 gm, bool may_tip) {
+	body->floor_contacts = hs_motion_floor_points(world, body);
+	if (!hs_motion_settle(world, body, body->floor_contacts, 0.0, gm, may_tip) && may_tip)
 		body->floor_contacts = hs_motion_floor_points(world, body);
-	}
 }
 
 // Eq. 3: P(t) = 2P(t - dt) - P(t - 2dt) + g dt², and the carried-over relative rotation.

@@ -266,6 +266,8 @@ hs_status hs_world_step(hs_world *world) {
 		}
 		body->rot_prev = body->rot;
 		hs_motion_step(world, body);
+		if (world->def.stacking == HS_STACKING_SUPPORT && !body->asleep)
+			hs_support_step(world, i);
 		if (!body_is_finite(body)) { // never let a NaN spread: freeze the object and count it
 			*body = saved;
 			world->counters.numeric_faults++;

@@ -1,0 +1,159 @@
+// support.c — the 'support' stacking mode (DESIGN.md, an alternative to the 1999 paper's §4.3):
+// an object that sinks into objects under it is rectified upward exactly as on the floor (§4.2),
+// and its stability is judged with the hull of its contacts on their faces and G' (eq. 4-5).
+//
+// The lift is vertical and exact for vertex-face interpenetration of convex parts: a vertex of
+// the falling body inside a support leaves through the support's upper faces; a vertex of the
+// support inside the falling body leaves through the body's lower faces. Edge-edge crossings
+// with no vertex inside are not lifted (they are shallow when a body lands from a frame's fall).
+#include "internal.h"
+
+static hs_vec3 to_local(const hs_body *b, hs_vec3 p) { return hs_quat_inv_rotate(b->rot, hs_sub(p, b->pos)); }
+
+// Distance along `dir` (unit, local) from q, inside the part, to the part's boundary; -1 if q is outside.
+static double exit_distance(const hs_shape *shape, const hs_part *part, hs_vec3 q, hs_vec3 dir, double slop) {
+	double best = INFINITY;
+	for (int f = part->first_face; f < part->first_face + part->face_count; ++f) {
+		const hs_face *face = &shape->faces[f];
+		double gap = face->offset - hs_dot(face->normal, q);
+		if (gap <= slop)
+			return -1.0; // outside or on this face's plane
+		double along = hs_dot(face->normal, dir);
+		if (along > 0.0 && gap / along < best)
+			best = gap / along;
+	}
+	return best;
+}
+
+// How far body a must rise to leave body b.
+static double lift_out(const hs_world *world, const hs_body *a, const hs_body *b) {
+	const hs_shape *sa = &world->shapes[a->shape], *sb = &world->shapes[b->shape];
+	double lift = 0.0, slop = 1e-12;
+	hs_vec3 up_in_b = hs_quat_inv_rotate(b->rot, hs_v3(0, 0, 1));
+	hs_vec3 down_in_a = hs_quat_inv_rotate(a->rot, hs_v3(0, 0, -1));
+	for (int p = 0; p < sb->part_count; ++p)
+		for (int i = 0; i < sa->vertex_count; ++i) {
+			hs_vec3 q = to_local(b, hs_add(a->pos, hs_quat_rotate(a->rot, sa->vertices[i])));
+			double t = exit_distance(sb, &sb->parts[p], q, up_in_b, slop);
+			lift = t > lift && isfinite(t) ? t : lift;
+		}
+	for (int p = 0; p < sa->part_count; ++p)
+		for (int i = 0; i < sb->vertex_count; ++i) {
+			hs_vec3 q = to_local(a, hs_add(b->pos, hs_quat_rotate(b->rot, sb->vertices[i])));
+			double t = exit_distance(sa, &sa->parts[p], q, down_in_a, slop);
+			lift = t > lift && isfinite(t) ? t : lift;
+		}
+	return lift;
+}
+
+static bool near_spheres(const hs_world *world, int i, int j, double margin) {
+	const hs_body *a = &world->bodies[i], *b = &world->bodies[j];
+	double r = world->shapes[a->shape].radius + world->shapes[b->shape].radius + margin;
+	return hs_length_sq(hs_sub(a->pos, b->pos)) <= r * r;
+}
+
+static int add_point(hs_world *world, int n, hs_vec3 p, double *height_sum) {
+	if (n >= world->scratch_capacity)
+		return n; // more contacts than vertices: the hull is already well defined
+	world->scratch_points[n] = (hs_vec2){p.x, p.y};
+	*height_sum += p.z;
+	return n + 1;
+}
+
+// Clips the segment a → b (local to the part) to the part grown by tol; false when it misses.
+static bool clip_to_part(const hs_shape *shape, const hs_part *part, hs_vec3 a, hs_vec3 b, double tol, double *t0,
+                         double *t1) {
+	*t0 = 0.0;
+	*t1 = 1.0;
+	hs_vec3 d = hs_sub(b, a);
+	for (int f = part->first_face; f < part->first_face + part->face_count; ++f) {
+		double num = shape->faces[f].offset + tol - hs_dot(shape->faces[f].normal, a);
+		double den = hs_dot(shape->faces[f].normal, d);
+		if (den == 0.0) {
+			if (num < 0.0)
+				return false;
+		} else if (den < 0.0) {
+			double t = num / den;
+			*t0 = t > *t0 ? t : *t0;
+		} else {
+			double t = num / den;
+			*t1 = t < *t1 ? t : *t1;
+		}
+	}
+	return *t0 <= *t1;
+}
+
+// Contact points of a resting on b: every edge of each clipped to the other. The clipped ends are
+// the corners of the region where their faces meet: vertices inside and edge-edge crossings.
+static int clip_edges(hs_world *world, const hs_body *a, const hs_body *b, int n, double *height_sum) {
+	const hs_shape *sa = &world->shapes[a->shape], *sb = &world->shapes[b->shape];
+	double tol = world->def.floor_tolerance;
+	for (int e = 0; e < sa->edge_count; ++e) {
+		hs_vec3 p0 = hs_add(a->pos, hs_quat_rotate(a->rot, sa->vertices[sa->edges[e].a]));
+		hs_vec3 p1 = hs_add(a->pos, hs_quat_rotate(a->rot, sa->vertices[sa->edges[e].b]));
+		hs_vec3 q0 = to_local(b, p0), q1 = to_local(b, p1);
+		for (int k = 0; k < sb->part_count; ++k) {
+			double t0, t1;
+			if (!clip_to_part(sb, &sb->parts[k], q0, q1, tol, &t0, &t1))
+				continue;
+			n = add_point(world, n, hs_lerp(p0, p1, t0), height_sum);
+			n = add_point(world, n, hs_lerp(p0, p1, t1), height_sum);
+		}
+	}
+	return n;
+}
+
+static int support_points(hs_world *world, const hs_body *a, const hs_body *b, int n, double *height_sum) {
+	n = clip_edges(world, a, b, n, height_sum);
+	return clip_edges(world, b, a, n, height_sum);
+}
+
+void hs_support_step(hs_world *world, int object) {
+	hs_body *body = &world->bodies[object];
+	double tol = world->def.floor_tolerance;
+	double lift = 0.0;
+	bool touching = false;
+	for (int j = 0; j < world->object_count; ++j) {
+		if (j == object || !near_spheres(world, object, j, tol))
+			continue;
+		const hs_body *other = &world->bodies[j];
+		if (other->pos.z > body->pos.z)
+			continue; // a support is under the body's G
+		double t = lift_out(world, body, other);
+		lift = t > lift ? t : lift;
+		touching = true;
+	}
+	if (!touching)
+		return;
+	hs_vec3 gm = hs_sub(body->pos, body->prev);
+	body->pos.z += lift; // §4.2 rectification, against a support instead of the floor
+	double height_sum = 0.0;
+	int n = 0;
+	for (int j = 0; j < world->object_count; ++j)
+		if (j != object && near_spheres(world, object, j, tol) && world->bodies[j].pos.z <= body->pos.z)
+			n = support_points(world, body, &world->bodies[j], n, &height_sum);
+	if (n == 0)
+		return; // near a neighbour but not resting on it
+	body->spin = hs_quat_identity(); // §4.1: no inertia kept after interfering
+	hs_motion_pose_vertices(world, body);
+	int floor_n = 0;
+	if (body->pos.z - world->shapes[body->shape].radius <= tol) { // resting on the floor and a support at once
+		const hs_shape *shape = &world->shapes[body->shape];
+		for (int i = 0; i < shape->vertex_count; ++i)
+			if (world->scratch_world[i].z <= tol)
+				floor_n = add_point(world, n + floor_n, world->scratch_world[i], &height_sum) - n;
+	}
+	n += floor_n;
+	// stability on the support faces, tipping about their hull's edge when unstable
+	hs_motion_pose_vertices(world, body); // first_touch in tipping reads the posed vertices
+	hs_motion_settle(world, body, n, height_sum / n, gm, true);
+	body->grounded = 0; // the floor rules do not apply on a support; the next frame looks again
+}
+
+void hs_support_wake_neighbours(hs_world *world, int object) {
+	for (int j = 0; j < world->object_count; ++j) {
+		hs_body *b = &world->bodies[j];
+		if (j != object && b->asleep && near_spheres(world, object, j, world->def.floor_tolerance))
+			b->asleep = 0;
+	}
+}
