@@ -67,6 +67,7 @@ check-core: $(LIB) $(TOOL) $(TESTS)
 check: deps
 	@$(MAKE) --no-print-directory check-core
 	@$(MAKE) --no-print-directory check-core BUILD=$(BUILD)/asan SANITIZE=1 OPT=-O1
+	@$(MAKE) --no-print-directory check-reliability
 	@echo "check: all suites passed (plain and ASan+UBSan)"
 
 # The main job: every catalog scenario, a summary table, trajectories under $(BUILD)/traj.
@@ -112,3 +113,10 @@ install: all
 
 clean:
 	rm -rf $(BUILD)
+
+# Reliability (stress, fuzz, determinism matrix, memory): targets and the check subset live in
+# tests/reliability.mk; without it the subset is empty.
+.PHONY: check-reliability stress fuzz determinism
+-include tests/reliability.mk
+check-reliability::
+	@:
