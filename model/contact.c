@@ -35,18 +35,11 @@ static int nearest_face(const hs_shape *shape, const hs_part *part, hs_vec3 p) {
 	return best;
 }
 
-// Cyrus-Beck clip of a → b against the part: the parameters and faces where it enters and leaves.
-typedef struct clip {
-	double t_in, t_out;
-	int face_in, face_out; // -1 where the segment's end is already inside
-	bool hit;
-} clip;
-
-static clip clip_segment(const hs_shape *shape, const hs_part *part, hs_vec3 a, hs_vec3 b) {
-	clip c = {0.0, 1.0, -1, -1, false};
+hs_clip hs_clip_segment(const hs_shape *shape, const hs_part *part, hs_vec3 a, hs_vec3 b, double grow) {
+	hs_clip c = {0.0, 1.0, -1, -1, false};
 	hs_vec3 d = hs_sub(b, a);
 	for (int f = part->first_face; f < part->first_face + part->face_count; ++f) {
-		double num = shape->faces[f].offset - hs_dot(shape->faces[f].normal, a);
+		double num = shape->faces[f].offset + grow - hs_dot(shape->faces[f].normal, a);
 		double den = hs_dot(shape->faces[f].normal, d);
 		if (den == 0.0) {
 			if (num <= 0.0)
@@ -54,7 +47,7 @@ static clip clip_segment(const hs_shape *shape, const hs_part *part, hs_vec3 a, 
 			continue;
 		}
 		double t = num / den;
-		if (den < 0.0) { // entering through this face
+		if (den < 0.0) { // entering through this face; the first of equal faces wins
 			if (t > c.t_in) {
 				c.t_in = t;
 				c.face_in = f;
@@ -64,7 +57,7 @@ static clip clip_segment(const hs_shape *shape, const hs_part *part, hs_vec3 a, 
 			c.face_out = f;
 		}
 	}
-	c.hit = c.t_in < c.t_out;
+	c.hit = c.t_in <= c.t_out;
 	return c;
 }
 
@@ -113,7 +106,7 @@ static void detect_part(hs_world *world, int object, int h, const hs_part *part)
 		if (!inside_part(shape, part, b))
 			continue;
 		hs_vec3 a = to_body(body, hand->prev_points[i]);
-		clip c = clip_segment(shape, part, a, b);
+		hs_clip c = hs_clip_segment(shape, part, a, b, 0.0);
 		int face;
 		hs_vec3 point;
 		if (c.face_in >= 0) { // entered this frame: the face crossed along the motion
@@ -130,7 +123,7 @@ static void detect_part(hs_world *world, int object, int h, const hs_part *part)
 	// (B) check lines against edges
 	for (int j = 0; j < HS_HAND_LINES; ++j) {
 		hs_vec3 p0 = to_body(body, hand->lines[j][0]), p1 = to_body(body, hand->lines[j][1]);
-		clip c = clip_segment(shape, part, p0, p1);
+		hs_clip c = hs_clip_segment(shape, part, p0, p1, 0.0);
 		if (!c.hit || c.face_in < 0 || c.face_out < 0)
 			continue; // misses, or an end is inside: that is the check points' business
 		int e = edge_between(shape, part, c.face_in, c.face_out);

@@ -98,6 +98,16 @@ void hs_support_step(hs_world *world, int object);
 // A hand moved `object`: objects resting on or against it wake up and look again.
 void hs_support_wake_neighbours(hs_world *world, int object);
 
+// Cyrus-Beck clip of the segment a → b (in the shape's body frame) against a convex part whose
+// faces are pushed out by `grow` (m): where it enters and leaves, and through which faces
+// (-1 where that end is already inside).
+typedef struct hs_clip {
+	double t_in, t_out;
+	int face_in, face_out;
+	bool hit;
+} hs_clip;
+hs_clip hs_clip_segment(const hs_shape *shape, const hs_part *part, hs_vec3 a, hs_vec3 b, double grow);
+
 // contact.c — hand-object contacts (1999 paper §3.2: (A) points in faces, (B) lines across edges)
 
 // Appends the contacts of every hand with the object to world->contacts; returns how many.

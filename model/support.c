@@ -60,29 +60,6 @@ static int add_point(hs_world *world, int n, hs_vec3 p, double *height_sum) {
 	return n + 1;
 }
 
-// Clips the segment a → b (local to the part) to the part grown by tol; false when it misses.
-static bool clip_to_part(const hs_shape *shape, const hs_part *part, hs_vec3 a, hs_vec3 b, double tol, double *t0,
-                         double *t1) {
-	*t0 = 0.0;
-	*t1 = 1.0;
-	hs_vec3 d = hs_sub(b, a);
-	for (int f = part->first_face; f < part->first_face + part->face_count; ++f) {
-		double num = shape->faces[f].offset + tol - hs_dot(shape->faces[f].normal, a);
-		double den = hs_dot(shape->faces[f].normal, d);
-		if (den == 0.0) {
-			if (num < 0.0)
-				return false;
-		} else if (den < 0.0) {
-			double t = num / den;
-			*t0 = t > *t0 ? t : *t0;
-		} else {
-			double t = num / den;
-			*t1 = t < *t1 ? t : *t1;
-		}
-	}
-	return *t0 <= *t1;
-}
-
 // Contact points of a resting on b: every edge of each clipped to the other. The clipped ends are
 // the corners of the region where their faces meet: vertices inside and edge-edge crossings.
 static int clip_edges(hs_world *world, const hs_body *a, const hs_body *b, int n, double *height_sum) {
@@ -93,11 +70,11 @@ static int clip_edges(hs_world *world, const hs_body *a, const hs_body *b, int n
 		hs_vec3 p1 = hs_add(a->pos, hs_quat_rotate(a->rot, sa->vertices[sa->edges[e].b]));
 		hs_vec3 q0 = to_local(b, p0), q1 = to_local(b, p1);
 		for (int k = 0; k < sb->part_count; ++k) {
-			double t0, t1;
-			if (!clip_to_part(sb, &sb->parts[k], q0, q1, tol, &t0, &t1))
+			hs_clip c = hs_clip_segment(sb, &sb->parts[k], q0, q1, tol);
+			if (!c.hit)
 				continue;
-			n = add_point(world, n, hs_lerp(p0, p1, t0), height_sum);
-			n = add_point(world, n, hs_lerp(p0, p1, t1), height_sum);
+			n = add_point(world, n, hs_lerp(p0, p1, c.t_in), height_sum);
+			n = add_point(world, n, hs_lerp(p0, p1, c.t_out), height_sum);
 		}
 	}
 	return n;
