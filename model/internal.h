@@ -114,6 +114,8 @@ hs_clip hs_clip_segment(const hs_shape *shape, const hs_part *part, hs_vec3 a, h
 int hs_contact_detect(hs_world *world, int object);
 // Fig. 2: the contact state of a set of contacts (grasp when two normals are >= threshold apart).
 hs_contact_state hs_contact_classify(const hs_contact *contacts, int count, double grasp_threshold_deg);
+// True when two of the contacts (only those of hand index + 1 `hand1`, or all when 0) grasp.
+bool hs_contact_grasps(const hs_contact *contacts, int count, uint32_t hand1, double grasp_threshold_deg);
 
 // manipulate.c — object motion by the hand (eq. 1-2, grasp, push) and interference among objects (§4.3)
 

@@ -67,18 +67,21 @@ static hs_vec3 part_displacement(const hs_hand *hand, const hs_contact *c) {
 	return hs_scale(hs_add(d0, d1), 0.5);
 }
 
-// The hand that holds a grasped object: the one already holding it while it still touches it,
-// else the one with the most contacts (the lower index on a tie).
+// The hand that holds a grasped object: the one already holding it while its own contacts still
+// grasp, else the first hand whose own contacts grasp, else the one with the most contacts (two
+// hands squeezing from either side; the lower index on a tie).
 static int grasping_hand(const hs_world *world, const hs_body *body, const hs_contact *cs, int n) {
-	int counts[64] = {0};
-	int hands = world->hand_count < 64 ? world->hand_count : 64;
-	for (int k = 0; k < n; ++k)
-		if ((int)cs[k].hand.index1 - 1 < hands)
-			counts[cs[k].hand.index1 - 1]++;
-	if (body->grasped_by > 0 && body->grasped_by <= hands && counts[body->grasped_by - 1] > 0)
+	double threshold = world->def.grasp_threshold_deg;
+	if (body->grasped_by > 0 && hs_contact_grasps(cs, n, (uint32_t)body->grasped_by, threshold))
 		return body->grasped_by - 1;
+	for (int h = 0; h < world->hand_count; ++h)
+		if (hs_contact_grasps(cs, n, (uint32_t)h + 1, threshold))
+			return h;
+	int counts[64] = {0};
+	for (int k = 0; k < n; ++k)
+		counts[cs[k].hand.index1 - 1]++;
 	int best = 0;
-	for (int h = 1; h < hands; ++h)
+	for (int h = 1; h < world->hand_count; ++h)
 		if (counts[h] > counts[best])
 			best = h;
 	return best;
@@ -87,8 +90,11 @@ static int grasping_hand(const hs_world *world, const hs_body *body, const hs_co
 // §4.2 rectification for an object the hand pushed into the floor.
 static void keep_above_floor(hs_world *world, hs_body *body) {
 	double zmin = hs_motion_pose_vertices(world, body);
-	if (zmin < 0.0)
+	if (zmin < 0.0) {
 		body->pos.z -= zmin;
+		hs_motion_pose_vertices(world, body);
+	}
+	body->floor_contacts = hs_motion_floor_points(world, body); // the trajectory shows it while held
 }
 
 // §4.3, paper mode: every object interfering with a moved object is translated with it, and so on.
@@ -142,8 +148,10 @@ void hs_manipulate(hs_world *world) {
 			// seen from the object so moved, still grasp it
 			follow_wrist(body, &world->hands[body->grasped_by - 1]);
 			n = hs_contact_detect(world, i);
-			state = hs_contact_classify(&world->contacts[first], n, world->def.grasp_threshold_deg);
-			if (state != HS_CONTACT_GRASP) {
+			state = hs_contact_grasps(&world->contacts[first], n, (uint32_t)body->grasped_by, world->def.grasp_threshold_deg)
+			            ? HS_CONTACT_GRASP
+			            : HS_CONTACT_NONE;
+			if (state != HS_CONTACT_GRASP) { // the holder let go: look again from where the object was
 				body->pos = old_pos;
 				body->rot = old_rot;
 				world->contact_count = first;
