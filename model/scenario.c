@@ -50,19 +50,39 @@ typedef enum predicate {
 	PRED_BELOW,
 	PRED_ABOVE,
 	PRED_MOVED,
-	PRED_TURNED, // the predicates above take `at`
+	PRED_TURNED,
+	PRED_SPEED_BELOW,
+	PRED_VELOCITY,
+	PRED_ATTACHED,        // spring worlds
+	PRED_CANDIDATE,       // spring worlds
+	PRED_EXTENSION_RATIO, // spring worlds; the predicates up to here take `at`
 	PRED_LANDS_AT,
 	PRED_STILL,
 	PRED_CONTACT_SEQUENCE,
+	PRED_RELEASED,        // spring worlds from here on
+	PRED_REST_LENGTH,
+	PRED_STIFFNESS,
+	PRED_CONSERVED,       // a window [from, to] over a group of objects
+	PRED_SWING_BELOW,     // a window [from, to]
 	PRED_COUNT
 } predicate;
 
 static const char *const predicate_names[PRED_COUNT] = {
-    "near", "resting", "floor_contacts", "on_face", "below", "above", "moved", "turned_deg",
-    "lands_at", "still", "contact_sequence",
+    "near",        "resting",  "floor_contacts", "on_face",   "below",           "above",
+    "moved",       "turned_deg", "speed_below",  "velocity",  "attached",        "candidate",
+    "extension_ratio", "lands_at", "still",      "contact_sequence", "released", "rest_length",
+    "stiffness",   "conserved", "swing_below",
 };
 
-static bool predicate_uses_at(predicate p) { return p <= PRED_TURNED; }
+static bool predicate_uses_at(predicate p) { return p <= PRED_EXTENSION_RATIO; }
+// the predicates that only a spring world (a scenario with a stylus) can answer
+static bool predicate_needs_springs(predicate p) {
+	return p == PRED_ATTACHED || p == PRED_CANDIDATE || p == PRED_EXTENSION_RATIO || p >= PRED_RELEASED;
+}
+// the predicates watched over a window of frames [from, to]
+static bool predicate_uses_window(predicate p) { return p == PRED_CONSERVED || p == PRED_SWING_BELOW; }
+
+typedef enum conserved_quantity { CONSERVE_MOMENTUM, CONSERVE_ENERGY } conserved_quantity;
 
 // One `expect` clause as written.
 typedef struct clause {
@@ -70,25 +90,51 @@ typedef struct clause {
 	int object; // index, or -1 for "*"
 	predicate pred;
 	bool at_end;
-	long frame;       // at-based: the frame whose state is checked; still: the first frame watched
-	hs_vec3 target;   // near, m
-	double tolerance; // near: m; lands_at: s
+	long frame;       // at-based: the frame whose state is checked; still and windows: the first frame watched
+	long last_frame;  // still and windows: the last frame watched
+	hs_vec3 target;   // near: m; velocity: m/s
+	double tolerance; // near, rest_length: m; lands_at: s; velocity: m/s; stiffness: N/m; extension_ratio, conserved: 1
 	unsigned axes;    // near: bit 0 x, bit 1 y, bit 2 z
-	bool flag;        // resting, on_face, still
-	long count;       // floor_contacts
-	double value;     // below/above: m; lands_at: s
+	bool flag;        // resting, on_face, still, attached
+	long count;       // floor_contacts; attached: an hs_attach_kind (NONE: any); released: an hs_release_kind;
+	                  // conserved: a conserved_quantity
+	double value;     // below/above/moved/swing_below: m; turned_deg: deg; lands_at: s; speed_below: m/s; ...
 	int seq_len;      // contact_sequence
 	unsigned char seq[SEQ_CAPACITY];
+	int first_member, member_count; // conserved: the group's objects in hs_scenario.members
+	bool all_objects;                // conserved: the group is every object ("*")
 } clause;
 
 // One clause applied to one object: the unit that passes or fails.
 typedef struct check {
-	int clause, object;
-	bool captured; // at-based: `state` holds the state at the clause's frame; still: the reference pose
+	int clause, object; // object -1: the clause's group (conserved)
+	bool captured; // at-based: `state` holds the state at the clause's frame; still: the reference pose;
+	               // windows: the last frame of the window has been seen
 	bool moved;    // still: the pose changed after the reference
 	long moved_frame;
 	hs_object_state state;
+	// at-based, captured with `state`: the object's velocity (spring worlds: the integrated one) and
+	// the spring (spring worlds only)
+	hs_vec3 velocity;      // m/s
+	int holder;            // object on the spring, -1 when none
+	int candidate;         // the 'I want this one' candidate, -1 when none
+	hs_attach_kind kind;   // how the holder got there
+	double ratio;          // the holder's spring extension / x0
+	double extension, rest_length; // m
+	// windows
+	bool began;              // the first frame of the window has been seen
+	double before[3], after[3]; // conserved: momentum (kg m/s) or energy (J, in before[0]) at from and to
+	double peak;             // swing_below: the largest horizontal stylus–G distance so far, m
+	long peak_frame;
 } check;
+
+// One stylus key (keyframes) or sample (recorded file): the spring model's input (workbench §5.1).
+typedef struct stylus_key {
+	double t;         // s
+	hs_vec3 position; // m
+	hs_quat rot;
+	bool button;
+} stylus_key;
 
 struct hs_scenario {
 	char *name, *description;
@@ -123,6 +169,17 @@ struct hs_scenario {
 	hs_hand_id *hand_ids;
 	hs_hand_script *scripts;
 	hs_object_state *initial; // every object at frame 0 (moved, turned_deg)
+	// the stylus of a spring world (workbench paper §3–§5): keys or recorded samples, sampled every frame
+	bool springs;       // the scenario has a stylus: hs_world_enable_springs was called
+	hs_vec3 gravity;    // m/s²: the potential energy of `conserved: energy`
+	int stylus_count;
+	stylus_key *stylus; // strictly increasing t
+	// expectations of spring worlds, allocated only when a clause needs them
+	int member_total;
+	int *members;          // conserved: the objects of every group, clause by clause
+	int window_count;
+	int *window_checks;    // conserved, swing_below
+	hs_release *releases;  // released: per object, its last release (kind NONE: never released)
 };
 
 // ---------------------------------------------------------------------------------------------
@@ -139,6 +196,8 @@ typedef struct parser {
 	hs_error *err;
 	hs_scenario *s;
 	name_entry *sorted; // object names in strcmp order, for duplicates and expect's lookups
+	hs_spring_def spring;           // model.spring, read before the world exists
+	const yaml_node_t *spring_key;  // where model.spring was given (NULL: not given)
 } parser;
 
 static void vset_error(hs_error *err, const char *path, unsigned long line, const char *fmt, va_list ap) {
@@ -399,9 +458,11 @@ static bool read_time(parser *p, const yaml_node_t *node, const char *key, doubl
 // ---------------------------------------------------------------------------------------------
 // mappings
 
+enum { MAX_FIELDS = 32 }; // keys of the largest mapping (an expect clause)
+
 typedef struct fields {
-	const yaml_node_t *key[16];
-	const yaml_node_t *value[16];
+	const yaml_node_t *key[MAX_FIELDS];
+	const yaml_node_t *value[MAX_FIELDS];
 } fields;
 
 // Checks every key of `map` against `names` (unknown and duplicate keys are errors) and collects
@@ -577,12 +638,90 @@ static bool read_duration(parser *p, const yaml_node_t *node) {
 	return true;
 }
 
+// ---------------------------------------------------------------------------------------------
+// model.spring: the options of the spring model (workbench paper §4); read into p->spring
+
+enum { SP_INTEGRATOR, SP_FRICTION, SP_SLIDING, SP_RESTITUTION, SP_WALLS, SP_NOISE_SEED, SP_COUNT };
+static const char *const spring_keys[SP_COUNT] = {"integrator", "friction", "sliding_friction",
+                                                  "restitution", "walls",    "noise_seed"};
+static const char *const integrator_names[] = {"exact", "implicit_euler", "semi_implicit_euler", "rk4"};
+
+// A coefficient in [0, hi] (hi < 0: no upper bound).
+static bool read_coefficient(parser *p, const yaml_node_t *node, const char *key, double hi, double *out) {
+	if (!read_number(p, node, key, out))
+		return false;
+	if (hi >= 0.0 && !(*out >= 0.0 && *out <= hi))
+		return fail(p, node, "'%s' must be within [0, %g], got %s", key, hi, show(node).text);
+	if (hi < 0.0 && !(*out >= 0.0))
+		return fail(p, node, "'%s' must be >= 0, got %s", key, show(node).text);
+	return true;
+}
+
+static bool read_spring(parser *p, const yaml_node_t *node) {
+	hs_spring_def *d = &p->spring;
+	if (node->type != YAML_MAPPING_NODE)
+		return fail(p, node, "'spring' must be a mapping, got %s", got(node).text);
+	fields f;
+	if (!read_mapping(p, node, spring_keys, SP_COUNT, "model.spring", &f))
+		return false;
+	if (f.value[SP_INTEGRATOR]) {
+		const yaml_node_t *v = f.value[SP_INTEGRATOR];
+		int i = 0;
+		while (i < 4 && !scalar_is(v, integrator_names[i]))
+			++i;
+		if (i == 4)
+			return fail(p, v, "'integrator' must be exact, implicit_euler, semi_implicit_euler or rk4, got %s",
+			            got(v).text);
+		d->integrator = (hs_integrator)i; // the names are in the enum's order
+	}
+	if (f.value[SP_FRICTION]) {
+		if (!read_coefficient(p, f.value[SP_FRICTION], "friction", -1.0, &d->friction_static))
+			return false;
+		d->friction_sliding = d->friction_static; // §4.2: "At small speeds μ is constant"
+	}
+	if (f.value[SP_SLIDING]) {
+		if (!read_coefficient(p, f.value[SP_SLIDING], "sliding_friction", -1.0, &d->friction_sliding))
+			return false;
+		if (d->friction_sliding > d->friction_static)
+			return fail(p, f.value[SP_SLIDING], "'sliding_friction' must not exceed 'friction' (%g), got %s",
+			            d->friction_static, show(f.value[SP_SLIDING]).text);
+	}
+	if (f.value[SP_RESTITUTION] && !read_coefficient(p, f.value[SP_RESTITUTION], "restitution", 1.0, &d->restitution))
+		return false;
+	if (f.value[SP_WALLS]) {
+		double w[4];
+		const yaml_node_t *e[4];
+		if (!read_numbers(p, f.value[SP_WALLS], "walls", 4, " [x_min, x_max, y_min, y_max]", w, e))
+			return false;
+		for (int i = 0; i < 4; ++i)
+			if (!(fabs(w[i]) <= MAX_LENGTH))
+				return fail(p, e[i], "'walls' must be within [-%g, %g] m, got %s", MAX_LENGTH, MAX_LENGTH, show(e[i]).text);
+		if (!(w[0] < w[1]))
+			return fail(p, e[1], "'walls' x_max must be greater than x_min (%g), got %s", w[0], show(e[1]).text);
+		if (!(w[2] < w[3]))
+			return fail(p, e[3], "'walls' y_max must be greater than y_min (%g), got %s", w[2], show(e[3]).text);
+		d->walls.enabled = true;
+		d->walls.x_min = w[0];
+		d->walls.x_max = w[1];
+		d->walls.y_min = w[2];
+		d->walls.y_max = w[3];
+	}
+	if (f.value[SP_NOISE_SEED]) { // the Fastrak's static accuracy (§5.1), from a seeded generator
+		long seed;
+		if (!read_integer(p, f.value[SP_NOISE_SEED], "noise_seed", 0, 4294967295L, &seed))
+			return false;
+		d->noise = true;
+		d->noise_seed = (unsigned long)seed;
+	}
+	return true;
+}
+
 static bool read_model(parser *p, const yaml_node_t *node, hs_world_def *def) {
-	static const char *const names[] = {"grasp_threshold_deg", "stacking", "floor_tolerance", "skip_work"};
+	static const char *const names[] = {"grasp_threshold_deg", "stacking", "floor_tolerance", "skip_work", "spring"};
 	if (node->type != YAML_MAPPING_NODE)
 		return fail(p, node, "'model' must be a mapping, got %s", got(node).text);
 	fields f;
-	if (!read_mapping(p, node, names, 4, "model", &f))
+	if (!read_mapping(p, node, names, 5, "model", &f))
 		return false;
 	if (f.value[0]) {
 		if (!read_number(p, f.value[0], names[0], &def->grasp_threshold_deg))
@@ -606,6 +745,11 @@ static bool read_model(parser *p, const yaml_node_t *node, hs_world_def *def) {
 	}
 	if (f.value[3] && !read_bool(p, f.value[3], names[3], &def->skip_work))
 		return false;
+	if (f.value[4]) {
+		p->spring_key = f.key[4];
+		if (!read_spring(p, f.value[4]))
+			return false;
+	}
 	return true;
 }
 
@@ -1160,6 +1304,279 @@ static bool read_hands(parser *p, const yaml_node_t *node, const char *path) {
 	return true;
 }
 
+// ---------------------------------------------------------------------------------------------
+// stylus: the spring model's input (workbench paper §3–§5): keyframes or a recorded tracker file
+//
+// Every frame the stylus is sampled at the frame's end time and given to hs_world_set_stylus before
+// hs_world_step (the library moves it linearly within the frame). Positions are linear between
+// keys, orientations slerped, and the button is a step: a key's button holds from the key's time
+// on. A frame whose end lies within STYLUS_TIME_SLOP of a key's time counts as reaching it, so a
+// key at t = 1.2 s takes effect at the end of frame 72 of dt = 1/60 s whatever the rounding of 72 dt.
+
+static const double STYLUS_TIME_SLOP = 1e-9; // s
+static const long MAX_STYLUS_KEYS = 10000000L;
+static const char *const STYLUS_HEADER = "t,x,y,z,qw,qx,qy,qz,button";
+
+// The last key with t_k <= t, or -1.
+static int stylus_key_at(const stylus_key *keys, int n, double t) {
+	if (n == 0 || keys[0].t > t)
+		return -1;
+	int lo = 0, hi = n; // keys[lo].t <= t; keys[hi].t > t (hi = n: none)
+	while (hi - lo > 1) {
+		int mid = lo + (hi - lo) / 2;
+		if (keys[mid].t <= t)
+			lo = mid;
+		else
+			hi = mid;
+	}
+	return lo;
+}
+
+static void stylus_sample(const hs_scenario *s, double t, hs_vec3 *position, hs_quat *rot, bool *button) {
+	const stylus_key *keys = s->stylus;
+	int n = s->stylus_count;
+	int a = stylus_key_at(keys, n, t);
+	if (a < 0) { // before the first key: it holds
+		*position = keys[0].position;
+		*rot = keys[0].rot;
+	} else if (a == n - 1) { // after the last: it holds
+		*position = keys[a].position;
+		*rot = keys[a].rot;
+	} else {
+		double u = (t - keys[a].t) / (keys[a + 1].t - keys[a].t);
+		*position = hs_lerp(keys[a].position, keys[a + 1].position, u);
+		*rot = u > 0.0 ? hs_quat_slerp(keys[a].rot, keys[a + 1].rot, u) : keys[a].rot;
+	}
+	int b = stylus_key_at(keys, n, t + STYLUS_TIME_SLOP);
+	*button = keys[b < 0 ? 0 : b].button;
+}
+
+// Sets the stylus for the frame that ends at time t. Never allocates.
+static void drive_stylus(hs_scenario *s, double t) {
+	if (s->stylus_count == 0)
+		return;
+	hs_vec3 position;
+	hs_quat rot;
+	bool button;
+	stylus_sample(s, t, &position, &rot, &button);
+	hs_world_set_stylus(s->world, position, rot, button); // the keys were validated: finite, unit
+}
+
+enum { SK_T, SK_POSITION, SK_RPY, SK_QUAT, SK_BUTTON, SK_COUNT };
+static const char *const stylus_key_keys[SK_COUNT] = {"t", "position", "rpy_deg", "quat", "button"};
+
+// What a key leaves out it keeps from the key before (the first: identity orientation, button up).
+static bool read_stylus_key(parser *p, const yaml_node_t *node, const stylus_key *previous, stylus_key *key) {
+	if (node->type != YAML_MAPPING_NODE)
+		return fail(p, node, "a stylus key must be a mapping like { t: 0, position: [x, y, z], button: false }, got %s",
+		            got(node).text);
+	fields f;
+	if (!read_mapping(p, node, stylus_key_keys, SK_COUNT, "stylus key", &f))
+		return false;
+	if (!f.value[SK_T])
+		return fail(p, node, "stylus key is missing 't'");
+	if (!read_time(p, f.value[SK_T], "t", &key->t))
+		return false;
+	if (previous && !(key->t > previous->t))
+		return fail(p, f.value[SK_T], "stylus keys must go forward in time: t = %s after t = %g", show(f.value[SK_T]).text,
+		            previous->t);
+	if (f.key[SK_RPY] && f.key[SK_QUAT])
+		return fail(p, before(f.key[SK_RPY], f.key[SK_QUAT]) ? f.key[SK_QUAT] : f.key[SK_RPY],
+		            "'rpy_deg' and 'quat' are exclusive: give one");
+	if (!previous && !f.value[SK_POSITION])
+		return fail(p, node, "the first stylus key needs 'position'");
+	key->position = previous ? previous->position : hs_v3(0.0, 0.0, 0.0);
+	key->rot = previous ? previous->rot : hs_quat_identity();
+	key->button = previous ? previous->button : false;
+	if (f.value[SK_POSITION]) {
+		double v[3];
+		const yaml_node_t *e[3];
+		if (!read_numbers(p, f.value[SK_POSITION], "position", 3, "", v, e))
+			return false;
+		for (int i = 0; i < 3; ++i) // a hand within reach of the table: no overflow downstream
+			if (!(fabs(v[i]) <= MAX_LENGTH))
+				return fail(p, e[i], "'position' must be within [-%g, %g] m, got %s", MAX_LENGTH, MAX_LENGTH, show(e[i]).text);
+		key->position = hs_v3(v[0], v[1], v[2]);
+	}
+	if (f.value[SK_RPY]) {
+		hs_vec3 rpy;
+		if (!read_vec3(p, f.value[SK_RPY], "rpy_deg", &rpy))
+			return false;
+		key->rot = hs_quat_from_rpy(rpy.x * (HS_PI / 180.0), rpy.y * (HS_PI / 180.0), rpy.z * (HS_PI / 180.0));
+	}
+	if (f.value[SK_QUAT]) {
+		double q[4];
+		if (!read_numbers(p, f.value[SK_QUAT], "quat", 4, " [w, x, y, z]", q, NULL))
+			return false;
+		double norm = sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
+		if (!(fabs(norm - 1.0) <= QUAT_NORM_TOLERANCE))
+			return fail(p, f.value[SK_QUAT], "'quat' must have norm 1 (within %g), got norm %.9g", QUAT_NORM_TOLERANCE, norm);
+		key->rot = hs_quat_normalize(hs_q(q[0], q[1], q[2], q[3]));
+	}
+	if (f.value[SK_BUTTON] && !read_bool(p, f.value[SK_BUTTON], "button", &key->button))
+		return false;
+	return true;
+}
+
+HS_PRINTF(4, 5)
+static bool record_fail(hs_error *err, const char *path, long line, const char *fmt, ...) {
+	va_list ap;
+	va_start(ap, fmt);
+	vset_error(err, path, (unsigned long)line, fmt, ap);
+	va_end(ap);
+	return false;
+}
+
+// Reads a recorded tracker file: the header t,x,y,z,qw,qx,qy,qz,button, then one sample per line
+// at any rate (strictly increasing t, s; position m; a unit quaternion within 1e-3, renormalised;
+// button 0 or 1). Blank lines and lines starting with '#' are skipped. Errors are "PATH:LINE: ...".
+static bool read_stylus_record(const char *path, hs_scenario *s, hs_error *err) {
+	FILE *in = fopen(path, "rb");
+	if (!in)
+		return record_fail(err, path, 1, "cannot read recorded stylus input: %s", strerror(errno));
+	struct stat st;
+	if (fstat(fileno(in), &st) == 0 && S_ISDIR(st.st_mode)) {
+		fclose(in);
+		return record_fail(err, path, 1, "cannot read recorded stylus input: %s", strerror(EISDIR));
+	}
+	char *line = NULL;
+	size_t cap = 0;
+	long number = 0, capacity = 0;
+	bool ok = true;
+	ssize_t len;
+	while (ok && (len = getline(&line, &cap, in)) >= 0) {
+		++number;
+		if ((size_t)len != strlen(line)) {
+			ok = record_fail(err, path, number, "not a text file (NUL byte)");
+			break;
+		}
+		while (len > 0 && (line[len - 1] == '\n' || line[len - 1] == '\r'))
+			line[--len] = '\0';
+		if (number == 1) {
+			if (strcmp(line, STYLUS_HEADER) != 0)
+				ok = record_fail(err, path, 1, "the header must be %s", STYLUS_HEADER);
+			continue;
+		}
+		if (len == 0 || line[0] == '#')
+			continue;
+		if (s->stylus_count >= MAX_STYLUS_KEYS) {
+			ok = record_fail(err, path, number, "more than %ld samples", MAX_STYLUS_KEYS);
+			break;
+		}
+		double v[9];
+		const char *cursor = line;
+		for (int k = 0; ok && k < 9; ++k) {
+			size_t n = strcspn(cursor, ",");
+			number_kind kind = parse_number_text(cursor, n, &v[k]);
+			if (kind == NUMBER_NOT_FINITE)
+				ok = record_fail(err, path, number, "column %d must be finite, got %s", k + 1, show_text(cursor, n).text);
+			else if (kind != NUMBER_OK)
+				ok = record_fail(err, path, number, "expected 9 numbers (%s), column %d is %s", STYLUS_HEADER, k + 1,
+				                 n == 0 ? "empty or missing" : "not a number");
+			else if ((k < 8 && cursor[n] != ',') || (k == 8 && cursor[n] != '\0'))
+				ok = record_fail(err, path, number, "expected 9 numbers (%s), got %s", STYLUS_HEADER,
+				                 k < 8 ? "fewer" : "more");
+			cursor += n + (cursor[n] == ',');
+		}
+		if (!ok)
+			break;
+		if (s->stylus_count > 0 && !(v[0] > s->stylus[s->stylus_count - 1].t)) {
+			ok = record_fail(err, path, number, "time %.17g does not increase (previous sample at %.17g)", v[0],
+			                 s->stylus[s->stylus_count - 1].t);
+			break;
+		}
+		for (int k = 1; ok && k < 4; ++k)
+			if (!(fabs(v[k]) <= MAX_LENGTH))
+				ok = record_fail(err, path, number, "column %d (position) must be within [-%g, %g] m, got %.17g", k + 1,
+				                 MAX_LENGTH, MAX_LENGTH, v[k]);
+		if (!ok)
+			break;
+		hs_quat q = hs_q(v[4], v[5], v[6], v[7]);
+		double norm = sqrt(hs_quat_dot(q, q));
+		if (!(fabs(norm - 1.0) <= 1e-3)) { // a tracker writes a few digits: renormalised below
+			ok = record_fail(err, path, number, "orientation is not a unit quaternion (norm %.6g)", norm);
+			break;
+		}
+		if (v[8] != 0.0 && v[8] != 1.0) {
+			ok = record_fail(err, path, number, "button must be 0 or 1, got %.17g", v[8]);
+			break;
+		}
+		if (s->stylus_count == capacity) { // loading, not stepping: growing here is fine
+			long grown = capacity ? capacity * 2 : 256;
+			stylus_key *keys = realloc(s->stylus, (size_t)grown * sizeof *keys);
+			if (!keys) {
+				ok = record_fail(err, path, number, "out of memory");
+				break;
+			}
+			s->stylus = keys;
+			capacity = grown;
+		}
+		stylus_key *key = &s->stylus[s->stylus_count++];
+		key->t = v[0];
+		key->position = hs_v3(v[1], v[2], v[3]);
+		key->rot = hs_quat_normalize(q);
+		key->button = v[8] == 1.0;
+	}
+	if (ok && ferror(in))
+		ok = record_fail(err, path, number > 0 ? number : 1, "cannot read recorded stylus input: read error");
+	if (ok && number == 0)
+		ok = record_fail(err, path, 1, "empty recorded stylus input: the header %s is missing", STYLUS_HEADER);
+	else if (ok && s->stylus_count == 0)
+		ok = record_fail(err, path, number, "recorded stylus input has a header but no samples");
+	free(line);
+	fclose(in);
+	return ok;
+}
+
+enum { ST_KEYS, ST_RECORD, ST_COUNT };
+static const char *const stylus_keys[ST_COUNT] = {"keys", "record"};
+
+// The stylus: switches the world to the spring model (with model.spring's options) and reads its script.
+static bool read_stylus(parser *p, const yaml_node_t *node, const char *path) {
+	hs_scenario *s = p->s;
+	if (node->type != YAML_MAPPING_NODE)
+		return fail(p, node, "'stylus' must be a mapping with 'keys' or 'record', got %s", got(node).text);
+	fields f;
+	if (!read_mapping(p, node, stylus_keys, ST_COUNT, "stylus", &f))
+		return false;
+	if (!f.value[ST_KEYS] && !f.value[ST_RECORD])
+		return fail(p, node, "'stylus' needs 'keys' or 'record'");
+	if (f.value[ST_KEYS] && f.value[ST_RECORD])
+		return fail(p, before(f.key[ST_KEYS], f.key[ST_RECORD]) ? f.key[ST_RECORD] : f.key[ST_KEYS],
+		            "'keys' and 'record' are exclusive: give one");
+	hs_status status = hs_world_enable_springs(s->world, &p->spring);
+	if (status != HS_OK)
+		return fail(p, p->spring_key ? p->spring_key : node, "cannot enable the spring model: %s", hs_status_string(status));
+	s->springs = true;
+	if (f.value[ST_KEYS]) {
+		const yaml_node_t *keys = f.value[ST_KEYS];
+		if (keys->type != YAML_SEQUENCE_NODE)
+			return fail(p, keys, "'keys' must be a list of 1 to %ld keys, got %s", MAX_STYLUS_KEYS, got(keys).text);
+		long n = sequence_length(keys);
+		if (n < 1 || n > MAX_STYLUS_KEYS)
+			return fail(p, keys, "'keys' must be a list of 1 to %ld keys, got %ld", MAX_STYLUS_KEYS, n);
+		s->stylus = calloc((size_t)n, sizeof *s->stylus);
+		if (!s->stylus)
+			return fail(p, keys, "out of memory");
+		for (long k = 0; k < n; ++k) {
+			if (!read_stylus_key(p, sequence_item(p, keys, k), k ? &s->stylus[k - 1] : NULL, &s->stylus[k]))
+				return false;
+			s->stylus_count = (int)k + 1;
+		}
+		return true;
+	}
+	char *file = NULL;
+	if (!read_text(p, f.value[ST_RECORD], "record", &file))
+		return false;
+	char *full = sibling_path(path, file);
+	free(file);
+	if (!full)
+		return fail(p, f.value[ST_RECORD], "out of memory");
+	bool ok = read_stylus_record(full, s, p->err);
+	free(full);
+	return ok;
+}
+
 // Index of the object named by a scalar, or -1.
 static int find_object(const parser *p, const yaml_node_t *node) {
 	size_t n = node->data.scalar.length;
@@ -1177,11 +1594,80 @@ static int find_object(const parser *p, const yaml_node_t *node) {
 	return lo < p->s->object_count && strcmp(p->sorted[lo].name, key.name) == 0 ? p->sorted[lo].index : -1;
 }
 
-enum { E_OBJECT = PRED_COUNT, E_AT, E_TOLERANCE, E_AXES, E_FROM, E_COUNT };
-static const char *const expect_keys[E_COUNT] = {
-    "near", "resting", "floor_contacts", "on_face", "below", "above", "moved", "turned_deg",
-    "lands_at", "still", "contact_sequence", "object", "at", "tolerance", "axes", "from",
+enum { E_OBJECT = PRED_COUNT, E_AT, E_TOLERANCE, E_AXES, E_FROM, E_TO, E_COUNT };
+static const char *const expect_keys[E_COUNT] = { // the predicates in their order, then the modifiers
+    "near",        "resting",  "floor_contacts", "on_face",   "below",           "above",
+    "moved",       "turned_deg", "speed_below",  "velocity",  "attached",        "candidate",
+    "extension_ratio", "lands_at", "still",      "contact_sequence", "released", "rest_length",
+    "stiffness",   "conserved", "swing_below",
+    "object",      "at",       "tolerance",      "axes",      "from",            "to",
 };
+
+// The unit of a predicate's tolerance, or NULL when it takes none.
+static const char *tolerance_unit(predicate p) {
+	switch (p) {
+	case PRED_NEAR:
+	case PRED_REST_LENGTH:
+		return "m";
+	case PRED_LANDS_AT:
+		return "s";
+	case PRED_VELOCITY:
+		return "m/s";
+	case PRED_STIFFNESS:
+		return "N/m";
+	case PRED_EXTENSION_RATIO:
+		return "a ratio";
+	case PRED_CONSERVED:
+		return "relative";
+	default:
+		return NULL;
+	}
+}
+
+static const char *const attach_names[] = {"none", "pick", "catch", "select", "api"};
+static const char *const release_names[] = {"none", "drop", "throw"};
+
+// conserved: the clause's group — every object ("*"), a list of names, or one name.
+static bool read_group(parser *p, const yaml_node_t *obj, clause *c) {
+	hs_scenario *s = p->s;
+	long n = obj->type == YAML_SEQUENCE_NODE ? sequence_length(obj) : 1;
+	if (scalar_is(obj, "*")) {
+		c->all_objects = true;
+		n = s->object_count;
+	} else if (obj->type == YAML_SEQUENCE_NODE && n < 1) { // more names than objects repeat one: caught below
+		return fail(p, obj, "'object' must list at least one object name");
+	}
+	c->first_member = s->member_total;
+	int *grown = realloc(s->members, (size_t)(s->member_total + n) * sizeof *grown);
+	if (!grown)
+		return fail(p, obj, "out of memory");
+	s->members = grown;
+	for (long i = 0; i < n; ++i) {
+		int index = (int)i;
+		if (!c->all_objects) {
+			const yaml_node_t *e = obj->type == YAML_SEQUENCE_NODE ? sequence_item(p, obj, i) : obj;
+			if (!is_scalar(e))
+				return fail(p, e, "'object' must be an object name, a list of names or \"*\", got %s", got(e).text);
+			if ((index = find_object(p, e)) < 0)
+				return fail(p, e, "unknown object '%s' in expect", show(e).text);
+			for (long j = 0; j < i; ++j)
+				if (s->members[c->first_member + j] == index)
+					return fail(p, e, "object '%s' is listed twice", show(e).text);
+		}
+		s->members[c->first_member + i] = index;
+	}
+	c->member_count = (int)n;
+	s->member_total += (int)n;
+	return true;
+}
+
+// One of `names` (count of them) as an index, or -1.
+static int word_index(const yaml_node_t *node, const char *const *names, int count) {
+	for (int i = 0; i < count; ++i)
+		if (scalar_is(node, names[i]))
+			return i;
+	return -1;
+}
 
 static bool read_clause(parser *p, const yaml_node_t *node, clause *c) {
 	hs_scenario *s = p->s;
@@ -1197,6 +1683,8 @@ static bool read_clause(parser *p, const yaml_node_t *node, clause *c) {
 		return fail(p, node, "expect clause is missing 'object'");
 	if (scalar_is(obj, "*"))
 		c->object = -1;
+	else if (obj->type == YAML_SEQUENCE_NODE)
+		c->object = -2; // a group: only for 'conserved', read below
 	else if (!is_scalar(obj))
 		return fail(p, obj, "'object' must be an object name or \"*\", got %s", got(obj).text);
 	else if ((c->object = find_object(p, obj)) < 0)
@@ -1212,22 +1700,32 @@ static bool read_clause(parser *p, const yaml_node_t *node, clause *c) {
 		}
 		pred = i;
 	}
-	if (pred < 0)
-		return fail(p, node,
-		            "expect clause needs a predicate: near, resting, floor_contacts, on_face, below, above, moved, "
-		            "turned_deg, lands_at, still or contact_sequence");
+	if (pred < 0) {
+		char list[512];
+		size_t w = 0;
+		for (int i = 0; i < PRED_COUNT && w < sizeof list; ++i)
+			w += (size_t)snprintf(list + w, sizeof list - w, "%s%s", i == 0 ? "" : i == PRED_COUNT - 1 ? " or " : ", ",
+			                      predicate_names[i]);
+		return fail(p, node, "expect clause needs a predicate: %s", list);
+	}
 	c->pred = (predicate)pred;
 	const char *pn = predicate_names[pred];
 	const yaml_node_t *v = f.value[pred];
+	if (predicate_needs_springs(c->pred) && !s->springs)
+		return fail(p, f.key[pred], "'%s' needs a spring world: give the scenario a 'stylus'", pn);
+	if (c->object == -2 && c->pred != PRED_CONSERVED)
+		return fail(p, obj, "'object' may list several objects only for 'conserved'");
 	// modifiers belong to particular predicates
 	if (f.key[E_AT] && !predicate_uses_at(c->pred))
 		return fail(p, f.key[E_AT], "'at' is not used by '%s'", pn);
-	if (f.key[E_TOLERANCE] && c->pred != PRED_NEAR && c->pred != PRED_LANDS_AT)
+	if (f.key[E_TOLERANCE] && !tolerance_unit(c->pred))
 		return fail(p, f.key[E_TOLERANCE], "'tolerance' is not used by '%s'", pn);
 	if (f.key[E_AXES] && c->pred != PRED_NEAR)
 		return fail(p, f.key[E_AXES], "'axes' is only for 'near'");
-	if (f.key[E_FROM] && c->pred != PRED_STILL)
-		return fail(p, f.key[E_FROM], "'from' is only for 'still'");
+	if (f.key[E_FROM] && c->pred != PRED_STILL && !predicate_uses_window(c->pred))
+		return fail(p, f.key[E_FROM], "'from' is only for 'still', 'conserved' and 'swing_below'");
+	if (f.key[E_TO] && c->pred != PRED_STILL && !predicate_uses_window(c->pred))
+		return fail(p, f.key[E_TO], "'to' is only for 'still', 'conserved' and 'swing_below'");
 	if (predicate_uses_at(c->pred)) {
 		const yaml_node_t *at = f.value[E_AT];
 		if (!at)
@@ -1244,10 +1742,11 @@ static bool read_clause(parser *p, const yaml_node_t *node, clause *c) {
 			c->frame = llround(t / s->dt);
 		}
 	}
-	if (c->pred == PRED_NEAR || c->pred == PRED_LANDS_AT) {
+	const char *unit = tolerance_unit(c->pred);
+	if (unit) {
 		const yaml_node_t *tol = f.value[E_TOLERANCE];
 		if (!tol)
-			return fail(p, node, "expect clause '%s' is missing 'tolerance' (%s)", pn, c->pred == PRED_NEAR ? "m" : "s");
+			return fail(p, node, "expect clause '%s' is missing 'tolerance' (%s)", pn, unit);
 		if (!read_number(p, tol, "tolerance", &c->tolerance))
 			return false;
 		if (!(c->tolerance > 0.0))
@@ -1273,18 +1772,53 @@ static bool read_clause(parser *p, const yaml_node_t *node, clause *c) {
 		}
 		break;
 	}
+	case PRED_VELOCITY:
+		if (!read_vec3(p, v, pn, &c->target))
+			return false;
+		break;
 	case PRED_RESTING:
 	case PRED_ON_FACE:
 	case PRED_STILL:
+	case PRED_CANDIDATE:
 		if (!read_bool(p, v, pn, &c->flag))
 			return false;
 		break;
+	case PRED_ATTACHED: { // true, false, or how it got there
+		int kind = word_index(v, attach_names, 4);
+		if (kind > HS_ATTACH_NONE) {
+			c->flag = true;
+			c->count = kind;
+		} else if (!(is_scalar(v) && read_bool(p, v, pn, &c->flag))) {
+			return fail(p, v, "'attached' must be true, false, pick, catch or select, got %s", got(v).text);
+		}
+		break;
+	}
+	case PRED_RELEASED: {
+		int kind = word_index(v, release_names, 3);
+		if (kind < 0)
+			return fail(p, v, "'released' must be drop, throw or none, got %s", got(v).text);
+		c->count = kind;
+		break;
+	}
+	case PRED_CONSERVED: {
+		if (scalar_is(v, "momentum"))
+			c->count = CONSERVE_MOMENTUM;
+		else if (scalar_is(v, "energy"))
+			c->count = CONSERVE_ENERGY;
+		else
+			return fail(p, v, "'conserved' must be momentum or energy, got %s", got(v).text);
+		if (!read_group(p, obj, c))
+			return false;
+		c->object = -1;
+		break;
+	}
 	case PRED_FLOOR_CONTACTS:
 		if (!read_integer(p, v, pn, 0, INT_MAX, &c->count))
 			return false;
 		break;
 	case PRED_BELOW:
 	case PRED_ABOVE:
+	case PRED_EXTENSION_RATIO:
 		if (!read_number(p, v, pn, &c->value))
 			return false;
 		break;
@@ -1294,6 +1828,15 @@ static bool read_clause(parser *p, const yaml_node_t *node, clause *c) {
 			return false;
 		if (!(c->value >= 0.0))
 			return fail(p, v, "'%s' must be >= 0, got %s", pn, show(v).text);
+		break;
+	case PRED_SPEED_BELOW:
+	case PRED_REST_LENGTH:
+	case PRED_STIFFNESS:
+	case PRED_SWING_BELOW:
+		if (!read_number(p, v, pn, &c->value))
+			return false;
+		if (!(c->value > 0.0))
+			return fail(p, v, "'%s' must be > 0, got %s", pn, show(v).text);
 		break;
 	case PRED_LANDS_AT:
 		if (!read_time(p, v, pn, &c->value))
@@ -1318,11 +1861,24 @@ static bool read_clause(parser *p, const yaml_node_t *node, clause *c) {
 	default:
 		break;
 	}
-	if (c->pred == PRED_STILL && f.value[E_FROM]) {
+	if ((c->pred == PRED_STILL || predicate_uses_window(c->pred)) && f.value[E_FROM]) {
 		double from;
 		if (!read_time(p, f.value[E_FROM], "from", &from))
 			return false;
 		c->frame = llround(from / s->dt);
+	}
+	if (c->pred == PRED_STILL || predicate_uses_window(c->pred)) {
+		c->last_frame = s->frames;
+		if (f.value[E_TO]) {
+			double to;
+			if (!read_time(p, f.value[E_TO], "to", &to))
+				return false;
+			c->last_frame = llround(to / s->dt);
+		}
+		if (!(c->last_frame > c->frame) && (f.value[E_TO] || c->pred != PRED_STILL)) // still: from = end is fine
+			return fail(p, f.value[E_TO] ? f.value[E_TO] : node,
+			            "'to' must come at least one frame after 'from' (frames %ld and %ld of dt = %g s)", c->frame,
+			            c->last_frame, s->dt);
 	}
 	return true;
 }
@@ -1370,8 +1926,9 @@ static bool read_expect(parser *p, const yaml_node_t *node) {
 		const yaml_node_t *item = sequence_item(p, node, i);
 		ok = read_clause(p, item, &s->clauses[i]);
 		s->clause_count = (int)i + (ok ? 1 : 0);
-		if (ok)
-			checks += s->clauses[i].object < 0 ? s->object_count : 1;
+		if (ok) // the work the checks will take: a group counts its members
+			checks += s->clauses[i].pred == PRED_CONSERVED ? s->clauses[i].member_count
+			                                                : s->clauses[i].object < 0 ? s->object_count : 1;
 		if (ok && checks > MAX_CHECKS)
 			ok = fail(p, item, "expect clauses check more than %d object states in all", MAX_CHECKS);
 	}
@@ -1382,18 +1939,26 @@ static bool read_expect(parser *p, const yaml_node_t *node) {
 static bool prepare_records(parser *p, const yaml_node_t *root) {
 	hs_scenario *s = p->s;
 	long checks = 0;
-	bool landing = false, sequences = false;
+	bool landing = false, sequences = false, releases = false;
 	for (int i = 0; i < s->clause_count; ++i) {
-		checks += s->clauses[i].object < 0 ? s->object_count : 1;
-		landing = landing || s->clauses[i].pred == PRED_LANDS_AT;
-		sequences = sequences || s->clauses[i].pred == PRED_CONTACT_SEQUENCE;
+		const clause *c = &s->clauses[i];
+		checks += c->pred == PRED_CONSERVED || c->object >= 0 ? 1 : s->object_count;
+		landing = landing || c->pred == PRED_LANDS_AT;
+		sequences = sequences || c->pred == PRED_CONTACT_SEQUENCE;
+		releases = releases || c->pred == PRED_RELEASED;
 	}
 	size_t n = (size_t)s->object_count, nc = (size_t)checks;
 	if (checks > 0) {
 		s->checks = calloc(nc, sizeof *s->checks);
 		s->capture_order = malloc(nc * sizeof *s->capture_order);
 		s->still_checks = malloc(nc * sizeof *s->still_checks);
-		if (!s->checks || !s->capture_order || !s->still_checks)
+		s->window_checks = malloc(nc * sizeof *s->window_checks);
+		if (!s->checks || !s->capture_order || !s->still_checks || !s->window_checks)
+			return fail(p, root, "out of memory");
+	}
+	if (releases) {
+		s->releases = calloc(n, sizeof *s->releases);
+		if (!s->releases)
 			return fail(p, root, "out of memory");
 	}
 	if (landing) {
@@ -1415,15 +1980,22 @@ static bool prepare_records(parser *p, const yaml_node_t *root) {
 	for (int i = 0; i < s->clause_count; ++i) {
 		const clause *c = &s->clauses[i];
 		int first = c->object < 0 ? 0 : c->object, last = c->object < 0 ? s->object_count - 1 : c->object;
+		if (c->pred == PRED_CONSERVED) // one check for the whole group
+			first = last = -1;
 		for (int o = first; o <= last; ++o) {
 			int k = s->check_count++;
 			s->checks[k].clause = i;
 			s->checks[k].object = o;
 			s->checks[k].moved_frame = -1;
+			s->checks[k].peak_frame = -1;
+			s->checks[k].holder = -1;
+			s->checks[k].candidate = -1;
 			if (predicate_uses_at(c->pred))
 				s->capture_order[s->capture_count++] = k;
 			else if (c->pred == PRED_STILL)
 				s->still_checks[s->still_count++] = k;
+			else if (predicate_uses_window(c->pred))
+				s->window_checks[s->window_count++] = k;
 		}
 	}
 	if (s->capture_count > 1) {
@@ -1449,6 +2021,62 @@ static hs_object_state state_of(const hs_scenario *s, int object) {
 	return st;
 }
 
+// The object's velocity: in spring worlds the integrated one, else (P(t) − P(t − dt)) / dt.
+static hs_vec3 velocity_of(const hs_scenario *s, int object, const hs_object_state *st) {
+	hs_spring_object o;
+	if (s->springs && hs_world_spring_object(s->world, s->ids[object], &o) == HS_OK)
+		return o.velocity;
+	return st->velocity;
+}
+
+// What the at-based spring predicates need: who is on the spring, how, and its stretch.
+static void capture_spring(const hs_scenario *s, check *c) {
+	hs_spring_state ss;
+	hs_spring_object o;
+	if (hs_world_spring_state(s->world, &ss) != HS_OK)
+		return;
+	c->candidate = (int)ss.candidate.index1 - 1; // objects were added in the file's order
+	if (ss.attached.index1 == 0)
+		return; // holder stays -1
+	c->holder = (int)ss.attached.index1 - 1; // objects were added in the file's order
+	c->kind = ss.attach_kind;
+	c->extension = ss.extension;
+	if (hs_world_spring_object(s->world, ss.attached, &o) == HS_OK) {
+		c->rest_length = o.rest_length;
+		c->ratio = ss.extension / o.rest_length;
+	}
+}
+
+// conserved: the group's momentum Σ m v (kg m/s), or its energy Σ (½ m |v|² − m g·G) (J) in out[0].
+static void group_quantity(const hs_scenario *s, const clause *c, double out[3]) {
+	out[0] = out[1] = out[2] = 0.0;
+	for (int i = 0; i < c->member_count; ++i) {
+		hs_spring_object o;
+		hs_object_state st;
+		int object = s->members[c->first_member + i];
+		if (hs_world_spring_object(s->world, s->ids[object], &o) != HS_OK ||
+		    hs_world_object_state(s->world, s->ids[object], &st) != HS_OK)
+			continue;
+		if (c->count == CONSERVE_MOMENTUM) {
+			out[0] += o.mass * o.velocity.x;
+			out[1] += o.mass * o.velocity.y;
+			out[2] += o.mass * o.velocity.z;
+		} else {
+			out[0] += 0.5 * o.mass * hs_dot(o.velocity, o.velocity) - o.mass * hs_dot(s->gravity, st.position);
+		}
+	}
+}
+
+// swing_below: the horizontal distance (m) from the stylus to the object's G.
+static double swing_of(const hs_scenario *s, int object) {
+	hs_spring_state ss;
+	hs_object_state st;
+	if (hs_world_spring_state(s->world, &ss) != HS_OK || hs_world_object_state(s->world, s->ids[object], &st) != HS_OK)
+		return 0.0;
+	double dx = st.position.x - ss.stylus.x, dy = st.position.y - ss.stylus.y;
+	return sqrt(dx * dx + dy * dy);
+}
+
 // Records what the expectations need from the current frame. Never allocates.
 static void record(hs_scenario *s) {
 	long f = s->frame;
@@ -1457,13 +2085,44 @@ static void record(hs_scenario *s) {
 		if (s->clauses[c->clause].frame > f)
 			break;
 		c->state = state_of(s, c->object);
+		c->velocity = velocity_of(s, c->object, &c->state);
+		if (s->springs)
+			capture_spring(s, c);
 		c->captured = true;
 		s->capture_next++;
 	}
+	for (int i = 0; i < s->window_count; ++i) {
+		check *k = &s->checks[s->window_checks[i]];
+		const clause *c = &s->clauses[k->clause];
+		if (f < c->frame || f > c->last_frame || k->captured)
+			continue;
+		if (c->pred == PRED_CONSERVED) {
+			if (f == c->frame) {
+				group_quantity(s, c, k->before);
+				k->began = true;
+			}
+			if (f == c->last_frame) {
+				group_quantity(s, c, k->after);
+				k->captured = true;
+			}
+		} else { // swing_below
+			double d = swing_of(s, k->object);
+			if (!k->began || d > k->peak) {
+				k->peak = d;
+				k->peak_frame = f;
+			}
+			k->began = true;
+			k->captured = f == c->last_frame;
+		}
+	}
+	hs_release release;
+	if (s->releases && hs_world_spring_last_release(s->world, &release) == HS_OK && release.kind != HS_RELEASE_NONE &&
+	    release.object.index1 >= 1 && release.object.index1 <= (uint32_t)s->object_count)
+		s->releases[release.object.index1 - 1] = release; // at most one release per frame: none is missed
 	for (int i = 0; i < s->still_count; ++i) {
 		check *c = &s->checks[s->still_checks[i]];
 		long from = s->clauses[c->clause].frame;
-		if (f < from || c->moved)
+		if (f < from || f > s->clauses[c->clause].last_frame || c->moved)
 			continue;
 		hs_object_state st = state_of(s, c->object);
 		if (f == from) {
@@ -1501,14 +2160,14 @@ static void record(hs_scenario *s) {
 // public: load, destroy, step
 
 static bool read_scenario(parser *p, const yaml_node_t *root, const char *path) {
-	static const char *const keys[] = {"name",    "description", "dt",     "duration", "gravity",
-	                                   "model",   "objects",     "expect", "hands"};
+	static const char *const keys[] = {"name",  "description", "dt",     "duration", "gravity",
+	                                   "model", "objects",     "expect", "hands",    "stylus"};
 	hs_scenario *s = p->s;
 	if (root->type != YAML_MAPPING_NODE)
 		return fail(p, root, "a scenario must be a mapping of keys (description, dt, duration, objects, ...), got %s",
 		            got(root).text);
 	fields f;
-	if (!read_mapping(p, root, keys, 9, "scenario", &f))
+	if (!read_mapping(p, root, keys, 10, "scenario", &f))
 		return false;
 	size_t base_len;
 	const char *base = base_name(path, &base_len);
@@ -1535,12 +2194,19 @@ static bool read_scenario(parser *p, const yaml_node_t *root, const char *path) 
 	if (!read_text(p, f.value[1], "description", &s->description) || !read_dt(p, f.value[2]) ||
 	    !read_duration(p, f.value[3]))
 		return false;
+	if (f.key[8] && f.key[9]) // one world runs one model
+		return fail(p, before(f.key[8], f.key[9]) ? f.key[9] : f.key[8],
+		            "'hands' and 'stylus' are exclusive: a world runs the hand model or the spring model");
 	hs_world_def def = hs_default_world_def();
 	def.dt = s->dt;
 	if (f.value[4] && !read_vec3(p, f.value[4], "gravity", &def.gravity))
 		return false;
+	s->gravity = def.gravity;
+	p->spring = hs_default_spring_def();
 	if (f.value[5] && !read_model(p, f.value[5], &def))
 		return false;
+	if (p->spring_key && !f.value[9])
+		return fail(p, p->spring_key, "'spring' options need a 'stylus': only spring worlds use them");
 	if (f.value[8]) {
 		if (f.value[8]->type != YAML_SEQUENCE_NODE)
 			return fail(p, f.value[8], "'hands' must be a list of 1 to %d hands, got %s", MAX_HANDS, got(f.value[8]).text);
@@ -1552,6 +2218,8 @@ static bool read_scenario(parser *p, const yaml_node_t *root, const char *path) 
 	if (!read_objects(p, f.value[6], def))
 		return false;
 	if (f.value[8] && !read_hands(p, f.value[8], path))
+		return false;
+	if (f.value[9] && !read_stylus(p, f.value[9], path))
 		return false;
 	if (f.value[7] && !read_expect(p, f.value[7]))
 		return false;
@@ -1608,7 +2276,7 @@ hs_scenario *hs_scenario_load(const char *path, hs_error *err) {
 			ok = set_error(err, path, 1, "out of memory");
 	}
 	if (ok) {
-		parser p = {path, &doc, err, s, NULL};
+		parser p = {.path = path, .doc = &doc, .err = err, .s = s};
 		ok = read_scenario(&p, root, path);
 		free(p.sorted);
 	}
@@ -1621,6 +2289,7 @@ hs_scenario *hs_scenario_load(const char *path, hs_error *err) {
 		return NULL;
 	}
 	drive_hands(s, 0.0); // the hands' first pose: no motion before frame 1
+	drive_stylus(s, 0.0); // likewise the stylus
 	s->initial = calloc((size_t)s->object_count, sizeof *s->initial);
 	if (!s->initial) {
 		set_error(err, path, 1, "out of memory");
@@ -1659,6 +2328,10 @@ void hs_scenario_destroy(hs_scenario *s) {
 		free(s->scripts ? s->scripts[h].keys : NULL);
 	}
 	free(s->initial);
+	free(s->stylus);
+	free(s->members);
+	free(s->window_checks);
+	free(s->releases);
 	free(s->hand_names);
 	free(s->hand_ids);
 	free(s->scripts);
@@ -1684,6 +2357,7 @@ bool hs_scenario_step(hs_scenario *s) {
 	if (!s || s->frame >= s->frames || s->step_status != HS_OK)
 		return false;
 	drive_hands(s, (double)(s->frame + 1) * s->dt);
+	drive_stylus(s, (double)(s->frame + 1) * s->dt);
 	hs_status status = hs_world_step(s->world);
 	if (status != HS_OK) { // reported by hs_scenario_check as a failure
 		s->step_status = status;
@@ -1759,6 +2433,101 @@ static bool evaluate(const hs_scenario *s, const check *k, char *what, size_t wn
 		snprintf(measured, mn, "turned %.6g deg", a);
 		return a >= c->value;
 	}
+	case PRED_SPEED_BELOW: {
+		double v = hs_length(k->velocity);
+		snprintf(what, wn, "speed below %.9g m/s %s", c->value, when);
+		snprintf(measured, mn, "speed %.6g m/s", v);
+		return v < c->value;
+	}
+	case PRED_VELOCITY: {
+		double d = hs_distance(k->velocity, c->target);
+		snprintf(what, wn, "velocity [%.9g, %.9g, %.9g] within %g m/s %s", c->target.x, c->target.y, c->target.z,
+		         c->tolerance, when);
+		snprintf(measured, mn, "velocity [%.9g, %.9g, %.9g] m/s (difference %.6g m/s)", k->velocity.x, k->velocity.y,
+		         k->velocity.z, d);
+		return d <= c->tolerance;
+	}
+	case PRED_ATTACHED: {
+		snprintf(what, wn, "attached %s %s", c->count ? attach_names[c->count] : c->flag ? "true" : "false", when);
+		bool on = k->holder == k->object;
+		if (on)
+			snprintf(measured, mn, "on the spring (%s)", attach_names[k->kind]);
+		else if (k->holder >= 0)
+			snprintf(measured, mn, "not on the spring (it holds '%s')", s->object_names[k->holder]);
+		else
+			snprintf(measured, mn, "not on the spring (it holds nothing)");
+		return c->flag ? on && (c->count == HS_ATTACH_NONE || (long)k->kind == c->count) : !on;
+	}
+	case PRED_CANDIDATE: {
+		snprintf(what, wn, "candidate %s %s", c->flag ? "true" : "false", when);
+		bool is = k->candidate == k->object;
+		if (k->candidate >= 0)
+			snprintf(measured, mn, "the candidate is '%s'", s->object_names[k->candidate]);
+		else
+			snprintf(measured, mn, "no candidate");
+		return is == c->flag;
+	}
+	case PRED_EXTENSION_RATIO: {
+		snprintf(what, wn, "extension_ratio %.9g within %g %s", c->value, c->tolerance, when);
+		if (k->holder != k->object) {
+			snprintf(measured, mn, "not on the spring");
+			return false;
+		}
+		snprintf(measured, mn, "extension / x0 = %.9g (extension %.6g m of x0 = %.6g m)", k->ratio, k->extension,
+		         k->rest_length);
+		return fabs(k->ratio - c->value) <= c->tolerance;
+	}
+	case PRED_RELEASED: {
+		snprintf(what, wn, "released %s", release_names[c->count]);
+		const hs_release *r = &s->releases[k->object];
+		if (r->kind == HS_RELEASE_NONE)
+			snprintf(measured, mn, "never released");
+		else
+			snprintf(measured, mn, "%s at t = %.6g s (hand speed %.6g m/s, leaving at [%.6g, %.6g, %.6g] m/s)",
+			         release_names[r->kind], r->time, r->hand_speed, r->velocity.x, r->velocity.y, r->velocity.z);
+		return (long)r->kind == c->count;
+	}
+	case PRED_REST_LENGTH:
+	case PRED_STIFFNESS: {
+		hs_spring_object o;
+		memset(&o, 0, sizeof o);
+		hs_world_spring_object(s->world, s->ids[k->object], &o);
+		bool x0 = c->pred == PRED_REST_LENGTH;
+		snprintf(what, wn, "%s %.9g %s within %g %s", predicate_names[c->pred], c->value, x0 ? "m" : "N/m", c->tolerance,
+		         x0 ? "m" : "N/m");
+		snprintf(measured, mn, "x0 = %.9g m, k = %.9g N/m (mass %.9g kg)", o.rest_length, o.stiffness, o.mass);
+		return fabs((x0 ? o.rest_length : o.stiffness) - c->value) <= c->tolerance;
+	}
+	case PRED_CONSERVED: {
+		bool momentum = c->count == CONSERVE_MOMENTUM;
+		snprintf(what, wn, "conserved %s from t = %g s to t = %g s within %g (relative)", momentum ? "momentum" : "energy",
+		         (double)c->frame * s->dt, (double)c->last_frame * s->dt, c->tolerance);
+		if (!k->captured) {
+			snprintf(measured, mn, "not reached: the run stopped at frame %ld of %ld", s->frame, s->frames);
+			return false;
+		}
+		const double *a = k->before, *b = k->after;
+		double change = sqrt((b[0] - a[0]) * (b[0] - a[0]) + (b[1] - a[1]) * (b[1] - a[1]) + (b[2] - a[2]) * (b[2] - a[2]));
+		double size = fmax(sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]), sqrt(b[0] * b[0] + b[1] * b[1] + b[2] * b[2]));
+		double relative = size > 0.0 ? change / size : 0.0;
+		if (momentum)
+			snprintf(measured, mn, "p [%.9g, %.9g, %.9g] -> [%.9g, %.9g, %.9g] kg m/s, relative change %.3g", a[0], a[1],
+			         a[2], b[0], b[1], b[2], relative);
+		else
+			snprintf(measured, mn, "E %.12g -> %.12g J, relative change %.3g", a[0], b[0], relative);
+		return relative <= c->tolerance;
+	}
+	case PRED_SWING_BELOW: {
+		snprintf(what, wn, "swing below %.9g m from t = %g s to t = %g s", c->value, (double)c->frame * s->dt,
+		         (double)c->last_frame * s->dt);
+		if (!k->captured) {
+			snprintf(measured, mn, "not reached: the run stopped at frame %ld of %ld", s->frame, s->frames);
+			return false;
+		}
+		snprintf(measured, mn, "largest horizontal offset from the stylus %.6g m (at t = %.6g s)", k->peak,
+		         (double)k->peak_frame * s->dt);
+		return k->peak < c->value;
+	}
 	case PRED_LANDS_AT: {
 		snprintf(what, wn, "lands at t = %g s within %g s", c->value, c->tolerance);
 		long f = s->landed_frame[k->object];
@@ -1772,7 +2541,11 @@ static bool evaluate(const hs_scenario *s, const check *k, char *what, size_t wn
 	}
 	case PRED_STILL: {
 		double from = (double)c->frame * s->dt;
-		snprintf(what, wn, "still %s from t = %g s", c->flag ? "true" : "false", from);
+		if (c->last_frame < s->frames)
+			snprintf(what, wn, "still %s from t = %g s to t = %g s", c->flag ? "true" : "false", from,
+			         (double)c->last_frame * s->dt);
+		else
+			snprintf(what, wn, "still %s from t = %g s", c->flag ? "true" : "false", from);
 		if (!k->captured) {
 			snprintf(measured, mn, "not reached: the run stopped at frame %ld of %ld", s->frame, s->frames);
 			return false;
@@ -1808,6 +2581,28 @@ static bool evaluate(const hs_scenario *s, const check *k, char *what, size_t wn
 	return false;
 }
 
+// The object a check names, or its group: "all objects" or the names joined by '+'.
+typedef struct label {
+	char text[256];
+} label;
+
+static label check_label(const hs_scenario *s, const check *k) {
+	label l;
+	const clause *c = &s->clauses[k->clause];
+	if (k->object >= 0) {
+		snprintf(l.text, sizeof l.text, "%s", s->object_names[k->object]);
+	} else if (c->all_objects) {
+		snprintf(l.text, sizeof l.text, "all objects");
+	} else {
+		size_t w = 0;
+		l.text[0] = '\0';
+		for (int i = 0; i < c->member_count && w < sizeof l.text; ++i)
+			w += (size_t)snprintf(l.text + w, sizeof l.text - w, "%s%s", i ? "+" : "",
+			                      s->object_names[s->members[c->first_member + i]]);
+	}
+	return l;
+}
+
 int hs_scenario_check(const hs_scenario *s, FILE *report) {
 	if (!s)
 		return 0;
@@ -1819,7 +2614,7 @@ int hs_scenario_check(const hs_scenario *s, FILE *report) {
 		failed += !pass;
 		if (report)
 			fprintf(report, "%s  line %lu: %s %s: %s\n", pass ? "PASS" : "FAIL", s->clauses[k->clause].line,
-			        s->object_names[k->object], what, measured);
+			        check_label(s, k).text, what, measured);
 	}
 	if (s->step_status != HS_OK) {
 		failed++;

@@ -235,8 +235,9 @@ static void test_load_errors(void **state) {
 	load_error("e.yaml", text, "7: 'tolerance' must be > 0, got 0");
 	snprintf(text, sizeof text, "%s" ONE_CUBE "expect:\n  - { object: a, at: end }\n", head);
 	load_error("e.yaml", text,
-	           "7: expect clause needs a predicate: near, resting, floor_contacts, on_face, below, above, moved, turned_deg, lands_at, still or "
-	           "contact_sequence");
+	           "7: expect clause needs a predicate: near, resting, floor_contacts, on_face, below, above, moved, turned_deg, speed_below, "
+	           "velocity, attached, candidate, extension_ratio, lands_at, still, contact_sequence, released, rest_length, stiffness, "
+	           "conserved or swing_below");
 	snprintf(text, sizeof text, "%s" ONE_CUBE "expect:\n  - { object: a, still: true, at: end }\n", head);
 	load_error("e.yaml", text, "7: 'at' is not used by 'still'");
 	snprintf(text, sizeof text, "%s" ONE_CUBE "expect:\n  - { object: a, still: true, from: 2 }\n", head);
@@ -246,7 +247,7 @@ static void test_load_errors(void **state) {
 	snprintf(text, sizeof text, "%s" ONE_CUBE "expect:\n  - { object: a, at: end, floor_contacts: 2.5 }\n", head);
 	load_error("e.yaml", text, "7: 'floor_contacts' must be an integer, got '2.5'");
 	snprintf(text, sizeof text, "%s" ONE_CUBE "stylus: {}\n", head);
-	load_error("e.yaml", text, "6: unknown key 'stylus' in scenario");
+	load_error("e.yaml", text, "6: 'stylus' needs 'keys' or 'record'");
 	snprintf(text, sizeof text, "%s" ONE_CUBE "expect: { object: a }\n", head);
 	load_error("e.yaml", text, "6: 'expect' must be a list of clauses, got a mapping");
 	load_error("e.yaml", "description: e\ndt:\nduration: 1\n" ONE_CUBE, "2: 'dt' must be a number, got nothing");
@@ -580,6 +581,303 @@ static void test_catalog(void **state) {
 	assert_string_equal(err.message, want);
 }
 
+// ---------------------------------------------------------------------------------------------
+// the stylus (spring model): keyframes, recorded files, model.spring, the spring predicates
+
+static hs_spring_state spring_of(hs_scenario *s) {
+	hs_spring_state ss;
+	assert_int_equal(hs_world_spring_state(hs_scenario_world(s), &ss), HS_OK);
+	return ss;
+}
+
+// Keys: positions linear between keys, what a key leaves out kept from the one before, the button
+// a step at the key's time, orientation slerped; set for the end of each frame.
+static void test_stylus_keys(void **state) {
+	(void)state;
+	hs_scenario *s = load_text("keys.yaml", "description: stylus keys\ndt: 1/60\nduration: 1.5\n" ONE_CUBE
+	                                        "stylus:\n"
+	                                        "  keys:\n"
+	                                        "    - { t: 0.1, position: [0, 0, 0.6] }\n"
+	                                        "    - { t: 0.5, position: [0.4, 0, 0.2], rpy_deg: [0, 0, 90] }\n"
+	                                        "    - { t: 0.7, button: true }\n"
+	                                        "    - { t: 1.0, position: [0.4, 0.3, 0.2], button: false }\n");
+	hs_world *w = hs_scenario_world(s);
+	assert_true(hs_world_springs_enabled(w));
+	// frame 0: the first key holds before its time
+	hs_spring_state ss = spring_of(s);
+	assert_vec3_near(ss.stylus, hs_v3(0, 0, 0.6), 0.0);
+	assert_false(ss.button);
+	for (long f = 1; f <= 90; ++f) {
+		assert_true(hs_scenario_step(s));
+		double t = (double)f / 60.0;
+		ss = spring_of(s);
+		hs_vec3 want = t <= 0.1 ? hs_v3(0, 0, 0.6)
+		               : t <= 0.5 ? hs_lerp(hs_v3(0, 0, 0.6), hs_v3(0.4, 0, 0.2), (t - 0.1) / 0.4)
+		               : t <= 0.7 ? hs_v3(0.4, 0, 0.2)
+		               : t <= 1.0 ? hs_lerp(hs_v3(0.4, 0, 0.2), hs_v3(0.4, 0.3, 0.2), (t - 0.7) / 0.3)
+		                          : hs_v3(0.4, 0.3, 0.2);
+		assert_vec3_near(ss.stylus, want, 1e-15);
+		// the button goes down at the end of frame 42 (t = 0.7 s) and up at frame 60 (t = 1.0 s)
+		assert_int_equal(ss.button, f >= 42 && f < 60);
+		if (t >= 0.5) { // 90 deg about z from the key at 0.5 s on
+			assert_near(ss.stylus_orientation.w, sqrt(0.5), 1e-12);
+			assert_near(ss.stylus_orientation.z, sqrt(0.5), 1e-12);
+		}
+		if (f == 18) { // halfway between identity and 90 deg: 45 deg
+			hs_quat q = ss.stylus_orientation;
+			assert_near(q.w, cos(HS_PI / 8.0), 1e-12);
+			assert_near(q.z, sin(HS_PI / 8.0), 1e-12);
+		}
+	}
+	hs_scenario_destroy(s);
+}
+
+// A recorded file at 30 Hz, resampled to 60 fps; comment lines skipped; the last sample holds.
+static void test_stylus_record(void **state) {
+	(void)state;
+	write_file("rec/track.csv", "t,x,y,z,qw,qx,qy,qz,button\n"
+	                            "# 30 Hz\n"
+	                            "0,0,0,0.5,1,0,0,0,0\n"
+	                            "0.0333333333333333,0.01,0,0.5,1,0,0,0,0\n"
+	                            "\n"
+	                            "0.0666666666666667,0.02,0,0.5,1,0,0,0,1\n"
+	                            "0.1,0.03,0,0.5,0.70710678,0,0,0.70710678,1\n");
+	hs_scenario *s = load_text("rec/rec.yaml", "description: a record\ndt: 1/60\nduration: 0.13333333\n" ONE_CUBE
+	                                           "stylus: { record: track.csv }\n");
+	double want_x[] = {0.0, 0.005, 0.01, 0.015, 0.02, 0.025, 0.03, 0.03, 0.03};
+	for (int f = 0; f < 9; ++f) {
+		hs_spring_state ss = spring_of(s);
+		assert_near(ss.stylus.x, want_x[f], 1e-12);
+		assert_int_equal(ss.button, f >= 4); // the sample at 1/15 s presses
+		assert_true(hs_scenario_step(s) == (f < 8));
+	}
+	hs_spring_state ss = spring_of(s);
+	assert_near(ss.stylus_orientation.z, sqrt(0.5), 1e-12); // renormalised
+	hs_scenario_destroy(s);
+	// errors name the recorded file and its line
+	hs_error err;
+	write_file("rec/bad.csv", "t,x,y,z,qw,qx,qy,qz,button\n0,0,0,0.5,1,0,0,0,0\n0.1,0,0,0.5,1,0,0,0,0,7\n");
+	const char *path = write_file("rec/bad.yaml", "description: a bad record\ndt: 1/60\nduration: 0.2\n" ONE_CUBE
+	                                              "stylus: { record: bad.csv }\n");
+	assert_null(hs_scenario_load(path, &err));
+	char want[600];
+	snprintf(want, sizeof want, "%s/rec/bad.csv:3: expected 9 numbers (t,x,y,z,qw,qx,qy,qz,button), got more", temp_dir);
+	assert_string_equal(err.message, want);
+	write_file("rec/hex.csv", "t,x,y,z,qw,qx,qy,qz,button\n0,0x1,0,0.5,1,0,0,0,0\n");
+	path = write_file("rec/hex.yaml", "description: a bad record\ndt: 1/60\nduration: 0.2\n" ONE_CUBE
+	                                  "stylus: { record: hex.csv }\n");
+	assert_null(hs_scenario_load(path, &err));
+	snprintf(want, sizeof want, "%s/rec/hex.csv:2: expected 9 numbers (t,x,y,z,qw,qx,qy,qz,button), column 2 is not a number",
+	         temp_dir);
+	assert_string_equal(err.message, want);
+}
+
+// model.spring reaches the world: friction 0 lets a pushed ball slide on, walls stop it, the noise
+// seed makes the tracker's samples noisy (and reproducible).
+static void test_spring_options(void **state) {
+	(void)state;
+	const char *text = "description: options\ndt: 1/60\nduration: 1\n"
+	                   "model: { spring: { friction: 0, restitution: 0.5, integrator: rk4, walls: [-1, 0.3, -1, 1],"
+	                   " noise_seed: 3 } }\n"
+	                   "objects:\n"
+	                   "  - { name: ball, shape: sphere, size: 0.05, position: [0, 0, 0.05], velocity: [1, 0, 0] }\n"
+	                   "stylus: { keys: [{ t: 0, position: [0, 0.5, 0.5] }] }\n";
+	hs_scenario *s = load_text("opts.yaml", text);
+	hs_world *w = hs_scenario_world(s);
+	for (int f = 0; f < 15; ++f)
+		assert_true(hs_scenario_step(s));
+	hs_object_state st;
+	assert_int_equal(hs_world_object_state(w, hs_world_object_at(w, 0), &st), HS_OK);
+	assert_near(st.position.x, 0.25, 1e-12); // no friction: 1 m/s for 0.25 s
+	while (hs_scenario_step(s)) {
+	}
+	assert_int_equal(hs_world_object_state(w, hs_world_object_at(w, 0), &st), HS_OK);
+	assert_near(st.position.x, 0.25, 1e-12); // the wall at 0.3 holds its surface
+	hs_tracker_state tr;
+	assert_int_equal(hs_world_tracker_state(w, &tr), HS_OK);
+	assert_int_equal(tr.sample_count, 51); // 0, 0.02, ..., 1.0 s
+	double noise = hs_distance(tr.newest.position, hs_v3(0, 0.5, 0.5));
+	assert_true(noise > 0.0 && noise < 0.01);
+	hs_scenario_destroy(s);
+	s = load_text("opts.yaml", text); // the same seed, the same samples
+	run_all(s);
+	hs_tracker_state again;
+	assert_int_equal(hs_world_tracker_state(hs_scenario_world(s), &again), HS_OK);
+	assert_memory_equal(&again.newest.position, &tr.newest.position, sizeof tr.newest.position);
+	hs_scenario_destroy(s);
+	// friction defaults to 0.5 and sliding friction follows it; a ball pushed at 1 m/s stops after
+	// v / (mu g) = 0.2039 s, 1 / (2 mu g) = 0.10194 m on
+	s = load_text("mu.yaml", "description: mu\ndt: 1/60\nduration: 1\nobjects:\n"
+	                         "  - { name: ball, shape: sphere, size: 0.05, position: [0, 0, 0.05], velocity: [1, 0, 0] }\n"
+	                         "stylus: { keys: [{ t: 0, position: [0, 0.5, 0.5] }] }\n");
+	run_all(s);
+	w = hs_scenario_world(s);
+	assert_int_equal(hs_world_object_state(w, hs_world_object_at(w, 0), &st), HS_OK);
+	assert_near(st.position.x, 1.0 / (2.0 * 0.5 * 9.81), 1e-9);
+	hs_scenario_destroy(s);
+}
+
+// A crate picked, lifted, thrown; a ball sliding against friction; two balls colliding.
+static const char spring_scenario[] = "description: spring predicates\n"
+                                      "dt: 1/60\n"
+                                      "duration: 3\n"
+                                      "objects:\n"
+                                      "  - { name: crate, shape: cube, size: 0.1, density: 1000, position: [0, 0, 0.05] }\n"
+                                      "  - { name: ball, shape: sphere, size: 0.05, position: [1, 1, 0.05], velocity: [1, 0, 0] }\n"
+                                      "  - { name: idle, shape: sphere, size: 0.05, position: [-1, 1, 0.05] }\n"
+                                      "stylus:\n"
+                                      "  keys:\n"
+                                      "    - { t: 0, position: [0, 0, 0.05] }\n"
+                                      "    - { t: 0.2, button: true }\n"
+                                      "    - { t: 1.0, position: [0, 0, 0.45] }\n"
+                                      "    - { t: 2.0 }\n"
+                                      "    - { t: 2.5, position: [0.5, 0, 0.45], button: false }\n"
+                                      "expect:\n";
+
+static int check_spring_clause(const char *clause, char *report, size_t report_size) {
+	char text[4096];
+	snprintf(text, sizeof text, "%s  - %s\n", spring_scenario, clause);
+	hs_scenario *s = load_text("spring.yaml", text);
+	run_all(s);
+	char *buf = NULL;
+	size_t size = 0;
+	FILE *r = open_memstream(&buf, &size);
+	assert_non_null(r);
+	int failed = hs_scenario_check(s, r);
+	fclose(r);
+	snprintf(report, report_size, "%s", buf);
+	free(buf);
+	hs_scenario_destroy(s);
+	return failed;
+}
+
+static void spring_pass(const char *clause, const char *measured) {
+	char report[4096];
+	int failed = check_spring_clause(clause, report, sizeof report);
+	if (failed != 0 || !strstr(report, measured))
+		fail_msg("%s\nshould pass with '%s', got:\n%s", clause, measured, report);
+}
+
+static void spring_fail(const char *clause, const char *measured) {
+	char report[4096];
+	int failed = check_spring_clause(clause, report, sizeof report);
+	if (failed < 1 || strncmp(report, "FAIL", 4) != 0 || !strstr(report, measured))
+		fail_msg("%s\nshould fail with '%s', got:\n%s", clause, measured, report);
+}
+
+static void test_attached_and_candidate(void **state) {
+	(void)state;
+	spring_pass("{ object: crate, at: 0.5, attached: true }", "on the spring (pick)");
+	spring_pass("{ object: crate, at: 0.5, attached: pick }", "on the spring (pick)");
+	spring_fail("{ object: crate, at: 0.5, attached: catch }", "on the spring (pick)");
+	spring_fail("{ object: crate, at: 0.1, attached: true }", "not on the spring (it holds nothing)");
+	spring_pass("{ object: ball, at: 0.5, attached: false }", "not on the spring (it holds 'crate')");
+	spring_fail("{ object: crate, at: end, attached: true }", "not on the spring (it holds nothing)");
+	spring_pass("{ object: crate, at: 0.1, candidate: true }", "the candidate is 'crate'"); // the stylus is inside it
+	spring_fail("{ object: ball, at: 0.1, candidate: true }", "the candidate is 'crate'");
+	spring_pass("{ object: crate, at: 0.5, candidate: false }", "no candidate"); // attached: no longer a candidate
+}
+
+static void test_extension_and_spring_constants(void **state) {
+	(void)state;
+	// 1 kg: x0 = 0.1 m, k = 490.5 N/m; hanging at rest: extension 0.2 x0
+	spring_pass("{ object: crate, at: 2.0, extension_ratio: 0.2, tolerance: 1e-6 }", "(extension 0.02 m of x0 = 0.1 m)");
+	spring_fail("{ object: crate, at: 2.0, extension_ratio: 0.3, tolerance: 0.01 }", "(extension 0.02 m of x0 = 0.1 m)");
+	spring_fail("{ object: ball, at: 2.0, extension_ratio: 0.2, tolerance: 1 }", "not on the spring");
+	spring_pass("{ object: crate, rest_length: 0.1, tolerance: 1e-12 }", "x0 = 0.1 m, k = 490.5 N/m (mass 1 kg)");
+	spring_fail("{ object: crate, rest_length: 0.2, tolerance: 0.05 }", "x0 = 0.1 m");
+	spring_pass("{ object: crate, stiffness: 490.5, tolerance: 1e-9 }", "k = 490.5 N/m");
+	spring_fail("{ object: crate, stiffness: 400, tolerance: 1 }", "k = 490.5 N/m");
+}
+
+static void test_release_speed_velocity(void **state) {
+	(void)state;
+	// the hand moves at 1 m/s from 2.0 s and lets go at 2.5 s: a throw at the hand's velocity
+	spring_pass("{ object: crate, released: throw }", "throw at t = 2.5 s (hand speed 1 m/s, leaving at [1, 0, 0] m/s)");
+	spring_fail("{ object: crate, released: drop }", "throw at t = 2.5 s");
+	spring_fail("{ object: ball, released: throw }", "never released");
+	spring_pass("{ object: ball, released: none }", "never released");
+	spring_pass("{ object: crate, at: 2.5, velocity: [1, 0, 0], tolerance: 1e-12 }", "velocity [1, 0, 0] m/s");
+	spring_fail("{ object: crate, at: 2.5, velocity: [0, 0, 0], tolerance: 0.5 }", "(difference 1 m/s)");
+	spring_pass("{ object: crate, at: 2.0, speed_below: 1e-4 }", "speed ");
+	spring_fail("{ object: ball, at: 0, speed_below: 0.5 }", "speed 1 m/s");
+	// the ball, on the floor at 1 m/s, stops after 1 / (mu g) = 0.2039 s (mu = 0.5)
+	spring_pass("{ object: ball, at: 0.25, speed_below: 1e-12 }", "speed 0 m/s");
+	// outside spring worlds the velocity is the frame's difference quotient
+	expect_pass("{ object: block, at: 0.1, speed_below: 1.5 }", "speed 0.89925 m/s"); // g × 5.5 dt: frame 6's mean
+	expect_fail("{ object: block, at: 0.1, velocity: [0, 0, 0], tolerance: 0.5 }", "velocity [0, 0, -0.89925");
+}
+
+static void test_conserved_and_swing(void **state) {
+	(void)state;
+	// nothing moves the idle ball
+	spring_pass("{ object: idle, conserved: momentum, tolerance: 1e-15 }", "relative change 0");
+	spring_pass("{ object: idle, conserved: energy, from: 0.5, to: 2.5, tolerance: 1e-15 }", "relative change 0");
+	// friction takes the sliding ball's momentum and energy
+	spring_fail("{ object: [ball], conserved: momentum, from: 0, to: 0.5, tolerance: 1e-3 }",
+	            "p [0.261799388, 0, 0] -> [0, 0, 0] kg m/s, relative change 1");
+	spring_fail("{ object: '*', conserved: energy, to: 0.5, tolerance: 1e-3 }", "relative change ");
+	spring_pass("{ object: [idle, ball], conserved: energy, from: 1.0, to: 2.0, tolerance: 1e-15 }", "idle+ball conserved");
+	// the group line names the objects, or "all objects"
+	char report[4096];
+	assert_int_equal(check_spring_clause("{ object: '*', conserved: momentum, from: 1.0, to: 2.0, tolerance: 1e-9 }", report,
+	                                     sizeof report),
+	                 1); // the crate rises from 1.0 s on its spring, slowing down
+	assert_non_null(strstr(report, "FAIL  line 16: all objects conserved momentum from t = 1 s to t = 2 s"));
+	// swing: the horizontal distance from the stylus to G, largest over the window
+	spring_pass("{ object: crate, swing_below: 1e-9, from: 0.5, to: 2.0 }", "largest horizontal offset from the stylus 0 m");
+	spring_fail("{ object: crate, swing_below: 0.01, from: 2.5, to: 2.7 }", "largest horizontal offset from the stylus");
+	spring_fail("{ object: ball, swing_below: 1, from: 0, to: 1 }", "1.48804 m (at t = 0.216667 s)"); // where it stopped
+}
+
+static void test_spring_load_errors(void **state) {
+	(void)state;
+	const char *head = "description: e\ndt: 1/60\nduration: 1\n";
+	char text[1024];
+	snprintf(text, sizeof text, "%s" ONE_CUBE "expect:\n  - { object: a, conserved: momentum, tolerance: 1e-9 }\n", head);
+	load_error("e.yaml", text, "7: 'conserved' needs a spring world: give the scenario a 'stylus'");
+	snprintf(text, sizeof text,
+	         "%s" ONE_CUBE "stylus: { keys: [{ t: 0, position: [0, 0, 1] }] }\n"
+	         "expect:\n  - { object: a, conserved: heat, tolerance: 1e-9 }\n",
+	         head);
+	load_error("e.yaml", text, "8: 'conserved' must be momentum or energy, got 'heat'");
+	snprintf(text, sizeof text,
+	         "%s" ONE_CUBE "stylus: { keys: [{ t: 0, position: [0, 0, 1] }] }\n"
+	         "expect:\n  - { object: a, at: end, swing_below: 0.1 }\n",
+	         head);
+	load_error("e.yaml", text, "8: 'at' is not used by 'swing_below'");
+	snprintf(text, sizeof text,
+	         "%s" ONE_CUBE "stylus: { keys: [{ t: 0, position: [0, 0, 1] }] }\n"
+	         "expect:\n  - { object: a, at: end, resting: true, to: 0.5 }\n",
+	         head);
+	load_error("e.yaml", text, "8: 'to' is only for 'still', 'conserved' and 'swing_below'");
+	snprintf(text, sizeof text,
+	         "%s" ONE_CUBE "stylus: { keys: [{ t: 0, position: [0, 0, 1] }] }\n"
+	         "expect:\n  - { object: a, still: true, from: 0.5, to: 0.5 }\n",
+	         head);
+	load_error("e.yaml", text, "8: 'to' must come at least one frame after 'from' (frames 30 and 30 of dt = 0.0166667 s)");
+	snprintf(text, sizeof text,
+	         "%s" ONE_CUBE "stylus: { keys: [{ t: 0, position: [0, 0, 1] }] }\n"
+	         "expect:\n  - { object: a, at: end, speed_below: 0 }\n",
+	         head);
+	load_error("e.yaml", text, "8: 'speed_below' must be > 0, got 0");
+	snprintf(text, sizeof text, "%smodel: { spring: [] }\n" ONE_CUBE "stylus: { keys: [{ t: 0, position: [0, 0, 1] }] }\n",
+	         head);
+	load_error("e.yaml", text, "4: 'spring' must be a mapping, got a list");
+	snprintf(text, sizeof text, "%s" ONE_CUBE "stylus: { keys: [{ t: 0, position: [0, 0, 1], quat: [2, 0, 0, 0] }] }\n", head);
+	load_error("e.yaml", text, "6: 'quat' must have norm 1 (within 1e-06), got norm 2");
+}
+
+// still with `to`: the pose may change after the window
+static void test_still_window(void **state) {
+	(void)state;
+	expect_pass("{ object: base, still: true, from: 0.5, to: 1.0 }", "still true from t = 0.5 s to t = 1 s: unchanged");
+	expect_fail("{ object: high, still: true, from: 0.5, to: 0.6 }", "moved at frame 31 ");
+	// the crate waits for the spring until 0.2 s, then rises: still before, not after
+	spring_pass("{ object: crate, still: true, from: 0, to: 0.2 }", "unchanged");
+	spring_fail("{ object: crate, still: true, from: 0, to: 0.5 }", "moved at frame ");
+}
+
 int main(void) {
 	const struct CMUnitTest tests[] = {
 	    cmocka_unit_test(test_dt_fraction),
@@ -598,6 +896,15 @@ int main(void) {
 	    cmocka_unit_test(test_trajectory_rows),
 	    cmocka_unit_test(test_compare),
 	    cmocka_unit_test(test_catalog),
+	    cmocka_unit_test(test_stylus_keys),
+	    cmocka_unit_test(test_stylus_record),
+	    cmocka_unit_test(test_spring_options),
+	    cmocka_unit_test(test_attached_and_candidate),
+	    cmocka_unit_test(test_extension_and_spring_constants),
+	    cmocka_unit_test(test_release_speed_velocity),
+	    cmocka_unit_test(test_conserved_and_swing),
+	    cmocka_unit_test(test_spring_load_errors),
+	    cmocka_unit_test(test_still_window),
 	};
 	return cmocka_run_group_tests_name("scenario", tests, make_temp_dir, remove_temp_dir);
 }
