@@ -2,6 +2,7 @@
 #include <errno.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 #include "internal.h"
 
@@ -65,6 +66,12 @@ bool hs_record_load(const char *path, const char *shown_path, hs_hand_script *sc
 	script->key_count = 0;
 	script->keys = NULL;
 	FILE *in = fopen(path, "rb");
+	struct stat st;
+	if (in && fstat(fileno(in), &st) == 0 && S_ISDIR(st.st_mode)) { // fopen accepts a directory
+		fclose(in);
+		in = NULL;
+		errno = EISDIR;
+	}
 	if (!in) {
 		char what[256];
 		snprintf(what, sizeof what, "cannot read recorded input: %s", strerror(errno));

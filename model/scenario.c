@@ -439,6 +439,19 @@ static bool read_vec3(parser *p, const yaml_node_t *node, const char *key, hs_ve
 	return true;
 }
 
+// A point in the world: every coordinate within ±MAX_LENGTH m, so nothing downstream overflows.
+static bool read_point(parser *p, const yaml_node_t *node, const char *key, hs_vec3 *out) {
+	double v[3];
+	const yaml_node_t *e[3];
+	if (!read_numbers(p, node, key, 3, "", v, e))
+		return false;
+	for (int i = 0; i < 3; ++i)
+		if (!(fabs(v[i]) <= MAX_LENGTH))
+			return fail(p, e[i], "'%s' must be within [-%g, %g] m, got %s", key, MAX_LENGTH, MAX_LENGTH, show(e[i]).text);
+	*out = hs_v3(v[0], v[1], v[2]);
+	return true;
+}
+
 // A length of a shape: (0, MAX_LENGTH] m.
 static bool check_length(parser *p, const yaml_node_t *node, const char *key, double v) {
 	if (v > 0.0 && v <= MAX_LENGTH)
@@ -628,7 +641,7 @@ static bool read_duration(parser *p, const yaml_node_t *node) {
 		return fail(p, node, "'duration' must be > 0 s, got %s", show(node).text);
 	double frames = d / p->s->dt;
 	if (!(frames < (double)MAX_FRAMES + 0.5))
-		return fail(p, node, "'duration' is %.0f frames of dt = %g s; at most %ld are allowed", frames, p->s->dt,
+		return fail(p, node, "'duration' is %.6g frames of dt = %g s; at most %ld are allowed", frames, p->s->dt,
 		            MAX_FRAMES);
 	long n = llround(frames);
 	if (n < 1)
@@ -955,7 +968,7 @@ static bool read_object(parser *p, const yaml_node_t *obj, int index) {
 		ok = fail(p, before(f.key[O_RPY], f.key[O_QUAT]) ? f.key[O_QUAT] : f.key[O_RPY],
 		          "'rpy_deg' and 'quat' are exclusive: give one orientation");
 	else
-		ok = read_vec3(p, f.value[O_POSITION], "position", &def.position);
+		ok = read_point(p, f.value[O_POSITION], "position", &def.position);
 	if (ok && f.value[O_RPY]) {
 		hs_vec3 rpy = {0.0, 0.0, 0.0};
 		ok = read_vec3(p, f.value[O_RPY], "rpy_deg", &rpy);
@@ -1189,11 +1202,11 @@ static bool read_key(parser *p, const yaml_node_t *node, const hs_hand_def *def,
 		return false;
 	if (f.value[K_ANGLES] && !read_angle_list(p, f.value[K_ANGLES], key->sensors))
 		return false;
-	if (f.value[K_WRIST] && !read_vec3(p, f.value[K_WRIST], "wrist", &key->wrist))
+	if (f.value[K_WRIST] && !read_point(p, f.value[K_WRIST], "wrist", &key->wrist))
 		return false;
 	if (f.value[K_GRIP]) { // place the wrist so the posture's grip centre lands on this point
 		hs_vec3 grip, center, axis;
-		if (!read_vec3(p, f.value[K_GRIP], "grip", &grip))
+		if (!read_point(p, f.value[K_GRIP], "grip", &grip))
 			return false;
 		uint8_t sensors[HS_GLOVE_SENSORS];
 		for (int i = 0; i < HS_GLOVE_SENSORS; ++i)
@@ -1388,16 +1401,8 @@ static bool read_stylus_key(parser *p, const yaml_node_t *node, const stylus_key
 	key->position = previous ? previous->position : hs_v3(0.0, 0.0, 0.0);
 	key->rot = previous ? previous->rot : hs_quat_identity();
 	key->button = previous ? previous->button : false;
-	if (f.value[SK_POSITION]) {
-		double v[3];
-		const yaml_node_t *e[3];
-		if (!read_numbers(p, f.value[SK_POSITION], "position", 3, "", v, e))
-			return false;
-		for (int i = 0; i < 3; ++i) // a hand within reach of the table: no overflow downstream
-			if (!(fabs(v[i]) <= MAX_LENGTH))
-				return fail(p, e[i], "'position' must be within [-%g, %g] m, got %s", MAX_LENGTH, MAX_LENGTH, show(e[i]).text);
-		key->position = hs_v3(v[0], v[1], v[2]);
-	}
+	if (f.value[SK_POSITION] && !read_point(p, f.value[SK_POSITION], "position", &key->position))
+		return false;
 	if (f.value[SK_RPY]) {
 		hs_vec3 rpy;
 		if (!read_vec3(p, f.value[SK_RPY], "rpy_deg", &rpy))
