@@ -641,7 +641,9 @@ static bool read_duration(parser *p, const yaml_node_t *node) {
 		return fail(p, node, "'duration' must be > 0 s, got %s", show(node).text);
 	double frames = d / p->s->dt;
 	if (!(frames < (double)MAX_FRAMES + 0.5))
-		return fail(p, node, "'duration' is %.6g frames of dt = %g s; at most %ld are allowed", frames, p->s->dt,
+		return fail(p, node, frames < 1e15 ? "'duration' is %.0f frames of dt = %g s; at most %ld are allowed"
+		                                   : "'duration' is %.6g frames of dt = %g s; at most %ld are allowed",
+		            frames, p->s->dt,
 		            MAX_FRAMES);
 	long n = llround(frames);
 	if (n < 1)
