@@ -15,7 +15,6 @@
 // lengths and radius) for every function here; a NULL `sensors`, `joints` or output array makes
 // the call return without writing anything (hs_hand_joints_from_sensors then returns zero angles).
 // The functions never allocate.
-#include <assert.h>
 #include <math.h>
 #include <stdbool.h>
 #include <stddef.h>
@@ -65,9 +64,8 @@ hs_hand_def hs_default_hand_def(void) {
 // Sensors ↔ angles
 
 hs_hand_joints hs_hand_joints_from_sensors(const hs_hand_def *def, const uint8_t sensors[HS_GLOVE_SENSORS]) {
-	assert(def != NULL);
 	hs_hand_joints j = {0};
-	if (sensors == NULL)
+	if (def == NULL || sensors == NULL) // documented: zero angles
 		return j;
 	const uint8_t *v = sensors;
 	j.thumb_roll = (double)v[HS_SENSOR_THUMB_ROLL] * HS_RAD_PER_UNIT;
@@ -235,8 +233,7 @@ static hs_vec3 mirror_if(bool left, hs_vec3 v) { return left ? hs_v3(v.x, -v.y, 
 void hs_hand_kinematics(const hs_hand_def *def, hs_vec3 wrist_position, hs_quat wrist_orientation,
                         const uint8_t sensors[HS_GLOVE_SENSORS], hs_vec3 points[HS_HAND_POINTS],
                         hs_vec3 lines[HS_HAND_LINES][2]) {
-	assert(def != NULL);
-	if (sensors == NULL)
+	if (def == NULL || sensors == NULL) // documented: nothing written
 		return;
 	hs_hand_joints j = hs_hand_joints_from_sensors(def, sensors);
 	hand_pose pose;
@@ -464,8 +461,7 @@ hs_status hs_hand_posture(const hs_hand_def *def, hs_posture posture, double amo
 
 void hs_hand_grip(const hs_hand_def *def, const uint8_t sensors[HS_GLOVE_SENSORS], hs_vec3 *center,
                   hs_vec3 *axis) {
-	assert(def != NULL);
-	if (sensors == NULL)
+	if (def == NULL || sensors == NULL) // documented: nothing written
 		return;
 	hs_vec3 p[HS_HAND_POINTS];
 	hs_hand_kinematics(def, hs_v3(0.0, 0.0, 0.0), hs_quat_identity(), sensors, p, NULL);

@@ -142,6 +142,13 @@ typedef enum hs_stacking {
 	HS_STACKING_SUPPORT, ///< a resting object is supported by the faces under it (rectify and stability as on the floor)
 } hs_stacking;
 
+/// Limits checked at the API boundary, so nothing inside a step can overflow.
+#define HS_MIN_DT 1e-6        ///< s
+#define HS_MAX_DT 1.0         ///< s
+#define HS_MAX_GRAVITY 1e4    ///< m/s², per component
+#define HS_MAX_COORDINATE 1e6 ///< m, per component of positions and wrist poses
+#define HS_MAX_SPEED 1e6      ///< m/s and rad/s, per component of initial velocities
+
 typedef struct hs_world_def {
 	double dt;                  ///< s, fixed frame time (default 1/60)
 	hs_vec3 gravity;            ///< m/s² (default (0, 0, -9.81))
@@ -156,7 +163,8 @@ typedef struct hs_world_def {
 
 hs_world_def hs_default_world_def(void);
 
-/// Creates a world; NULL with *status set on invalid definition or out of memory.
+/// Creates a world; NULL with *status set on an invalid definition (dt outside [HS_MIN_DT, HS_MAX_DT],
+/// gravity beyond HS_MAX_GRAVITY, non-finite numbers, capacities out of range) or out of memory.
 hs_world *hs_world_create(const hs_world_def *def, hs_status *status);
 void hs_world_destroy(hs_world *world);
 
@@ -177,7 +185,7 @@ typedef struct hs_object_def {
 hs_object_def hs_default_object_def(void);
 
 /// Adds an object. Returns the null handle and sets *status on error (invalid shape handle,
-/// non-finite numbers, a non-unit orientation, capacity).
+/// non-finite numbers or beyond HS_MAX_COORDINATE / HS_MAX_SPEED, a non-unit orientation, capacity).
 hs_object_id hs_world_add_object(hs_world *world, const hs_object_def *def, hs_status *status);
 
 /// Hand contact state of an object (1999 paper, Fig. 12).
@@ -278,11 +286,13 @@ typedef struct hs_hand_joints {
 	double palm_arch, wrist_pitch, wrist_yaw;
 } hs_hand_joints;
 
+/// Zero angles when def or sensors is NULL.
 hs_hand_joints hs_hand_joints_from_sensors(const hs_hand_def *def, const uint8_t sensors[HS_GLOVE_SENSORS]);
 /// Angles (rad) → sensor values, rounded to the nearest unit and clamped to 0..255.
 void hs_hand_sensors_from_angles(const hs_hand_joints *joints, uint8_t sensors[HS_GLOVE_SENSORS]);
 
 /// Forward kinematics: the 20 check points and the 60 check lines (two endpoints each), world frame.
+/// Writes nothing when def or sensors is NULL; points or lines may be NULL.
 void hs_hand_kinematics(const hs_hand_def *def, hs_vec3 wrist_position, hs_quat wrist_orientation,
                         const uint8_t sensors[HS_GLOVE_SENSORS], hs_vec3 points[HS_HAND_POINTS],
                         hs_vec3 lines[HS_HAND_LINES][2]);
@@ -310,7 +320,8 @@ typedef struct hs_hand_id {
 
 /// Adds a hand to the world (open, at the origin, touching nothing until it is set).
 hs_hand_id hs_world_add_hand(hs_world *world, const hs_hand_def *def, hs_status *status);
-/// Sets a hand's wrist pose and glove sensors for the next step.
+/// Sets a hand's wrist pose and glove sensors for the next step (HS_ERR_INVALID_ARGUMENT for an
+/// invalid handle, NULL sensors, a non-unit orientation or a position beyond HS_MAX_COORDINATE).
 hs_status hs_world_set_hand(hs_world *world, hs_hand_id hand, hs_vec3 wrist_position,
                             hs_quat wrist_orientation, const uint8_t sensors[HS_GLOVE_SENSORS]);
 /// The hand's check points after the last step.

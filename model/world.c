@@ -33,8 +33,13 @@ static void set_status(hs_status *status, hs_status value) {
 		*status = value;
 }
 
+// every component finite and within ±limit
+static bool within(hs_vec3 v, double limit) {
+	return fabs(v.x) <= limit && fabs(v.y) <= limit && fabs(v.z) <= limit;
+}
+
 static bool valid_def(const hs_world_def *def) {
-	return def && isfinite(def->dt) && def->dt > 0.0 && hs_vec3_is_finite(def->gravity) &&
+	return def && def->dt >= HS_MIN_DT && def->dt <= HS_MAX_DT && within(def->gravity, HS_MAX_GRAVITY) &&
 	       isfinite(def->floor_tolerance) && def->floor_tolerance > 0.0 && def->max_objects >= 0 &&
 	       def->max_objects <= 10000000 && def->max_shapes >= 1 && def->max_shapes <= 100000 &&
 	       def->max_hands >= 0 && def->max_hands <= 64 &&
@@ -170,8 +175,8 @@ const hs_shape *hs_world_shape(const hs_world *world, hs_shape_id id) {
 
 hs_object_id hs_world_add_object(hs_world *world, const hs_object_def *def, hs_status *status) {
 	hs_object_id none = {0};
-	if (!world || !def || !valid_shape_id(world, def->shape) || !hs_vec3_is_finite(def->position) ||
-	    !hs_vec3_is_finite(def->velocity) || !hs_vec3_is_finite(def->angular_velocity) ||
+	if (!world || !def || !valid_shape_id(world, def->shape) || !within(def->position, HS_MAX_COORDINATE) ||
+	    !within(def->velocity, HS_MAX_SPEED) || !within(def->angular_velocity, HS_MAX_SPEED) ||
 	    !hs_quat_is_finite(def->orientation) || !isfinite(def->density) || !(def->density > 0.0) ||
 	    fabs(sqrt(hs_quat_dot(def->orientation, def->orientation)) - 1.0) > 1e-6) {
 		set_status(status, HS_ERR_INVALID_ARGUMENT);
@@ -355,7 +360,7 @@ static hs_hand *hand_of(const hs_world *world, hs_hand_id id) {
 hs_status hs_world_set_hand(hs_world *world, hs_hand_id id, hs_vec3 wrist_position, hs_quat wrist_orientation,
                             const uint8_t sensors[HS_GLOVE_SENSORS]) {
 	hs_hand *hand = hand_of(world, id);
-	if (!hand || !sensors || !hs_vec3_is_finite(wrist_position) || !hs_quat_is_finite(wrist_orientation) ||
+	if (!hand || !sensors || !within(wrist_position, HS_MAX_COORDINATE) || !hs_quat_is_finite(wrist_orientation) ||
 	    fabs(sqrt(hs_quat_dot(wrist_orientation, wrist_orientation)) - 1.0) > 1e-6)
 		return HS_ERR_INVALID_ARGUMENT;
 	hand->wrist_pos = wrist_position;
