@@ -168,22 +168,25 @@ int hs_contact_detect(hs_world *world, int object) {
 	return world->contact_count - before;
 }
 
-hs_contact_state hs_contact_classify(const hs_contact *contacts, int count, double grasp_threshold_deg) {
+double hs_grasp_limit(double grasp_threshold_deg) {
+	return cos(grasp_threshold_deg * (HS_PI / 180.0)) + HS_GRASP_EPS;
+}
+
+hs_contact_state hs_contact_classify(const hs_contact *contacts, int count, double grasp_limit) {
 	if (count == 0)
 		return HS_CONTACT_NONE;
 	if (count == 1)
 		return HS_CONTACT_PUSH_ONE;
-	return hs_contact_grasps(contacts, count, 0, grasp_threshold_deg) ? HS_CONTACT_GRASP : HS_CONTACT_PUSH_MANY;
+	return hs_contact_grasps(contacts, count, 0, grasp_limit) ? HS_CONTACT_GRASP : HS_CONTACT_PUSH_MANY;
 }
 
-bool hs_contact_grasps(const hs_contact *contacts, int count, uint32_t hand1, double grasp_threshold_deg) {
-	double limit = cos(grasp_threshold_deg * (HS_PI / 180.0)) + HS_GRASP_EPS;
+bool hs_contact_grasps(const hs_contact *contacts, int count, uint32_t hand1, double grasp_limit) {
 	for (int i = 0; i < count; ++i) {
 		if (hand1 && contacts[i].hand.index1 != hand1)
 			continue;
 		for (int j = i + 1; j < count; ++j)
 			if ((!hand1 || contacts[j].hand.index1 == hand1) &&
-			    hs_dot(contacts[i].normal, contacts[j].normal) <= limit)
+			    hs_dot(contacts[i].normal, contacts[j].normal) <= grasp_limit)
 				return true; // any two normals at >= the threshold (§3.2 (2))
 	}
 	return false;

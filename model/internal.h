@@ -67,6 +67,7 @@ struct hs_world {
 	int contact_count, contact_capacity;
 	hs_contact *contacts; // this frame's hand contacts, grouped by object
 	int *queue;           // objects to move along with a moved one (§4.3), max_objects long
+	double grasp_limit;   // hs_grasp_limit(def.grasp_threshold_deg)
 };
 
 // hull.c — 2D convex hull of floor contact points (§4.2, Fig. 5)
@@ -112,10 +113,12 @@ hs_clip hs_clip_segment(const hs_shape *shape, const hs_part *part, hs_vec3 a, h
 
 // Appends the contacts of every hand with the object to world->contacts; returns how many.
 int hs_contact_detect(hs_world *world, int object);
+// The largest n_i · n_j of a grasp: cos(threshold) plus a tolerance (DESIGN.md), once per world.
+double hs_grasp_limit(double grasp_threshold_deg);
 // Fig. 2: the contact state of a set of contacts (grasp when two normals are >= threshold apart).
-hs_contact_state hs_contact_classify(const hs_contact *contacts, int count, double grasp_threshold_deg);
+hs_contact_state hs_contact_classify(const hs_contact *contacts, int count, double grasp_limit);
 // True when two of the contacts (only those of hand index + 1 `hand1`, or all when 0) grasp.
-bool hs_contact_grasps(const hs_contact *contacts, int count, uint32_t hand1, double grasp_threshold_deg);
+bool hs_contact_grasps(const hs_contact *contacts, int count, uint32_t hand1, double grasp_limit);
 
 // manipulate.c — object motion by the hand (eq. 1-2, grasp, push) and interference among objects (§4.3)
 

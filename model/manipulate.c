@@ -71,11 +71,11 @@ static hs_vec3 part_displacement(const hs_hand *hand, const hs_contact *c) {
 // grasp, else the first hand whose own contacts grasp, else the one with the most contacts (two
 // hands squeezing from either side; the lower index on a tie).
 static int grasping_hand(const hs_world *world, const hs_body *body, const hs_contact *cs, int n) {
-	double threshold = world->def.grasp_threshold_deg;
-	if (body->grasped_by > 0 && hs_contact_grasps(cs, n, (uint32_t)body->grasped_by, threshold))
+	double limit = world->grasp_limit;
+	if (body->grasped_by > 0 && hs_contact_grasps(cs, n, (uint32_t)body->grasped_by, limit))
 		return body->grasped_by - 1;
 	for (int h = 0; h < world->hand_count; ++h)
-		if (hs_contact_grasps(cs, n, (uint32_t)h + 1, threshold))
+		if (hs_contact_grasps(cs, n, (uint32_t)h + 1, limit))
 			return h;
 	int counts[64] = {0};
 	for (int k = 0; k < n; ++k)
@@ -148,7 +148,7 @@ void hs_manipulate(hs_world *world) {
 			// seen from the object so moved, still grasp it
 			follow_wrist(body, &world->hands[body->grasped_by - 1]);
 			n = hs_contact_detect(world, i);
-			state = hs_contact_grasps(&world->contacts[first], n, (uint32_t)body->grasped_by, world->def.grasp_threshold_deg)
+			state = hs_contact_grasps(&world->contacts[first], n, (uint32_t)body->grasped_by, world->grasp_limit)
 			            ? HS_CONTACT_GRASP
 			            : HS_CONTACT_NONE;
 			if (state != HS_CONTACT_GRASP) { // the holder let go: look again from where the object was
@@ -159,7 +159,7 @@ void hs_manipulate(hs_world *world) {
 		}
 		if (state != HS_CONTACT_GRASP) {
 			n = hs_contact_detect(world, i);
-			state = hs_contact_classify(&world->contacts[first], n, world->def.grasp_threshold_deg);
+			state = hs_contact_classify(&world->contacts[first], n, world->grasp_limit);
 		}
 		const hs_contact *cs = &world->contacts[first];
 		bool was_held = body->held != 0;

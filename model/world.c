@@ -59,6 +59,7 @@ hs_world *hs_world_create(const hs_world_def *def, hs_status *status) {
 		return NULL;
 	}
 	world->def = *def;
+	world->grasp_limit = hs_grasp_limit(def->grasp_threshold_deg);
 	world->shapes = calloc((size_t)def->max_shapes, sizeof *world->shapes);
 	size_t objects = def->max_objects > 0 ? (size_t)def->max_objects : 1;
 	world->bodies = calloc(objects, sizeof *world->bodies);

@@ -131,22 +131,22 @@ static hs_contact with_normal(hs_vec3 n) {
 static void test_classification(void **state) {
 	(void)state;
 	hs_contact cs[3] = {with_normal(hs_v3(1, 0, 0)), with_normal(hs_v3(0, 1, 0)), with_normal(hs_v3(1, 0, 0))};
-	assert_int_equal(hs_contact_classify(cs, 0, 90), HS_CONTACT_NONE);
-	assert_int_equal(hs_contact_classify(cs, 1, 90), HS_CONTACT_PUSH_ONE);
-	assert_int_equal(hs_contact_classify(cs, 2, 90), HS_CONTACT_GRASP); // adjoining faces: exactly 90
-	assert_int_equal(hs_contact_classify(cs, 2, 91), HS_CONTACT_PUSH_MANY);
+	assert_int_equal(hs_contact_classify(cs, 0, hs_grasp_limit(90)), HS_CONTACT_NONE);
+	assert_int_equal(hs_contact_classify(cs, 1, hs_grasp_limit(90)), HS_CONTACT_PUSH_ONE);
+	assert_int_equal(hs_contact_classify(cs, 2, hs_grasp_limit(90)), HS_CONTACT_GRASP); // adjoining faces: exactly 90
+	assert_int_equal(hs_contact_classify(cs, 2, hs_grasp_limit(91)), HS_CONTACT_PUSH_MANY);
 	hs_contact same[2] = {cs[0], cs[2]};
-	assert_int_equal(hs_contact_classify(same, 2, 90), HS_CONTACT_PUSH_MANY);
+	assert_int_equal(hs_contact_classify(same, 2, hs_grasp_limit(90)), HS_CONTACT_PUSH_MANY);
 	// 90 deg reached through rounding (cos(pi/2) is 6e-17, not 0): the tolerance decides, not the ulp
 	hs_vec3 n = hs_quat_rotate(hs_quat_from_axis_angle(hs_v3(0, 0, 1), HS_PI / 2 + 1e-12), hs_v3(1, 0, 0));
 	hs_contact rounded[2] = {cs[0], with_normal(n)};
-	assert_int_equal(hs_contact_classify(rounded, 2, 90), HS_CONTACT_GRASP);
+	assert_int_equal(hs_contact_classify(rounded, 2, hs_grasp_limit(90)), HS_CONTACT_GRASP);
 	hs_vec3 m = hs_quat_rotate(hs_quat_from_axis_angle(hs_v3(0, 0, 1), 89.0 * HS_PI / 180), hs_v3(1, 0, 0));
 	hs_contact short_of[2] = {cs[0], with_normal(m)};
-	assert_int_equal(hs_contact_classify(short_of, 2, 90), HS_CONTACT_PUSH_MANY);
+	assert_int_equal(hs_contact_classify(short_of, 2, hs_grasp_limit(90)), HS_CONTACT_PUSH_MANY);
 	// three contacts: any pair at the threshold makes a grasp (Fig. 4)
 	hs_contact three[3] = {cs[0], cs[2], with_normal(hs_v3(-1, 0, 0))};
-	assert_int_equal(hs_contact_classify(three, 3, 90), HS_CONTACT_GRASP);
+	assert_int_equal(hs_contact_classify(three, 3, hs_grasp_limit(90)), HS_CONTACT_GRASP);
 }
 
 static hs_body body_at(hs_vec3 g) {
