@@ -96,16 +96,33 @@ static void push_contact(hs_world *world, int object, int hand, int part, bool e
 	c->normal = normal;
 }
 
-static void detect_part(hs_world *world, int object, int h, const hs_part *part) {
+// Squared distance from c to the segment p0-p1.
+static double segment_distance_sq(hs_vec3 c, hs_vec3 p0, hs_vec3 p1) {
+	hs_vec3 d = hs_sub(p1, p0);
+	double len_sq = hs_length_sq(d);
+	double u = len_sq > 0.0 ? hs_dot(hs_sub(c, p0), d) / len_sq : 0.0;
+	u = u < 0.0 ? 0.0 : (u > 1.0 ? 1.0 : u);
+	return hs_length_sq(hs_sub(hs_mul_add(p0, u, d), c));
+}
+
+// `before` is the object's pose when the fingers were at their previous points: a point's
+// motion is judged relative to the object.
+static void detect_part(hs_world *world, int object, int h, const hs_part *part, const hs_body *before,
+                        bool cull) {
 	const hs_body *body = &world->bodies[object];
 	const hs_shape *shape = &world->shapes[body->shape];
 	const hs_hand *hand = &world->hands[h];
+	// a finger part outside the part's bounding sphere cannot touch it: skip before the transform
+	hs_vec3 center = to_world(body, part->center);
+	double r_sq = part->radius * part->radius;
 	// (A) check points against faces
 	for (int i = 0; i < HS_HAND_POINTS; ++i) {
+		if (cull && hs_length_sq(hs_sub(hand->points[i], center)) > r_sq)
+			continue;
 		hs_vec3 b = to_body(body, hand->points[i]);
 		if (!inside_part(shape, part, b))
 			continue;
-		hs_vec3 a = to_body(body, hand->prev_points[i]);
+		hs_vec3 a = to_body(before, hand->prev_points[i]);
 		hs_clip c = hs_clip_segment(shape, part, a, b, 0.0);
 		int face;
 		hs_vec3 point;
@@ -122,6 +139,8 @@ static void detect_part(hs_world *world, int object, int h, const hs_part *part)
 	}
 	// (B) check lines against edges
 	for (int j = 0; j < HS_HAND_LINES; ++j) {
+		if (cull && segment_distance_sq(center, hand->lines[j][0], hand->lines[j][1]) > r_sq)
+			continue;
 		hs_vec3 p0 = to_body(body, hand->lines[j][0]), p1 = to_body(body, hand->lines[j][1]);
 		hs_clip c = hs_clip_segment(shape, part, p0, p1, 0.0);
 		if (!c.hit || c.face_in < 0 || c.face_out < 0)
@@ -145,8 +164,8 @@ static void detect_part(hs_world *world, int object, int h, const hs_part *part)
 	}
 }
 
-int hs_contact_detect(hs_world *world, int object) {
-	int before = world->contact_count;
+int hs_contact_detect(hs_world *world, int object, const hs_body *before) {
+	int first = world->contact_count;
 	const hs_body *body = &world->bodies[object];
 	const hs_shape *shape = &world->shapes[body->shape];
 	for (int h = 0; h < world->hand_count; ++h) {
@@ -162,10 +181,10 @@ int hs_contact_detect(hs_world *world, int object) {
 				if (hs_length_sq(hs_sub(c, hand->center)) > r * r)
 					continue;
 			}
-			detect_part(world, object, h, part);
+			detect_part(world, object, h, part, before ? before : body, world->def.skip_work);
 		}
 	}
-	return world->contact_count - before;
+	return world->contact_count - first;
 }
 
 double hs_grasp_limit(double grasp_threshold_deg) {

@@ -112,7 +112,8 @@ hs_clip hs_clip_segment(const hs_shape *shape, const hs_part *part, hs_vec3 a, h
 // contact.c — hand-object contacts (1999 paper §3.2: (A) points in faces, (B) lines across edges)
 
 // Appends the contacts of every hand with the object to world->contacts; returns how many.
-int hs_contact_detect(hs_world *world, int object);
+// `before` is the object's pose one frame ago when it has moved since (NULL: it has not).
+int hs_contact_detect(hs_world *world, int object, const hs_body *before);
 // The largest n_i · n_j of a grasp: cos(threshold) plus a tolerance (DESIGN.md), once per world.
 double hs_grasp_limit(double grasp_threshold_deg);
 // Fig. 2: the contact state of a set of contacts (grasp when two normals are >= threshold apart).

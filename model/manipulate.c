@@ -146,8 +146,9 @@ void hs_manipulate(hs_world *world) {
 		if (body->grasped_by > 0) {
 			// a held object moves with its wrist (§3.2 (2)); the grasp continues while the fingers,
 			// seen from the object so moved, still grasp it
+			hs_body before = *body;
 			follow_wrist(body, &world->hands[body->grasped_by - 1]);
-			n = hs_contact_detect(world, i);
+			n = hs_contact_detect(world, i, &before);
 			state = hs_contact_grasps(&world->contacts[first], n, (uint32_t)body->grasped_by, world->grasp_limit)
 			            ? HS_CONTACT_GRASP
 			            : HS_CONTACT_NONE;
@@ -158,7 +159,7 @@ void hs_manipulate(hs_world *world) {
 			}
 		}
 		if (state != HS_CONTACT_GRASP) {
-			n = hs_contact_detect(world, i);
+			n = hs_contact_detect(world, i, NULL);
 			state = hs_contact_classify(&world->contacts[first], n, world->grasp_limit);
 		}
 		const hs_contact *cs = &world->contacts[first];

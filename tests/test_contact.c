@@ -49,7 +49,7 @@ static void test_point_enters_face(void **state) {
 	(void)state;
 	hs_world *w = cube_world();
 	move_point(w, 3, hs_v3(0.1, 0.2, 2.7), hs_v3(0.1, 0.2, 2.3));
-	assert_int_equal(hs_contact_detect(w, 0), 1);
+	assert_int_equal(hs_contact_detect(w, 0, NULL), 1);
 	hs_contact c = contact(w, 0);
 	assert_false(c.edge);
 	assert_int_equal(c.part, 3);
@@ -63,7 +63,7 @@ static void test_point_inside_nearest_face(void **state) {
 	(void)state;
 	hs_world *w = cube_world();
 	move_point(w, 0, hs_v3(-0.45, 0, 2.1), hs_v3(-0.44, 0, 2.1));
-	assert_int_equal(hs_contact_detect(w, 0), 1);
+	assert_int_equal(hs_contact_detect(w, 0, NULL), 1);
 	assert_vec3_near(contact(w, 0).normal, hs_v3(-1, 0, 0), 1e-15);
 	assert_vec3_near(contact(w, 0).point, hs_v3(-0.5, 0, 2.1), 1e-15);
 	hs_world_destroy(w);
@@ -75,10 +75,10 @@ static void test_point_at_edge_and_surface(void **state) {
 	(void)state;
 	hs_world *w = cube_world();
 	move_point(w, 0, hs_v3(-0.6, 0, 2), hs_v3(-0.5, 0, 2)); // exactly on the face plane
-	assert_int_equal(hs_contact_detect(w, 0), 0);
+	assert_int_equal(hs_contact_detect(w, 0, NULL), 0);
 	w->contact_count = 0;
 	move_point(w, 0, hs_v3(0.6, 0, 2.6), hs_v3(0.4, 0, 2.4)); // crosses the edge x = z - 2 = 0.5
-	assert_int_equal(hs_contact_detect(w, 0), 1);
+	assert_int_equal(hs_contact_detect(w, 0, NULL), 1);
 	hs_vec3 n = contact(w, 0).normal;
 	assert_true((n.x == 1 && n.z == 0) || (n.x == 0 && n.z == 1));
 	assert_vec3_near(contact(w, 0).point, hs_v3(0.5, 0, 2.5), 1e-15);
@@ -93,7 +93,7 @@ static void test_line_crosses_edge(void **state) {
 	hs_hand *hand = &w->hands[0];
 	hand->lines[7][0] = hs_v3(0.25, 0, 2.6); // enters the top at t = 0.25, leaves +x at t = 0.625
 	hand->lines[7][1] = hs_v3(0.65, 0, 2.2);
-	assert_int_equal(hs_contact_detect(w, 0), 1);
+	assert_int_equal(hs_contact_detect(w, 0, NULL), 1);
 	hs_contact c = contact(w, 0);
 	assert_true(c.edge);
 	assert_int_equal(c.part, HS_HAND_POINTS + 7);
@@ -110,13 +110,13 @@ static void test_line_across_and_line_ending_inside(void **state) {
 	hs_hand *hand = &w->hands[0];
 	hand->lines[0][0] = hs_v3(-1, 0, 2.45);
 	hand->lines[0][1] = hs_v3(1, 0, 2.45);
-	assert_int_equal(hs_contact_detect(w, 0), 1);
+	assert_int_equal(hs_contact_detect(w, 0, NULL), 1);
 	assert_false(contact(w, 0).edge);
 	assert_vec3_near(contact(w, 0).normal, hs_v3(0, 0, 1), 1e-15);
 	assert_vec3_near(contact(w, 0).point, hs_v3(0, 0, 2.5), 1e-15);
 	w->contact_count = 0;
 	hand->lines[0][1] = hs_v3(0, 0, 2.45);
-	assert_int_equal(hs_contact_detect(w, 0), 0);
+	assert_int_equal(hs_contact_detect(w, 0, NULL), 0);
 	hs_world_destroy(w);
 }
 
@@ -235,6 +235,30 @@ static void test_grasp_follow_release(void **state) {
 	hs_world_destroy(w);
 }
 
+// A fast hand keeps its grasp: the fingers' motion is judged relative to the held object, which
+// moves with the wrist. Sideways by 0.1 m a frame (6 m/s) — twice the cube's size — for 5 frames.
+static void test_grasp_holds_fast_hand(void **state) {
+	(void)state;
+	hs_world *w = cube_world();
+	hs_hand *hand = &w->hands[0];
+	hand->wrist_pos = hs_v3(0, 0, 2);
+	move_point(w, 3, hs_v3(-0.6, 0, 2), hs_v3(-0.45, 0, 2));
+	move_point(w, 7, hs_v3(0.6, 0, 2), hs_v3(0.45, 0, 2));
+	hs_world_step(w);
+	assert_int_equal(w->bodies[0].contact, HS_CONTACT_GRASP);
+	for (int k = 1; k <= 5; ++k) {
+		hs_vec3 shift = hs_v3(2.0 * k, 0, 0);
+		hand->wrist_pos = hs_add(hs_v3(0, 0, 2), shift);
+		hand->points[3] = hs_add(hs_v3(-0.45, 0, 2), shift);
+		hand->points[7] = hs_add(hs_v3(0.45, 0, 2), shift);
+		hand->center = hs_add(hs_v3(0, 0, 2), shift);
+		hs_world_step(w);
+		assert_int_equal(w->bodies[0].contact, HS_CONTACT_GRASP);
+		assert_vec3_near(w->bodies[0].pos, hs_add(hs_v3(0, 0, 2), shift), 1e-12);
+	}
+	hs_world_destroy(w);
+}
+
 // §4.3 paper mode: an object interfering with a moved object is translated with it.
 static void test_paper_mode_carries_interfering(void **state) {
 	(void)state;
@@ -264,6 +288,7 @@ int main(void) {
 	    cmocka_unit_test(test_push_off_centre),
 	    cmocka_unit_test(test_push_many_translates),
 	    cmocka_unit_test(test_grasp_follow_release),
+	    cmocka_unit_test(test_grasp_holds_fast_hand),
 	    cmocka_unit_test(test_paper_mode_carries_interfering),
 	};
 	return cmocka_run_group_tests_name("contact", tests, NULL, NULL);
