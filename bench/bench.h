@@ -1,0 +1,133 @@
+// bench.h — shared pieces of `make bench`: timing, statistics, progress, the result registry.
+//
+// Benchmarks report; they never fail on a time. Every timing is CLOCK_MONOTONIC around a batch
+// of steps, after a warm-up, repeated (≥ 5 times) and summarised as median with min–max beside
+// it (STYLE.md: warm-up, medians and ratios). Nothing is pinned to a core. Every stepped state
+// feeds a checksum that is printed, so no work can be optimised away.
+#ifndef HS_BENCH_H
+#define HS_BENCH_H
+
+#include <stdbool.h>
+#include <stdint.h>
+#include <stdio.h>
+
+#include "handspring.h"
+
+/// Run options from the command line.
+typedef struct bench_opts {
+	bool quick;          ///< `make bench QUICK=1`: shorter batches, fewer points, under a minute
+	const char *out_dir; ///< CSV files go here (the plots are drawn from them by bench.mk)
+	double batch_s;      ///< s: wall time of one timed batch
+	int reps;            ///< timed batches per figure (≥ 5)
+} bench_opts;
+
+/// s on CLOCK_MONOTONIC.
+double bench_now(void);
+
+/// Median and range of a set of per-frame times (s).
+typedef struct bench_stats {
+	double median, min, max; ///< s per step
+	long steps;              ///< steps per batch
+	int reps;
+} bench_stats;
+
+/// Runs `frames` steps of a case; accumulates into its own checksum.
+typedef void (*bench_step_fn)(void *state, long frames);
+
+/// Warm-up (calibrates the batch to opts->batch_s), then opts->reps timed batches of the same
+/// number of steps. Returns seconds per step.
+bench_stats bench_measure(bench_step_fn step, void *state, const bench_opts *opts);
+
+/// Median of n values (sorts a copy; n ≤ 64).
+double bench_median(const double *values, int n);
+
+/// Progress and notes go to stderr, tables to stdout.
+void bench_progress(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
+
+/// Opens out_dir/name for writing (exits with a message when it cannot).
+FILE *bench_csv(const bench_opts *opts, const char *name);
+
+/// The closing summary: one line per figure, and the targets of the issue.
+typedef enum bench_verdict { BENCH_INFO = 0, BENCH_MET, BENCH_NOT_MET, BENCH_UNKNOWN } bench_verdict;
+void bench_summary_add(const char *section, const char *what, const char *value, bench_verdict verdict);
+void bench_summary_print(FILE *out, const bench_opts *opts);
+/// Records the machine's load average before the first timing (other processes skew medians).
+void bench_note_start(void);
+
+/// Folds 8 bytes into a running FNV-1a checksum.
+uint64_t bench_mix(uint64_t h, double x);
+
+// ---------------------------------------------------------------------------------------------
+// Sections (the registry of what `make bench` runs, in order)
+
+/// Hand-model figures shared between sections (the peers compare against the seed scene).
+typedef struct bench_shared {
+	double seed_us_per_frame;      ///< µs per frame of the seed scene, skip_work on (0: not measured)
+	double seed_dt;                ///< s: the frame time the seed scene is stepped with
+	double projectile_error_60;    ///< m: the 1999 Verlet landing error at the peers' dt
+	uint64_t checksum;
+} bench_shared;
+
+void bench_frame_rate(const bench_opts *opts, bench_shared *shared); // items 1 and 2
+void bench_accuracy(const bench_opts *opts, bench_shared *shared);   // item 3
+void bench_throw(const bench_opts *opts, bench_shared *shared);      // item 4
+void bench_peers(const bench_opts *opts, bench_shared *shared);      // item 5
+/// The seed scene of item 1 timed alone (the peers' comparison when item 1 did not run).
+bench_stats bench_seed_measure(const bench_opts *opts, bool skip);
+/// N frames of the seed scene alone (for a profiler): 10 objects (or `objects`), 2 grasped.
+void bench_profile_seed(long frames, int objects, bool skip);
+
+// ---------------------------------------------------------------------------------------------
+// The seed scene and the projectile, as every engine builds them (the peers use these numbers)
+
+#define BENCH_CUBE 0.05        ///< m: the seed cubes' edge
+#define BENCH_SPACING 0.06     ///< m: centre spacing of the floor grid (1 cm gaps)
+#define BENCH_ROW_Y 0.3        ///< m: y of the seed row (scenarios/seed_scene.yaml)
+#define BENCH_PER_ROW 10       ///< cubes per grid row
+#define BENCH_PATH_FRAMES 120  ///< frames of one loop of the scripted hand path
+#define BENCH_DT (1.0 / 60.0)  ///< s: frame time of the frame-rate scenes and the peers
+
+/// Centre of grid cell (i, j): x = (i − 4.5) · spacing, y = 0.3 − j · spacing, on the floor.
+hs_vec3 bench_cell(int i, int j);
+/// Offset of the scripted loop at frame k (0 ≤ k < BENCH_PATH_FRAMES): lift straight up, swing
+/// sideways only once clear of the neighbours, come straight down; zero at k = 0.
+hs_vec3 bench_path(int k);
+
+/// The projectile: G starts at (0, 0, 1) m with v = (2, 0, 1) m/s under g = 9.81 m/s²; its range
+/// is where G crosses the plane z = 0.5 m (above the floor, so no contact is involved).
+#define BENCH_PROJ_Z0 1.0
+#define BENCH_PROJ_VX 2.0
+#define BENCH_PROJ_VZ 1.0
+#define BENCH_PROJ_PLANE 0.5
+#define BENCH_G 9.81
+/// Closed-form range: x at the plane crossing.
+double bench_projectile_range(void);
+/// The crossing of the plane from per-frame samples: the quadratic through the last three samples
+/// (exact for a sampled parabola), solved for z = plane; returns x there. `z` and `x` hold n ≥ 3
+/// samples at spacing dt, the last one below the plane and the one before above it.
+double bench_crossing_x(const double *x, const double *z, int n, double plane);
+
+
+// ---------------------------------------------------------------------------------------------
+// Peers (bench/peer_ode.c, bench/peer_mujoco.c, built only when their headers exist)
+
+/// The seed scene in a peer engine: 8 resting dynamic cubes, the 2 grasped ones as kinematic
+/// (ODE) or mocap (MuJoCo) bodies on the path of the hand, stepped at BENCH_DT.
+typedef struct bench_peer_result {
+	bool ran;
+	char name[32], version[64], setup[192];
+	bench_stats step;        ///< s per step of the seed scene
+	double projectile_error; ///< m: range error of the projectile at BENCH_DT (bench_crossing_x)
+	double resting_drift;    ///< m: largest displacement of a resting cube after the timed steps
+	uint64_t checksum;
+} bench_peer_result;
+
+#ifdef HS_BENCH_ODE
+/// Fills out[0] (auto-disable off, ODE's default) and out[1] (on); returns 2.
+int bench_peer_ode(const bench_opts *opts, bench_peer_result out[2]);
+#endif
+#ifdef HS_BENCH_MUJOCO
+bench_peer_result bench_peer_mujoco(const bench_opts *opts);
+#endif
+
+#endif

@@ -1,0 +1,271 @@
+// bench_util.c — timing, statistics, progress, CSV files and the summary of `make bench`.
+#include <errno.h>
+#include <stdarg.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "bench.h"
+
+double bench_now(void) {
+	struct timespec ts;
+	clock_gettime(CLOCK_MONOTONIC, &ts);
+	return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+static int compare_double(const void *a, const void *b) {
+	double x = *(const double *)a, y = *(const double *)b;
+	return (x > y) - (x < y);
+}
+
+double bench_median(const double *values, int n) {
+	double copy[64];
+	if (n <= 0)
+		return 0.0;
+	n = n > 64 ? 64 : n;
+	memcpy(copy, values, (size_t)n * sizeof *copy);
+	qsort(copy, (size_t)n, sizeof *copy, compare_double);
+	return n % 2 ? copy[n / 2] : 0.5 * (copy[n / 2 - 1] + copy[n / 2]);
+}
+
+bench_stats bench_measure(bench_step_fn step, void *state, const bench_opts *opts) {
+	bench_stats st;
+	memset(&st, 0, sizeof st);
+	// warm-up: double the batch until it takes a quarter of the target (caches, branch predictors,
+	// page faults of the first touches all happen here), then size the batch to the target
+	long n = 16;
+	double per = 0.0;
+	for (;;) {
+		double t0 = bench_now();
+		step(state, n);
+		double el = bench_now() - t0;
+		per = el / (double)n;
+		if (el >= 0.25 * opts->batch_s || n >= (1L << 40))
+			break;
+		n *= 2;
+	}
+	long batch = per > 0.0 ? (long)(opts->batch_s / per) : n;
+	batch = batch < 16 ? 16 : batch;
+	double times[64];
+	int reps = opts->reps < 5 ? 5 : (opts->reps > 64 ? 64 : opts->reps);
+	for (int r = 0; r < reps; ++r) {
+		double t0 = bench_now();
+		step(state, batch);
+		times[r] = (bench_now() - t0) / (double)batch;
+	}
+	st.median = bench_median(times, reps);
+	st.min = st.max = times[0];
+	for (int r = 1; r < reps; ++r) {
+		st.min = times[r] < st.min ? times[r] : st.min;
+		st.max = times[r] > st.max ? times[r] : st.max;
+	}
+	st.steps = batch;
+	st.reps = reps;
+	return st;
+}
+
+void bench_progress(const char *fmt, ...) {
+	va_list ap;
+	va_start(ap, fmt);
+	vfprintf(stderr, fmt, ap);
+	va_end(ap);
+	fflush(stderr);
+}
+
+FILE *bench_csv(const bench_opts *opts, const char *name) {
+	char path[1024];
+	snprintf(path, sizeof path, "%s/%s", opts->out_dir, name);
+	FILE *f = fopen(path, "w");
+	if (!f) {
+		fprintf(stderr, "bench: cannot write %s: %s\n", path, strerror(errno));
+		exit(2);
+	}
+	return f;
+}
+
+uint64_t bench_mix(uint64_t h, double x) {
+	unsigned char b[sizeof x];
+	memcpy(b, &x, sizeof x);
+	for (size_t i = 0; i < sizeof x; ++i) {
+		h ^= b[i];
+		h *= 1099511628211ull;
+	}
+	return h;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Summary
+
+#define SUMMARY_MAX 64
+
+typedef struct summary_row {
+	char section[32], what[96], value[96];
+	bench_verdict verdict;
+} summary_row;
+
+static summary_row summary[SUMMARY_MAX];
+static int summary_count;
+
+void bench_summary_add(const char *section, const char *what, const char *value, bench_verdict verdict) {
+	if (summary_count >= SUMMARY_MAX)
+		return;
+	summary_row *r = &summary[summary_count++];
+	snprintf(r->section, sizeof r->section, "%s", section);
+	snprintf(r->what, sizeof r->what, "%s", what);
+	snprintf(r->value, sizeof r->value, "%s", value);
+	r->verdict = verdict;
+}
+
+static void read_cpu_model(char *out, size_t size) {
+	snprintf(out, size, "unknown");
+	FILE *f = fopen("/proc/cpuinfo", "r");
+	if (!f)
+		return;
+	char line[512];
+	while (fgets(line, sizeof line, f)) {
+		if (strncmp(line, "model name", 10) == 0) {
+			char *colon = strchr(line, ':');
+			if (colon) {
+				colon++;
+				while (*colon == ' ' || *colon == '\t')
+					colon++;
+				colon[strcspn(colon, "\n")] = '\0';
+				snprintf(out, size, "%s", colon);
+			}
+			break;
+		}
+	}
+	fclose(f);
+}
+
+static void read_loadavg(char *out, size_t size) {
+	snprintf(out, size, "?");
+	FILE *f = fopen("/proc/loadavg", "r");
+	if (!f)
+		return;
+	double one = 0.0;
+	if (fscanf(f, "%lf", &one) == 1)
+		snprintf(out, size, "%.2f", one);
+	fclose(f);
+}
+
+static char load_at_start[32] = "?";
+
+void bench_note_start(void) { read_loadavg(load_at_start, sizeof load_at_start); }
+
+static void read_command(const char *cmd, char *out, size_t size) {
+	snprintf(out, size, "unknown");
+	FILE *p = popen(cmd, "r");
+	if (!p)
+		return;
+	if (fgets(out, (int)size, p))
+		out[strcspn(out, "\n")] = '\0';
+	pclose(p);
+}
+
+#ifndef HS_BENCH_CC
+#define HS_BENCH_CC "cc"
+#endif
+#ifndef HS_BENCH_FLAGS
+#define HS_BENCH_FLAGS "(unknown)"
+#endif
+
+static const char *verdict_name(bench_verdict v) {
+	switch (v) {
+	case BENCH_MET:
+		return "MET";
+	case BENCH_NOT_MET:
+		return "NOT MET";
+	case BENCH_UNKNOWN:
+		return "n/a";
+	case BENCH_INFO:
+		break;
+	}
+	return "";
+}
+
+void bench_summary_print(FILE *out, const bench_opts *opts) {
+	char cpu[256], uname[512], compiler[256], date[64], load_end[32];
+	read_cpu_model(cpu, sizeof cpu);
+	read_loadavg(load_end, sizeof load_end);
+	read_command("uname -srm", uname, sizeof uname);
+	read_command(HS_BENCH_CC " --version 2>/dev/null", compiler, sizeof compiler);
+	time_t now = time(NULL);
+	struct tm tm_now;
+	gmtime_r(&now, &tm_now);
+	strftime(date, sizeof date, "%Y-%m-%d %H:%M UTC", &tm_now);
+	fprintf(out, "\n== handspring bench summary%s ==\n", opts->quick ? " (QUICK=1)" : "");
+	fprintf(out, "machine  : %s; %s; %ld CPUs online; load average %s at the start, %s at the end\n", uname, cpu,
+	        sysconf(_SC_NPROCESSORS_ONLN), load_at_start, load_end);
+	fprintf(out, "compiler : %s\n", compiler);
+	fprintf(out, "flags    : %s\n", HS_BENCH_FLAGS);
+	fprintf(out, "date     : %s; batches of %.0f ms, median of %d after a warm-up\n", date, 1e3 * opts->batch_s,
+	        opts->reps);
+	size_t wsec = 7, wwhat = 4, wval = 5;
+	for (int i = 0; i < summary_count; ++i) {
+		size_t a = strlen(summary[i].section), b = strlen(summary[i].what), c = strlen(summary[i].value);
+		wsec = a > wsec ? a : wsec;
+		wwhat = b > wwhat ? b : wwhat;
+		wval = c > wval ? c : wval;
+	}
+	fprintf(out, "%-*s | %-*s | %-*s | target\n", (int)wsec, "section", (int)wwhat, "what", (int)wval, "value");
+	for (size_t k = 0; k < wsec + wwhat + wval + 16; ++k)
+		fputc('-', out);
+	fputc('\n', out);
+	// the figures in the order they were measured, then the targets together
+	for (int pass = 0; pass < 2; ++pass) {
+		if (pass == 1) {
+			for (size_t k = 0; k < wsec + wwhat + wval + 16; ++k)
+				fputc('-', out);
+			fputc('\n', out);
+		}
+		for (int i = 0; i < summary_count; ++i)
+			if ((summary[i].verdict != BENCH_INFO) == (pass == 1))
+				fprintf(out, "%-*s | %-*s | %-*s |%s%s\n", (int)wsec, summary[i].section, (int)wwhat, summary[i].what,
+				        (int)wval, summary[i].value, summary[i].verdict != BENCH_INFO ? " " : "",
+				        verdict_name(summary[i].verdict));
+	}
+}
+
+// ---------------------------------------------------------------------------------------------
+// The seed scene's grid and hand path, the projectile
+
+hs_vec3 bench_cell(int i, int j) {
+	return hs_v3(((double)i - 4.5) * BENCH_SPACING, BENCH_ROW_Y - (double)j * BENCH_SPACING, 0.5 * BENCH_CUBE);
+}
+
+hs_vec3 bench_path(int k) {
+	// θ runs once round the loop; s = (1 − cos θ)/2 lifts 0 → 1 → 0. The sideways swing goes with
+	// s³, so while the held cubes are still below the neighbours' tops (s < 0.25 at a 0.2 m lift)
+	// they move sideways by under 2 mm, less than the 1 cm gaps.
+	double th = 2.0 * HS_PI * (double)k / (double)BENCH_PATH_FRAMES;
+	double s = 0.5 * (1.0 - cos(th)), s3 = s * s * s;
+	return hs_v3(0.10 * sin(th) * s3, 0.05 * sin(2.0 * th) * s3, 0.20 * s);
+}
+
+double bench_projectile_range(void) {
+	// z0 + vz t − g t²/2 = plane
+	double a = 0.5 * BENCH_G, b = -BENCH_PROJ_VZ, c = BENCH_PROJ_PLANE - BENCH_PROJ_Z0;
+	double t = (-b + sqrt(b * b - 4.0 * a * c)) / (2.0 * a);
+	return BENCH_PROJ_VX * t;
+}
+
+double bench_crossing_x(const double *x, const double *z, int n, double plane) {
+	// Lagrange quadratic in s = (t − t_{n−1}) / dt through s = −2, −1, 0
+	double z0 = z[n - 3], z1 = z[n - 2], z2 = z[n - 1];
+	double x0 = x[n - 3], x1 = x[n - 2], x2 = x[n - 1];
+	// z(s) = A s² + B s + C
+	double a = 0.5 * (z0 - 2.0 * z1 + z2), b = 0.5 * (z0 - 4.0 * z1 + 3.0 * z2), c = z2 - plane;
+	double s;
+	if (fabs(a) < 1e-300) {
+		s = -c / b;
+	} else { // the root in [−1, 0]
+		double disc = sqrt(fmax(b * b - 4.0 * a * c, 0.0));
+		double r1 = (-b + disc) / (2.0 * a), r2 = (-b - disc) / (2.0 * a);
+		s = (r1 >= -1.0 - 1e-9 && r1 <= 1e-9) ? r1 : r2;
+	}
+	double ax = 0.5 * (x0 - 2.0 * x1 + x2), bx = 0.5 * (x0 - 4.0 * x1 + 3.0 * x2);
+	return ax * s * s + bx * s + x2;
+}

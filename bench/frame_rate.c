@@ -1,0 +1,655 @@
+// frame_rate.c — items 1 and 2 of `make bench`: the 1999 paper's Experiment 3 (Fig. 13).
+//
+// The seed scene built through the public API: ten 5 cm cubes in a row on the floor (the
+// positions of scenarios/seed_scene.yaml), one right hand of 20 check points and 60 check lines
+// in the grasp posture holding two adjacent cubes, moved along a scripted loop (bench_path), the
+// full hand–object check every frame, no rendering. The paper refreshed at 17 frames/s on an SGI
+// Indigo2 (R10000) with 10 objects, 2 grasped.
+//
+// Sweep: objects 1, 2, 5, 10, 20, 50, 100, 1000 against touched 0, 1, 2, 4 (touched objects are
+// grasped and verified GRASP every frame), cubes and the 32-face/56-edge ellipsoid, each with
+// skip_work on (bounding-volume rejection, sleeping) and off (every subsystem on every object).
+// Touched objects sit in fixed cells of the floor grid — one cube, an adjacent pair, a 2 × 2
+// block — and the untouched ones fill the other cells row by row. With nothing touched the hand
+// runs the same loop 0.3 m higher. Ellipsoids rest on a face of their bottom fan.
+//
+// The hand pose of each layout is found, not assumed: a deterministic search over the grasp
+// width and the wrist offset, nearest the geometric guess first, accepts the first pose that keeps
+// every check point and line above the floor and whose targets are GRASP and whose neighbours
+// untouched and unmoved on every frame of a whole loop (skipping on and off). The 2 × 2 blocks
+// cannot be grasped from the floor without the fingers reaching under it, so the search lifts
+// them (1 cm steps) until a pose exists: they start in the hand, just above the floor. After each
+// timing every untouched object is checked again (untouched, asleep).
+#include <stdlib.h>
+#include <string.h>
+
+#include "bench.h"
+
+typedef enum fr_shape { FR_CUBE = 0, FR_ELLIPSOID = 1 } fr_shape;
+static const char *const shape_names[2] = {"cube", "ellipsoid"};
+
+#define FR_MAX_TOUCHED 4
+
+// A hand pose relative to the touched objects: the grip centre sits at their centroid + offset.
+typedef struct fr_pose {
+	bool found;
+	double width; // m: the grasp posture's width
+	hs_vec3 offset;
+	uint8_t sensors[HS_GLOVE_SENSORS];
+	hs_vec3 grip; // grip centre in the wrist frame
+	double lift;  // m: the touched objects start this far above the floor, already in the hand
+} fr_pose;
+
+// The cells the touched objects occupy: one cube, an adjacent pair along x, a 2 × 2 block.
+static int touched_cells(int touched, int cells[FR_MAX_TOUCHED][2]) {
+	static const int layout[FR_MAX_TOUCHED][2] = {{4, 0}, {5, 0}, {4, 1}, {5, 1}};
+	if (touched == 1) {
+		cells[0][0] = 5;
+		cells[0][1] = 0;
+		return 1;
+	}
+	for (int k = 0; k < touched; ++k) {
+		cells[k][0] = layout[k][0];
+		cells[k][1] = layout[k][1];
+	}
+	return touched;
+}
+
+static hs_shape *make_shape(fr_shape kind) {
+	hs_status st;
+	hs_shape *s = kind == FR_CUBE ? hs_shape_box(hs_v3(BENCH_CUBE, BENCH_CUBE, BENCH_CUBE), &st)
+	                              : hs_shape_ellipsoid(hs_v3(0.5 * BENCH_CUBE, 0.5 * BENCH_CUBE, 0.5 * BENCH_CUBE), &st);
+	if (!s) {
+		fprintf(stderr, "bench: cannot build the %s: %s\n", shape_names[kind], hs_status_string(st));
+		exit(2);
+	}
+	return s;
+}
+
+// How a shape rests on the floor: the face whose normal points most downward turned flat onto the
+// floor (the cube: as built; the ellipsoid: on a triangle of its bottom fan — balanced on its pole
+// vertex it would be in an unstable equilibrium that rounding decides), and the height of G.
+static void rest_pose(const hs_shape *shape, hs_quat *rot, double *z) {
+	int best = 0;
+	for (int f = 1; f < shape->face_count; ++f)
+		if (shape->faces[f].normal.z < shape->faces[best].normal.z)
+			best = f;
+	hs_vec3 n = shape->faces[best].normal, down = hs_v3(0.0, 0.0, -1.0);
+	hs_vec3 axis = hs_cross(n, down);
+	double s = hs_length(axis), c = hs_dot(n, down);
+	*rot = s > 0.0 ? hs_quat_normalize(hs_quat_from_axis_angle(hs_scale(axis, 1.0 / s), atan2(s, c)))
+	               : hs_quat_identity();
+	double lowest = INFINITY;
+	for (int i = 0; i < shape->vertex_count; ++i) {
+		double vz = hs_quat_rotate(*rot, shape->vertices[i]).z;
+		lowest = vz < lowest ? vz : lowest;
+	}
+	*z = -lowest;
+}
+
+// Centre of grid cell (i, j) for an object resting at height z.
+static hs_vec3 cell_at(int i, int j, double z) {
+	hs_vec3 c = bench_cell(i, j);
+	c.z = z;
+	return c;
+}
+
+// ---------------------------------------------------------------------------------------------
+// A scene
+
+typedef struct fr_scene {
+	hs_world *world;
+	hs_hand_id hand;
+	int objects, touched;
+	hs_object_id targets[FR_MAX_TOUCHED];
+	hs_vec3 wrist[BENCH_PATH_FRAMES]; // the loop, precomputed: no trigonometry in the timed steps
+	hs_quat rot;
+	uint8_t sensors[HS_GLOVE_SENSORS];
+	int k;            // frame within the loop
+	long frames;      // stepped so far
+	long lost;        // frames with a target not GRASP
+	long first_lost;  // the first such frame (−1: none)
+	uint64_t checksum;
+} fr_scene;
+
+static void scene_destroy(fr_scene *sc) {
+	if (!sc)
+		return;
+	hs_world_destroy(sc->world);
+	free(sc);
+}
+
+static void die_status(const char *what, hs_status st) {
+	fprintf(stderr, "bench: %s: %s\n", what, hs_status_string(st));
+	exit(2);
+}
+
+// Builds `objects` objects (the touched ones first, at their cells) and the hand at frame 0 of the
+// loop; `pose` places the hand (nothing touched: the pose of the pair, 0.3 m higher).
+static fr_scene *scene_create(fr_shape kind, int objects, int touched, bool skip, const fr_pose *pose) {
+	fr_scene *sc = calloc(1, sizeof *sc);
+	if (!sc)
+		die_status("scene", HS_ERR_NO_MEMORY);
+	hs_world_def wd = hs_default_world_def();
+	wd.dt = BENCH_DT;
+	wd.max_objects = objects;
+	wd.max_hands = 1;
+	wd.skip_work = skip;
+	hs_status st;
+	sc->world = hs_world_create(&wd, &st);
+	if (!sc->world)
+		die_status("world", st);
+	hs_shape *shape = make_shape(kind);
+	hs_object_def od = hs_default_object_def();
+	double rest_z;
+	rest_pose(shape, &od.orientation, &rest_z);
+	od.shape = hs_world_add_shape(sc->world, shape, &st);
+	hs_shape_destroy(shape);
+	if (st != HS_OK)
+		die_status("shape", st);
+	int cells[FR_MAX_TOUCHED][2];
+	int nt = touched > 0 ? touched_cells(touched, cells) : 0;
+	int placed = 0;
+	hs_vec3 centroid = hs_v3(0, 0, 0);
+	for (int k = 0; k < nt && placed < objects; ++k) {
+		od.position = cell_at(cells[k][0], cells[k][1], rest_z + pose->lift);
+		centroid = hs_add(centroid, od.position);
+		sc->targets[k] = hs_world_add_object(sc->world, &od, &st);
+		if (st != HS_OK)
+			die_status("object", st);
+		placed++;
+	}
+	for (int c = 0; placed < objects; ++c) { // the rest fill the grid row by row
+		int i = c % BENCH_PER_ROW, j = c / BENCH_PER_ROW;
+		bool taken = false;
+		for (int k = 0; k < nt; ++k)
+			taken = taken || (cells[k][0] == i && cells[k][1] == j);
+		if (taken)
+			continue;
+		od.position = cell_at(i, j, rest_z);
+		hs_world_add_object(sc->world, &od, &st);
+		if (st != HS_OK)
+			die_status("object", st);
+		placed++;
+	}
+	sc->objects = objects;
+	sc->touched = nt;
+	hs_hand_def hd = hs_default_hand_def();
+	sc->hand = hs_world_add_hand(sc->world, &hd, &st);
+	if (st != HS_OK)
+		die_status("hand", st);
+	memcpy(sc->sensors, pose->sensors, sizeof sc->sensors);
+	sc->rot = hs_quat_identity(); // palm down, fingers along +x: the grip axis is the row
+	if (nt > 0)
+		centroid = hs_scale(centroid, 1.0 / nt);
+	else // nothing touched: over the seed pair, 0.3 m up
+		centroid = hs_add(hs_scale(hs_add(cell_at(4, 0, rest_z), cell_at(5, 0, rest_z)), 0.5), hs_v3(0, 0, 0.3));
+	hs_vec3 base = hs_sub(hs_add(centroid, pose->offset), pose->grip);
+	for (int k = 0; k < BENCH_PATH_FRAMES; ++k)
+		sc->wrist[k] = hs_add(base, bench_path(k));
+	sc->first_lost = -1;
+	sc->checksum = 14695981039346656037ull;
+	return sc;
+}
+
+// One frame: the hand at its next point of the loop, the world step, the grasp verified.
+static void scene_step(void *state, long frames) {
+	fr_scene *sc = state;
+	for (long f = 0; f < frames; ++f) {
+		hs_world_set_hand(sc->world, sc->hand, sc->wrist[sc->k], sc->rot, sc->sensors);
+		hs_world_step(sc->world);
+		sc->k = sc->k + 1 == BENCH_PATH_FRAMES ? 0 : sc->k + 1;
+		bool held = true;
+		for (int t = 0; t < sc->touched; ++t) {
+			hs_object_state os;
+			hs_world_object_state(sc->world, sc->targets[t], &os);
+			held = held && os.contact == HS_CONTACT_GRASP;
+			sc->checksum = bench_mix(sc->checksum, os.position.z);
+		}
+		if (!held) {
+			if (sc->first_lost < 0)
+				sc->first_lost = sc->frames;
+			sc->lost++;
+		}
+		sc->frames++;
+	}
+}
+
+// One whole loop, checking every object: targets GRASP, the others untouched and unmoved.
+static bool scene_verify(fr_scene *sc, char *why, size_t why_size) {
+	int n = hs_world_object_count(sc->world);
+	hs_vec3 *start = malloc((size_t)n * sizeof *start);
+	if (!start)
+		die_status("verify", HS_ERR_NO_MEMORY);
+	for (int i = 0; i < n; ++i) {
+		hs_object_state os;
+		hs_world_object_state(sc->world, hs_world_object_at(sc->world, i), &os);
+		start[i] = os.position;
+	}
+	bool ok = true;
+	for (int f = 0; f < BENCH_PATH_FRAMES && ok; ++f) {
+		scene_step(sc, 1);
+		for (int i = 0; i < n && ok; ++i) {
+			hs_object_state os;
+			hs_world_object_state(sc->world, hs_world_object_at(sc->world, i), &os);
+			bool target = i < sc->touched;
+			if (target && os.contact != HS_CONTACT_GRASP) {
+				snprintf(why, why_size, "frame %d: target %d in contact state %d", f, i, os.contact);
+				ok = false;
+			} else if (!target && (os.contact != HS_CONTACT_NONE || hs_distance(os.position, start[i]) != 0.0)) {
+				snprintf(why, why_size, "frame %d: untouched object %d in state %d, moved %.3g m", f, i, os.contact,
+				         hs_distance(os.position, start[i]));
+				ok = false;
+			}
+		}
+	}
+	free(start);
+	return ok;
+}
+
+// ---------------------------------------------------------------------------------------------
+// The grasp pose search
+
+static bool pose_with(double width, int abduction, hs_vec3 offset, fr_pose *pose) {
+	hs_hand_def hd = hs_default_hand_def();
+	memset(pose, 0, sizeof *pose);
+	if (hs_hand_posture(&hd, HS_POSTURE_GRASP, width, pose->sensors) != HS_OK)
+		return false;
+	pose->sensors[HS_SENSOR_INDEX_MIDDLE_ABDUCTION] = (uint8_t)abduction; // spreads index from middle
+	hs_vec3 axis;
+	hs_hand_grip(&hd, pose->sensors, &pose->grip, &axis);
+	pose->width = width;
+	pose->offset = offset;
+	pose->found = true;
+	return true;
+}
+
+// True when every check point and check-line end of the hand at the start of the loop is above
+// the floor: a hand may not reach under the floor to grasp (the model would not stop it).
+static bool above_floor(fr_shape kind, int touched, const fr_pose *pose) {
+	hs_shape *shape = make_shape(kind);
+	hs_quat rot;
+	double rest_z;
+	rest_pose(shape, &rot, &rest_z);
+	hs_shape_destroy(shape);
+	int cells[FR_MAX_TOUCHED][2];
+	int nt = touched_cells(touched, cells);
+	hs_vec3 centroid = hs_v3(0, 0, 0);
+	for (int k = 0; k < nt; ++k)
+		centroid = hs_add(centroid, cell_at(cells[k][0], cells[k][1], rest_z));
+	centroid = hs_add(hs_scale(centroid, 1.0 / nt), hs_v3(0.0, 0.0, pose->lift));
+	hs_vec3 wrist = hs_sub(hs_add(centroid, pose->offset), pose->grip);
+	hs_hand_def hd = hs_default_hand_def();
+	hs_vec3 points[HS_HAND_POINTS], lines[HS_HAND_LINES][2];
+	hs_hand_kinematics(&hd, wrist, hs_quat_identity(), pose->sensors, points, lines);
+	for (int i = 0; i < HS_HAND_POINTS; ++i)
+		if (points[i].z < 0.0)
+			return false;
+	for (int j = 0; j < HS_HAND_LINES; ++j)
+		if (lines[j][0].z < 0.0 || lines[j][1].z < 0.0)
+			return false;
+	return true;
+}
+
+typedef struct candidate {
+	double width, dx, dy, dz, cost;
+	int order;
+} candidate;
+
+static int compare_candidate(const void *a, const void *b) {
+	const candidate *x = a, *y = b;
+	if (x->cost != y->cost)
+		return x->cost < y->cost ? -1 : 1;
+	return x->order - y->order;
+}
+
+// The pose nearest the guess (width, dz) that keeps the hand above the floor and grasps the touched
+// objects of a 20-object scene (rows 0 and 1 full: every neighbour present) on every frame of a
+// loop, with skipping on and off.
+static fr_pose find_pose(fr_shape kind, int touched, double width0, double dz0, int abduction) {
+	enum { NW = 11, NXY = 13, NZ = 23 };
+	candidate *cands = malloc((size_t)NW * NXY * NXY * NZ * sizeof *cands);
+	if (!cands)
+		die_status("pose search", HS_ERR_NO_MEMORY);
+	int n = 0;
+	for (int iw = 0; iw < NW; ++iw)
+		for (int ix = 0; ix < NXY; ++ix)
+			for (int iy = 0; iy < NXY; ++iy)
+				for (int iz = 0; iz < NZ; ++iz) {
+					candidate *c = &cands[n];
+					c->width = width0 + 0.002 * (iw - NW / 2);
+					c->dx = 0.002 * (ix - NXY / 2);
+					c->dy = 0.002 * (iy - NXY / 2);
+					c->dz = dz0 + 0.002 * (iz - NZ / 2);
+					if (c->width < 0.01 - 1e-12 || c->width > 0.12 + 1e-12)
+						continue;
+					c->cost = 2.0 * fabs(c->width - width0) + fabs(c->dx) + fabs(c->dy) + fabs(c->dz - dz0);
+					c->order = n;
+					n++;
+				}
+	qsort(cands, (size_t)n, sizeof *cands, compare_candidate);
+	fr_pose pose;
+	memset(&pose, 0, sizeof pose);
+	int tried = 0;
+	// Fingers cannot reach under objects that rest on the floor: when no pose grasps them there,
+	// the touched objects start a little higher, already in the hand (the 2 × 2 block needs this)
+	static const double lifts[] = {0.0, 0.01, 0.02, 0.03};
+	for (int l = 0; l < 4 && !pose.found; ++l)
+		for (int i = 0; i < n; ++i) {
+			fr_pose p;
+			if (!pose_with(cands[i].width, abduction, hs_v3(cands[i].dx, cands[i].dy, cands[i].dz), &p))
+				continue;
+			p.lift = lifts[l];
+			tried++;
+			if (!above_floor(kind, touched, &p))
+				continue;
+			// quick test: the first frame only, the touched objects alone
+			fr_scene *quick = scene_create(kind, touched, touched, true, &p);
+			scene_step(quick, 1);
+			bool ok = quick->lost == 0;
+			scene_destroy(quick);
+			if (!ok)
+				continue;
+			char why[256];
+			for (int skip = 1; skip >= 0 && ok; --skip) {
+				fr_scene *full = scene_create(kind, 2 * BENCH_PER_ROW, touched, skip != 0, &p);
+				ok = scene_verify(full, why, sizeof why);
+				scene_destroy(full);
+			}
+			if (ok) {
+				pose = p;
+				break;
+			}
+		}
+	free(cands);
+	bench_progress("[frame rate] %s, %d touched: %s after %d candidates (width %.3f m, offset %+.3f %+.3f %+.3f m, "
+	               "start %.2f m up)\n",
+	               shape_names[kind], touched, pose.found ? "grasp pose found" : "NO grasp pose found", tried,
+	               pose.width, pose.offset.x, pose.offset.y, pose.offset.z, pose.lift);
+	return pose;
+}
+
+// ---------------------------------------------------------------------------------------------
+// The sweep
+
+static const int object_counts[] = {1, 2, 5, 10, 20, 50, 100, 1000};
+#define N_COUNTS ((int)(sizeof object_counts / sizeof object_counts[0]))
+static const int touched_counts[] = {0, 1, 2, 4};
+#define N_TOUCHED 4
+
+typedef struct fr_result {
+	bool valid;
+	bench_stats on, off; // s per frame, skip_work on / off
+	long lost_on, lost_off;
+	int stray; // untouched objects found touched or awake after the timing
+} fr_result;
+
+static fr_result measure(fr_shape kind, int objects, int touched, const fr_pose *pose, const bench_opts *opts,
+                         bench_shared *shared) {
+	fr_result r;
+	memset(&r, 0, sizeof r);
+	r.valid = true;
+	for (int skip = 1; skip >= 0; --skip) {
+		fr_scene *sc = scene_create(kind, objects, touched, skip != 0, pose);
+		bench_stats st = bench_measure(scene_step, sc, opts);
+		if (skip) {
+			r.on = st;
+			r.lost_on = sc->lost;
+		} else {
+			r.off = st;
+			r.lost_off = sc->lost;
+		}
+		if (sc->lost)
+			bench_progress("[frame rate] WARNING: %s %d objects %d touched skip %s: grasp lost in %ld of %ld frames "
+			               "(first at frame %ld)\n",
+			               shape_names[kind], objects, touched, skip ? "on" : "off", sc->lost, sc->frames,
+			               sc->first_lost);
+		// after the timing: every untouched object still untouched and at rest
+		int stray = 0;
+		for (int i = sc->touched; i < objects; ++i) {
+			hs_object_state os;
+			hs_world_object_state(sc->world, hs_world_object_at(sc->world, i), &os);
+			stray += os.contact != HS_CONTACT_NONE || !os.resting;
+		}
+		if (stray)
+			bench_progress("[frame rate] WARNING: %s %d objects %d touched skip %s: %d untouched objects touched or "
+			               "awake after the timing\n",
+			               shape_names[kind], objects, touched, skip ? "on" : "off", stray);
+		r.stray += stray;
+		shared->checksum ^= sc->checksum ^ hs_world_hash(sc->world);
+		scene_destroy(sc);
+	}
+	bench_progress("[frame rate] %-9s %4d objects %d touched: %10.0f frames/s (skip on), %10.0f (skip off)\n",
+	               shape_names[kind], objects, touched, 1.0 / r.on.median, 1.0 / r.off.median);
+	return r;
+}
+
+static void fmt_fps(char *out, size_t size, const bench_stats *st) {
+	snprintf(out, size, "%.0f (%.0f-%.0f)", 1.0 / st->median, 1.0 / st->max, 1.0 / st->min);
+}
+
+void bench_frame_rate(const bench_opts *opts, bench_shared *shared) {
+	static const double width_guess[N_TOUCHED] = {0.11, 0.05, 0.11, 0.10};
+	static const double dz_guess[2][N_TOUCHED] = {{0.0, 0.0, 0.0, -0.026}, {0.0, 0.0, 0.0, -0.03}};
+	// index–middle abduction (sensor units): the 2 × 2 ellipsoids need the index spread onto the second row
+	static const int abduction_guess[2][N_TOUCHED] = {{0, 0, 0, 0}, {0, 0, 0, 30}};
+	fr_pose poses[2][N_TOUCHED];
+	for (int s = 0; s < 2; ++s)
+		for (int t = 1; t < N_TOUCHED; ++t)
+			poses[s][t] = find_pose((fr_shape)s, touched_counts[t], width_guess[t], dz_guess[s][t], abduction_guess[s][t]);
+	for (int s = 0; s < 2; ++s) { // nothing touched: the pair's pose, lifted 0.3 m by scene_create
+		poses[s][0] = poses[s][2];
+		if (!poses[s][0].found)
+			pose_with(0.11, 0, hs_v3(0, 0, 0), &poses[s][0]);
+	}
+
+	static fr_result res[2][N_COUNTS][N_TOUCHED];
+	memset(res, 0, sizeof res);
+	int counts = N_COUNTS;
+	for (int s = 0; s < 2; ++s)
+		for (int c = 0; c < counts; ++c)
+			for (int t = 0; t < N_TOUCHED; ++t) {
+				int objects = object_counts[c], touched = touched_counts[t];
+				if (touched > objects || !poses[s][t].found)
+					continue;
+				if (opts->quick && s == FR_ELLIPSOID && objects != 10 && objects != 1000)
+					continue; // QUICK: the ellipsoid at 10 and 1000 objects only
+				res[s][c][t] = measure((fr_shape)s, objects, touched, &poses[s][t], opts, shared);
+			}
+
+	// +1000 untouched resting objects around the seed scene (the flatness target)
+	fr_result seed_plus = measure(FR_CUBE, 10 + 1000, 2, &poses[FR_CUBE][2], opts, shared);
+
+	FILE *csv = bench_csv(opts, "frame_rate.csv");
+	fprintf(csv, "# 1999 paper Experiment 3 (Fig. 13): frames/s of the hand check, median of %d batches\n", opts->reps);
+	fprintf(csv, "shape,objects,touched,fps_on,fps_on_min,fps_on_max,us_on,fps_off,fps_off_min,fps_off_max,us_off,"
+	             "off_over_on,lost_on,lost_off,on_over_paper_17fps\n");
+	for (int s = 0; s < 2; ++s)
+		for (int c = 0; c < counts; ++c)
+			for (int t = 0; t < N_TOUCHED; ++t) {
+				const fr_result *r = &res[s][c][t];
+				if (!r->valid)
+					continue;
+				fprintf(csv, "%s,%d,%d,%.1f,%.1f,%.1f,%.4f,%.1f,%.1f,%.1f,%.4f,%.3f,%ld,%ld,%.0f\n", shape_names[s],
+				        object_counts[c], touched_counts[t], 1.0 / r->on.median, 1.0 / r->on.max, 1.0 / r->on.min,
+				        1e6 * r->on.median, 1.0 / r->off.median, 1.0 / r->off.max, 1.0 / r->off.min, 1e6 * r->off.median,
+				        r->off.median / r->on.median, r->lost_on, r->lost_off, 1.0 / r->on.median / 17.0);
+			}
+	fclose(csv);
+
+	// the tables
+	printf("\n== 1. Frame rate, 1999 paper Experiment 3 (Fig. 13): frames/s, median (min-max) of %d batches ==\n",
+	       opts->reps);
+	printf("one hand (20 check points, 60 check lines), full hand-object check every frame, dt = 1/60 s, no "
+	       "rendering;\nthe paper: 17 frames/s with 10 objects and 2 grasped (SGI Indigo2, R10000)\n");
+	printf("grasp poses found by search (touched objects GRASP, neighbours untouched on every frame of a loop):\n");
+	for (int s = 0; s < 2; ++s)
+		for (int t = 1; t < N_TOUCHED; ++t) {
+			const fr_pose *p = &poses[s][t];
+			if (!p->found) {
+				printf("  %-9s %d touched: none found (not measured)\n", shape_names[s], touched_counts[t]);
+				continue;
+			}
+			printf("  %-9s %d touched: grasp posture %.3f m, index-middle abduction %d units, grip centre at their "
+			       "centroid %+.3f %+.3f %+.3f m\n",
+			       shape_names[s], touched_counts[t], p->width, p->sensors[HS_SENSOR_INDEX_MIDDLE_ABDUCTION], p->offset.x,
+			       p->offset.y, p->offset.z);
+			if (p->lift > 0.0)
+				printf("%14s(they start %.2f m above the floor, already in the hand: resting on the floor, the fingers "
+				       "would have to reach under it)\n",
+				       "", p->lift);
+		}
+	for (int s = 0; s < 2; ++s) {
+		printf("\n%s (%s), skip_work on:\n", shape_names[s],
+		       s == FR_CUBE ? "6 faces, 12 edges, 5 cm"
+		                    : "32 faces, 56 edges, 5 cm across, resting on a face");
+		printf("%8s", "objects");
+		for (int t = 0; t < N_TOUCHED; ++t)
+			printf(" | %17d touched", touched_counts[t]);
+		printf("\n");
+		for (int c = 0; c < counts; ++c) {
+			bool any = false;
+			for (int t = 0; t < N_TOUCHED; ++t)
+				any = any || res[s][c][t].valid;
+			if (!any)
+				continue;
+			printf("%8d", object_counts[c]);
+			for (int t = 0; t < N_TOUCHED; ++t) {
+				char cell[64] = "-";
+				if (res[s][c][t].valid)
+					fmt_fps(cell, sizeof cell, &res[s][c][t].on);
+				printf(" | %25s", cell);
+			}
+			printf("\n");
+		}
+	}
+
+	// ns per frame per touched object: the slope against touched count, at 10 objects
+	printf("\nns per frame per touched object (frame time at t touched minus at 0, over t), skip_work on:\n");
+	printf("%-10s %8s %10s %10s %10s\n", "shape", "objects", "t=1", "t=2", "t=4");
+	for (int s = 0; s < 2; ++s)
+		for (int c = 0; c < counts; ++c) {
+			if (!res[s][c][0].valid)
+				continue;
+			printf("%-10s %8d", shape_names[s], object_counts[c]);
+			for (int t = 1; t < N_TOUCHED; ++t) {
+				if (res[s][c][t].valid)
+					printf(" %10.0f", 1e9 * (res[s][c][t].on.median - res[s][c][0].on.median) / touched_counts[t]);
+				else
+					printf(" %10s", "-");
+			}
+			printf("\n");
+		}
+
+	printf("\n== 2. What skipping saves: frame time with skip_work off / on (same run) ==\n");
+	printf("%-10s %8s", "shape", "objects");
+	for (int t = 0; t < N_TOUCHED; ++t)
+		printf("   touched %d: off/on (us off)", touched_counts[t]);
+	printf("\n");
+	for (int s = 0; s < 2; ++s)
+		for (int c = 0; c < counts; ++c) {
+			bool any = false;
+			for (int t = 0; t < N_TOUCHED; ++t)
+				any = any || res[s][c][t].valid;
+			if (!any)
+				continue;
+			printf("%-10s %8d", shape_names[s], object_counts[c]);
+			for (int t = 0; t < N_TOUCHED; ++t) {
+				const fr_result *r = &res[s][c][t];
+				if (r->valid)
+					printf("   %16.2fx (%8.2f)", r->off.median / r->on.median, 1e6 * r->off.median);
+				else
+					printf("   %28s", "-");
+			}
+			printf("\n");
+		}
+	printf("\nflatness in untouched objects: frame time at 1000 objects / at 10 objects (touched fixed)\n");
+	for (int s = 0; s < 2; ++s) {
+		int c10 = 3, c1000 = 7;
+		printf("%-10s", shape_names[s]);
+		for (int t = 0; t < N_TOUCHED; ++t) {
+			const fr_result *a = &res[s][c10][t], *b = &res[s][c1000][t];
+			if (a->valid && b->valid)
+				printf("   touched %d: skip on %6.2fx, off %7.2fx", touched_counts[t], b->on.median / a->on.median,
+				       b->off.median / a->off.median);
+		}
+		printf("\n");
+	}
+
+	// the summary
+	const fr_result *seed = &res[FR_CUBE][3][2];
+	char value[96], what[96];
+	long lost = 0, stray = seed_plus.stray;
+	for (int s = 0; s < 2; ++s)
+		for (int c = 0; c < counts; ++c)
+			for (int t = 0; t < N_TOUCHED; ++t) {
+				lost += res[s][c][t].lost_on + res[s][c][t].lost_off;
+				stray += res[s][c][t].stray;
+			}
+	if (seed->valid) {
+		shared->seed_us_per_frame = 1e6 * seed->on.median;
+		shared->seed_dt = BENCH_DT;
+		fmt_fps(value, sizeof value, &seed->on);
+		bench_summary_add("1 frame rate", "seed scene (10 cubes, 2 grasped), frames/s", value, BENCH_INFO);
+		snprintf(value, sizeof value, "%.0fx  (%.3f us/frame)", 1.0 / seed->on.median / 17.0, 1e6 * seed->on.median);
+		bench_summary_add("1 frame rate", "ratio to the paper's 17 frames/s", value, BENCH_INFO);
+		snprintf(value, sizeof value, "%.0f frames/s", 1.0 / seed->on.median);
+		bench_summary_add("target", "seed scene >= 500,000 frames/s, full check, 1 core", value,
+		                  1.0 / seed->on.median >= 500000.0 ? BENCH_MET : BENCH_NOT_MET);
+		fmt_fps(value, sizeof value, &seed->off);
+		bench_summary_add("2 skipping", "seed scene with skip_work off, frames/s", value, BENCH_INFO);
+		snprintf(value, sizeof value, "%.2fx", seed->off.median / seed->on.median);
+		bench_summary_add("2 skipping", "seed scene frame time, skip off / on", value, BENCH_INFO);
+	}
+	const fr_result *e10 = &res[FR_ELLIPSOID][3][2];
+	if (e10->valid) {
+		fmt_fps(value, sizeof value, &e10->on);
+		bench_summary_add("1 frame rate", "ellipsoids (10, 2 grasped), frames/s", value, BENCH_INFO);
+	}
+	if (res[FR_CUBE][3][0].valid && res[FR_CUBE][3][1].valid && res[FR_CUBE][3][2].valid) {
+		snprintf(value, sizeof value, "%.0f / %.0f ns (1 / 2 touched)",
+		         1e9 * (res[FR_CUBE][3][1].on.median - res[FR_CUBE][3][0].on.median),
+		         1e9 * (res[FR_CUBE][3][2].on.median - res[FR_CUBE][3][0].on.median) / 2.0);
+		bench_summary_add("1 frame rate", "ns per frame per touched cube (10 objects)", value, BENCH_INFO);
+	}
+	if (seed->valid) {
+		double ratio = seed_plus.on.median / seed->on.median;
+		snprintf(value, sizeof value, "%.2fx  (%.2f -> %.2f us; skip off %.1fx)", ratio, 1e6 * seed->on.median,
+		         1e6 * seed_plus.on.median, seed_plus.off.median / seed->off.median);
+		bench_summary_add("target", "+1000 untouched resting cubes < 2x frame time", value,
+		                  ratio < 2.0 ? BENCH_MET : BENCH_NOT_MET);
+	}
+	snprintf(what, sizeof what, "grasp lost / untouched disturbed (whole sweep)");
+	snprintf(value, sizeof value, "%ld frames / %ld objects", lost + seed_plus.lost_on + seed_plus.lost_off, stray);
+	bench_summary_add("1 frame rate", what, value, BENCH_INFO);
+	for (int s = 0; s < 2; ++s)
+		for (int t = 1; t < N_TOUCHED; ++t)
+			if (!poses[s][t].found) {
+				snprintf(what, sizeof what, "%s, %d touched", shape_names[s], touched_counts[t]);
+				bench_summary_add("1 frame rate", what, "no grasping pose found: not measured", BENCH_INFO);
+			}
+}
+
+bench_stats bench_seed_measure(const bench_opts *opts, bool skip) {
+	fr_pose pose = find_pose(FR_CUBE, 2, 0.11, 0.0, 0);
+	fr_scene *sc = scene_create(FR_CUBE, 10, 2, skip, &pose);
+	bench_stats st = bench_measure(scene_step, sc, opts);
+	if (sc->lost)
+		bench_progress("[frame rate] WARNING: seed scene: grasp lost in %ld of %ld frames\n", sc->lost, sc->frames);
+	scene_destroy(sc);
+	return st;
+}
+
+// `hs_bench --profile-seed N`: N frames of the seed scene and nothing else, for perf or callgrind.
+void bench_profile_seed(long frames, int objects, bool skip) {
+	fr_pose pose = find_pose(FR_CUBE, 2, 0.11, 0.0, 0);
+	fr_scene *sc = scene_create(FR_CUBE, objects < 2 ? 10 : objects, 2, skip, &pose);
+	double t0 = bench_now();
+	scene_step(sc, frames);
+	double el = bench_now() - t0;
+	printf("seed scene (%d objects), skip_work %s: %ld frames in %.3f s = %.3f us/frame (%.0f frames/s), grasp lost in %ld, "
+	       "checksum %016llx\n",
+	       sc->objects, skip ? "on" : "off", frames, el, 1e6 * el / (double)frames, (double)frames / el, sc->lost,
+	       (unsigned long long)sc->checksum);
+	scene_destroy(sc);
+}
