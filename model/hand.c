@@ -21,7 +21,7 @@
 #include <stdint.h>
 #include <string.h>
 
-#include "handspring.h"
+#include "internal.h"
 
 // rad per sensor unit: 0.5° (paper §5.1)
 #define HS_RAD_PER_UNIT (HS_PI / 360.0)
@@ -230,20 +230,13 @@ static void hand_pose_wrist(const hs_hand_def *def, const hs_hand_joints *j, han
 
 static hs_vec3 mirror_if(bool left, hs_vec3 v) { return left ? hs_v3(v.x, -v.y, v.z) : v; }
 
-void hs_hand_kinematics(const hs_hand_def *def, hs_vec3 wrist_position, hs_quat wrist_orientation,
-                        const uint8_t sensors[HS_GLOVE_SENSORS], hs_vec3 points[HS_HAND_POINTS],
-                        hs_vec3 lines[HS_HAND_LINES][2]) {
-	if (def == NULL || sensors == NULL) // documented: nothing written
-		return;
+void hs_hand_local_shape(const hs_hand_def *def, const uint8_t sensors[HS_GLOVE_SENSORS],
+                         hs_vec3 points[HS_HAND_POINTS], hs_vec3 lines[HS_HAND_LINES][2]) {
 	hs_hand_joints j = hs_hand_joints_from_sensors(def, sensors);
 	hand_pose pose;
 	hand_pose_wrist(def, &j, &pose);
-	if (points != NULL)
-		for (int i = 0; i < HS_HAND_POINTS; i++)
-			points[i] = hs_add(wrist_position,
-			                   hs_quat_rotate(wrist_orientation, mirror_if(def->left, pose.points[i])));
-	if (lines == NULL)
-		return;
+	for (int i = 0; i < HS_HAND_POINTS; i++)
+		points[i] = mirror_if(def->left, pose.points[i]);
 	// check lines (§3.1): the 4 long edges of a square prism around each segment, edge e offset
 	// from the axis by r along the segment's local +y, −y, +z, −z
 	double r = def->finger_radius;
@@ -253,12 +246,32 @@ void hs_hand_kinematics(const hs_hand_def *def, hs_vec3 wrist_position, hs_quat 
 		hs_vec3 a = pose.points[f * 4 + k], b = pose.points[f * 4 + k + 1];
 		for (int e = 0; e < 4; e++) {
 			hs_vec3 off = hs_quat_rotate(pose.segment[s], offsets[e]);
-			hs_vec3 ends[2] = {hs_add(a, off), hs_add(b, off)};
-			for (int t = 0; t < 2; t++)
-				lines[s * 4 + e][t] = hs_add(wrist_position,
-				                             hs_quat_rotate(wrist_orientation, mirror_if(def->left, ends[t])));
+			lines[s * 4 + e][0] = mirror_if(def->left, hs_add(a, off));
+			lines[s * 4 + e][1] = mirror_if(def->left, hs_add(b, off));
 		}
 	}
+}
+
+void hs_hand_place(const hs_vec3 local_points[HS_HAND_POINTS], const hs_vec3 local_lines[HS_HAND_LINES][2],
+                   hs_vec3 wrist_position, hs_quat wrist_orientation, hs_vec3 points[HS_HAND_POINTS],
+                   hs_vec3 lines[HS_HAND_LINES][2]) {
+	if (points != NULL)
+		for (int i = 0; i < HS_HAND_POINTS; i++)
+			points[i] = hs_add(wrist_position, hs_quat_rotate(wrist_orientation, local_points[i]));
+	if (lines != NULL)
+		for (int j = 0; j < HS_HAND_LINES; j++)
+			for (int t = 0; t < 2; t++)
+				lines[j][t] = hs_add(wrist_position, hs_quat_rotate(wrist_orientation, local_lines[j][t]));
+}
+
+void hs_hand_kinematics(const hs_hand_def *def, hs_vec3 wrist_position, hs_quat wrist_orientation,
+                        const uint8_t sensors[HS_GLOVE_SENSORS], hs_vec3 points[HS_HAND_POINTS],
+                        hs_vec3 lines[HS_HAND_LINES][2]) {
+	if (def == NULL || sensors == NULL) // documented: nothing written
+		return;
+	hs_vec3 local_points[HS_HAND_POINTS], local_lines[HS_HAND_LINES][2];
+	hs_hand_local_shape(def, sensors, local_points, local_lines);
+	hs_hand_place(local_points, (const hs_vec3(*)[2])local_lines, wrist_position, wrist_orientation, points, lines);
 }
 
 // ---------------------------------------------------------------------------------------------

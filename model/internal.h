@@ -29,6 +29,13 @@ typedef struct hs_body {
 	uint8_t carried;  // moved along with a hand-moved object this frame (§4.3)
 } hs_body;
 
+// hand.c — the hand's shape in its wrist frame (depends on the sensors only) and its placement
+void hs_hand_local_shape(const hs_hand_def *def, const uint8_t sensors[HS_GLOVE_SENSORS],
+                         hs_vec3 points[HS_HAND_POINTS], hs_vec3 lines[HS_HAND_LINES][2]);
+void hs_hand_place(const hs_vec3 local_points[HS_HAND_POINTS], const hs_vec3 local_lines[HS_HAND_LINES][2],
+                   hs_vec3 wrist_position, hs_quat wrist_orientation, hs_vec3 points[HS_HAND_POINTS],
+                   hs_vec3 lines[HS_HAND_LINES][2]);
+
 // A hand: wrist pose, glove sensors and its check points now and one frame ago.
 typedef struct hs_hand {
 	hs_hand_def def;
@@ -40,6 +47,8 @@ typedef struct hs_hand {
 	hs_vec3 center; // bounding sphere of the check points and lines
 	double radius;
 	bool placed; // set at least once: before that its previous points are its current ones
+	// the shape in the wrist frame for `sensors`: recomputed only when the glove reading changes
+	hs_vec3 local_points[HS_HAND_POINTS], local_lines[HS_HAND_LINES][2];
 } hs_hand;
 
 // The Responsive Workbench spring model (spring.c, tracker.c): present only in worlds that use it.

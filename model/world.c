@@ -366,8 +366,12 @@ hs_status hs_world_set_hand(hs_world *world, hs_hand_id id, hs_vec3 wrist_positi
 		return HS_ERR_INVALID_ARGUMENT;
 	hand->wrist_pos = wrist_position;
 	hand->wrist_rot = hs_quat_normalize(wrist_orientation);
-	memcpy(hand->sensors, sensors, sizeof hand->sensors);
-	hs_hand_kinematics(&hand->def, hand->wrist_pos, hand->wrist_rot, hand->sensors, hand->points, hand->lines);
+	if (!hand->placed || memcmp(hand->sensors, sensors, sizeof hand->sensors) != 0) {
+		memcpy(hand->sensors, sensors, sizeof hand->sensors); // the glove moved: a new hand shape
+		hs_hand_local_shape(&hand->def, hand->sensors, hand->local_points, hand->local_lines);
+	}
+	hs_hand_place(hand->local_points, (const hs_vec3(*)[2])hand->local_lines, hand->wrist_pos, hand->wrist_rot,
+	              hand->points, hand->lines);
 	if (!hand->placed) { // no motion before the first pose
 		memcpy(hand->prev_points, hand->points, sizeof hand->points);
 		memcpy(hand->prev_lines, hand->lines, sizeof hand->lines);
