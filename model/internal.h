@@ -77,7 +77,33 @@ struct hs_world {
 	hs_contact *contacts; // this frame's hand contacts, grouped by object
 	int *queue;           // objects to move along with a moved one (§4.3), max_objects long
 	double grasp_limit;   // hs_grasp_limit(def.grasp_threshold_deg)
+	// broad phase (broadphase.c): objects filed by the floor cell of their centre
+	double grid_cell;   // m; 0 until built at the first step
+	double grid_radius; // m: the largest object's bounding radius
+	bool grid_dirty;    // objects were added since it was built
+	int grid_buckets;   // a power of two, at least twice max_objects
+	int *grid_head;     // bucket → first object (-1: none)
+	int *grid_next, *grid_bucket;
+	long *grid_ix, *grid_iy;
+	int *candidates, *near; // query results, max_objects long each
+	int candidate_count;    // this frame's hand pass
+	// the awake objects in index order: the only ones the step visits when skip_work is on
+	int awake_count;
+	int *awake;
+	uint8_t *awake_flag;
 };
+
+// broadphase.c
+void hs_grid_build(hs_world *world);
+// Files object i again after it moved.
+void hs_grid_update(hs_world *world, int i);
+// Objects whose centre may lie within radius + the largest object radius of center, in index
+// order (every object when skip_work is off). Returns how many were written to out.
+int hs_grid_query(const hs_world *world, hs_vec3 center, double radius, int *out);
+// Marks object i awake and puts it on the awake list.
+void hs_wake(hs_world *world, int i);
+// Drops objects that fell asleep from the awake list.
+void hs_awake_compact(hs_world *world);
 
 // hull.c — 2D convex hull of floor contact points (§4.2, Fig. 5)
 
@@ -137,7 +163,7 @@ void hs_push_at_one_point(hs_body *body, hs_vec3 c, hs_vec3 b);
 // One frame of the hands: detect, classify, move touched objects, release the untouched.
 void hs_manipulate(hs_world *world);
 // §4.3: true when an untouched free object interferes with another and so ignores gravity.
-bool hs_object_interferes(const hs_world *world, int object);
+bool hs_object_interferes(hs_world *world, int object);
 // True when the object's bounding sphere overlaps the hand's.
 bool hs_hand_near(const hs_world *world, const hs_hand *hand, int object);
 

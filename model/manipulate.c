@@ -17,9 +17,11 @@ static bool bodies_overlap(const hs_world *world, int i, int j) {
 	return hs_shapes_overlap(sa, a->pos, a->rot, sb, b->pos, b->rot);
 }
 
-bool hs_object_interferes(const hs_world *world, int object) {
-	for (int j = 0; j < world->object_count; ++j)
-		if (j != object && bodies_overlap(world, object, j))
+bool hs_object_interferes(hs_world *world, int object) {
+	const hs_body *body = &world->bodies[object];
+	int n = hs_grid_query(world, body->pos, world->shapes[body->shape].radius, world->near);
+	for (int k = 0; k < n; ++k)
+		if (world->near[k] != object && bodies_overlap(world, object, world->near[k]))
 			return true;
 	return false;
 }
@@ -97,24 +99,43 @@ static void keep_above_floor(hs_world *world, hs_body *body) {
 	body->floor_contacts = hs_motion_floor_points(world, body); // the trajectory shows it while held
 }
 
+// Adds object j to the sorted candidates of this frame's hand pass, once.
+static void add_candidate(hs_world *world, int j) {
+	int k = world->candidate_count;
+	while (k > 0 && world->candidates[k - 1] > j)
+		--k;
+	if (k > 0 && world->candidates[k - 1] == j)
+		return;
+	for (int m = world->candidate_count; m > k; --m)
+		world->candidates[m] = world->candidates[m - 1];
+	world->candidates[k] = j;
+	++world->candidate_count;
+}
+
 // §4.3, paper mode: every object interfering with a moved object is translated with it, and so on.
-static void carry_along(hs_world *world, int moved, hs_vec3 d) {
+static void carry_along(hs_world *world, int moved, int current, hs_vec3 d) {
 	if (world->def.stacking != HS_STACKING_PAPER || !(hs_length_sq(d) > 0.0))
 		return;
 	int head = 0, tail = 0;
 	world->queue[tail++] = moved;
 	while (head < tail) {
 		int i = world->queue[head++];
-		for (int j = 0; j < world->object_count; ++j) {
+		const hs_body *moved_body = &world->bodies[i];
+		int n = hs_grid_query(world, moved_body->pos, world->shapes[moved_body->shape].radius, world->near);
+		for (int k = 0; k < n; ++k) {
+			int j = world->near[k];
 			hs_body *b = &world->bodies[j];
 			if (j == moved || b->held || b->carried || !bodies_overlap(world, i, j))
 				continue;
 			b->pos = hs_add(b->pos, d);
 			b->prev = hs_add(b->prev, d); // carried, not thrown: no inertia is gained
 			b->carried = 1;
-			b->asleep = 0;
+			hs_wake(world, j);
 			keep_above_floor(world, b);
+			hs_grid_update(world, j);
 			world->queue[tail++] = j;
+			if (j > current) // it may have come within a hand's reach: look at it this frame
+				add_candidate(world, j);
 		}
 	}
 }
@@ -134,9 +155,22 @@ static void release(hs_body *body) {
 
 void hs_manipulate(hs_world *world) {
 	world->contact_count = 0;
-	for (int i = 0; i < world->object_count; ++i)
-		world->bodies[i].carried = 0;
-	for (int i = 0; i < world->object_count; ++i) {
+	bool skip = world->def.skip_work;
+	// carried or held last frame means awake: only the awake list needs looking at
+	for (int k = 0, n = skip ? world->awake_count : world->object_count; k < n; ++k)
+		world->bodies[skip ? world->awake[k] : k].carried = 0;
+	// the objects a hand may touch, and those held last frame (they may be let go), in index order
+	world->candidate_count = 0;
+	for (int h = 0; h < world->hand_count; ++h) {
+		int n = hs_grid_query(world, world->hands[h].center, world->hands[h].radius, world->near);
+		for (int k = 0; k < n; ++k)
+			add_candidate(world, world->near[k]);
+	}
+	for (int k = 0; k < world->awake_count; ++k)
+		if (world->bodies[world->awake[k]].held)
+			add_candidate(world, world->awake[k]);
+	for (int c = 0; c < world->candidate_count; ++c) {
+		int i = world->candidates[c];
 		hs_body *body = &world->bodies[i];
 		int first = world->contact_count;
 		hs_vec3 old_pos = body->pos;
@@ -195,11 +229,12 @@ void hs_manipulate(hs_world *world) {
 		body->prev = old_pos;
 		body->rot_prev = old_rot;
 		body->held = 1;
-		body->asleep = 0;
+		hs_wake(world, i);
 		body->grounded = 0;
+		hs_grid_update(world, i);
 		if (world->def.stacking == HS_STACKING_SUPPORT)
 			hs_support_wake_neighbours(world, i); // what rested on it or against it looks again
 		else
-			carry_along(world, i, hs_sub(body->pos, old_pos));
+			carry_along(world, i, i, hs_sub(body->pos, old_pos));
 	}
 }

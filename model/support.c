@@ -90,7 +90,9 @@ void hs_support_step(hs_world *world, int object) {
 	double tol = world->def.floor_tolerance;
 	double lift = 0.0;
 	bool touching = false;
-	for (int j = 0; j < world->object_count; ++j) {
+	int near_count = hs_grid_query(world, body->pos, world->shapes[body->shape].radius + tol, world->near);
+	for (int k = 0; k < near_count; ++k) {
+		int j = world->near[k];
 		if (j == object || !near_spheres(world, object, j, tol))
 			continue;
 		const hs_body *other = &world->bodies[j];
@@ -106,9 +108,11 @@ void hs_support_step(hs_world *world, int object) {
 	body->pos.z += lift; // §4.2 rectification, against a support instead of the floor
 	double height_sum = 0.0;
 	int n = 0;
-	for (int j = 0; j < world->object_count; ++j)
+	for (int k = 0; k < near_count; ++k) {
+		int j = world->near[k];
 		if (j != object && near_spheres(world, object, j, tol) && world->bodies[j].pos.z <= body->pos.z)
 			n = support_points(world, body, &world->bodies[j], n, &height_sum);
+	}
 	if (n == 0)
 		return; // near a neighbour but not resting on it
 	body->spin = hs_quat_identity(); // §4.1: no inertia kept after interfering
@@ -128,9 +132,12 @@ void hs_support_step(hs_world *world, int object) {
 }
 
 void hs_support_wake_neighbours(hs_world *world, int object) {
-	for (int j = 0; j < world->object_count; ++j) {
-		hs_body *b = &world->bodies[j];
-		if (j != object && b->asleep && near_spheres(world, object, j, world->def.floor_tolerance))
-			b->asleep = 0;
+	const hs_body *body = &world->bodies[object];
+	double tol = world->def.floor_tolerance;
+	int n = hs_grid_query(world, body->pos, world->shapes[body->shape].radius + tol, world->near);
+	for (int k = 0; k < n; ++k) {
+		int j = world->near[k];
+		if (j != object && world->bodies[j].asleep && near_spheres(world, object, j, tol))
+			hs_wake(world, j);
 	}
 }

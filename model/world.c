@@ -68,7 +68,21 @@ hs_world *hs_world_create(const hs_world_def *def, hs_status *status) {
 	// every check point and line of every hand in up to 4 objects' parts at once
 	world->contact_capacity = (def->max_hands > 0 ? def->max_hands : 1) * (HS_HAND_POINTS + HS_HAND_LINES) * 4;
 	world->contacts = calloc((size_t)world->contact_capacity, sizeof *world->contacts);
-	if (!world->shapes || !world->bodies || !world->queue || !world->hands || !world->contacts) {
+	world->grid_buckets = 16;
+	while ((size_t)world->grid_buckets < 2 * objects)
+		world->grid_buckets *= 2;
+	world->grid_head = calloc((size_t)world->grid_buckets, sizeof *world->grid_head);
+	world->grid_next = calloc(objects, sizeof *world->grid_next);
+	world->grid_bucket = calloc(objects, sizeof *world->grid_bucket);
+	world->grid_ix = calloc(objects, sizeof *world->grid_ix);
+	world->grid_iy = calloc(objects, sizeof *world->grid_iy);
+	world->candidates = calloc(objects, sizeof *world->candidates);
+	world->near = calloc(objects, sizeof *world->near);
+	world->awake = calloc(objects, sizeof *world->awake);
+	world->awake_flag = calloc(objects, sizeof *world->awake_flag);
+	if (!world->shapes || !world->bodies || !world->queue || !world->hands || !world->contacts || !world->grid_head ||
+	    !world->grid_next || !world->grid_bucket || !world->grid_ix || !world->grid_iy || !world->candidates ||
+	    !world->near || !world->awake || !world->awake_flag) {
 		hs_world_destroy(world);
 		set_status(status, HS_ERR_NO_MEMORY);
 		return NULL;
@@ -96,6 +110,15 @@ void hs_world_destroy(hs_world *world) {
 	free(world->queue);
 	free(world->hands);
 	free(world->contacts);
+	free(world->grid_head);
+	free(world->grid_next);
+	free(world->grid_bucket);
+	free(world->grid_ix);
+	free(world->grid_iy);
+	free(world->candidates);
+	free(world->near);
+	free(world->awake);
+	free(world->awake_flag);
 	free(world->scratch_world);
 	free(world->scratch_points);
 	free(world->scratch_hull);
@@ -208,6 +231,8 @@ hs_object_id hs_world_add_object(hs_world *world, const hs_object_def *def, hs_s
 	}
 	set_status(status, HS_OK);
 	hs_object_id id = {(uint32_t)++world->object_count};
+	hs_wake(world, world->object_count - 1); // new objects look at the world once
+	world->grid_dirty = true;
 	return id;
 }
 
@@ -252,16 +277,23 @@ hs_status hs_world_step(hs_world *world) {
 		world->frame++;
 		return HS_OK;
 	}
+	if (world->grid_dirty || world->grid_cell <= 0.0) { // objects were added: file them again
+		hs_grid_build(world);
+		world->grid_dirty = false;
+	}
 	if (world->hand_count > 0) // a scene without hands never runs the hand subsystem
 		hs_manipulate(world);
-	for (int i = 0; i < world->object_count; ++i) {
+	bool skip = world->def.skip_work;
+	int visits = skip ? world->awake_count : world->object_count;
+	if (skip) // the sleeping objects cost nothing (the awake list holds the others, in index order)
+		world->counters.sleeping_skips += world->object_count - world->awake_count;
+	for (int k = 0; k < visits; ++k) {
+		int i = skip ? world->awake[k] : k;
 		hs_body *body = &world->bodies[i];
 		if (body->held || body->carried)
 			continue;
-		if (body->asleep && world->def.skip_work) {
-			world->counters.sleeping_skips++; // resting objects cost nothing until touched
-			continue;
-		}
+		if (body->asleep && skip)
+			continue; // fell asleep this frame: leaves the awake list below
 		hs_body saved = *body;
 		if (!body->asleep && world->def.stacking == HS_STACKING_PAPER && hs_object_interferes(world, i)) {
 			// §4.3: interfering objects not touched by the hand are not affected by gravity and inertia
@@ -278,7 +310,9 @@ hs_status hs_world_step(hs_world *world) {
 			*body = saved;
 			world->counters.numeric_faults++;
 		}
+		hs_grid_update(world, i);
 	}
+	hs_awake_compact(world);
 	for (int h = 0; h < world->hand_count; ++h) { // a hand not set again stays where it is
 		hs_hand *hand = &world->hands[h];
 		memcpy(hand->prev_points, hand->points, sizeof hand->points);
