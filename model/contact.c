@@ -12,8 +12,19 @@
 // 90 deg case (two adjoining cube faces) and two builds could disagree (DESIGN.md).
 #define HS_GRASP_EPS 1e-9
 
-static hs_vec3 to_body(const hs_body *body, hs_vec3 p) { return hs_quat_inv_rotate(body->rot, hs_sub(p, body->pos)); }
-static hs_vec3 to_world(const hs_body *body, hs_vec3 p) { return hs_add(body->pos, hs_quat_rotate(body->rot, p)); }
+// An object's pose as a position and a rotation matrix: detection moves up to 140 hand points
+// into each object's frame every frame.
+typedef struct frame {
+	hs_vec3 pos;
+	hs_mat3 rot;
+} frame;
+
+static frame frame_of(const hs_body *body) {
+	frame f = {body->pos, hs_mat3_from_quat(body->rot)};
+	return f;
+}
+static hs_vec3 to_body(const frame *f, hs_vec3 p) { return hs_mat3_tmul(f->rot, hs_sub(p, f->pos)); }
+static hs_vec3 to_world(const frame *f, hs_vec3 p) { return hs_add(f->pos, hs_mat3_mul(f->rot, p)); }
 
 static bool inside_part(const hs_shape *shape, const hs_part *part, hs_vec3 p) {
 	for (int f = part->first_face; f < part->first_face + part->face_count; ++f)
@@ -107,10 +118,9 @@ static double segment_distance_sq(hs_vec3 c, hs_vec3 p0, hs_vec3 p1) {
 
 // `before` is the object's pose when the fingers were at their previous points: a point's
 // motion is judged relative to the object.
-static void detect_part(hs_world *world, int object, int h, const hs_part *part, const hs_body *before,
-                        bool cull) {
-	const hs_body *body = &world->bodies[object];
-	const hs_shape *shape = &world->shapes[body->shape];
+static void detect_part(hs_world *world, int object, int h, const hs_part *part, const frame *body,
+                        const frame *before, bool cull) {
+	const hs_shape *shape = &world->shapes[world->bodies[object].shape];
 	const hs_hand *hand = &world->hands[h];
 	// a finger part outside the part's bounding sphere cannot touch it: skip before the transform
 	hs_vec3 center = to_world(body, part->center);
@@ -135,7 +145,7 @@ static void detect_part(hs_world *world, int object, int h, const hs_part *part,
 			point = hs_mul_add(b, f->offset - hs_dot(f->normal, b), f->normal);
 		}
 		push_contact(world, object, h, i, false, face, to_world(body, point),
-		             hs_quat_rotate(body->rot, shape->faces[face].normal));
+		             hs_mat3_mul(body->rot, shape->faces[face].normal));
 	}
 	// (B) check lines against edges
 	for (int j = 0; j < HS_HAND_LINES; ++j) {
@@ -152,14 +162,14 @@ static void detect_part(hs_world *world, int object, int h, const hs_part *part,
 			hs_vec3 dir = hs_normalize(hs_sub(eb, ea));
 			hs_vec3 foot = hs_mul_add(ea, -hs_dot(ea, dir), dir); // foot of the perpendicular from G = 0
 			push_contact(world, object, h, HS_HAND_POINTS + j, true, e, to_world(body, point),
-			             hs_quat_rotate(body->rot, hs_normalize(foot)));
+			             hs_mat3_mul(body->rot, hs_normalize(foot)));
 		} else {
 			hs_vec3 mid = hs_lerp(p0, p1, 0.5 * (c.t_in + c.t_out));
 			int face = nearest_face(shape, part, mid);
 			const hs_face *f = &shape->faces[face];
 			hs_vec3 point = hs_mul_add(mid, f->offset - hs_dot(f->normal, mid), f->normal);
 			push_contact(world, object, h, HS_HAND_POINTS + j, false, face, to_world(body, point),
-			             hs_quat_rotate(body->rot, f->normal));
+			             hs_mat3_mul(body->rot, f->normal));
 		}
 	}
 }
@@ -168,6 +178,7 @@ int hs_contact_detect(hs_world *world, int object, const hs_body *before) {
 	int first = world->contact_count;
 	const hs_body *body = &world->bodies[object];
 	const hs_shape *shape = &world->shapes[body->shape];
+	frame now = frame_of(body), then = before ? frame_of(before) : now;
 	for (int h = 0; h < world->hand_count; ++h) {
 		const hs_hand *hand = &world->hands[h];
 		if (world->def.skip_work && !hs_hand_near(world, hand, object))
@@ -176,12 +187,12 @@ int hs_contact_detect(hs_world *world, int object, const hs_body *before) {
 		for (int p = 0; p < shape->part_count; ++p) {
 			const hs_part *part = &shape->parts[p];
 			if (world->def.skip_work) {
-				hs_vec3 c = to_world(body, part->center);
+				hs_vec3 c = to_world(&now, part->center);
 				double r = part->radius + hand->radius;
 				if (hs_length_sq(hs_sub(c, hand->center)) > r * r)
 					continue;
 			}
-			detect_part(world, object, h, part, before ? before : body, world->def.skip_work);
+			detect_part(world, object, h, part, &now, &then, world->def.skip_work);
 		}
 	}
 	return world->contact_count - first;

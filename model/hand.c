@@ -255,13 +255,14 @@ void hs_hand_local_shape(const hs_hand_def *def, const uint8_t sensors[HS_GLOVE_
 void hs_hand_place(const hs_vec3 local_points[HS_HAND_POINTS], const hs_vec3 local_lines[HS_HAND_LINES][2],
                    hs_vec3 wrist_position, hs_quat wrist_orientation, hs_vec3 points[HS_HAND_POINTS],
                    hs_vec3 lines[HS_HAND_LINES][2]) {
+	hs_mat3 m = hs_mat3_from_quat(wrist_orientation); // 140 vectors, one orientation
 	if (points != NULL)
 		for (int i = 0; i < HS_HAND_POINTS; i++)
-			points[i] = hs_add(wrist_position, hs_quat_rotate(wrist_orientation, local_points[i]));
+			points[i] = hs_add(wrist_position, hs_mat3_mul(m, local_points[i]));
 	if (lines != NULL)
 		for (int j = 0; j < HS_HAND_LINES; j++)
 			for (int t = 0; t < 2; t++)
-				lines[j][t] = hs_add(wrist_position, hs_quat_rotate(wrist_orientation, local_lines[j][t]));
+				lines[j][t] = hs_add(wrist_position, hs_mat3_mul(m, local_lines[j][t]));
 }
 
 void hs_hand_kinematics(const hs_hand_def *def, hs_vec3 wrist_position, hs_quat wrist_orientation,

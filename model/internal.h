@@ -49,6 +49,8 @@ typedef struct hs_hand {
 	bool placed; // set at least once: before that its previous points are its current ones
 	// the shape in the wrist frame for `sensors`: recomputed only when the glove reading changes
 	hs_vec3 local_points[HS_HAND_POINTS], local_lines[HS_HAND_LINES][2];
+	hs_vec3 local_center; // its bounding sphere in the wrist frame
+	double local_radius;
 } hs_hand;
 
 // The Responsive Workbench spring model (spring.c, tracker.c): present only in worlds that use it.

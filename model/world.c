@@ -403,6 +403,23 @@ hs_status hs_world_set_hand(hs_world *world, hs_hand_id id, hs_vec3 wrist_positi
 	if (!hand->placed || memcmp(hand->sensors, sensors, sizeof hand->sensors) != 0) {
 		memcpy(hand->sensors, sensors, sizeof hand->sensors); // the glove moved: a new hand shape
 		hs_hand_local_shape(&hand->def, hand->sensors, hand->local_points, hand->local_lines);
+		// bounding sphere about the mean check point, over points and line ends
+		hs_vec3 c = hs_v3(0, 0, 0);
+		for (int i = 0; i < HS_HAND_POINTS; ++i)
+			c = hs_add(c, hand->local_points[i]);
+		c = hs_scale(c, 1.0 / HS_HAND_POINTS);
+		double r_sq = 0.0;
+		for (int j = 0; j < HS_HAND_LINES; ++j)
+			for (int k = 0; k < 2; ++k) {
+				double d = hs_length_sq(hs_sub(hand->local_lines[j][k], c));
+				r_sq = d > r_sq ? d : r_sq;
+			}
+		for (int i = 0; i < HS_HAND_POINTS; ++i) {
+			double d = hs_length_sq(hs_sub(hand->local_points[i], c));
+			r_sq = d > r_sq ? d : r_sq;
+		}
+		hand->local_center = c;
+		hand->local_radius = sqrt(r_sq);
 	}
 	hs_hand_place(hand->local_points, (const hs_vec3(*)[2])hand->local_lines, hand->wrist_pos, hand->wrist_rot,
 	              hand->points, hand->lines);
@@ -411,23 +428,10 @@ hs_status hs_world_set_hand(hs_world *world, hs_hand_id id, hs_vec3 wrist_positi
 		memcpy(hand->prev_lines, hand->lines, sizeof hand->lines);
 		hand->placed = true;
 	}
-	// bounding sphere about the mean check point, over points and line ends
-	hs_vec3 c = hs_v3(0, 0, 0);
-	for (int i = 0; i < HS_HAND_POINTS; ++i)
-		c = hs_add(c, hand->points[i]);
-	c = hs_scale(c, 1.0 / HS_HAND_POINTS);
-	double r_sq = 0.0;
-	for (int j = 0; j < HS_HAND_LINES; ++j)
-		for (int k = 0; k < 2; ++k) {
-			double d = hs_length_sq(hs_sub(hand->lines[j][k], c));
-			r_sq = d > r_sq ? d : r_sq;
-		}
-	for (int i = 0; i < HS_HAND_POINTS; ++i) {
-		double d = hs_length_sq(hs_sub(hand->points[i], c));
-		r_sq = d > r_sq ? d : r_sq;
-	}
-	hand->center = c;
-	hand->radius = sqrt(r_sq);
+	// the bounding sphere, kept in the wrist frame with the shape; grown by a micrometre so the
+	// rounding of the placement can never leave a check point outside it
+	hand->center = hs_add(hand->wrist_pos, hs_quat_rotate(hand->wrist_rot, hand->local_center));
+	hand->radius = hand->local_radius + 1e-6;
 	return HS_OK;
 }
 
