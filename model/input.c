@@ -38,8 +38,18 @@ void hs_hand_script_sample(const hs_hand_script *script, double t, hs_vec3 *wris
 	}
 }
 
+const char *hs_shown_path(const char *path, char buf[HS_SHOWN_PATH + 4]) {
+	size_t n = strlen(path);
+	if (n <= HS_SHOWN_PATH)
+		return path;
+	memcpy(buf, "...", 3);
+	memcpy(buf + 3, path + n - HS_SHOWN_PATH, HS_SHOWN_PATH + 1);
+	return buf;
+}
+
 static bool record_error(hs_error *err, const char *path, long line, const char *what) {
-	snprintf(err->message, sizeof err->message, "%s:%ld: %s", path, line, what);
+	char shown[HS_SHOWN_PATH + 4];
+	snprintf(err->message, sizeof err->message, "%s:%ld: %s", hs_shown_path(path, shown), line, what);
 	return false;
 }
 
@@ -122,6 +132,13 @@ bool hs_record_load(const char *path, const char *shown_path, hs_hand_script *sc
 			ok = record_error(err, shown_path, number, what);
 			break;
 		}
+		for (int c = 1; c <= 3 && ok; ++c)
+			if (!(fabs(v[c]) <= 1000.0)) { // what the scenario accepts for a wrist (HS_MAX_COORDINATE is the API's)
+				snprintf(what, sizeof what, "column %d (position) must be within [-1000, 1000] m, got %.17g", c + 1, v[c]);
+				ok = record_error(err, shown_path, number, what);
+			}
+		if (!ok)
+			break;
 		hs_quat q = hs_q(v[4], v[5], v[6], v[7]);
 		double norm = sqrt(hs_quat_dot(q, q));
 		if (fabs(norm - 1.0) > 1e-3) {

@@ -169,6 +169,11 @@ bool hs_object_interferes(hs_world *world, int object);
 // True when the object's bounding sphere overlaps the hand's.
 bool hs_hand_near(const hs_world *world, const hs_hand *hand, int object);
 
+// A path as error messages show it: at most HS_SHOWN_PATH bytes, longer ones as "..." and their
+// end, so the line and the reason always fit in an hs_error. Returns path or buf.
+#define HS_SHOWN_PATH 200
+const char *hs_shown_path(const char *path, char buf[HS_SHOWN_PATH + 4]);
+
 // input.c — hand input scripts: keyframes or a recorded glove+tracker file, sampled per frame
 
 typedef struct hs_hand_key {

@@ -201,7 +201,8 @@ typedef struct parser {
 } parser;
 
 static void vset_error(hs_error *err, const char *path, unsigned long line, const char *fmt, va_list ap) {
-	int n = snprintf(err->message, sizeof err->message, "%s:%lu: ", path, line);
+	char shown[HS_SHOWN_PATH + 4];
+	int n = snprintf(err->message, sizeof err->message, "%s:%lu: ", hs_shown_path(path, shown), line);
 	if (n >= 0 && (size_t)n < sizeof err->message)
 		vsnprintf(err->message + n, sizeof err->message - (size_t)n, fmt, ap);
 }
