@@ -89,16 +89,6 @@ static int grasping_hand(const hs_world *world, const hs_body *body, const hs_co
 	return best;
 }
 
-// §4.2 rectification for an object the hand pushed into the floor.
-static void keep_above_floor(hs_world *world, hs_body *body) {
-	double zmin = hs_motion_pose_vertices(world, body);
-	if (zmin < 0.0) {
-		body->pos.z -= zmin;
-		hs_motion_pose_vertices(world, body);
-	}
-	body->floor_contacts = hs_motion_floor_points(world, body); // the trajectory shows it while held
-}
-
 // Adds object j to the sorted candidates of this frame's hand pass, once.
 static void add_candidate(hs_world *world, int j) {
 	int k = world->candidate_count;
@@ -131,7 +121,7 @@ static void carry_along(hs_world *world, int moved, int current, hs_vec3 d) {
 			b->prev = hs_add(b->prev, d); // carried, not thrown: no inertia is gained
 			b->carried = 1;
 			hs_wake(world, j);
-			keep_above_floor(world, b);
+			hs_motion_keep_above_floor(world, b);
 			hs_grid_update(world, j);
 			world->queue[tail++] = j;
 			if (j > current) // it may have come within a hand's reach: look at it this frame
@@ -225,7 +215,7 @@ void hs_manipulate(hs_world *world) {
 				sum = hs_add(sum, part_displacement(&world->hands[cs[k].hand.index1 - 1], &cs[k]));
 			body->pos = hs_add(body->pos, hs_scale(sum, 1.0 / n));
 		}
-		keep_above_floor(world, body);
+		hs_motion_keep_above_floor(world, body); // §4.2 for a pushed object; the trajectory shows its floor contacts
 		body->prev = old_pos;
 		body->rot_prev = old_rot;
 		body->held = 1;

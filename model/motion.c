@@ -47,6 +47,11 @@ static void rectify(hs_world *world, hs_body *body, double zmin) {
 		world->scratch_world[i].z -= zmin;
 }
 
+void hs_motion_keep_above_floor(hs_world *world, hs_body *body) {
+	rectify(world, body, hs_motion_pose_vertices(world, body));
+	body->floor_contacts = hs_motion_floor_points(world, body);
+}
+
 static void stop(hs_body *body) {
 	body->prev = body->pos;
 	body->spin = hs_quat_identity();

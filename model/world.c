@@ -296,7 +296,9 @@ hs_status hs_world_step(hs_world *world) {
 			continue; // fell asleep this frame: leaves the awake list below
 		hs_body saved = *body;
 		if (!body->asleep && world->def.stacking == HS_STACKING_PAPER && hs_object_interferes(world, i)) {
-			// §4.3: interfering objects not touched by the hand are not affected by gravity and inertia
+			// §4.3: interfering objects not touched by the hand are not affected by gravity and inertia;
+			// the floor still holds them up (§4.2)
+			hs_motion_keep_above_floor(world, body);
 			body->prev = body->pos;
 			body->spin = hs_quat_identity();
 			body->asleep = 1;
