@@ -91,6 +91,7 @@ struct hs_spring_system {
 	body_geom *geom;
 	uint8_t *on_floor;
 	uint8_t *sliding;
+	uint8_t *separated; // pushed apart from a neighbour this frame: moved without a velocity
 	hs_vec3 *saved_pos; // frame-start state for the numeric guard
 	hs_vec3 *saved_vel;
 	// the stylus: pose at the end of the coming frame and at its start
@@ -478,7 +479,26 @@ static void step_body(const frame_ctx *fx, int i) {
 	}
 	if (!on_floor) { // in the air: gravity and the spring
 		sg.accel = fx->gravity;
-		integrate(integrator, &sg, p, v, dt, &p, &v);
+		// the linearisation holds the spring's direction for a whole step: with omega dt large the
+		// object would fall across it unrestrained and gain energy. Sub-steps of omega h <= 0.5,
+		// each linearised again, keep it a spring (one step when omega dt <= 0.5). The explicit
+		// schemes keep their single step: they are the benchmark's unstable comparison.
+		bool stable = integrator == HS_INTEGRATOR_EXACT || integrator == HS_INTEGRATOR_IMPLICIT_EULER;
+		int steps = attached && stable ? (int)ceil(sp.omega * dt / 0.5) : 1;
+		steps = steps < 1 ? 1 : (steps > 256 ? 256 : steps);
+		double h = dt / steps;
+		for (int k = 0; k < steps; ++k) {
+			if (k > 0) {
+				sg.s0 = hs_mul_add(sys->stylus_prev, (double)k * h, sys->stylus_velocity);
+				hs_vec3 d = hs_sub(p, sg.s0);
+				double len = hs_length(d);
+				if (len > 1e-9 * sp.x0)
+					sys->axis = hs_scale(d, 1.0 / len);
+				sg.axis = sys->axis;
+				sg.omega_t = len > sp.x0 ? sp.omega * sqrt(1.0 - sp.x0 / len) : 0.0;
+			}
+			integrate(integrator, &sg, p, v, h, &p, &v);
+		}
 		if (p.z < floor_z) { // landed: the ground absorbs the normal velocity (§4.4 drop)
 			p.z = floor_z;
 			if (v.z < 0.0)
@@ -579,6 +599,7 @@ static void collide_pairs(hs_world *world, hs_spring_system *sys) {
 			// separate in inverse-mass shares (velocities untouched: momentum stays exact)
 			a->pos = hs_mul_add(a->pos, -depth * wa / wsum, n);
 			b->pos = hs_mul_add(b->pos, depth * wb / wsum, n);
+			sys->separated[i] = sys->separated[j] = 1;
 		}
 	}
 }
@@ -770,6 +791,7 @@ void hs_spring_step(hs_world *world) {
 	}
 	for (int i = 0; i < n; ++i)
 		step_body(&fx, i);
+	memset(sys->separated, 0, (size_t)n);
 	collide_pairs(world, sys);
 	for (int i = 0; i < n; ++i) { // separation may have pushed an object through the floor or a wall
 		hs_body *body = &world->bodies[i];
@@ -800,7 +822,7 @@ void hs_spring_step(hs_world *world) {
 		body->prev = sys->saved_pos[i];
 		bool still = body->vel.x == 0.0 && body->vel.y == 0.0 && body->vel.z == 0.0;
 		body->grounded = sys->on_floor[i];
-		body->asleep = sys->on_floor[i] && still && i != sys->attached;
+		body->asleep = sys->on_floor[i] && still && !sys->separated[i] && i != sys->attached;
 		body->contact = (uint8_t)(i == sys->attached ? HS_CONTACT_GRASP : HS_CONTACT_NONE);
 		body->floor_contacts = sys->on_floor[i] ? floor_contacts(world, sys, i) : 0;
 	}
@@ -820,6 +842,7 @@ void hs_spring_system_destroy(hs_spring_system *system) {
 	free(system->geom);
 	free(system->on_floor);
 	free(system->sliding);
+	free(system->separated);
 	free(system->saved_pos);
 	free(system->saved_vel);
 	free(system);
@@ -835,6 +858,7 @@ hs_status hs_world_enable_springs(hs_world *world, const hs_spring_def *def) {
 	sys->geom = calloc(cap, sizeof *sys->geom);
 	sys->on_floor = calloc(cap, sizeof *sys->on_floor);
 	sys->sliding = calloc(cap, sizeof *sys->sliding);
+	sys->separated = calloc(cap, sizeof *sys->separated);
 	sys->saved_pos = calloc(cap, sizeof *sys->saved_pos);
 	sys->saved_vel = calloc(cap, sizeof *sys->saved_vel);
 	if (def->noise) {
@@ -842,7 +866,7 @@ hs_status hs_world_enable_springs(hs_world *world, const hs_spring_def *def) {
 		if (sys->rng)
 			gsl_rng_set(sys->rng, def->noise_seed);
 	}
-	if (!sys->geom || !sys->on_floor || !sys->sliding || !sys->saved_pos || !sys->saved_vel ||
+	if (!sys->geom || !sys->on_floor || !sys->sliding || !sys->separated || !sys->saved_pos || !sys->saved_vel ||
 	    (def->noise && !sys->rng)) {
 		hs_spring_system_destroy(sys);
 		return HS_ERR_NO_MEMORY;
