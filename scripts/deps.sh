@@ -1,7 +1,9 @@
 #!/bin/sh
 # Installs what handspring needs, when it is missing: Debian packages through apt-get as root,
-# otherwise the exact command to run. `deps.sh bench` adds the benchmark peers (ODE, MuJoCo);
-# `deps.sh fuzz` adds clang and its runtime for libFuzzer.
+# otherwise the exact command to run. clang is a base package: `make check` builds the tool with
+# gcc and clang and compares them (the determinism pair). `deps.sh bench` adds the benchmark peers
+# (ODE, MuJoCo); `deps.sh fuzz` adds the compiler-rt runtime that holds libFuzzer; `deps.sh
+# valgrind` adds valgrind (make valgrind, make determinism).
 set -eu
 
 need=""
@@ -14,6 +16,7 @@ has_file /usr/include/ccd/ccd.h || need="$need libccd-dev"
 has_file /usr/include/gsl/gsl_odeiv2.h || need="$need libgsl-dev"
 has_file /usr/include/yaml.h || need="$need libyaml-dev"
 has_cmd gnuplot || need="$need gnuplot-nox"
+has_cmd clang || need="$need clang"
 
 for extra in "$@"; do
 	case "$extra" in
@@ -22,9 +25,18 @@ for extra in "$@"; do
 		has_file /usr/include/mujoco/mujoco.h || need="$need libmujoco-dev"
 		;;
 	fuzz)
-		has_cmd clang || need="$need clang"
-		ls /usr/lib/llvm-*/lib/clang/*/lib/linux/libclang_rt.fuzzer-x86_64.a >/dev/null 2>&1 ||
-			need="$need libclang-rt-dev"
+		# libFuzzer ships in compiler-rt, packaged per LLVM version: libclang-rt-14-dev on
+		# Debian 12 (clang 14). Ask for the one matching the installed clang; 14 before clang is in.
+		major=14
+		if has_cmd clang; then
+			major=$(clang -dumpversion 2>/dev/null | cut -d. -f1)
+			case "$major" in '' | *[!0-9]*) major=14 ;; esac
+		fi
+		ls /usr/lib/llvm-"$major"/lib/clang/*/lib/linux/libclang_rt.fuzzer-x86_64.a >/dev/null 2>&1 ||
+			need="$need libclang-rt-$major-dev"
+		;;
+	valgrind)
+		has_cmd valgrind || need="$need valgrind"
 		;;
 	esac
 done

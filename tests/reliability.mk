@@ -1,0 +1,98 @@
+# tests/reliability.mk — reliability targets (issue 6), included by the Makefile.
+#
+#   make stress          numerical stress: every case in full (the 1,000,000-frame soak included)
+#   make fuzz            libFuzzer on the scenario loader and the recorded-input reader,
+#                        FUZZ_SECONDS (default 60) each; findings in $(BUILD)/fuzz/artifacts
+#   make determinism     gcc and clang at -O0/-O2/-O3 plus the sanitizer builds run the catalog:
+#                        per-frame hashes must agree; then valgrind on the catalog
+#   make valgrind        valgrind on the catalog run and the bad-input corpus (slow: not in check)
+#   make check-reliability   (run by `make check`) the stress subset and the determinism
+#                        pair gcc -O0 / gcc -O2 / clang -O2
+#
+# Uses the Makefile's $(BUILD), $(CC), $(LDFLAGS), $(LDLIBS_ALL), $(LIB), $(LIB_SRC) and, for the
+# fuzz build, $(WARN), $(FP) and $(PKG_CFLAGS).
+
+.PHONY: stress-bin fuzz-bin fuzz-deps valgrind
+
+STRESS := $(BUILD)/stress
+
+$(STRESS): $(BUILD)/obj/tests/stress.o $(LIB)
+	$(CC) $(LDFLAGS) -o $@ $^ $(LDLIBS_ALL)
+
+stress-bin: $(STRESS)
+
+stress: $(STRESS)
+	$(STRESS) --full
+
+# the subset: every case, fewer frames (well under 30 s), then the compiler pair
+check-reliability:: $(STRESS)
+	@status=0; $(STRESS) --quick || status=1; \
+	BUILD=$(BUILD) sh scripts/determinism.sh --pair || status=1; exit $$status
+
+determinism:
+	@BUILD=$(BUILD) sh scripts/determinism.sh --full
+	@$(MAKE) --no-print-directory valgrind
+
+# ---------------------------------------------------------------------------------------------
+# valgrind: the catalog run and every bad input, on an -O2 -g build of its own
+
+VALGRIND_BUILD := $(BUILD)/det/gcc-O2
+VALGRIND := valgrind --quiet --error-exitcode=1 --leak-check=full --show-leak-kinds=all \
+	--errors-for-leak-kinds=all --track-origins=yes
+
+valgrind:
+	@sh scripts/deps.sh valgrind
+	@$(MAKE) --no-print-directory BUILD=$(VALGRIND_BUILD) CC=gcc OPT=-O2 SANITIZE=0 all
+	@echo "valgrind: the catalog (handspring all --dir scenarios)"
+	@rm -rf $(VALGRIND_BUILD)/vg && mkdir -p $(VALGRIND_BUILD)/vg
+	@$(VALGRIND) $(VALGRIND_BUILD)/handspring all --dir scenarios --out-dir $(VALGRIND_BUILD)/vg/traj \
+		> $(VALGRIND_BUILD)/vg/catalog.txt 2> $(VALGRIND_BUILD)/vg/catalog.err; \
+	rc=$$?; if [ $$rc -gt 1 ] || [ -s $(VALGRIND_BUILD)/vg/catalog.err ]; then \
+		cat $(VALGRIND_BUILD)/vg/catalog.err; echo "valgrind: the catalog run reported errors (status $$rc)"; exit 1; fi
+	@echo "valgrind: every tests/bad/*.yaml (exit status 2, one line, no error, no leak)"
+	@n=0; for f in tests/bad/*.yaml; do \
+		$(VALGRIND) $(VALGRIND_BUILD)/handspring run $$f > /dev/null 2> $(VALGRIND_BUILD)/vg/bad.err; rc=$$?; \
+		if [ $$rc -ne 2 ] || [ "$$(wc -l < $(VALGRIND_BUILD)/vg/bad.err)" -ne 1 ]; then \
+			cat $(VALGRIND_BUILD)/vg/bad.err; echo "valgrind: $$f: status $$rc"; exit 1; fi; \
+		n=$$((n + 1)); done; echo "valgrind: clean (catalog and $$n bad inputs)"
+
+# ---------------------------------------------------------------------------------------------
+# libFuzzer (clang): the model built again with coverage, ASan and UBSan
+
+FUZZ_SECONDS ?= 60
+FUZZ_CC      ?= clang
+FUZZ_DIR     := $(BUILD)/fuzz
+FUZZ_SAN     := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
+FUZZ_CFLAGS   = -std=c11 -D_POSIX_C_SOURCE=200809L -O1 -g $(WARN) $(FP) -Imodel -Itests/fuzz $(PKG_CFLAGS) $(FUZZ_SAN)
+FUZZ_LIB_OBJ := $(LIB_SRC:%.c=$(FUZZ_DIR)/obj/%.o)
+FUZZ_TARGETS := $(FUZZ_DIR)/fuzz_scenario $(FUZZ_DIR)/fuzz_record
+FUZZ_OPTIONS := -timeout=20 -rss_limit_mb=4096 -max_len=16384 -print_final_stats=1
+
+fuzz-deps:
+	@sh scripts/deps.sh fuzz
+
+$(FUZZ_DIR)/obj/%.o: %.c $(wildcard model/*.h) tests/fuzz/fuzz_common.h | fuzz-deps
+	@mkdir -p $(dir $@)
+	$(FUZZ_CC) $(FUZZ_CFLAGS) -fsanitize=fuzzer-no-link -c $< -o $@
+
+$(FUZZ_DIR)/fuzz_%: $(FUZZ_DIR)/obj/tests/fuzz/fuzz_%.o $(FUZZ_LIB_OBJ)
+	$(FUZZ_CC) -fsanitize=fuzzer $(FUZZ_SAN) -o $@ $^ $(LDLIBS_ALL)
+
+fuzz-bin: $(FUZZ_TARGETS)
+
+# keep the objects between runs (they are intermediate files of the pattern rules)
+.SECONDARY: $(FUZZ_LIB_OBJ) $(FUZZ_TARGETS:$(FUZZ_DIR)/%=$(FUZZ_DIR)/obj/tests/fuzz/%.o)
+
+# Seeds: the catalog, the hostile corpus, tests/fuzz/seeds (valid files with hands, records and
+# support stacking) and the saved reproducers; new inputs are kept in $(FUZZ_DIR)/corpus, crashes
+# go to $(FUZZ_DIR)/artifacts (save them under tests/fuzz/crashes).
+fuzz: $(FUZZ_TARGETS)
+	@mkdir -p $(FUZZ_DIR)/corpus/scenario $(FUZZ_DIR)/corpus/record $(FUZZ_DIR)/artifacts
+	@echo "fuzz: the scenario loader for $(FUZZ_SECONDS) s"
+	$(FUZZ_DIR)/fuzz_scenario $(FUZZ_OPTIONS) -max_total_time=$(FUZZ_SECONDS) \
+		-dict=tests/fuzz/scenario.dict -artifact_prefix=$(FUZZ_DIR)/artifacts/scenario- \
+		$(FUZZ_DIR)/corpus/scenario scenarios tests/bad tests/fuzz/seeds tests/fuzz/crashes
+	@echo "fuzz: the recorded-input reader for $(FUZZ_SECONDS) s"
+	$(FUZZ_DIR)/fuzz_record $(FUZZ_OPTIONS) -max_total_time=$(FUZZ_SECONDS) \
+		-dict=tests/fuzz/record.dict -artifact_prefix=$(FUZZ_DIR)/artifacts/record- \
+		$(FUZZ_DIR)/corpus/record tests/bad tests/fuzz/seeds tests/fuzz/crashes
