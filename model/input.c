@@ -1,5 +1,6 @@
 // input.c — hand input scripts (keyframes or a recorded glove+tracker file) sampled per frame.
 #include <errno.h>
+#include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
@@ -47,34 +48,52 @@ const char *hs_shown_path(const char *path, char buf[HS_SHOWN_PATH + 4]) {
 	return buf;
 }
 
-static bool record_error(hs_error *err, const char *path, long line, const char *what) {
+static const char *const RECORD_HEADER = "t,x,y,z,qw,qx,qy,qz,s0,s1,s2,s3,s4,s5,s6,s7,s8,s9,s10,s11,s12,s13,s14,s15,s16,s17";
+
+HS_PRINTF(4, 5)
+static bool record_error(hs_error *err, const char *path, long line, const char *fmt, ...) {
 	char shown[HS_SHOWN_PATH + 4];
-	snprintf(err->message, sizeof err->message, "%s:%ld: %s", hs_shown_path(path, shown), line, what);
+	int n = snprintf(err->message, sizeof err->message, "%s:%ld: ", hs_shown_path(path, shown), line);
+	va_list ap;
+	va_start(ap, fmt);
+	if (n >= 0 && (size_t)n < sizeof err->message)
+		vsnprintf(err->message + n, sizeof err->message - (size_t)n, fmt, ap);
+	va_end(ap);
 	return false;
 }
 
-static const char *const RECORD_HEADER = "t,x,y,z,qw,qx,qy,qz,s0,s1,s2,s3,s4,s5,s6,s7,s8,s9,s10,s11,s12,s13,s14,s15,s16,s17";
+void hs_record_rows_free(hs_record_rows *rows) {
+	free(rows->values);
+	free(rows->lines);
+	rows->values = NULL;
+	rows->lines = NULL;
+	rows->count = 0;
+}
 
-// One CSV field as a finite number; `end` is where it stopped.
-static bool read_field(const char **cursor, double *out) {
-	const char *s = *cursor;
-	if (*s == ',' || *s == '\0' || *s == ' ' || *s == '\t')
-		return false;
-	char *end = NULL;
-	errno = 0;
-	double v = strtod(s, &end);
-	if (end == s || errno == ERANGE || !isfinite(v))
-		return false;
-	if (*end != ',' && *end != '\0')
-		return false;
-	*out = v;
-	*cursor = *end == ',' ? end + 1 : end;
+// Parses one line's `columns` comma-separated numbers into v.
+static bool read_row(const char *line, const char *path, long number, const char *shown, int columns, double *v,
+                     hs_error *err) {
+	const char *cursor = line;
+	for (int k = 0; k < columns; ++k) {
+		size_t n = strcspn(cursor, ",");
+		hs_number_kind kind = hs_parse_number(cursor, n, &v[k]);
+		if (kind == HS_NUMBER_NOT_FINITE)
+			return record_error(err, path, number, "column %d must be finite, got %.*s", k + 1, n > 40 ? 40 : (int)n,
+			                    cursor);
+		if (kind != HS_NUMBER_OK)
+			return record_error(err, path, number, "expected %d numbers (%s), column %d is %s", columns, shown, k + 1,
+			                    n == 0 ? "empty or missing" : "not a number");
+		if ((k < columns - 1 && cursor[n] != ',') || (k == columns - 1 && cursor[n] != '\0'))
+			return record_error(err, path, number, "expected %d numbers (%s), got %s", columns, shown,
+			                    k < columns - 1 ? "fewer" : "more");
+		cursor += n + (cursor[n] == ',');
+	}
 	return true;
 }
 
-bool hs_record_load(const char *path, const char *shown_path, hs_hand_script *script, hs_error *err) {
-	script->key_count = 0;
-	script->keys = NULL;
+bool hs_record_read(const char *path, const char *what, const char *header, const char *shown, int columns,
+                    long max_rows, hs_record_rows *rows, hs_error *err) {
+	memset(rows, 0, sizeof *rows);
 	FILE *in = fopen(path, "rb");
 	struct stat st;
 	if (in && fstat(fileno(in), &st) == 0 && S_ISDIR(st.st_mode)) { // fopen accepts a directory
@@ -82,102 +101,106 @@ bool hs_record_load(const char *path, const char *shown_path, hs_hand_script *sc
 		in = NULL;
 		errno = EISDIR;
 	}
-	if (!in) {
-		char what[256];
-		snprintf(what, sizeof what, "cannot read recorded input: %s", strerror(errno));
-		return record_error(err, shown_path, 1, what);
-	}
+	if (!in)
+		return record_error(err, path, 1, "cannot read %s: %s", what, strerror(errno));
 	char *line = NULL;
 	size_t cap = 0;
 	long number = 0, capacity = 0;
 	bool ok = true;
 	ssize_t len;
+	double v[64];
 	while (ok && (len = getline(&line, &cap, in)) >= 0) {
 		++number;
 		if ((size_t)len != strlen(line)) {
-			ok = record_error(err, shown_path, number, "not a text file (NUL byte)");
+			ok = record_error(err, path, number, "not a text file (NUL byte)");
 			break;
 		}
 		while (len > 0 && (line[len - 1] == '\n' || line[len - 1] == '\r'))
 			line[--len] = '\0';
 		if (number == 1) {
-			if (strcmp(line, RECORD_HEADER) != 0)
-				ok = record_error(err, shown_path, 1, "the header must be t,x,y,z,qw,qx,qy,qz,s0,...,s17");
+			if (strcmp(line, header) != 0)
+				ok = record_error(err, path, 1, "the header must be %s", shown);
 			continue;
 		}
 		if (len == 0 || line[0] == '#')
 			continue;
-		if (script->key_count >= MAX_RECORD_ROWS) {
-			ok = record_error(err, shown_path, number, "more than 10000000 samples");
+		if (rows->count >= max_rows) {
+			ok = record_error(err, path, number, "more than %ld samples", max_rows);
 			break;
 		}
-		double v[8 + HS_GLOVE_SENSORS];
-		const char *cursor = line;
-		int k = 0;
-		for (; k < 8 + HS_GLOVE_SENSORS; ++k) {
-			if (!read_field(&cursor, &v[k]))
-				break;
-			if (k < 8 + HS_GLOVE_SENSORS - 1 && cursor[-1] != ',')
-				break;
-		}
-		char what[160];
-		if (k < 8 + HS_GLOVE_SENSORS || *cursor != '\0') {
-			snprintf(what, sizeof what, "expected 26 finite numbers (t,x,y,z,qw,qx,qy,qz,s0..s17), column %d is not", k + 1);
-			ok = record_error(err, shown_path, number, what);
+		if (!read_row(line, path, number, shown, columns, v, err)) {
+			ok = false;
 			break;
 		}
-		if (script->key_count > 0 && !(v[0] > script->keys[script->key_count - 1].t)) {
-			snprintf(what, sizeof what, "time %.17g does not increase (previous sample at %.17g)", v[0],
-			         script->keys[script->key_count - 1].t);
-			ok = record_error(err, shown_path, number, what);
+		if (rows->count > 0 && !(v[0] > rows->values[(rows->count - 1) * columns])) {
+			ok = record_error(err, path, number, "time %.17g does not increase (previous sample at %.17g)", v[0],
+			                  rows->values[(rows->count - 1) * columns]);
 			break;
 		}
-		for (int c = 1; c <= 3 && ok; ++c)
-			if (!(fabs(v[c]) <= 1000.0)) { // what the scenario accepts for a wrist (HS_MAX_COORDINATE is the API's)
-				snprintf(what, sizeof what, "column %d (position) must be within [-1000, 1000] m, got %.17g", c + 1, v[c]);
-				ok = record_error(err, shown_path, number, what);
-			}
+		for (int k = 1; ok && k < 4; ++k) // a hand within reach of the table: no overflow downstream
+			if (!(fabs(v[k]) <= 1000.0))
+				ok = record_error(err, path, number, "column %d (position) must be within [-1000, 1000] m, got %.17g",
+				                  k + 1, v[k]);
+		double norm = sqrt(v[4] * v[4] + v[5] * v[5] + v[6] * v[6] + v[7] * v[7]);
+		if (ok && !(fabs(norm - 1.0) <= 1e-3))
+			ok = record_error(err, path, number, "orientation is not a unit quaternion (norm %.6g)", norm);
 		if (!ok)
 			break;
-		hs_quat q = hs_q(v[4], v[5], v[6], v[7]);
-		double norm = sqrt(hs_quat_dot(q, q));
-		if (fabs(norm - 1.0) > 1e-3) {
-			snprintf(what, sizeof what, "orientation is not a unit quaternion (norm %.6g)", norm);
-			ok = record_error(err, shown_path, number, what);
-			break;
-		}
-		for (int i = 0; i < HS_GLOVE_SENSORS && ok; ++i)
-			if (v[8 + i] < 0 || v[8 + i] > 255 || v[8 + i] != floor(v[8 + i])) {
-				snprintf(what, sizeof what, "sensor s%d must be an integer from 0 to 255, got %.17g", i, v[8 + i]);
-				ok = record_error(err, shown_path, number, what);
-			}
-		if (!ok)
-			break;
-		if (script->key_count == capacity) { // loading, not stepping: growing here is fine
+		if (rows->count == capacity) { // loading, not stepping: growing here is fine
 			long grown = capacity ? capacity * 2 : 256;
-			hs_hand_key *keys = realloc(script->keys, (size_t)grown * sizeof *keys);
-			if (!keys) {
-				ok = record_error(err, shown_path, number, "out of memory");
+			double *values = realloc(rows->values, (size_t)grown * (size_t)columns * sizeof *values);
+			if (values)
+				rows->values = values;
+			long *lines = realloc(rows->lines, (size_t)grown * sizeof *lines);
+			if (lines)
+				rows->lines = lines;
+			if (!values || !lines) {
+				ok = record_error(err, path, number, "out of memory");
 				break;
 			}
-			script->keys = keys;
 			capacity = grown;
 		}
+		memcpy(&rows->values[rows->count * columns], v, (size_t)columns * sizeof *v);
+		rows->lines[rows->count++] = number;
+	}
+	if (ok && ferror(in))
+		ok = record_error(err, path, number > 0 ? number : 1, "cannot read %s: read error", what);
+	if (ok && number == 0)
+		ok = record_error(err, path, 1, "empty %s: the header %s is missing", what, shown);
+	else if (ok && rows->count == 0)
+		ok = record_error(err, path, number, "%s has a header but no samples", what);
+	free(line);
+	fclose(in);
+	if (!ok)
+		hs_record_rows_free(rows);
+	return ok;
+}
+
+bool hs_record_load(const char *path, hs_hand_script *script, hs_error *err) {
+	script->key_count = 0;
+	script->keys = NULL;
+	hs_record_rows rows;
+	if (!hs_record_read(path, "recorded input", RECORD_HEADER, "t,x,y,z,qw,qx,qy,qz,s0,...,s17", 8 + HS_GLOVE_SENSORS,
+	                    MAX_RECORD_ROWS, &rows, err))
+		return false;
+	script->keys = calloc((size_t)rows.count, sizeof *script->keys);
+	bool ok = script->keys != NULL || record_error(err, path, 1, "out of memory");
+	for (long r = 0; ok && r < rows.count; ++r) {
+		const double *v = &rows.values[r * (8 + HS_GLOVE_SENSORS)];
+		for (int i = 0; i < HS_GLOVE_SENSORS && ok; ++i)
+			if (v[8 + i] < 0 || v[8 + i] > 255 || v[8 + i] != floor(v[8 + i]))
+				ok = record_error(err, path, rows.lines[r], "sensor s%d must be an integer from 0 to 255, got %.17g", i,
+				                  v[8 + i]);
+		if (!ok)
+			break;
 		hs_hand_key *key = &script->keys[script->key_count++];
 		key->t = v[0];
 		key->wrist = hs_v3(v[1], v[2], v[3]);
-		key->rot = hs_quat_normalize(q);
+		key->rot = hs_quat_normalize(hs_q(v[4], v[5], v[6], v[7]));
 		for (int i = 0; i < HS_GLOVE_SENSORS; ++i)
 			key->sensors[i] = v[8 + i];
 	}
-	if (ok && ferror(in))
-		ok = record_error(err, shown_path, number > 0 ? number : 1, "cannot read recorded input: read error");
-	if (ok && number == 0)
-		ok = record_error(err, shown_path, 1, "empty recorded input: the header t,x,y,z,qw,qx,qy,qz,s0,...,s17 is missing");
-	else if (ok && script->key_count == 0)
-		ok = record_error(err, shown_path, number, "recorded input has a header but no samples");
-	free(line);
-	fclose(in);
+	hs_record_rows_free(&rows);
 	if (!ok) {
 		free(script->keys);
 		script->keys = NULL;

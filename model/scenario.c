@@ -16,11 +16,6 @@
 
 #include "internal.h"
 
-#if defined(__GNUC__)
-#define HS_PRINTF(f, a) __attribute__((format(printf, f, a)))
-#else
-#define HS_PRINTF(f, a)
-#endif
 
 enum {
 	MAX_OBJECTS = 100000,       // objects per scenario
@@ -339,32 +334,30 @@ static bool is_non_finite_word(const char *s, size_t n) {
 	return false;
 }
 
-typedef enum number_kind { NUMBER_OK, NUMBER_SYNTAX, NUMBER_NOT_FINITE } number_kind;
-
-static number_kind parse_number_text(const char *s, size_t n, double *out) {
+hs_number_kind hs_parse_number(const char *s, size_t n, double *out) {
 	if (is_non_finite_word(s, n))
-		return NUMBER_NOT_FINITE;
+		return HS_NUMBER_NOT_FINITE;
 	if (!is_decimal(s, n) || n > 200)
-		return NUMBER_SYNTAX;
+		return HS_NUMBER_SYNTAX;
 	char buf[208];
 	memcpy(buf, s, n);
 	buf[n] = '\0';
 	double v = strtod(buf, NULL); // underflow to 0 or a subnormal is fine; ranges are checked later
 	if (!isfinite(v))
-		return NUMBER_NOT_FINITE;
+		return HS_NUMBER_NOT_FINITE;
 	*out = v;
-	return NUMBER_OK;
+	return HS_NUMBER_OK;
 }
 
 static bool read_number(parser *p, const yaml_node_t *node, const char *key, double *out) {
 	if (!is_scalar(node))
 		return fail(p, node, "'%s' must be a number, got %s", key, got(node).text);
-	switch (parse_number_text(scalar(node), node->data.scalar.length, out)) {
-	case NUMBER_OK:
+	switch (hs_parse_number(scalar(node), node->data.scalar.length, out)) {
+	case HS_NUMBER_OK:
 		return true;
-	case NUMBER_NOT_FINITE:
+	case HS_NUMBER_NOT_FINITE:
 		return fail(p, node, "'%s' must be finite, got %s", key, show(node).text);
-	case NUMBER_SYNTAX:
+	case HS_NUMBER_SYNTAX:
 		break;
 	}
 	return fail(p, node, "'%s' must be a number, got %s", key, got(node).text);
@@ -617,10 +610,10 @@ static bool read_dt(parser *p, const yaml_node_t *node) {
 		while (b1 > b0 && s[b1 - 1] == ' ')
 			--b1;
 		double a, b;
-		number_kind ka = parse_number_text(s + a0, a1 - a0, &a), kb = parse_number_text(s + b0, b1 - b0, &b);
-		if (ka == NUMBER_NOT_FINITE || kb == NUMBER_NOT_FINITE)
+		hs_number_kind ka = hs_parse_number(s + a0, a1 - a0, &a), kb = hs_parse_number(s + b0, b1 - b0, &b);
+		if (ka == HS_NUMBER_NOT_FINITE || kb == HS_NUMBER_NOT_FINITE)
 			return fail(p, node, "'dt' must be finite, got %s", show(node).text);
-		if (ka != NUMBER_OK || kb != NUMBER_OK)
+		if (ka != HS_NUMBER_OK || kb != HS_NUMBER_OK)
 			return fail(p, node, "'dt' must be a number, got %s", got(node).text);
 		if (b == 0.0)
 			return fail(p, node, "'dt' divides by zero: %s", show(node).text);
@@ -1293,7 +1286,7 @@ static bool read_hand(parser *p, const yaml_node_t *node, int index, const char 
 		free(file);
 		if (!full)
 			return fail(p, f.value[H_RECORD], "out of memory");
-		bool ok = hs_record_load(full, full, script, p->err);
+		bool ok = hs_record_load(full, script, p->err);
 		free(full);
 		if (!ok)
 			return false;
@@ -1439,100 +1432,24 @@ static bool record_fail(hs_error *err, const char *path, long line, const char *
 // at any rate (strictly increasing t, s; position m; a unit quaternion within 1e-3, renormalised;
 // button 0 or 1). Blank lines and lines starting with '#' are skipped. Errors are "PATH:LINE: ...".
 static bool read_stylus_record(const char *path, hs_scenario *s, hs_error *err) {
-	FILE *in = fopen(path, "rb");
-	if (!in)
-		return record_fail(err, path, 1, "cannot read recorded stylus input: %s", strerror(errno));
-	struct stat st;
-	if (fstat(fileno(in), &st) == 0 && S_ISDIR(st.st_mode)) {
-		fclose(in);
-		return record_fail(err, path, 1, "cannot read recorded stylus input: %s", strerror(EISDIR));
-	}
-	char *line = NULL;
-	size_t cap = 0;
-	long number = 0, capacity = 0;
-	bool ok = true;
-	ssize_t len;
-	while (ok && (len = getline(&line, &cap, in)) >= 0) {
-		++number;
-		if ((size_t)len != strlen(line)) {
-			ok = record_fail(err, path, number, "not a text file (NUL byte)");
-			break;
-		}
-		while (len > 0 && (line[len - 1] == '\n' || line[len - 1] == '\r'))
-			line[--len] = '\0';
-		if (number == 1) {
-			if (strcmp(line, STYLUS_HEADER) != 0)
-				ok = record_fail(err, path, 1, "the header must be %s", STYLUS_HEADER);
-			continue;
-		}
-		if (len == 0 || line[0] == '#')
-			continue;
-		if (s->stylus_count >= MAX_STYLUS_KEYS) {
-			ok = record_fail(err, path, number, "more than %ld samples", MAX_STYLUS_KEYS);
-			break;
-		}
-		double v[9];
-		const char *cursor = line;
-		for (int k = 0; ok && k < 9; ++k) {
-			size_t n = strcspn(cursor, ",");
-			number_kind kind = parse_number_text(cursor, n, &v[k]);
-			if (kind == NUMBER_NOT_FINITE)
-				ok = record_fail(err, path, number, "column %d must be finite, got %s", k + 1, show_text(cursor, n).text);
-			else if (kind != NUMBER_OK)
-				ok = record_fail(err, path, number, "expected 9 numbers (%s), column %d is %s", STYLUS_HEADER, k + 1,
-				                 n == 0 ? "empty or missing" : "not a number");
-			else if ((k < 8 && cursor[n] != ',') || (k == 8 && cursor[n] != '\0'))
-				ok = record_fail(err, path, number, "expected 9 numbers (%s), got %s", STYLUS_HEADER,
-				                 k < 8 ? "fewer" : "more");
-			cursor += n + (cursor[n] == ',');
-		}
-		if (!ok)
-			break;
-		if (s->stylus_count > 0 && !(v[0] > s->stylus[s->stylus_count - 1].t)) {
-			ok = record_fail(err, path, number, "time %.17g does not increase (previous sample at %.17g)", v[0],
-			                 s->stylus[s->stylus_count - 1].t);
-			break;
-		}
-		for (int k = 1; ok && k < 4; ++k)
-			if (!(fabs(v[k]) <= MAX_LENGTH))
-				ok = record_fail(err, path, number, "column %d (position) must be within [-%g, %g] m, got %.17g", k + 1,
-				                 MAX_LENGTH, MAX_LENGTH, v[k]);
-		if (!ok)
-			break;
-		hs_quat q = hs_q(v[4], v[5], v[6], v[7]);
-		double norm = sqrt(hs_quat_dot(q, q));
-		if (!(fabs(norm - 1.0) <= 1e-3)) { // a tracker writes a few digits: renormalised below
-			ok = record_fail(err, path, number, "orientation is not a unit quaternion (norm %.6g)", norm);
-			break;
-		}
+	hs_record_rows rows;
+	if (!hs_record_read(path, "recorded stylus input", STYLUS_HEADER, STYLUS_HEADER, 9, MAX_STYLUS_KEYS, &rows, err))
+		return false;
+	s->stylus = calloc((size_t)rows.count, sizeof *s->stylus);
+	bool ok = s->stylus != NULL || record_fail(err, path, 1, "out of memory");
+	for (long r = 0; ok && r < rows.count; ++r) {
+		const double *v = &rows.values[r * 9];
 		if (v[8] != 0.0 && v[8] != 1.0) {
-			ok = record_fail(err, path, number, "button must be 0 or 1, got %.17g", v[8]);
+			ok = record_fail(err, path, rows.lines[r], "button must be 0 or 1, got %.17g", v[8]);
 			break;
-		}
-		if (s->stylus_count == capacity) { // loading, not stepping: growing here is fine
-			long grown = capacity ? capacity * 2 : 256;
-			stylus_key *keys = realloc(s->stylus, (size_t)grown * sizeof *keys);
-			if (!keys) {
-				ok = record_fail(err, path, number, "out of memory");
-				break;
-			}
-			s->stylus = keys;
-			capacity = grown;
 		}
 		stylus_key *key = &s->stylus[s->stylus_count++];
 		key->t = v[0];
 		key->position = hs_v3(v[1], v[2], v[3]);
-		key->rot = hs_quat_normalize(q);
+		key->rot = hs_quat_normalize(hs_q(v[4], v[5], v[6], v[7]));
 		key->button = v[8] == 1.0;
 	}
-	if (ok && ferror(in))
-		ok = record_fail(err, path, number > 0 ? number : 1, "cannot read recorded stylus input: read error");
-	if (ok && number == 0)
-		ok = record_fail(err, path, 1, "empty recorded stylus input: the header %s is missing", STYLUS_HEADER);
-	else if (ok && s->stylus_count == 0)
-		ok = record_fail(err, path, number, "recorded stylus input has a header but no samples");
-	free(line);
-	fclose(in);
+	hs_record_rows_free(&rows);
 	return ok;
 }
 
@@ -1742,7 +1659,7 @@ static bool read_clause(parser *p, const yaml_node_t *node, clause *c) {
 		if (scalar_is(at, "end")) {
 			c->at_end = true;
 			c->frame = s->frames;
-		} else if (!is_scalar(at) || parse_number_text(scalar(at), at->data.scalar.length, &t) != NUMBER_OK) {
+		} else if (!is_scalar(at) || hs_parse_number(scalar(at), at->data.scalar.length, &t) != HS_NUMBER_OK) {
 			return fail(p, at, "'at' must be 'end' or a time in s, got %s", got(at).text);
 		} else if (t < 0.0 || t > s->duration) {
 			return fail(p, at, "'at' must be 'end' or a time within [0, %g] s, got %s", s->duration, show(at).text);

@@ -53,7 +53,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
 	hs_hand_script script;
 	hs_error err;
 	memset(&err, 'x', sizeof err);
-	if (!hs_record_load(path, path, &script, &err)) {
+	if (!hs_record_load(path, &script, &err)) {
 		fuzz_check_message(err.message);
 		FUZZ_REQUIRE(strncmp(err.message, path, strlen(path)) == 0);
 		FUZZ_REQUIRE(script.keys == NULL && script.key_count == 0);
