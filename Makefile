@@ -100,6 +100,7 @@ plots: all $(PLOT_GENS)
 # Benchmarks report, they never fail on a time. bench/*.c are built against the library;
 # the peers (ODE, MuJoCo) only when their Debian packages are present.
 bench: all
+	@sh scripts/deps.sh bench || echo "bench: continuing without the peers (ODE, MuJoCo)"
 	@if [ -f bench/bench.mk ]; then $(MAKE) --no-print-directory -f Makefile -f bench/bench.mk bench-run; \
 	else echo "bench: no benchmarks yet"; fi
 
