@@ -84,7 +84,7 @@ golden: all
 PLOT_GEN_SRC := $(wildcard plots/*.c)
 PLOT_GENS    := $(PLOT_GEN_SRC:plots/%.c=$(BUILD)/plots/bin/%)
 
-$(BUILD)/plots/bin/%: plots/%.c $(LIB) $(wildcard model/*.h) | deps
+$(BUILD)/plots/bin/%: plots/%.c $(LIB) $(wildcard model/*.h plots/*.h) | deps
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS_ALL) $(LDFLAGS) -o $@ $< $(LIB) $(LDLIBS_ALL)
 

@@ -10,27 +10,14 @@
 #include <stdio.h>
 
 #include "handspring.h"
+#include "plot_run.h"
 
 int main(int argc, char **argv) {
-	if (argc < 2 || argc > 3) {
-		fprintf(stderr, "usage: hand_throw OUTDIR [SCENARIO]\n");
-		return 2;
-	}
-	const char *path = argc == 3 ? argv[2] : "scenarios/hand/throw_at_target.yaml";
-	hs_error err;
-	hs_scenario *s = hs_scenario_load(path, &err);
-	if (!s) {
-		fprintf(stderr, "%s\n", err.message);
-		return 2;
-	}
-	char out_path[4096];
-	snprintf(out_path, sizeof out_path, "%s/hand_throw.csv", argv[1]);
-	FILE *out = fopen(out_path, "w");
-	if (!out) {
-		perror(out_path);
-		hs_scenario_destroy(s);
-		return 1;
-	}
+	hs_scenario *s;
+	FILE *out;
+	int status = plot_run_open(argc, argv, "hand_throw", "scenarios/hand/throw_at_target.yaml", &s, &out);
+	if (status)
+		return status;
 	hs_world *w = hs_scenario_world(s);
 	hs_object_id id = hs_world_object_at(w, 0);
 	hs_hand_id hand = {1};
@@ -61,7 +48,7 @@ int main(int argc, char **argv) {
 	fclose(out);
 	hs_scenario_destroy(s);
 	if (failed) {
-		fprintf(stderr, "%s: %d expectation(s) failed\n", path, failed);
+		fprintf(stderr, "%s: %d expectation(s) failed\n", hs_scenario_name(s), failed);
 		return 1;
 	}
 	return 0;

@@ -9,32 +9,19 @@
 #include <stdio.h>
 
 #include "handspring.h"
+#include "plot_run.h"
 
 int main(int argc, char **argv) {
-	if (argc < 2 || argc > 3) {
-		fprintf(stderr, "usage: spring_lift OUTDIR [SCENARIO]\n");
-		return 2;
-	}
-	const char *path = argc == 3 ? argv[2] : "scenarios/spring/lift_swing_drop.yaml";
-	hs_error err;
-	hs_scenario *s = hs_scenario_load(path, &err);
-	if (!s) {
-		fprintf(stderr, "%s\n", err.message);
-		return 2;
-	}
-	char out_path[4096];
-	snprintf(out_path, sizeof out_path, "%s/spring_lift.csv", argv[1]);
-	FILE *out = fopen(out_path, "w");
-	if (!out) {
-		perror(out_path);
-		hs_scenario_destroy(s);
-		return 1;
-	}
+	hs_scenario *s;
+	FILE *out;
+	int status = plot_run_open(argc, argv, "spring_lift", "scenarios/spring/lift_swing_drop.yaml", &s, &out);
+	if (status)
+		return status;
 	hs_world *w = hs_scenario_world(s);
 	hs_object_id id = hs_world_object_at(w, 0);
 	hs_spring_object info;
 	if (hs_world_spring_object(w, id, &info) != HS_OK) {
-		fprintf(stderr, "%s: not a spring scenario\n", path);
+		fprintf(stderr, "%s: not a spring scenario\n", hs_scenario_name(s));
 		fclose(out);
 		hs_scenario_destroy(s);
 		return 2;
@@ -57,7 +44,7 @@ int main(int argc, char **argv) {
 	fclose(out);
 	hs_scenario_destroy(s);
 	if (failed) {
-		fprintf(stderr, "%s: %d expectation(s) failed\n", path, failed);
+		fprintf(stderr, "%s: %d expectation(s) failed\n", hs_scenario_name(s), failed);
 		return 1;
 	}
 	return 0;

@@ -7,33 +7,21 @@
 #include <stdio.h>
 
 #include "handspring.h"
+#include "plot_run.h"
 
 int main(int argc, char **argv) {
-	if (argc < 2 || argc > 3) {
-		fprintf(stderr, "usage: spring_tracker OUTDIR [SCENARIO]\n");
-		return 2;
-	}
-	const char *path = argc == 3 ? argv[2] : "scenarios/spring/recorded_throw.yaml";
-	hs_error err;
-	hs_scenario *s = hs_scenario_load(path, &err);
-	if (!s) {
-		fprintf(stderr, "%s\n", err.message);
-		return 2;
-	}
+	hs_scenario *s;
+	FILE *out;
+	int status = plot_run_open(argc, argv, "spring_tracker", "scenarios/spring/recorded_throw.yaml", &s, &out);
+	if (status)
+		return status;
 	hs_world *w = hs_scenario_world(s);
 	hs_tracker_state tr;
 	if (hs_world_tracker_state(w, &tr) != HS_OK) {
-		fprintf(stderr, "%s: not a spring scenario\n", path);
+		fprintf(stderr, "%s: not a spring scenario\n", hs_scenario_name(s));
+		fclose(out);
 		hs_scenario_destroy(s);
 		return 2;
-	}
-	char out_path[4096];
-	snprintf(out_path, sizeof out_path, "%s/spring_tracker.csv", argv[1]);
-	FILE *out = fopen(out_path, "w");
-	if (!out) {
-		perror(out_path);
-		hs_scenario_destroy(s);
-		return 1;
 	}
 	fprintf(out, "# %s: %s\n# tracker samples (50 Hz) with the estimates made at each\n", hs_scenario_name(s),
 	        hs_scenario_description(s));
@@ -68,7 +56,7 @@ int main(int argc, char **argv) {
 	fclose(out);
 	hs_scenario_destroy(s);
 	if (failed) {
-		fprintf(stderr, "%s: %d expectation(s) failed\n", path, failed);
+		fprintf(stderr, "%s: %d expectation(s) failed\n", hs_scenario_name(s), failed);
 		return 1;
 	}
 	return 0;
