@@ -44,12 +44,5 @@ int main(int argc, char **argv) {
 		        tip.z);
 		++frame;
 	} while (hs_scenario_step(s));
-	int failed = hs_scenario_check(s, NULL);
-	fclose(out);
-	hs_scenario_destroy(s);
-	if (failed) {
-		fprintf(stderr, "%s: %d expectation(s) failed\n", hs_scenario_name(s), failed);
-		return 1;
-	}
-	return 0;
+	return plot_run_close(s, out);
 }

@@ -31,4 +31,14 @@ static inline int plot_run_open(int argc, char **argv, const char *name, const c
 	return 0;
 }
 
+// Closes the output and the scenario; 1 when the run broke one of the scenario's expectations.
+static inline int plot_run_close(hs_scenario *scenario, FILE *out) {
+	int failed = hs_scenario_check(scenario, NULL);
+	if (failed)
+		fprintf(stderr, "%s: %d expectation(s) failed\n", hs_scenario_name(scenario), failed);
+	fclose(out);
+	hs_scenario_destroy(scenario);
+	return failed ? 1 : 0;
+}
+
 #endif

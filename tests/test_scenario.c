@@ -266,11 +266,12 @@ static const char drop_scenario[] = "description: a dropped cube and a resting b
                                     "  - { name: high, shape: cube, size: 0.1, position: [2, 0, 100] }\n"
                                     "expect:\n";
 
-// Loads the drop scenario with one clause, runs it, returns the failures and the report.
-static int check_clause(const char *clause, char *report, size_t report_size) {
-	char text[2048];
-	snprintf(text, sizeof text, "%s  - %s\n", drop_scenario, clause);
-	hs_scenario *s = load_text("drop.yaml", text);
+// Loads `base` with one more clause, runs it, returns the failures and the report (one PASS or
+// FAIL line per check).
+static int check_in(const char *base, const char *file, const char *clause, char *report, size_t report_size) {
+	char text[4096];
+	snprintf(text, sizeof text, "%s  - %s\n", base, clause);
+	hs_scenario *s = load_text(file, text);
 	run_all(s);
 	char *buf = NULL;
 	size_t size = 0;
@@ -282,7 +283,6 @@ static int check_clause(const char *clause, char *report, size_t report_size) {
 	free(buf);
 	int lines = hs_scenario_expectation_count(s);
 	hs_scenario_destroy(s);
-	// one line per check, each starting PASS or FAIL
 	int counted = 0;
 	for (const char *p = report; *p; p = strchr(p, '\n') + 1) {
 		assert_true(strncmp(p, "PASS  ", 6) == 0 || strncmp(p, "FAIL  ", 6) == 0);
@@ -290,6 +290,10 @@ static int check_clause(const char *clause, char *report, size_t report_size) {
 	}
 	assert_int_equal(counted, lines);
 	return failed;
+}
+
+static int check_clause(const char *clause, char *report, size_t report_size) {
+	return check_in(drop_scenario, "drop.yaml", clause, report, report_size);
 }
 
 static void expect_pass(const char *clause, const char *measured) {
@@ -735,20 +739,7 @@ static const char spring_scenario[] = "description: spring predicates\n"
                                       "expect:\n";
 
 static int check_spring_clause(const char *clause, char *report, size_t report_size) {
-	char text[4096];
-	snprintf(text, sizeof text, "%s  - %s\n", spring_scenario, clause);
-	hs_scenario *s = load_text("spring.yaml", text);
-	run_all(s);
-	char *buf = NULL;
-	size_t size = 0;
-	FILE *r = open_memstream(&buf, &size);
-	assert_non_null(r);
-	int failed = hs_scenario_check(s, r);
-	fclose(r);
-	snprintf(report, report_size, "%s", buf);
-	free(buf);
-	hs_scenario_destroy(s);
-	return failed;
+	return check_in(spring_scenario, "spring.yaml", clause, report, report_size);
 }
 
 static void spring_pass(const char *clause, const char *measured) {

@@ -28,21 +28,9 @@ static hs_world *spring_world(double dt, hs_vec3 gravity, const hs_spring_def *s
 	return w;
 }
 
-// An object of the given shape; density chosen so that mass = density × volume is `mass` (kg).
+// An object of the given shape and mass (kg).
 static hs_object_id add_shaped(hs_world *w, hs_shape *shape, double mass, hs_vec3 pos, hs_vec3 vel) {
-	assert_non_null(shape);
-	hs_status st;
-	hs_shape_id sid = hs_world_add_shape(w, shape, &st);
-	assert_int_equal(st, HS_OK);
-	hs_object_def od = hs_default_object_def();
-	od.shape = sid;
-	od.position = pos;
-	od.velocity = vel;
-	od.density = mass / shape->volume;
-	hs_shape_destroy(shape);
-	hs_object_id id = hs_world_add_object(w, &od, &st);
-	assert_int_equal(st, HS_OK);
-	return id;
+	return hs_test_add_mass(w, shape, mass, pos, vel);
 }
 
 static hs_object_id add_sphere(hs_world *w, double r, double mass, hs_vec3 pos, hs_vec3 vel) {

@@ -28,20 +28,7 @@ static hs_world *spring_world(double dt, const hs_spring_def *sd) {
 }
 
 static hs_object_id add_sphere(hs_world *w, double r, double mass, hs_vec3 pos, hs_vec3 vel) {
-	hs_status st;
-	hs_shape *shape = hs_shape_sphere(r, &st);
-	assert_non_null(shape);
-	hs_shape_id sid = hs_world_add_shape(w, shape, &st);
-	assert_int_equal(st, HS_OK);
-	hs_object_def od = hs_default_object_def();
-	od.shape = sid;
-	od.position = pos;
-	od.velocity = vel;
-	od.density = mass / shape->volume;
-	hs_shape_destroy(shape);
-	hs_object_id id = hs_world_add_object(w, &od, &st);
-	assert_int_equal(st, HS_OK);
-	return id;
+	return hs_test_add_mass(w, hs_shape_sphere(r, NULL), mass, pos, vel);
 }
 
 static void stylus_at(hs_world *w, hs_vec3 p, bool button) {

@@ -26,4 +26,21 @@
 		assert_near(hs_va_.z, hs_vb_.z, tol);                                                            \
 	} while (0)
 
+// Adds an object of `shape` (taken and destroyed) whose mass = density × volume is `mass` (kg).
+static inline hs_object_id hs_test_add_mass(hs_world *w, hs_shape *shape, double mass, hs_vec3 pos, hs_vec3 vel) {
+	assert_non_null(shape);
+	hs_status st;
+	hs_shape_id sid = hs_world_add_shape(w, shape, &st);
+	assert_int_equal(st, HS_OK);
+	hs_object_def od = hs_default_object_def();
+	od.shape = sid;
+	od.position = pos;
+	od.velocity = vel;
+	od.density = mass / shape->volume;
+	hs_shape_destroy(shape);
+	hs_object_id id = hs_world_add_object(w, &od, &st);
+	assert_int_equal(st, HS_OK);
+	return id;
+}
+
 #endif
