@@ -8,6 +8,7 @@ SANITIZE ?= 0
 BUILD    ?= build
 PREFIX   ?= /usr/local
 
+# the physics (model/) needs libccd only; the harness (harness/) adds libyaml and GSL
 PKGS := ccd yaml-0.1 gsl
 # recursive on purpose: pkg-config is asked only after `deps` has installed it
 PKG_CFLAGS = $(shell pkg-config --cflags $(PKGS))
@@ -16,7 +17,15 @@ PKG_LIBS   = $(shell pkg-config --libs $(PKGS))
 WARN := -Wall -Wextra -Wpedantic -Wshadow -Wconversion -Wmissing-prototypes -Wvla -Werror
 # determinism: no contraction into FMA, no fast-math, IEEE semantics everywhere
 FP   := -ffp-contract=off -fno-fast-math
-CFLAGS_ALL = -std=c11 -D_POSIX_C_SOURCE=200809L $(OPT) -g $(WARN) $(FP) -Imodel $(PKG_CFLAGS) $(CFLAGS)
+# Include paths by layer: each layer sees the public headers below it and its own private ones,
+# so the compiler enforces the boundary (the harness cannot reach model/*.h).
+PUBLIC_INC  := -Imodel/include -Iharness/include
+CFLAGS_BASE = -std=c11 -D_POSIX_C_SOURCE=200809L $(OPT) -g $(WARN) $(FP) $(PKG_CFLAGS) $(CFLAGS)
+CFLAGS_ALL  = $(CFLAGS_BASE) $(PUBLIC_INC)
+CFLAGS_MODEL   = $(CFLAGS_BASE) -Imodel/include -Imodel
+CFLAGS_HARNESS = $(CFLAGS_BASE) -Imodel/include -Iharness/include -Iharness
+# tests may look inside either layer (one test file per model file)
+CFLAGS_TESTS   = $(CFLAGS_BASE) $(PUBLIC_INC) -Imodel -Iharness -Itests
 LDLIBS_ALL = $(PKG_LIBS) -lm $(LDLIBS)
 ifeq ($(SANITIZE),1)
 CFLAGS_ALL += -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
@@ -26,18 +35,33 @@ endif
 LIB_SRC  := $(wildcard model/*.c)
 LIB_OBJ  := $(LIB_SRC:%.c=$(BUILD)/obj/%.o)
 LIB      := $(BUILD)/libhandspring.a
+HLIB_SRC := $(wildcard harness/*.c)
+HLIB_OBJ := $(HLIB_SRC:%.c=$(BUILD)/obj/%.o)
+HLIB     := $(BUILD)/libhandspring-harness.a
+# what programs of the harness layer and above link: the harness first, then the physics
+LIBS     := $(HLIB) $(LIB)
+MODEL_H   = $(wildcard model/*.h model/include/*.h)
+HARNESS_H = $(wildcard harness/*.h harness/include/*.h)
 TOOL     := $(BUILD)/handspring
 TEST_SRC := $(wildcard tests/test_*.c)
 TESTS    := $(TEST_SRC:tests/%.c=$(BUILD)/tests/%)
 
 .PHONY: all deps check check-core run golden bench plots install clean
 
-all: $(LIB) $(TOOL)
+all: $(LIB) $(HLIB) $(TOOL)
 
 deps:
 	@sh scripts/deps.sh
 
-$(BUILD)/obj/%.o: %.c $(wildcard model/*.h) | deps
+$(BUILD)/obj/model/%.o: model/%.c $(MODEL_H) | deps
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS_MODEL) -c $< -o $@
+
+$(BUILD)/obj/harness/%.o: harness/%.c $(HARNESS_H) $(wildcard model/include/*.h) | deps
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS_HARNESS) -c $< -o $@
+
+$(BUILD)/obj/tool/%.o: tool/%.c $(wildcard model/include/*.h harness/include/*.h) | deps
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS_ALL) -c $< -o $@
 
@@ -45,19 +69,23 @@ $(LIB): $(LIB_OBJ)
 	@rm -f $@
 	ar rcs $@ $^
 
-$(TOOL): $(BUILD)/obj/tool/handspring.o $(LIB)
+$(HLIB): $(HLIB_OBJ)
+	@rm -f $@
+	ar rcs $@ $^
+
+$(TOOL): $(BUILD)/obj/tool/handspring.o $(LIBS)
 	$(CC) $(LDFLAGS) -o $@ $^ $(LDLIBS_ALL)
 
-$(BUILD)/tests/%: $(BUILD)/obj/tests/%.o $(LIB)
+$(BUILD)/tests/%: $(BUILD)/obj/tests/%.o $(LIBS)
 	@mkdir -p $(dir $@)
 	$(CC) $(LDFLAGS) -o $@ $^ -lcmocka $(LDLIBS_ALL)
 
-$(BUILD)/obj/tests/%.o: tests/%.c tests/test_util.h $(wildcard model/*.h) | deps
+$(BUILD)/obj/tests/%.o: tests/%.c tests/test_util.h $(MODEL_H) $(HARNESS_H) | deps
 	@mkdir -p $(dir $@)
-	$(CC) $(CFLAGS_ALL) -Itests -c $< -o $@
+	$(CC) $(CFLAGS_TESTS) -c $< -o $@
 
 # Every test binary runs from the top folder (it reads scenarios/, golden/ and tests/).
-check-core: $(LIB) $(TOOL) $(TESTS)
+check-core: $(LIB) $(HLIB) $(TOOL) $(TESTS)
 	@fail=0; for t in $(TESTS); do \
 		HS_TOOL=$(TOOL) $$t || fail=1; \
 	done; exit $$fail
@@ -84,9 +112,9 @@ golden: all
 PLOT_GEN_SRC := $(wildcard plots/*.c)
 PLOT_GENS    := $(PLOT_GEN_SRC:plots/%.c=$(BUILD)/plots/bin/%)
 
-$(BUILD)/plots/bin/%: plots/%.c $(LIB) $(wildcard model/*.h plots/*.h) | deps
+$(BUILD)/plots/bin/%: plots/%.c $(LIBS) $(wildcard model/include/*.h harness/include/*.h plots/*.h) | deps
 	@mkdir -p $(dir $@)
-	$(CC) $(CFLAGS_ALL) $(LDFLAGS) -o $@ $< $(LIB) $(LDLIBS_ALL)
+	$(CC) $(CFLAGS_ALL) $(LDFLAGS) -o $@ $< $(LIBS) $(LDLIBS_ALL)
 
 plots: all $(PLOT_GENS)
 	@mkdir -p $(BUILD)/plots
@@ -106,10 +134,10 @@ bench: all
 
 install: all
 	install -d $(DESTDIR)$(PREFIX)/include/handspring $(DESTDIR)$(PREFIX)/lib/pkgconfig $(DESTDIR)$(PREFIX)/bin
-	install -m 644 model/handspring.h model/hs_math.h $(DESTDIR)$(PREFIX)/include/handspring/
-	install -m 644 $(LIB) $(DESTDIR)$(PREFIX)/lib/
+	install -m 644 model/include/handspring.h model/include/hs_math.h harness/include/hs_harness.h $(DESTDIR)$(PREFIX)/include/handspring/
+	install -m 644 $(LIB) $(HLIB) $(DESTDIR)$(PREFIX)/lib/
 	install -m 755 $(TOOL) $(DESTDIR)$(PREFIX)/bin/
-	sed -e 's|@PREFIX@|$(PREFIX)|g' -e 's|@VERSION@|$(shell sed -n 's/^#define HS_VERSION "\(.*\)"/\1/p' model/handspring.h)|' \
+	sed -e 's|@PREFIX@|$(PREFIX)|g' -e 's|@VERSION@|$(shell sed -n 's/^#define HS_VERSION "\(.*\)"/\1/p' model/include/handspring.h)|' \
 		scripts/handspring.pc.in > $(DESTDIR)$(PREFIX)/lib/pkgconfig/handspring.pc
 
 clean:
@@ -121,3 +149,6 @@ clean:
 -include tests/reliability.mk
 check-reliability::
 	@:
+
+# own elementary functions against references (bench/ulp.mk)
+-include bench/ulp.mk

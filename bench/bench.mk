@@ -31,13 +31,13 @@ BENCH_ID   = -DHS_BENCH_CC='"$(CC)"' -DHS_BENCH_FLAGS='"$(strip $(filter-out -I%
 
 .PHONY: bench-run bench-build bench-peers-note
 
-$(BENCH_OUT)/obj/%.o: bench/%.c bench/bench.h $(wildcard model/*.h) bench/bench.mk
+$(BENCH_OUT)/obj/%.o: bench/%.c bench/bench.h $(wildcard model/include/*.h harness/include/*.h) bench/bench.mk
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS_ALL) $(BENCH_DEFS) $(BENCH_ID) -Ibench -c $< -o $@
 
-$(BENCH_BIN): $(BENCH_OBJ) $(LIB)
+$(BENCH_BIN): $(BENCH_OBJ) $(LIBS)
 	@mkdir -p $(dir $@)
-	$(CC) $(LDFLAGS) -o $@ $(BENCH_OBJ) $(LIB) $(BENCH_LIBS) $(LDLIBS_ALL)
+	$(CC) $(LDFLAGS) -o $@ $(BENCH_OBJ) $(LIBS) $(BENCH_LIBS) $(LDLIBS_ALL)
 
 bench-build: $(BENCH_BIN)
 

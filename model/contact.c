@@ -199,7 +199,7 @@ int hs_contact_detect(hs_world *world, int object, const hs_body *before) {
 }
 
 double hs_grasp_limit(double grasp_threshold_deg) {
-	return cos(grasp_threshold_deg * (HS_PI / 180.0)) + HS_GRASP_EPS;
+	return hs_cos(grasp_threshold_deg * (HS_PI / 180.0)) + HS_GRASP_EPS;
 }
 
 hs_contact_state hs_contact_classify(const hs_contact *contacts, int count, double grasp_limit) {

@@ -354,12 +354,12 @@ static bool thumb_reach(const hs_hand_def *def, hs_vec3 target, uint8_t s[HS_GLO
 	// tip = (L0 + a, −b cos φ, −b sin φ), (a, b) the planar two-bone reach.
 	double l0 = def->segment_length[0][0], l1 = def->segment_length[0][1], l2 = def->segment_length[0][2];
 	double a = d.x - l0, b = sqrt(d.y * d.y + d.z * d.z);
-	double roll = atan2(-d.z, -d.y);
+	double roll = hs_atan2(-d.z, -d.y);
 	double c = (a * a + b * b - l1 * l1 - l2 * l2) / (2.0 * l1 * l2);
 	if (!(c >= -1.0 && c <= 1.0))
 		return false;
-	double ip = acos(c);
-	double mcp = atan2(b, a) - atan2(l2 * sin(ip), l1 + l2 * cos(ip));
+	double ip = hs_acos(c);
+	double mcp = hs_atan2(b, a) - hs_atan2(l2 * hs_sin(ip), l1 + l2 * hs_cos(ip));
 	hs_hand_joints want = j;
 	want.thumb_roll = roll;
 	want.thumb_mcp = mcp;

@@ -42,7 +42,7 @@ void hs_push_at_one_point(hs_body *body, hs_vec3 c, hs_vec3 b) {
 	double r_len = hs_length(r);
 	if (r_len > 0.0) { // R = 0: CB ∥ CG, translation only
 		hs_vec3 axis = hs_normalize(hs_cross(r, cg));
-		hs_quat q = hs_quat_from_axis_angle(axis, atan(r_len / cg_len));
+		hs_quat q = hs_quat_from_axis_angle(axis, hs_atan(r_len / cg_len));
 		body->rot = hs_quat_normalize(hs_quat_mul(q, body->rot));
 	}
 }

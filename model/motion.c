@@ -87,7 +87,7 @@ static double first_touch(const hs_world *world, const hs_body *body, hs_vec3 c,
 		double m = sqrt(a * a + b * b);
 		if (m <= 0.0 || -h0 / m < -1.0 || -h0 / m > 1.0)
 			continue; // its circle never reaches the floor
-		double phi = atan2(b, a), alpha = acos(-h0 / m);
+		double phi = hs_atan2(b, a), alpha = hs_acos(-h0 / m);
 		double roots[2] = {phi - alpha, phi + alpha};
 		for (int k = 0; k < 2; ++k) {
 			double t = roots[k];
@@ -141,7 +141,7 @@ static void tip(hs_world *world, hs_body *body, const hs_vec2 *hull, int hull_co
 	hs_vec3 axis = hs_normalize(hs_cross(cg, r)); // G moves along R
 	if (about_line)
 		axis = hs_dot(line, axis) >= 0.0 ? line : hs_neg(line);
-	double theta = atan(r_len / cg_len); // eq. 7
+	double theta = hs_atan(r_len / cg_len); // eq. 7
 	double touch = first_touch(world, body, c, axis, theta);
 	bool landed = touch < theta;
 	if (landed)

@@ -28,6 +28,8 @@ const char *hs_status_string(hs_status status) {
 		return "capacity exceeded";
 	case HS_ERR_NO_MEMORY:
 		return "out of memory";
+	case HS_ERR_STATE_MISMATCH:
+		return "saved state does not match this world";
 	}
 	return "unknown status";
 }

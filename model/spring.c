@@ -187,7 +187,7 @@ static double gravity_magnitude(const hs_world *world) {
 static spring_params params_of(const hs_spring_def *def, const hs_world *world, double mass) {
 	spring_params sp;
 	sp.mass = mass;
-	double x0 = def->rest_length_ref * pow(mass / def->rest_mass_ref, def->rest_exponent);
+	double x0 = def->rest_length_ref * hs_pow(mass / def->rest_mass_ref, def->rest_exponent);
 	x0 = x0 < def->rest_length_min ? def->rest_length_min : x0;
 	x0 = x0 > def->rest_length_max ? def->rest_length_max : x0;
 	sp.x0 = x0;
@@ -247,14 +247,14 @@ static double phi2(double x) {
 		}
 		return sum;
 	}
-	return (1.0 - exp(-x) * (1.0 + x)) / (x * x);
+	return (1.0 - hs_exp(-x) * (1.0 + x)) / (x * x);
 }
 
 static void mode_step(hs_integrator integrator, double omega, double e0, double u0, double a, double t,
                       double *e1, double *u1) {
 	switch (integrator) {
 	case HS_INTEGRATOR_EXACT: {
-		double x = omega * t, decay = exp(-x), b = u0 + omega * e0;
+		double x = omega * t, decay = hs_exp(-x), b = u0 + omega * e0;
 		*e1 = decay * (e0 + b * t) + a * t * t * phi2(x);
 		*u1 = decay * (u0 - omega * b * t) + a * t * decay;
 		return;

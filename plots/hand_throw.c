@@ -9,7 +9,7 @@
 #include <math.h>
 #include <stdio.h>
 
-#include "handspring.h"
+#include "hs_harness.h"
 #include "plot_run.h"
 
 int main(int argc, char **argv) {

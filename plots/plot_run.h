@@ -5,7 +5,7 @@
 
 #include <stdio.h>
 
-#include "handspring.h"
+#include "hs_harness.h"
 
 // Returns 0 with *scenario and *out set, or the exit status after saying what went wrong.
 static inline int plot_run_open(int argc, char **argv, const char *name, const char *default_scenario,

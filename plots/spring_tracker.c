@@ -6,7 +6,7 @@
 // usage: spring_tracker OUTDIR [SCENARIO] — writes OUTDIR/spring_tracker.csv (run from the top folder).
 #include <stdio.h>
 
-#include "handspring.h"
+#include "hs_harness.h"
 #include "plot_run.h"
 
 int main(int argc, char **argv) {

@@ -16,7 +16,7 @@
 
 STRESS := $(BUILD)/stress
 
-$(STRESS): $(BUILD)/obj/tests/stress.o $(LIB)
+$(STRESS): $(BUILD)/obj/tests/stress.o $(LIBS)
 	$(CC) $(LDFLAGS) -o $@ $^ $(LDLIBS_ALL)
 
 stress-bin: $(STRESS)
@@ -63,8 +63,8 @@ FUZZ_SECONDS ?= 60
 FUZZ_CC      ?= clang
 FUZZ_DIR     := $(BUILD)/fuzz
 FUZZ_SAN     := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
-FUZZ_CFLAGS   = -std=c11 -D_POSIX_C_SOURCE=200809L -O1 -g $(WARN) $(FP) -Imodel -Itests/fuzz $(PKG_CFLAGS) $(FUZZ_SAN)
-FUZZ_LIB_OBJ := $(LIB_SRC:%.c=$(FUZZ_DIR)/obj/%.o)
+FUZZ_CFLAGS   = -std=c11 -D_POSIX_C_SOURCE=200809L -O1 -g $(WARN) $(FP) $(PUBLIC_INC) -Imodel -Iharness -Itests/fuzz $(PKG_CFLAGS) $(FUZZ_SAN)
+FUZZ_LIB_OBJ := $(LIB_SRC:%.c=$(FUZZ_DIR)/obj/%.o) $(HLIB_SRC:%.c=$(FUZZ_DIR)/obj/%.o)
 FUZZ_TARGETS := $(FUZZ_DIR)/fuzz_scenario $(FUZZ_DIR)/fuzz_record
 FUZZ_OPTIONS := -timeout=20 -rss_limit_mb=4096 -max_len=16384 -print_final_stats=1
 

@@ -28,6 +28,7 @@
 #include <time.h>
 
 #include "internal.h"
+#include "harness_internal.h"
 
 #define FLOOR_SLOP 1e-9 // m: deepest penetration accepted after a frame
 #define WALL_SLOP 1e-9  // m

@@ -19,6 +19,7 @@
 #include <cmocka.h>
 
 #include "internal.h"
+#include "harness_internal.h"
 #include "test_util.h"
 
 #if defined(__SANITIZE_ADDRESS__)

@@ -16,7 +16,7 @@
 
 #include <cmocka.h>
 
-#include "handspring.h"
+#include "hs_harness.h"
 #include "test_util.h"
 
 static const double NaN = NAN;

@@ -5,7 +5,7 @@
 #include <math.h>
 #include <stdio.h>
 
-#include "handspring.h"
+#include "hs_harness.h"
 
 // |a - b| <= tol, with both values printed on failure
 #define assert_near(a, b, tol)                                                                          \

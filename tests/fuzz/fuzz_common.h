@@ -8,7 +8,7 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "internal.h"
+#include "harness_internal.h"
 
 // A crash the fuzzer reports with the input that caused it.
 #define FUZZ_REQUIRE(cond)                                                                              \

@@ -14,7 +14,7 @@
 #include <sys/stat.h>
 #include <yaml.h>
 
-#include "internal.h"
+#include "harness_internal.h"
 
 
 enum {

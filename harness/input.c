@@ -5,7 +5,7 @@
 #include <string.h>
 #include <sys/stat.h>
 
-#include "internal.h"
+#include "harness_internal.h"
 
 static const long MAX_RECORD_ROWS = 10000000L;
 

@@ -24,6 +24,10 @@
 
 #include "hs_math.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #define HS_VERSION "0.1.0"
 
 /// Result of a call that can fail.
@@ -33,6 +37,7 @@ typedef enum hs_status {
 	HS_ERR_DEGENERATE,       ///< a shape with no volume, a non-planar or non-convex face, an open surface
 	HS_ERR_CAPACITY,         ///< more objects or shapes than the world was created for
 	HS_ERR_NO_MEMORY,
+	HS_ERR_STATE_MISMATCH,   ///< a saved state from another kind of world, layout or version
 } hs_status;
 
 /// Human-readable name of a status code.
@@ -219,8 +224,25 @@ long hs_world_frame(const hs_world *world);
 double hs_world_time(const hs_world *world);
 double hs_world_dt(const hs_world *world);
 
-/// 64-bit FNV-1a hash of the exact bits of every object's pose and contact state.
+/// 64-bit hash of the whole state (hs_world_save_state): everything that can change a later
+/// frame, hashed as 64-bit words. Two worlds with equal hashes continue identically.
 uint64_t hs_world_hash(const hs_world *world);
+
+// ---------------------------------------------------------------------------------------------
+// State: everything a step changes, as one block (MuJoCo's mjData, Box2D's snapshots). What the
+// world was built from (definitions, shapes, hands, spring parameters) is not in it.
+
+/// Bytes hs_world_save_state writes for this world (fixed once its objects and hands are added).
+size_t hs_world_state_size(const hs_world *world);
+/// Writes the state into buffer (size >= hs_world_state_size). Portable: the same bytes on every
+/// machine for the same state.
+hs_status hs_world_save_state(const hs_world *world, void *buffer, size_t size);
+/// Loads a state saved from a world built from the same definitions; the world then continues
+/// bit-identically. A buffer from another kind of world, another layout or another version is
+/// refused (HS_ERR_STATE_MISMATCH, the world untouched); hs_world_state_error says why.
+hs_status hs_world_load_state(hs_world *world, const void *buffer, size_t size);
+/// Why the last hs_world_load_state on this world was refused ("" when it was not).
+const char *hs_world_state_error(const hs_world *world);
 
 /// Counters of work done, for benchmarks and tests of what skipping saves.
 typedef struct hs_world_counters {
@@ -340,72 +362,6 @@ typedef struct hs_contact {
 
 /// Copies up to `max` contacts of the last step into `out`; returns how many there were.
 int hs_world_contacts(const hs_world *world, hs_contact *out, int max);
-
-// ---------------------------------------------------------------------------------------------
-// Scenarios: a YAML file that builds a world, drives it and states what must happen.
-
-typedef struct hs_scenario hs_scenario;
-
-/// An error message `file:line: what is wrong` (no trailing newline).
-typedef struct hs_error {
-	char message[512];
-} hs_error;
-
-/// Loads and validates a scenario file. NULL and `err` filled on any problem.
-hs_scenario *hs_scenario_load(const char *path, hs_error *err);
-void hs_scenario_destroy(hs_scenario *scenario);
-
-const char *hs_scenario_name(const hs_scenario *scenario);
-const char *hs_scenario_description(const hs_scenario *scenario);
-/// The world the scenario built (owned by the scenario).
-hs_world *hs_scenario_world(hs_scenario *scenario);
-/// Name of the i-th object, in the order of the file.
-const char *hs_scenario_object_name(const hs_scenario *scenario, int i);
-/// Frames the scenario runs: round(duration / dt).
-long hs_scenario_frame_count(const hs_scenario *scenario);
-
-/// Steps one frame (inputs, then the world) and records what expectations need.
-/// Returns false once every frame has run.
-bool hs_scenario_step(hs_scenario *scenario);
-
-/// Evaluates every `expect` clause; writes one line per clause (PASS/FAIL and the measured
-/// value) to `report` when not NULL. Returns the number of failed clauses.
-int hs_scenario_check(const hs_scenario *scenario, FILE *report);
-/// Lines hs_scenario_check writes: one per clause and object it names ("*" names every object),
-/// plus one when the world failed to step.
-int hs_scenario_expectation_count(const hs_scenario *scenario);
-/// s: the scenario's frame time.
-double hs_scenario_dt(const hs_scenario *scenario);
-int hs_scenario_object_count(const hs_scenario *scenario);
-
-/// The scenario files below a folder: every *.yaml, recursively (hidden entries skipped), sorted
-/// by name (strcmp). A name is the path relative to the folder without ".yaml", e.g. "hand/flick";
-/// a path is the folder joined with that relative path.
-typedef struct hs_catalog {
-	int count;
-	char **names;
-	char **paths;
-} hs_catalog;
-
-/// Fills `out` (free it with hs_catalog_free). False and `err` = "DIR: what is wrong" when the
-/// folder cannot be read; an empty folder is a valid, empty catalog.
-bool hs_catalog_load(const char *dir, hs_catalog *out, hs_error *err);
-void hs_catalog_free(hs_catalog *catalog);
-
-// ---------------------------------------------------------------------------------------------
-// Trajectories: CSV, one row per object per frame.
-
-/// Writes the header line `frame,t,object,x,y,z,qw,qx,qy,qz,contact,floor,resting,hash`.
-void hs_trajectory_write_header(FILE *out);
-/// Writes the rows of the current frame of a scenario's world (numbers with 17 significant digits).
-void hs_trajectory_write_frame(FILE *out, hs_scenario *scenario);
-
-/// Compares a trajectory with its golden (both as written above; lines starting with '#' are
-/// comments). Numbers must agree within `tolerance` (absolute), contact states and row keys exactly.
-/// Returns true when they match; otherwise writes the first mismatch into `why`, as
-/// "LABEL: frame F, object O, field X: golden G, now N (difference D)".
-bool hs_trajectory_compare(FILE *golden, FILE *actual, double tolerance, const char *label, char *why,
-                           size_t why_size);
 
 // ---------------------------------------------------------------------------------------------
 // Spring model (Responsive Workbench): a tracked stylus moves objects through a critically damped
@@ -563,5 +519,9 @@ typedef struct hs_release {
 } hs_release;
 /// The last release (kind HS_RELEASE_NONE before the first one).
 hs_status hs_world_spring_last_release(const hs_world *world, hs_release *out);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

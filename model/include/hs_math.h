@@ -8,6 +8,26 @@
 
 #include <math.h>
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+// Deterministic elementary functions (detmath.c): built from + − × ÷ and sqrt only, so they give
+// the same bits on every CPU and compiler (glibc's libm does not: its code paths differ with and
+// without FMA). Every value that enters a world's state goes through these, never through libm's
+// sin, cos, atan2, exp, pow... Worst errors in ulps are measured by `make ulp` (docs/determinism.md).
+double hs_sin(double x);
+double hs_cos(double x);
+double hs_tan(double x);
+double hs_asin(double x);
+double hs_acos(double x);
+double hs_atan(double x);
+double hs_atan2(double y, double x);
+double hs_exp(double x);
+double hs_log(double x);
+double hs_pow(double x, double y);
+double hs_cbrt(double x);
+
 typedef struct hs_vec3 {
 	double x, y, z;
 } hs_vec3;
@@ -70,8 +90,8 @@ static inline int hs_quat_is_finite(hs_quat q) {
 }
 // rotation by angle (rad) about a unit axis
 static inline hs_quat hs_quat_from_axis_angle(hs_vec3 unit_axis, double angle) {
-	double s = sin(0.5 * angle);
-	return hs_q(cos(0.5 * angle), unit_axis.x * s, unit_axis.y * s, unit_axis.z * s);
+	double s = hs_sin(0.5 * angle);
+	return hs_q(hs_cos(0.5 * angle), unit_axis.x * s, unit_axis.y * s, unit_axis.z * s);
 }
 // v rotated by q: v + 2w (u × v) + 2 u × (u × v), u the vector part
 static inline hs_vec3 hs_quat_rotate(hs_quat q, hs_vec3 v) {
@@ -90,7 +110,7 @@ static inline hs_quat hs_quat_from_rpy(double roll, double pitch, double yaw) {
 // angle of the rotation q in [0, pi]
 static inline double hs_quat_angle(hs_quat q) {
 	double v = sqrt(q.x * q.x + q.y * q.y + q.z * q.z);
-	return 2.0 * atan2(v, fabs(q.w));
+	return 2.0 * hs_atan2(v, fabs(q.w));
 }
 // spherical interpolation along the shorter arc, t in [0, 1]
 static inline hs_quat hs_quat_slerp(hs_quat a, hs_quat b, double t) {
@@ -104,9 +124,9 @@ static inline hs_quat hs_quat_slerp(hs_quat a, hs_quat b, double t) {
 		wa = 1.0 - t;
 		wb = t;
 	} else {
-		double th = acos(c), s = sin(th);
-		wa = sin((1.0 - t) * th) / s;
-		wb = sin(t * th) / s;
+		double th = hs_acos(c), s = hs_sin(th);
+		wa = hs_sin((1.0 - t) * th) / s;
+		wb = hs_sin(t * th) / s;
 	}
 	return hs_quat_normalize(hs_q(wa * a.w + wb * b.w, wa * a.x + wb * b.x, wa * a.y + wb * b.y, wa * a.z + wb * b.z));
 }
@@ -133,5 +153,9 @@ static inline hs_vec3 hs_mat3_tmul(hs_mat3 m, hs_vec3 v) {
 	return hs_v3(m.r0.x * v.x + m.r1.x * v.y + m.r2.x * v.z, m.r0.y * v.x + m.r1.y * v.y + m.r2.y * v.z,
 	             m.r0.z * v.x + m.r1.z * v.y + m.r2.z * v.z);
 }
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

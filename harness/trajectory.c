@@ -6,7 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "handspring.h"
+#include "hs_harness.h"
 
 #define TRAJECTORY_HEADER "frame,t,object,x,y,z,qw,qx,qy,qz,contact,floor,resting,hash"
 

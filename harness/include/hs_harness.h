@@ -1,0 +1,90 @@
+// hs_harness.h — the public API of handspring's harness: scenario files (YAML) that build a
+// world, drive it with hand and stylus scripts or recorded input, and check `expect` clauses;
+// the scenario catalog; trajectories and their comparison with goldens.
+//
+// Link with `pkg-config --cflags --libs handspring-harness` (libyaml, GSL). The physics alone
+// (handspring.h) needs neither.
+#ifndef HS_HARNESS_H
+#define HS_HARNESS_H
+
+#include <stdbool.h>
+#include <stddef.h>
+#include <stdio.h>
+
+#include "handspring.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+// ---------------------------------------------------------------------------------------------
+// Scenarios: a YAML file that builds a world, drives it and states what must happen.
+
+typedef struct hs_scenario hs_scenario;
+
+/// An error message `file:line: what is wrong` (no trailing newline).
+typedef struct hs_error {
+	char message[512];
+} hs_error;
+
+/// Loads and validates a scenario file. NULL and `err` filled on any problem.
+hs_scenario *hs_scenario_load(const char *path, hs_error *err);
+void hs_scenario_destroy(hs_scenario *scenario);
+
+const char *hs_scenario_name(const hs_scenario *scenario);
+const char *hs_scenario_description(const hs_scenario *scenario);
+/// The world the scenario built (owned by the scenario).
+hs_world *hs_scenario_world(hs_scenario *scenario);
+/// Name of the i-th object, in the order of the file.
+const char *hs_scenario_object_name(const hs_scenario *scenario, int i);
+/// Frames the scenario runs: round(duration / dt).
+long hs_scenario_frame_count(const hs_scenario *scenario);
+
+/// Steps one frame (inputs, then the world) and records what expectations need.
+/// Returns false once every frame has run.
+bool hs_scenario_step(hs_scenario *scenario);
+
+/// Evaluates every `expect` clause; writes one line per clause (PASS/FAIL and the measured
+/// value) to `report` when not NULL. Returns the number of failed clauses.
+int hs_scenario_check(const hs_scenario *scenario, FILE *report);
+/// Lines hs_scenario_check writes: one per clause and object it names ("*" names every object),
+/// plus one when the world failed to step.
+int hs_scenario_expectation_count(const hs_scenario *scenario);
+/// s: the scenario's frame time.
+double hs_scenario_dt(const hs_scenario *scenario);
+int hs_scenario_object_count(const hs_scenario *scenario);
+
+/// The scenario files below a folder: every *.yaml, recursively (hidden entries skipped), sorted
+/// by name (strcmp). A name is the path relative to the folder without ".yaml", e.g. "hand/flick";
+/// a path is the folder joined with that relative path.
+typedef struct hs_catalog {
+	int count;
+	char **names;
+	char **paths;
+} hs_catalog;
+
+/// Fills `out` (free it with hs_catalog_free). False and `err` = "DIR: what is wrong" when the
+/// folder cannot be read; an empty folder is a valid, empty catalog.
+bool hs_catalog_load(const char *dir, hs_catalog *out, hs_error *err);
+void hs_catalog_free(hs_catalog *catalog);
+
+// ---------------------------------------------------------------------------------------------
+// Trajectories: CSV, one row per object per frame.
+
+/// Writes the header line `frame,t,object,x,y,z,qw,qx,qy,qz,contact,floor,resting,hash`.
+void hs_trajectory_write_header(FILE *out);
+/// Writes the rows of the current frame of a scenario's world (numbers with 17 significant digits).
+void hs_trajectory_write_frame(FILE *out, hs_scenario *scenario);
+
+/// Compares a trajectory with its golden (both as written above; lines starting with '#' are
+/// comments). Numbers must agree within `tolerance` (absolute), contact states and row keys exactly.
+/// Returns true when they match; otherwise writes the first mismatch into `why`, as
+/// "LABEL: frame F, object O, field X: golden G, now N (difference D)".
+bool hs_trajectory_compare(FILE *golden, FILE *actual, double tolerance, const char *label, char *why,
+                           size_t why_size);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif
