@@ -28,7 +28,7 @@ CFLAGS_HARNESS = $(CFLAGS_BASE) -Imodel/include -Iharness/include -Iharness
 CFLAGS_TESTS   = $(CFLAGS_BASE) $(PUBLIC_INC) -Imodel -Iharness -Itests
 LDLIBS_ALL = $(PKG_LIBS) -lm $(LDLIBS)
 ifeq ($(SANITIZE),1)
-CFLAGS_ALL += -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
+CFLAGS_BASE += -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
 LDFLAGS    += -fsanitize=address,undefined
 endif
 
