@@ -29,7 +29,7 @@
 #include <gsl/gsl_randist.h>
 #include <string.h>
 
-#include "spring_internal.h"
+#include "tracker.h"
 
 // a sample within this fraction of a period of the frame end is taken in that frame
 #define HS_TICK_SLOP 1e-9

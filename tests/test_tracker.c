@@ -10,7 +10,7 @@
 
 #include <gsl/gsl_rng.h>
 
-#include "spring_internal.h"
+#include "tracker.h"
 #include "test_util.h"
 
 static const hs_vec3 EARTH = {0.0, 0.0, -9.81};

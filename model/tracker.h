@@ -1,6 +1,7 @@
-// spring_internal.h — private structures of the spring model (spring.c) and its tracker (tracker.c).
-#ifndef HS_SPRING_INTERNAL_H
-#define HS_SPRING_INTERNAL_H
+// tracker.h — the tracker daemon of the spring model (tracker.c): what the spring system and the
+// tests call.
+#ifndef HS_TRACKER_H
+#define HS_TRACKER_H
 
 #include <gsl/gsl_rng.h>
 
