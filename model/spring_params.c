@@ -44,10 +44,6 @@ hs_spring_def hs_default_spring_def(void) {
 	def.catch_radius = 0.05;
 	def.grab_range = 0.5;
 	def.select_range = 2.0;
-	def.noise = false;
-	def.noise_seed = 1;
-	def.noise_position = 0.03 * 0.0254;          // 0.03 inch (Fastrak static accuracy, [13])
-	def.noise_orientation = 0.15 * HS_PI / 180.0; // 0.15°
 	return def;
 }
 
@@ -79,8 +75,6 @@ bool hs_spring_def_valid(const hs_spring_def *d) {
 	if (!finite_nonneg(d->rest_speed) || !isfinite(d->motion_speed) || d->motion_speed <= d->rest_speed)
 		return false;
 	if (!finite_nonneg(d->catch_radius) || !finite_nonneg(d->grab_range) || !finite_pos(d->select_range))
-		return false;
-	if (!finite_nonneg(d->noise_position) || !finite_nonneg(d->noise_orientation))
 		return false;
 	return true;
 }

@@ -8,7 +8,6 @@
 
 struct hs_spring_system {
 	hs_spring_def def;
-	gsl_rng *rng;
 	hs_tracker tracker;
 	int geom_count; // bodies whose geometry is cached
 	hs_spring_geom *geom;

@@ -1,6 +1,5 @@
 // spring_world.c — the public API of the spring model (handspring.h): switching a world to it,
 // the stylus, attaching and detaching by hand, and what a user reads back.
-#include <gsl/gsl_rng.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -11,8 +10,6 @@
 void hs_spring_system_destroy(hs_spring_system *system) {
 	if (!system)
 		return;
-	if (system->rng)
-		gsl_rng_free(system->rng);
 	free(system->geom);
 	free(system->on_floor);
 	free(system->sliding);
@@ -35,18 +32,12 @@ hs_status hs_world_enable_springs(hs_world *world, const hs_spring_def *def) {
 	sys->separated = calloc(cap, sizeof *sys->separated);
 	sys->saved_pos = calloc(cap, sizeof *sys->saved_pos);
 	sys->saved_vel = calloc(cap, sizeof *sys->saved_vel);
-	if (def->noise) {
-		sys->rng = gsl_rng_alloc(gsl_rng_mt19937);
-		if (sys->rng)
-			gsl_rng_set(sys->rng, def->noise_seed);
-	}
-	if (!sys->geom || !sys->on_floor || !sys->sliding || !sys->separated || !sys->saved_pos || !sys->saved_vel ||
-	    (def->noise && !sys->rng)) {
+	if (!sys->geom || !sys->on_floor || !sys->sliding || !sys->separated || !sys->saved_pos || !sys->saved_vel) {
 		hs_spring_system_destroy(sys);
 		return HS_ERR_NO_MEMORY;
 	}
 	sys->def = *def;
-	hs_tracker_init(&sys->tracker, def, sys->rng, (double)world->frame * world->def.dt);
+	hs_tracker_init(&sys->tracker, def, (double)world->frame * world->def.dt);
 	sys->rot = sys->rot_prev = hs_quat_identity();
 	sys->attached = -1;
 	sys->candidate = -1;

@@ -3,8 +3,6 @@
 #ifndef HS_TRACKER_H
 #define HS_TRACKER_H
 
-#include <gsl/gsl_rng.h>
-
 #include "internal.h"
 
 // The tracker daemon (§3, §5.1): stylus samples at a fixed rate in a ring buffer, velocity and
@@ -14,9 +12,6 @@ typedef struct hs_tracker {
 	int window;           // samples in the least-squares fit
 	double rest_speed;    // m/s: moving → rest below this
 	double motion_speed;  // m/s: rest → moving above this
-	gsl_rng *rng;         // noise generator (NULL: no noise); owned by the spring system
-	double noise_position;    // m RMS per axis
-	double noise_orientation; // rad RMS per axis
 	long next_tick;       // index k of the next sample, due at k · period
 	long count;           // samples taken
 	int head;             // ring index of the newest sample
@@ -30,8 +25,8 @@ typedef struct hs_tracker {
 } hs_tracker;
 
 // Sets up an empty tracker whose first sample is due at or after time t (s).
-void hs_tracker_init(hs_tracker *tracker, const hs_spring_def *def, gsl_rng *rng, double t);
-// Records one measured sample (noise added here), then updates the estimates and events.
+void hs_tracker_init(hs_tracker *tracker, const hs_spring_def *def, double t);
+// Records one sample exactly as given (noise is input: DESIGN.md), then updates the estimates and events.
 void hs_tracker_record(hs_tracker *tracker, double t, hs_vec3 position, hs_quat orientation, bool button);
 // Takes every sample due in (t0, t1] (and at t0 if due), interpolating the stylus between its poses
 // at t0 and t1 (position linearly, orientation by slerp). The button is the one of the frame.
