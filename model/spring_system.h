@@ -1,5 +1,7 @@
 // spring_system.h — the spring model's system: its definition and everything a step changes
-// (stylus, spring, tracker, per-object flags), shared by the files of the spring model.
+// (stylus, spring, tracker, per-object flags), shared by the files of the spring model. Every
+// field a later step reads is visited by hs_spring_state_io (spring_state.c): a field added here
+// is added there.
 #ifndef HS_SPRING_SYSTEM_H
 #define HS_SPRING_SYSTEM_H
 
@@ -9,7 +11,8 @@
 struct hs_spring_system {
 	hs_spring_def def;
 	hs_tracker tracker;
-	int geom_count; // bodies whose geometry is cached
+	int capacity;   // objects the per-object arrays hold (the world's max_objects, at least 1)
+	int geom_count; // bodies whose geometry is cached (a cache: 0 makes the next step rebuild it)
 	hs_spring_geom *geom;
 	uint8_t *on_floor;
 	uint8_t *sliding;

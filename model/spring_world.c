@@ -37,6 +37,7 @@ hs_status hs_world_enable_springs(hs_world *world, const hs_spring_def *def) {
 		return HS_ERR_NO_MEMORY;
 	}
 	sys->def = *def;
+	sys->capacity = (int)cap;
 	hs_tracker_init(&sys->tracker, def, (double)world->frame * world->def.dt);
 	sys->rot = sys->rot_prev = hs_quat_identity();
 	sys->attached = -1;
