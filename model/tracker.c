@@ -18,10 +18,10 @@
 //    the hand's recent path (§3: "the path information and current direction of the movement ...
 //    are combined"). Unlike the end-point velocity it does not swing backwards when a hand stops
 //    abruptly (a quadratic fit overshoots at such a kink), so the selection ray uses it.
-//  - Events with hysteresis (judged once the fit window is full): a hand at rest starts moving when its speed exceeds motion_speed
-//    (default 0.20 m/s, 11 σ of the noise above); a moving hand comes to rest when its speed falls
-//    below rest_speed (default 0.10 m/s, 5.5 σ). Between the two the state does not change, so
-//    noise cannot make it flicker.
+//  - Events with hysteresis (judged once the fit window is full): a hand at rest starts moving
+//    when its speed exceeds motion_speed (default 0.20 m/s, 11 σ of the noise above); a moving hand
+//    comes to rest when its speed falls below rest_speed (default 0.10 m/s, 5.5 σ). Between the two
+//    the state does not change, so noise cannot make it flicker.
 //  - Noise is input, not physics (DESIGN.md): the tracker records exactly the stylus poses it is
 //    given. A caller simulating the Fastrak (0.03 inch = 0.762 mm RMS per axis, 0.15° RMS: its
 //    static accuracy) adds that noise to the poses it passes to hs_world_set_stylus — so the

@@ -6,7 +6,8 @@
 #include "internal.h"
 
 // The tracker daemon (§3, §5.1): stylus samples at a fixed rate in a ring buffer, velocity and
-// acceleration estimates, rest / motion events with hysteresis.
+// acceleration estimates, rest / motion events with hysteresis. The first four fields come from
+// the definition; every other one is state, visited by hs_spring_state_io (spring_state.c).
 typedef struct hs_tracker {
 	double period;        // s between samples (1 / rate)
 	int window;           // samples in the least-squares fit
@@ -26,7 +27,8 @@ typedef struct hs_tracker {
 
 // Sets up an empty tracker whose first sample is due at or after time t (s).
 void hs_tracker_init(hs_tracker *tracker, const hs_spring_def *def, double t);
-// Records one sample exactly as given (noise is input: DESIGN.md), then updates the estimates and events.
+// Records one sample exactly as given (noise is input: DESIGN.md), then updates the estimates
+// and events.
 void hs_tracker_record(hs_tracker *tracker, double t, hs_vec3 position, hs_quat orientation, bool button);
 // Takes every sample due in (t0, t1] (and at t0 if due), interpolating the stylus between its poses
 // at t0 and t1 (position linearly, orientation by slerp). The button is the one of the frame.
