@@ -17,10 +17,11 @@
 //    quadratic fit over its 9-sample buffer), fed the sampled path through hs_world_set_stylus.
 // Landing = where the parabola from P_K with that velocity meets z = 0.025 m; error = distance to
 // the continuous-time landing point. Each is given noise-free and as the RMS over trials with the
-// Fastrak's 0.762 mm RMS position noise (seeded gsl_rng_mt19937; the tracker uses the library's
-// own seeded noise model). Last column: the library end to end — a hand world whose hand grasps
-// the block, follows the sampled path and opens after frame K; the block's rest point (landing is
-// frame-quantised: it stops in the first frame after touching down) and whether the grasp held.
+// Fastrak's 0.762 mm RMS position noise (seeded gsl_rng_mt19937): the same noisy frames for every
+// estimator, the tracker included (noise is input: the library adds none). Last column: the
+// library end to end — a hand world whose hand grasps the block, follows the sampled path and
+// opens after frame K; the block's rest point (landing is frame-quantised: it stops in the first
+// frame after touching down) and whether the grasp held.
 #include <gsl/gsl_randist.h>
 #include <gsl/gsl_rng.h>
 #include <stdlib.h>
@@ -132,16 +133,13 @@ static hs_vec3 est_lsq(const hs_vec3 *p, int k, double dt, int fps) {
 }
 
 // The library's tracker (spring model, 50 Hz, 9-sample quadratic fit) fed the frames 0 … k.
-static hs_vec3 est_tracker(const hs_vec3 *p, int k, double dt, bool noise, unsigned long seed) {
+static hs_vec3 est_tracker(const hs_vec3 *p, int k, double dt) {
 	hs_world_def wd = hs_default_world_def();
 	wd.dt = dt;
 	wd.max_objects = 1;
 	wd.max_hands = 0;
 	hs_world *w = hs_world_create(&wd, NULL);
 	hs_spring_def sd = hs_default_spring_def();
-	sd.noise = noise;
-	sd.noise_seed = seed;
-	sd.noise_orientation = 0.0;
 	hs_world_enable_springs(w, &sd);
 	hs_world_set_stylus(w, p[0], hs_quat_identity(), false);
 	for (int j = 1; j <= k; ++j) { // the stylus pose at the end of frame j
@@ -277,7 +275,7 @@ void bench_throw(const bench_opts *opts, bench_shared *shared) {
 			p[k] = path_at(&s, (double)k * dt);
 		// noise-free
 		hs_vec3 v[N_EST] = {est_eq3(p, K, dt), est_window(p, K, dt, fps), est_lsq(p, K, dt, fps),
-		                    est_tracker(p, K, dt, false, 1)};
+		                    est_tracker(p, K, dt)};
 		for (int e = 0; e < N_EST; ++e) {
 			hs_vec3 l = landing(p[K], v[e]);
 			land[f][e] = l.x;
@@ -290,7 +288,7 @@ void bench_throw(const bench_opts *opts, bench_shared *shared) {
 				q[k] = hs_add(p[k], hs_v3(gsl_ran_gaussian(rng, NOISE), gsl_ran_gaussian(rng, NOISE),
 				                          gsl_ran_gaussian(rng, NOISE)));
 			hs_vec3 vn[N_EST] = {est_eq3(q, K, dt), est_window(q, K, dt, fps), est_lsq(q, K, dt, fps),
-			                     est_tracker(p, K, dt, true, (unsigned long)trial + 1)};
+			                     est_tracker(q, K, dt)};
 			for (int e = 0; e < N_EST; ++e) {
 				double d = hs_distance(landing(q[K], vn[e]), exact);
 				sum[e] += d * d;

@@ -719,8 +719,6 @@ static bool read_spring(parser *p, const yaml_node_t *node) {
 		long seed;
 		if (!read_integer(p, f.value[SP_NOISE_SEED], "noise_seed", 0, 4294967295L, &seed))
 			return false;
-		d->noise = true;
-		d->noise_seed = (unsigned long)seed;
 	}
 	return true;
 }

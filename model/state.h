@@ -20,6 +20,8 @@ typedef struct hs_state_io {
 	size_t words;           // words visited so far
 	size_t limit;           // SAVE / LOAD: words the buffer holds
 	bool overflow;          // SAVE / LOAD ran past limit
+	bool invalid;           // LOAD read a value out of range (a bad index, enum or number)
+	const char *why;        // LOAD: what the first invalid value was (static text)
 	uint64_t hash;          // HASH: running hash of the words
 } hs_state_io;
 

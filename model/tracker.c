@@ -18,31 +18,27 @@
 //    the hand's recent path (§3: "the path information and current direction of the movement ...
 //    are combined"). Unlike the end-point velocity it does not swing backwards when a hand stops
 //    abruptly (a quadratic fit overshoots at such a kink), so the selection ray uses it.
-//  - Events with hysteresis (judged once the fit window is full): a hand at rest starts moving when its speed exceeds motion_speed
-//    (default 0.20 m/s, 11 σ of the noise above); a moving hand comes to rest when its speed falls
-//    below rest_speed (default 0.10 m/s, 5.5 σ). Between the two the state does not change, so
-//    noise cannot make it flicker.
-//  - Noise model (optional, seeded gsl_rng_mt19937): each sample's position gets independent
-//    Gaussian noise per axis (0.03 inch = 0.762 mm RMS), its orientation a rotation whose rotation
-//    vector has Gaussian components (0.15° RMS): the Fastrak's static accuracy. Draws happen in a
-//    fixed order (x, y, z, then rotation x, y, z) so a seed gives the same samples everywhere.
-#include <gsl/gsl_randist.h>
+//  - Events with hysteresis (judged once the fit window is full): a hand at rest starts moving
+//    when its speed exceeds motion_speed (default 0.20 m/s, 11 σ of the noise above); a moving hand
+//    comes to rest when its speed falls below rest_speed (default 0.10 m/s, 5.5 σ). Between the two
+//    the state does not change, so noise cannot make it flicker.
+//  - Noise is input, not physics (DESIGN.md): the tracker records exactly the stylus poses it is
+//    given. A caller simulating the Fastrak (0.03 inch = 0.762 mm RMS per axis, 0.15° RMS: its
+//    static accuracy) adds that noise to the poses it passes to hs_world_set_stylus — so the
+//    spring's anchor sees it too, as §5.1 computes the spring from the tracker data.
 #include <string.h>
 
-#include "spring_internal.h"
+#include "tracker.h"
 
 // a sample within this fraction of a period of the frame end is taken in that frame
 #define HS_TICK_SLOP 1e-9
 
-void hs_tracker_init(hs_tracker *tracker, const hs_spring_def *def, gsl_rng *rng, double t) {
+void hs_tracker_init(hs_tracker *tracker, const hs_spring_def *def, double t) {
 	memset(tracker, 0, sizeof *tracker);
 	tracker->period = 1.0 / def->tracker_rate;
 	tracker->window = def->tracker_window;
 	tracker->rest_speed = def->rest_speed;
 	tracker->motion_speed = def->motion_speed;
-	tracker->rng = rng;
-	tracker->noise_position = def->noise_position;
-	tracker->noise_orientation = def->noise_orientation;
 	tracker->next_tick = (long)ceil(t / tracker->period - HS_TICK_SLOP);
 	tracker->head = HS_TRACKER_CAPACITY - 1;
 	tracker->at_rest = true;
@@ -111,21 +107,6 @@ void hs_tracker_estimate(const hs_tracker *tracker, hs_vec3 *velocity, hs_vec3 *
 }
 
 void hs_tracker_record(hs_tracker *tracker, double t, hs_vec3 position, hs_quat orientation, bool button) {
-	if (tracker->rng) { // Fastrak static accuracy (§5.1, [13])
-		gsl_rng *rng = tracker->rng;
-		double nx = gsl_ran_gaussian(rng, tracker->noise_position);
-		double ny = gsl_ran_gaussian(rng, tracker->noise_position);
-		double nz = gsl_ran_gaussian(rng, tracker->noise_position);
-		position = hs_add(position, hs_v3(nx, ny, nz));
-		double rx = gsl_ran_gaussian(rng, tracker->noise_orientation);
-		double ry = gsl_ran_gaussian(rng, tracker->noise_orientation);
-		double rz = gsl_ran_gaussian(rng, tracker->noise_orientation);
-		hs_vec3 rv = hs_v3(rx, ry, rz);
-		double angle = hs_length(rv);
-		if (angle > 0.0)
-			orientation = hs_quat_normalize(
-			    hs_quat_mul(hs_quat_from_axis_angle(hs_scale(rv, 1.0 / angle), angle), orientation));
-	}
 	tracker->head = (tracker->head + 1) % HS_TRACKER_CAPACITY;
 	hs_tracker_sample *s = &tracker->ring[tracker->head];
 	s->time = t;

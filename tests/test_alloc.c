@@ -248,7 +248,6 @@ static void test_spring_world(void **state) {
 		assert_non_null(w);
 		hs_spring_def sd = hs_default_spring_def();
 		sd.integrator = (hs_integrator)integrator;
-		sd.noise = true;
 		sd.walls = (hs_spring_walls){true, -1.0, 3.0, -1.0, 1.0};
 		assert_int_equal(hs_world_enable_springs(w, &sd), HS_OK);
 		hs_shape_id ball = add_shape(w, hs_shape_sphere(0.05, NULL));

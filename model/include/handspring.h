@@ -376,6 +376,11 @@ int hs_world_contacts(const hs_world *world, hs_contact *out, int max);
 // shape as its world-axis bounding box. In spring worlds hs_object_state.contact is
 // HS_CONTACT_GRASP for the object on the spring, HS_CONTACT_NONE otherwise, and `resting` means
 // lying still on the floor.
+//
+// Noise is input, not physics: the model holds no random generator. The tracker records exactly
+// the stylus poses it is given, so a caller that simulates a real tracker (the Fastrak's 0.03 inch
+// and 0.15° static accuracy, §5.1) adds that noise to the poses it passes to hs_world_set_stylus;
+// the spring's anchor then sees it too, as the paper computes the spring from the tracker data.
 
 /// How the per-frame spring-damper equation is integrated.
 typedef enum hs_integrator {
@@ -411,10 +416,6 @@ typedef struct hs_spring_def {
 	double catch_radius;       ///< m: a press this close to a flying object's surface catches it (default 0.05)
 	double grab_range;         ///< m: a press attaches the candidate only this close to its surface (default 0.5)
 	double select_range;       ///< m: length of the selection ray (default 2.0)
-	bool noise;                ///< seeded tracker noise on (default false)
-	unsigned long noise_seed;  ///< seed of the gsl_rng_mt19937 generator (default 1)
-	double noise_position;     ///< m RMS per axis (default 0.762e-3: the Fastrak's 0.03 inch)
-	double noise_orientation;  ///< rad RMS per axis (default 0.15°)
 } hs_spring_def;
 
 hs_spring_def hs_default_spring_def(void);
@@ -482,7 +483,7 @@ typedef enum hs_tracker_event {
 
 typedef struct hs_tracker_sample {
 	double time;      ///< s
-	hs_vec3 position; ///< m (with noise when the noise model is on)
+	hs_vec3 position; ///< m: the stylus as given to hs_world_set_stylus, interpolated to the sample time
 	hs_quat orientation;
 	bool button;
 } hs_tracker_sample;

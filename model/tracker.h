@@ -1,21 +1,18 @@
-// spring_internal.h — private structures of the spring model (spring.c) and its tracker (tracker.c).
-#ifndef HS_SPRING_INTERNAL_H
-#define HS_SPRING_INTERNAL_H
-
-#include <gsl/gsl_rng.h>
+// tracker.h — the tracker daemon of the spring model (tracker.c): what the spring system and the
+// tests call.
+#ifndef HS_TRACKER_H
+#define HS_TRACKER_H
 
 #include "internal.h"
 
 // The tracker daemon (§3, §5.1): stylus samples at a fixed rate in a ring buffer, velocity and
-// acceleration estimates, rest / motion events with hysteresis.
+// acceleration estimates, rest / motion events with hysteresis. The first four fields come from
+// the definition; every other one is state, visited by hs_spring_state_io (spring_state.c).
 typedef struct hs_tracker {
 	double period;        // s between samples (1 / rate)
 	int window;           // samples in the least-squares fit
 	double rest_speed;    // m/s: moving → rest below this
 	double motion_speed;  // m/s: rest → moving above this
-	gsl_rng *rng;         // noise generator (NULL: no noise); owned by the spring system
-	double noise_position;    // m RMS per axis
-	double noise_orientation; // rad RMS per axis
 	long next_tick;       // index k of the next sample, due at k · period
 	long count;           // samples taken
 	int head;             // ring index of the newest sample
@@ -29,8 +26,9 @@ typedef struct hs_tracker {
 } hs_tracker;
 
 // Sets up an empty tracker whose first sample is due at or after time t (s).
-void hs_tracker_init(hs_tracker *tracker, const hs_spring_def *def, gsl_rng *rng, double t);
-// Records one measured sample (noise added here), then updates the estimates and events.
+void hs_tracker_init(hs_tracker *tracker, const hs_spring_def *def, double t);
+// Records one sample exactly as given (noise is input: DESIGN.md), then updates the estimates
+// and events.
 void hs_tracker_record(hs_tracker *tracker, double t, hs_vec3 position, hs_quat orientation, bool button);
 // Takes every sample due in (t0, t1] (and at t0 if due), interpolating the stylus between its poses
 // at t0 and t1 (position linearly, orientation by slerp). The button is the one of the frame.

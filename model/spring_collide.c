@@ -1,0 +1,107 @@
+// spring_collide.c — object–object collisions of "Dynamics in Interaction on the Responsive
+// Workbench" (§4.5: "collisions ... momentum and energy are conserved").
+//
+// Readings fixed here (DESIGN.md "Spring model" leaves them to us):
+//  - After the step, each overlapping pair (array order) exchanges an impulse along the contact
+//    normal, J = −(1 + e) v_n / (1/m_a + 1/m_b), then is pushed apart along the normal in
+//    inverse-mass shares.
+//  - Spheres collide as exact spheres, other shapes as their world-axis bounding box (no rotation
+//    in this model, spring_geom.c): sphere–sphere along the line of centres, sphere–box along the
+//    nearest point, box–box along the axis of least overlap. There is no resting contact between
+//    objects.
+#include "spring_collide.h"
+
+// Contact of a (sphere) with b (box): normal from a to b, depth.
+static bool sphere_box(hs_vec3 pa, double r, hs_vec3 pb, const hs_spring_geom *gb, hs_vec3 *n, double *depth) {
+	hs_vec3 lo = hs_add(pb, gb->lo), hi = hs_add(pb, gb->hi);
+	hs_vec3 q = hs_v3(fmin(fmax(pa.x, lo.x), hi.x), fmin(fmax(pa.y, lo.y), hi.y), fmin(fmax(pa.z, lo.z), hi.z));
+	hs_vec3 d = hs_sub(q, pa);
+	double dist2 = hs_length_sq(d);
+	if (dist2 > 0.0) { // centre outside the box
+		double dist = sqrt(dist2);
+		if (dist >= r)
+			return false;
+		*n = hs_scale(d, 1.0 / dist);
+		*depth = r - dist;
+		return true;
+	}
+	// centre inside: leave through the nearest face
+	double gaps[6] = {pa.x - lo.x, hi.x - pa.x, pa.y - lo.y, hi.y - pa.y, pa.z - lo.z, hi.z - pa.z};
+	hs_vec3 dirs[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+	int best = 0;
+	for (int k = 1; k < 6; ++k)
+		if (gaps[k] < gaps[best])
+			best = k;
+	*n = dirs[best];
+	*depth = gaps[best] + r;
+	return true;
+}
+
+// Contact of two boxes: along the axis of least overlap, normal from a to b.
+static bool box_box(const hs_spring_geom *ga, hs_vec3 pa, const hs_spring_geom *gb, hs_vec3 pb, hs_vec3 *n,
+                    double *depth) {
+	hs_vec3 alo = hs_add(pa, ga->lo), ahi = hs_add(pa, ga->hi), blo = hs_add(pb, gb->lo), bhi = hs_add(pb, gb->hi);
+	double ov[3] = {fmin(ahi.x, bhi.x) - fmax(alo.x, blo.x), fmin(ahi.y, bhi.y) - fmax(alo.y, blo.y),
+	                fmin(ahi.z, bhi.z) - fmax(alo.z, blo.z)};
+	if (ov[0] <= 0.0 || ov[1] <= 0.0 || ov[2] <= 0.0)
+		return false;
+	int axis = 0;
+	for (int k = 1; k < 3; ++k)
+		if (ov[k] < ov[axis])
+			axis = k;
+	double ca[3] = {alo.x + ahi.x, alo.y + ahi.y, alo.z + ahi.z}, cb[3] = {blo.x + bhi.x, blo.y + bhi.y, blo.z + bhi.z};
+	double sign = cb[axis] >= ca[axis] ? 1.0 : -1.0;
+	*n = hs_v3(axis == 0 ? sign : 0.0, axis == 1 ? sign : 0.0, axis == 2 ? sign : 0.0);
+	*depth = ov[axis];
+	return true;
+}
+
+// Contact of a with b: unit normal from a to b and depth (m); false when they do not overlap.
+static bool contact_of(const hs_spring_geom *ga, hs_vec3 pa, const hs_spring_geom *gb, hs_vec3 pb, hs_vec3 *n,
+                       double *depth) {
+	if (ga->sphere && gb->sphere) {
+		hs_vec3 d = hs_sub(pb, pa);
+		double dist = hs_length(d), reach = ga->radius + gb->radius;
+		if (dist >= reach)
+			return false;
+		*n = dist > 0.0 ? hs_scale(d, 1.0 / dist) : hs_v3(0.0, 0.0, 1.0);
+		*depth = reach - dist;
+		return true;
+	}
+	if (ga->sphere)
+		return sphere_box(pa, ga->radius, pb, gb, n, depth);
+	if (gb->sphere) {
+		if (!sphere_box(pb, gb->radius, pa, ga, n, depth))
+			return false;
+		*n = hs_neg(*n);
+		return true;
+	}
+	return box_box(ga, pa, gb, pb, n, depth);
+}
+
+void hs_spring_collide(hs_world *world, const hs_spring_geom *geom, double restitution, uint8_t *separated) {
+	double e = restitution;
+	for (int i = 0; i < world->object_count; ++i) {
+		hs_body *a = &world->bodies[i];
+		const hs_spring_geom *ga = &geom[i];
+		for (int j = i + 1; j < world->object_count; ++j) {
+			hs_body *b = &world->bodies[j];
+			const hs_spring_geom *gb = &geom[j];
+			hs_vec3 n;
+			double depth;
+			if (!contact_of(ga, a->pos, gb, b->pos, &n, &depth))
+				continue;
+			double wa = 1.0 / a->mass, wb = 1.0 / b->mass, wsum = wa + wb;
+			double vn = hs_dot(hs_sub(b->vel, a->vel), n);
+			if (vn < 0.0) { // approaching: impulse along the normal
+				double impulse = -(1.0 + e) * vn / wsum;
+				a->vel = hs_mul_add(a->vel, -impulse * wa, n);
+				b->vel = hs_mul_add(b->vel, impulse * wb, n);
+			}
+			// separate in inverse-mass shares (velocities untouched: momentum stays exact)
+			a->pos = hs_mul_add(a->pos, -depth * wa / wsum, n);
+			b->pos = hs_mul_add(b->pos, depth * wb / wsum, n);
+			separated[i] = separated[j] = 1;
+		}
+	}
+}

@@ -1,0 +1,24 @@
+// spring_geom.h — where an object of the spring model reaches, and point and ray queries on it.
+#ifndef HS_SPRING_GEOM_H
+#define HS_SPRING_GEOM_H
+
+#include "internal.h"
+
+// Where an object reaches, relative to G in world axes: its world-axis bounding box, or a sphere.
+// Objects keep their orientation in the spring model (no torque, §4.2), so it is fixed per object.
+typedef struct hs_spring_geom {
+	hs_vec3 lo, hi; // m: offsets of the box corners from G
+	double radius;  // m, spheres only
+	bool sphere;
+} hs_spring_geom;
+
+// The reach of `body` in its present orientation.
+hs_spring_geom hs_spring_geom_of(const hs_world *world, const hs_body *body);
+// True when the point s lies in the object whose G is at p.
+bool hs_spring_geom_inside(const hs_spring_geom *g, hs_vec3 p, hs_vec3 s);
+// m from s to the surface of the object whose G is at p (≤ 0 inside).
+double hs_spring_geom_distance(const hs_spring_geom *g, hs_vec3 p, hs_vec3 s);
+// The ray o + t d (d unit) against the object whose G is at p: the entry t in [0, range], or -1.
+double hs_spring_geom_ray(const hs_spring_geom *g, hs_vec3 p, hs_vec3 o, hs_vec3 d, double range);
+
+#endif

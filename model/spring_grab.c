@@ -1,0 +1,125 @@
+// spring_grab.c — how the spring of "Dynamics in Interaction on the Responsive Workbench" gets and
+// loses its object: selection (§3), direct picking, catching and the release (§4.4).
+//
+// Readings fixed here (DESIGN.md "Spring model" leaves them to us):
+//  - Button and selection at the end of each frame (the sample that carries them): a release
+//    while the tracker says 'at rest' is a drop, otherwise a throw (the object takes the tracker's
+//    velocity estimate, §4.4); a press attaches, in this order, the object the stylus is inside
+//    (direct picking, §3), the nearest flying object within catch_radius (catch), or the selection
+//    candidate within grab_range (a press inside a flying object counts as a catch).
+//  - The candidate ('I want this one', §3) is the object the stylus is inside, else — while the
+//    hand moves — the first object hit by a ray from the stylus along the hand's heading (its path
+//    over the tracker's fit window, up to select_range; none when the ray hits nothing), else — the
+//    hand at rest — the previous candidate.
+#include "spring_grab.h"
+
+// The object the stylus is inside (nearest centre first), -1 when none.
+static int direct_pick(const hs_world *world, const hs_spring_system *sys, hs_vec3 s) {
+	int best = -1;
+	double best_d2 = INFINITY;
+	for (int i = 0; i < world->object_count; ++i) {
+		if (i == sys->attached || !hs_spring_geom_inside(&sys->geom[i], world->bodies[i].pos, s))
+			continue;
+		double d2 = hs_length_sq(hs_sub(world->bodies[i].pos, s));
+		if (d2 < best_d2) {
+			best_d2 = d2;
+			best = i;
+		}
+	}
+	return best;
+}
+
+// 'I want this one' (§3): a ray along the hand's estimated velocity; first hit, -1 when none.
+static int ray_pick(const hs_world *world, const hs_spring_system *sys, hs_vec3 o, hs_vec3 dir) {
+	int best = -1;
+	double best_t = INFINITY;
+	for (int i = 0; i < world->object_count; ++i) {
+		if (i == sys->attached)
+			continue;
+		double t = hs_spring_geom_ray(&sys->geom[i], world->bodies[i].pos, o, dir, sys->def.select_range);
+		if (t >= 0.0 && t < best_t) {
+			best_t = t;
+			best = i;
+		}
+	}
+	return best;
+}
+
+// §4.4 catch: the nearest flying object within catch_radius of s, -1 when none.
+static int catch_pick(const hs_world *world, const hs_spring_system *sys, hs_vec3 s) {
+	int best = -1;
+	double best_d = INFINITY;
+	for (int i = 0; i < world->object_count; ++i) {
+		if (sys->on_floor[i])
+			continue;
+		double d = hs_spring_geom_distance(&sys->geom[i], world->bodies[i].pos, s);
+		if (d <= sys->def.catch_radius && d < best_d) {
+			best_d = d;
+			best = i;
+		}
+	}
+	return best;
+}
+
+void hs_spring_update_candidate(const hs_world *world, hs_spring_system *sys) {
+	int pick = direct_pick(world, sys, sys->stylus);
+	if (pick >= 0) {
+		sys->candidate = pick;
+		return;
+	}
+	hs_vec3 heading = sys->tracker.heading;
+	if (!sys->tracker.at_rest && hs_length_sq(heading) > 0.0)
+		sys->candidate = ray_pick(world, sys, sys->stylus, heading);
+	if (sys->candidate == sys->attached)
+		sys->candidate = -1;
+}
+
+void hs_spring_attach(hs_world *world, hs_spring_system *sys, int i, hs_attach_kind kind) {
+	sys->attached = i;
+	sys->attach_kind = kind;
+	hs_vec3 d = hs_sub(world->bodies[i].pos, sys->stylus);
+	double len = hs_length(d);
+	hs_vec3 down = hs_normalize(world->def.gravity);
+	if (hs_length(down) == 0.0)
+		down = hs_v3(0.0, 0.0, -1.0);
+	sys->axis = len > 0.0 ? hs_scale(d, 1.0 / len) : down; // an object picked at G hangs below
+	if (sys->candidate == i)
+		sys->candidate = -1;
+}
+
+void hs_spring_press(hs_world *world, hs_spring_system *sys) {
+	if (sys->attached >= 0)
+		return;
+	hs_vec3 s = sys->stylus;
+	int pick = direct_pick(world, sys, s);
+	if (pick >= 0) { // inside a flying object is catching it too
+		hs_spring_attach(world, sys, pick, sys->on_floor[pick] ? HS_ATTACH_PICK : HS_ATTACH_CATCH);
+		return;
+	}
+	int best = catch_pick(world, sys, s);
+	if (best >= 0) {
+		hs_spring_attach(world, sys, best, HS_ATTACH_CATCH);
+		return;
+	}
+	int c = sys->candidate;
+	if (c >= 0 && hs_spring_geom_distance(&sys->geom[c], world->bodies[c].pos, s) <= sys->def.grab_range)
+		hs_spring_attach(world, sys, c, HS_ATTACH_SELECT);
+}
+
+void hs_spring_detach(hs_world *world, hs_spring_system *sys, bool classify, double time) {
+	int i = sys->attached;
+	hs_body *body = &world->bodies[i];
+	hs_release *r = &sys->release;
+	r->object.index1 = (uint32_t)i + 1;
+	r->time = time;
+	r->hand_speed = hs_length(sys->tracker.velocity);
+	if (classify && !sys->tracker.at_rest) { // §4.4 throw: the object takes the hand's velocity
+		r->kind = HS_RELEASE_THROW;
+		body->vel = sys->tracker.velocity;
+	} else { // §4.4 drop: the object just loses the spring
+		r->kind = HS_RELEASE_DROP;
+	}
+	r->velocity = body->vel;
+	sys->attached = -1;
+	sys->attach_kind = HS_ATTACH_NONE;
+}

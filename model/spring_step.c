@@ -1,0 +1,148 @@
+// spring_step.c — one frame of the spring model of "Dynamics in Interaction on the Responsive
+// Workbench" (§4–§5) for every object of a world.
+//
+// A tracked stylus moves objects through a critically damped spring attached at the centre of mass
+// (§4.2, §4.4). Forces act at G only (no torque, objects keep their orientation): gravity, the
+// spring, its damper (spring_params.c, spring_integrate.c), the ground's normal force, friction
+// (§4.2) and the walls (§4.5, spring_contact.c). A frame: each object alone through the frame (on
+// the floor or in the air), then object–object collisions (spring_collide.c), then the tracker
+// daemon's samples of the frame (tracker.c, §5.1), then selection and the button at the frame end
+// (spring_grab.c), then the per-object flags the world reports.
+#include <string.h>
+
+#include "spring.h"
+#include "spring_collide.h"
+#include "spring_contact.h"
+#include "spring_grab.h"
+
+typedef struct frame_ctx {
+	hs_world *world;
+	hs_spring_system *sys;
+	double dt;
+	hs_vec3 gravity;
+} frame_ctx;
+
+// What the floor sees of object i's frame.
+static hs_spring_support support_of(const frame_ctx *fx, int i, const hs_spring_params *sp) {
+	const hs_spring_system *sys = fx->sys;
+	hs_spring_support su;
+	su.integrator = sys->def.integrator;
+	su.dt = fx->dt;
+	su.tol = fx->world->def.floor_tolerance;
+	su.gravity = fx->gravity;
+	su.def = &sys->def;
+	su.sp = sp;
+	su.g = &sys->geom[i];
+	su.attached = i == sys->attached;
+	su.axis = sys->axis;
+	su.stylus_start = sys->stylus_prev;
+	su.stylus_end = sys->stylus;
+	su.stylus_velocity = sys->stylus_velocity;
+	return su;
+}
+
+// One object through one frame: on the floor (friction) or in the air, then the walls.
+static void step_body(const frame_ctx *fx, int i) {
+	hs_spring_system *sys = fx->sys;
+	hs_body *body = &fx->world->bodies[i];
+	const hs_spring_geom *g = &sys->geom[i];
+	bool attached = i == sys->attached;
+	hs_spring_params sp = hs_spring_params_of(&sys->def, fx->world, body->mass);
+	hs_vec3 p = body->pos, v = body->vel;
+
+	hs_spring_segment sg;
+	memset(&sg, 0, sizeof sg);
+	sg.spring = attached;
+	sg.s0 = sys->stylus_prev;
+	sg.w = sys->stylus_velocity;
+	if (attached) // linearise the spring about its state at the frame start
+		hs_spring_linearise(&sg, &sp, p, &sys->axis);
+
+	hs_spring_support su = support_of(fx, i, &sp);
+	bool sliding = false;
+	bool on_floor = hs_spring_floor_step(&su, &sg, &p, &v, &sliding);
+	if (on_floor) {
+		fx->world->counters.floor_checks++;
+	} else { // in the air: gravity and the spring
+		sg.accel = fx->gravity;
+		hs_spring_fly(sys->def.integrator, &sg, &sp, fx->dt, &sys->axis, &p, &v);
+		on_floor = hs_spring_land(g, &p, &v);
+	}
+	hs_spring_wall_project(&sys->def.walls, g, &p, &v);
+	body->pos = p;
+	body->vel = v;
+	sys->on_floor[i] = on_floor;
+	sys->sliding[i] = sliding;
+	fx->world->counters.object_steps++;
+}
+
+static int floor_contacts(hs_world *world, const hs_spring_system *sys, int i) {
+	if (sys->geom[i].sphere)
+		return 1;
+	hs_body *body = &world->bodies[i];
+	hs_motion_pose_vertices(world, body);
+	return hs_motion_floor_points(world, body);
+}
+
+// The end of the frame for every object: the numeric guard, then what the world reports.
+static void finish_bodies(hs_world *world, hs_spring_system *sys) {
+	for (int i = 0; i < world->object_count; ++i) {
+		hs_body *body = &world->bodies[i];
+		if (!hs_vec3_is_finite(body->pos) || !hs_vec3_is_finite(body->vel)) {
+			body->pos = sys->saved_pos[i]; // an explicit integrator blew up: freeze, count, go on
+			body->vel = sys->saved_vel[i];
+			world->counters.numeric_faults++;
+		}
+		body->prev = sys->saved_pos[i];
+		bool still = body->vel.x == 0.0 && body->vel.y == 0.0 && body->vel.z == 0.0;
+		body->grounded = sys->on_floor[i];
+		body->asleep = sys->on_floor[i] && still && !sys->separated[i] && i != sys->attached;
+		body->contact = (uint8_t)(i == sys->attached ? HS_CONTACT_GRASP : HS_CONTACT_NONE);
+		body->floor_contacts = sys->on_floor[i] ? floor_contacts(world, sys, i) : 0;
+	}
+}
+
+void hs_spring_step(hs_world *world) {
+	hs_spring_system *sys = world->spring;
+	int n = world->object_count;
+	for (int i = sys->geom_count; i < n; ++i) // objects added since the last frame
+		sys->geom[i] = hs_spring_geom_of(world, &world->bodies[i]);
+	sys->geom_count = n;
+
+	frame_ctx fx = {world, sys, world->def.dt, world->def.gravity};
+	double t0 = (double)world->frame * fx.dt, t1 = (double)(world->frame + 1) * fx.dt;
+	sys->stylus_velocity = hs_scale(hs_sub(sys->stylus, sys->stylus_prev), 1.0 / fx.dt);
+
+	for (int i = 0; i < n; ++i) {
+		sys->saved_pos[i] = world->bodies[i].pos;
+		sys->saved_vel[i] = world->bodies[i].vel;
+	}
+	for (int i = 0; i < n; ++i)
+		step_body(&fx, i);
+	if (n > 0) // (n is never negative; the test keeps gcc's size analysis quiet)
+		memset(sys->separated, 0, (size_t)n);
+	hs_spring_collide(world, sys->geom, sys->def.restitution, sys->separated);
+	for (int i = 0; i < n; ++i) { // separation may have pushed an object through the floor or a wall
+		hs_body *body = &world->bodies[i];
+		if (body->pos.z < -sys->geom[i].lo.z)
+			body->pos.z = -sys->geom[i].lo.z;
+		hs_spring_wall_project(&sys->def.walls, &sys->geom[i], &body->pos, NULL);
+	}
+
+	// the tracker daemon (§5.1), then selection and the button at the frame end
+	if (sys->has_stylus)
+		hs_tracker_advance(&sys->tracker, t0, t1, sys->stylus_prev, sys->rot_prev, sys->stylus, sys->rot,
+		                   sys->button);
+	else
+		hs_tracker_skip(&sys->tracker, t1);
+	hs_spring_update_candidate(world, sys);
+	if (sys->button && !sys->button_prev)
+		hs_spring_press(world, sys);
+	else if (!sys->button && sys->button_prev && sys->attached >= 0)
+		hs_spring_detach(world, sys, true, t1);
+
+	finish_bodies(world, sys);
+	sys->stylus_prev = sys->stylus;
+	sys->rot_prev = sys->rot;
+	sys->button_prev = sys->button;
+}

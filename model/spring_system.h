@@ -1,0 +1,36 @@
+// spring_system.h — the spring model's system: its definition and everything a step changes
+// (stylus, spring, tracker, per-object flags), shared by the files of the spring model. Every
+// field a later step reads is visited by hs_spring_state_io (spring_state.c): a field added here
+// is added there.
+#ifndef HS_SPRING_SYSTEM_H
+#define HS_SPRING_SYSTEM_H
+
+#include "spring_geom.h"
+#include "tracker.h"
+
+struct hs_spring_system {
+	hs_spring_def def;
+	hs_tracker tracker;
+	int capacity;   // objects the per-object arrays hold (the world's max_objects, at least 1)
+	int geom_count; // bodies whose geometry is cached (a cache: 0 makes the next step rebuild it)
+	hs_spring_geom *geom;
+	uint8_t *on_floor;
+	uint8_t *sliding;
+	uint8_t *separated; // pushed apart from a neighbour this frame: moved without a velocity
+	hs_vec3 *saved_pos; // frame-start state for the numeric guard
+	hs_vec3 *saved_vel;
+	// the stylus: pose at the end of the coming frame and at its start
+	bool has_stylus;
+	hs_vec3 stylus, stylus_prev;
+	hs_quat rot, rot_prev;
+	bool button, button_prev;
+	hs_vec3 stylus_velocity; // m/s during the last frame
+	// the spring
+	int attached; // body index, -1 when none
+	hs_attach_kind attach_kind;
+	hs_vec3 axis;  // unit direction S → G used when they coincide
+	int candidate; // body index, -1 when none
+	hs_release release;
+};
+
+#endif

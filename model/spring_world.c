@@ -1,0 +1,172 @@
+// spring_world.c — the public API of the spring model (handspring.h): switching a world to it,
+// the stylus, attaching and detaching by hand, and what a user reads back.
+#include <stdlib.h>
+#include <string.h>
+
+#include "spring.h"
+#include "spring_grab.h"
+#include "spring_params.h"
+
+void hs_spring_system_destroy(hs_spring_system *system) {
+	if (!system)
+		return;
+	free(system->geom);
+	free(system->on_floor);
+	free(system->sliding);
+	free(system->separated);
+	free(system->saved_pos);
+	free(system->saved_vel);
+	free(system);
+}
+
+hs_status hs_world_enable_springs(hs_world *world, const hs_spring_def *def) {
+	if (!world || !hs_spring_def_valid(def))
+		return HS_ERR_INVALID_ARGUMENT;
+	hs_spring_system *sys = calloc(1, sizeof *sys);
+	if (!sys)
+		return HS_ERR_NO_MEMORY;
+	size_t cap = world->def.max_objects > 0 ? (size_t)world->def.max_objects : 1;
+	sys->geom = calloc(cap, sizeof *sys->geom);
+	sys->on_floor = calloc(cap, sizeof *sys->on_floor);
+	sys->sliding = calloc(cap, sizeof *sys->sliding);
+	sys->separated = calloc(cap, sizeof *sys->separated);
+	sys->saved_pos = calloc(cap, sizeof *sys->saved_pos);
+	sys->saved_vel = calloc(cap, sizeof *sys->saved_vel);
+	if (!sys->geom || !sys->on_floor || !sys->sliding || !sys->separated || !sys->saved_pos || !sys->saved_vel) {
+		hs_spring_system_destroy(sys);
+		return HS_ERR_NO_MEMORY;
+	}
+	sys->def = *def;
+	sys->capacity = (int)cap;
+	hs_tracker_init(&sys->tracker, def, (double)world->frame * world->def.dt);
+	sys->rot = sys->rot_prev = hs_quat_identity();
+	sys->attached = -1;
+	sys->candidate = -1;
+	sys->axis = hs_v3(0.0, 0.0, -1.0);
+	hs_spring_system_destroy(world->spring);
+	world->spring = sys;
+	return HS_OK;
+}
+
+bool hs_world_springs_enabled(const hs_world *world) { return world && world->spring; }
+
+hs_status hs_world_set_stylus(hs_world *world, hs_vec3 position, hs_quat orientation, bool button) {
+	if (!world || !world->spring || !hs_vec3_is_finite(position) || !hs_quat_is_finite(orientation) ||
+	    fabs(sqrt(hs_quat_dot(orientation, orientation)) - 1.0) > 1e-6)
+		return HS_ERR_INVALID_ARGUMENT;
+	hs_spring_system *sys = world->spring;
+	sys->stylus = position;
+	sys->rot = hs_quat_normalize(orientation);
+	sys->button = button;
+	if (!sys->has_stylus) { // the first pose: the stylus has been there all along
+		sys->has_stylus = true;
+		sys->stylus_prev = sys->stylus;
+		sys->rot_prev = sys->rot;
+	}
+	return HS_OK;
+}
+
+static int index_of(const hs_world *world, hs_object_id id) {
+	if (!world || id.index1 < 1 || id.index1 > (uint32_t)world->object_count)
+		return -1;
+	return (int)id.index1 - 1;
+}
+
+hs_status hs_world_spring_attach(hs_world *world, hs_object_id id) {
+	int i = index_of(world, id);
+	if (i < 0 || !world->spring || !world->spring->has_stylus)
+		return HS_ERR_INVALID_ARGUMENT;
+	hs_spring_system *sys = world->spring;
+	if (sys->attached >= 0 && sys->attached != i)
+		hs_spring_detach(world, sys, false, hs_world_time(world));
+	hs_spring_attach(world, sys, i, HS_ATTACH_API);
+	return HS_OK;
+}
+
+hs_status hs_world_spring_detach(hs_world *world) {
+	if (!world || !world->spring)
+		return HS_ERR_INVALID_ARGUMENT;
+	if (world->spring->attached >= 0)
+		hs_spring_detach(world, world->spring, false, hs_world_time(world));
+	return HS_OK;
+}
+
+static hs_object_id id_of(int i) {
+	hs_object_id id = {i >= 0 ? (uint32_t)i + 1 : 0};
+	return id;
+}
+
+hs_status hs_world_spring_state(const hs_world *world, hs_spring_state *out) {
+	if (!world || !world->spring || !out)
+		return HS_ERR_INVALID_ARGUMENT;
+	const hs_spring_system *sys = world->spring;
+	memset(out, 0, sizeof *out);
+	out->attached = id_of(sys->attached);
+	out->attach_kind = sys->attach_kind;
+	out->candidate = id_of(sys->candidate);
+	out->stylus = sys->stylus;
+	out->stylus_orientation = sys->rot;
+	out->button = sys->button;
+	out->stylus_velocity = sys->stylus_velocity;
+	if (sys->attached >= 0) {
+		const hs_body *body = &world->bodies[sys->attached];
+		hs_spring_params sp = hs_spring_params_of(&sys->def, world, body->mass);
+		out->length = hs_distance(body->pos, sys->stylus);
+		out->extension = out->length - sp.x0;
+		out->force = hs_spring_force(&sp, sys->axis, body->pos, body->vel, sys->stylus, sys->stylus_velocity);
+	}
+	return HS_OK;
+}
+
+hs_status hs_world_spring_object(const hs_world *world, hs_object_id id, hs_spring_object *out) {
+	int i = index_of(world, id);
+	if (i < 0 || !world->spring || !out)
+		return HS_ERR_INVALID_ARGUMENT;
+	const hs_spring_system *sys = world->spring;
+	const hs_body *body = &world->bodies[i];
+	hs_spring_params sp = hs_spring_params_of(&sys->def, world, body->mass);
+	memset(out, 0, sizeof *out);
+	out->mass = sp.mass;
+	out->rest_length = sp.x0;
+	out->stiffness = sp.k;
+	out->damping = sp.c;
+	out->omega = sp.omega;
+	out->velocity = body->vel;
+	out->on_floor = sys->on_floor[i] != 0;
+	out->sliding = sys->sliding[i] != 0;
+	out->attached = i == sys->attached;
+	return HS_OK;
+}
+
+hs_status hs_world_tracker_state(const hs_world *world, hs_tracker_state *out) {
+	if (!world || !world->spring || !out)
+		return HS_ERR_INVALID_ARGUMENT;
+	const hs_tracker *tr = &world->spring->tracker;
+	memset(out, 0, sizeof *out);
+	out->sample_count = tr->count;
+	if (!hs_tracker_sample_at(tr, 0, &out->newest))
+		out->newest.orientation = hs_quat_identity();
+	out->velocity = tr->velocity;
+	out->acceleration = tr->acceleration;
+	out->speed = hs_length(tr->velocity);
+	out->heading = tr->heading;
+	out->at_rest = tr->at_rest;
+	out->last_event = tr->last_event;
+	out->last_event_time = tr->last_event_time;
+	out->motion_starts = tr->motion_starts;
+	out->motion_ends = tr->motion_ends;
+	return HS_OK;
+}
+
+hs_status hs_world_tracker_sample(const hs_world *world, int age, hs_tracker_sample *out) {
+	if (!world || !world->spring || !out || !hs_tracker_sample_at(&world->spring->tracker, age, out))
+		return HS_ERR_INVALID_ARGUMENT;
+	return HS_OK;
+}
+
+hs_status hs_world_spring_last_release(const hs_world *world, hs_release *out) {
+	if (!world || !world->spring || !out)
+		return HS_ERR_INVALID_ARGUMENT;
+	*out = world->spring->release;
+	return HS_OK;
+}
