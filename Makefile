@@ -20,17 +20,18 @@ FP   := -ffp-contract=off -fno-fast-math
 # Include paths by layer: each layer sees the public headers below it and its own private ones,
 # so the compiler enforces the boundary (the harness cannot reach model/*.h).
 PUBLIC_INC  := -Imodel/include -Iharness/include
-CFLAGS_BASE = -std=c11 -D_POSIX_C_SOURCE=200809L $(OPT) -g $(WARN) $(FP) $(PKG_CFLAGS) $(CFLAGS)
+ifeq ($(SANITIZE),1)
+# every layer, not only the programs: the library code is what the sanitizers must see
+SAN_CFLAGS := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
+LDFLAGS    += -fsanitize=address,undefined
+endif
+CFLAGS_BASE = -std=c11 -D_POSIX_C_SOURCE=200809L $(OPT) -g $(WARN) $(FP) $(SAN_CFLAGS) $(PKG_CFLAGS) $(CFLAGS)
 CFLAGS_ALL  = $(CFLAGS_BASE) $(PUBLIC_INC)
 CFLAGS_MODEL   = $(CFLAGS_BASE) -Imodel/include -Imodel
 CFLAGS_HARNESS = $(CFLAGS_BASE) -Imodel/include -Iharness/include -Iharness
 # tests may look inside either layer (one test file per model file)
 CFLAGS_TESTS   = $(CFLAGS_BASE) $(PUBLIC_INC) -Imodel -Iharness -Itests
 LDLIBS_ALL = $(PKG_LIBS) -lm $(LDLIBS)
-ifeq ($(SANITIZE),1)
-CFLAGS_ALL += -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
-LDFLAGS    += -fsanitize=address,undefined
-endif
 
 LIB_SRC  := $(wildcard model/*.c)
 LIB_OBJ  := $(LIB_SRC:%.c=$(BUILD)/obj/%.o)
