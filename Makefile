@@ -1,6 +1,6 @@
 # handspring — plain Makefile with knobs:
 #   make [CC=clang] [OPT=-O0] [SANITIZE=1] [BUILD=build/x]
-# Targets: all (static and shared libraries + tool), check, run (the main job),
+# Targets: all (static and shared libraries + tool), check, check-readme, run (the main job),
 # golden, bench, plots, install, uninstall, clean.
 #   make install [PREFIX=/usr/local] [DESTDIR=/staging] [LIBDIR=...] [LDCONFIG=:]
 
@@ -87,7 +87,7 @@ else
 SO_LDFLAGS := -Wl,--no-undefined
 endif
 
-.PHONY: all shared tool deps check check-core run golden bench plots install uninstall clean
+.PHONY: all shared tool deps check check-core check-readme run golden bench plots install uninstall clean
 
 all: $(LIB) $(HLIB) $(SOLIBS) $(TOOL)
 shared: $(SOLIBS)
@@ -167,12 +167,14 @@ check-core: $(LIB) $(HLIB) $(TOOL) $(TESTS)
 	done; exit $$fail
 
 # The README's test command: unit, golden, bad-input and determinism tests, then the same
-# suite built and run again under AddressSanitizer + UndefinedBehaviorSanitizer.
+# suite built and run again under AddressSanitizer + UndefinedBehaviorSanitizer, the
+# reliability subset, and the README's examples against an installed copy.
 check: deps
 	@$(MAKE) --no-print-directory check-core
 	@$(MAKE) --no-print-directory check-core BUILD=$(BUILD)/asan SANITIZE=1 OPT=-O1
 	@$(MAKE) --no-print-directory check-reliability
-	@echo "check: all suites passed (plain and ASan+UBSan)"
+	@$(MAKE) --no-print-directory check-readme
+	@echo "check: all suites passed (plain and ASan+UBSan, reliability, README examples)"
 
 # The main job: every catalog scenario, a summary table, trajectories under $(BUILD)/traj.
 run: all
@@ -247,6 +249,11 @@ uninstall:
 	rm -f $(addprefix $(DESTDIR)$(PKGCONFIGDIR)/,$(PC_FILES))
 	rm -f $(DESTDIR)$(BINDIR)/$(notdir $(TOOL))
 	@$(RUN_LDCONFIG)
+
+# The README's examples, extracted and built against a copy installed under $(BUILD)/readme
+# through pkg-config (gcc, clang, g++ as C++; static and shared), then uninstalled again.
+check-readme: all
+	@BUILD=$(BUILD) MAKE="$(MAKE)" sh tests/readme_example.sh
 
 clean:
 	rm -rf $(BUILD)
