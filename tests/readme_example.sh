@@ -4,8 +4,8 @@
 #
 #  1. `make install PREFIX=$BUILD/readme/prefix`; a second tree holds only the static archives
 #     (what a user has who links statically: pkg-config --static then picks the .a files).
-#  2. Every public header compiles on its own as C (gcc, clang: -std=c11 and the project's
-#     warnings) and as C++ (g++, clang++: -std=c++11 -Wall -Wextra -Wpedantic -Werror).
+#  2. Every public header compiles on its own as C (gcc, clang: -std=c99 and -std=c11 with the
+#     project's warnings) and as C++ (g++, clang++: -std=c++11 -Wall -Wextra -Wpedantic -Werror).
 #  3. Every function the public headers declare is exported by the installed shared library.
 #  4. Each example of README.md (the ```c block after `<!-- example: NAME -->`) is built with
 #     gcc and clang as C, and with g++ as C++ (g++ -x c++), each shared (run path to the copy)
@@ -56,9 +56,11 @@ for h in hs_math.h handspring.h hs_harness.h; do
 	printf '#include <handspring/%s>\n#include <handspring/%s>\nint hs_header_test(void);\nint hs_header_test(void) { return 0; }\n' \
 		"$h" "$h" >"$work/header.c"
 	for cc in gcc clang; do
-		# shellcheck disable=SC2086
-		$cc $C_WARN $cflags -fsyntax-only "$work/header.c" || fail "$h does not compile as C with $cc"
-		headers=$((headers + 1))
+		for std in c99 c11; do
+			# shellcheck disable=SC2086
+			$cc $C_WARN -std=$std $cflags -fsyntax-only "$work/header.c" || fail "$h does not compile as $std with $cc"
+			headers=$((headers + 1))
+		done
 	done
 	for cxx in g++ clang++; do
 		command -v $cxx >/dev/null 2>&1 || continue
@@ -67,7 +69,7 @@ for h in hs_math.h handspring.h hs_harness.h; do
 		headers=$((headers + 1))
 	done
 done
-echo "check-readme: the 3 public headers compile alone as C and C++ ($headers compilations)"
+echo "check-readme: the 3 public headers compile alone as C99, C11 and C++11 ($headers compilations)"
 
 # 3. the exported functions
 declared() { sed -n -e '/static inline/d' -e 's/^[A-Za-z_][A-Za-z0-9_ *]*[ *]\(hs_[A-Za-z0-9_]*\)(.*/\1/p' "$@"; }
