@@ -81,7 +81,13 @@ for lib in handspring:"handspring.h hs_math.h" handspring-harness:"hs_harness.h"
 		n=$((n + 1))
 		echo "$exported" | grep -qx "$f" || fail "lib$name.so does not export $f (declared in a public header)"
 	done
-	echo "check-readme: lib$name.so exports the $n functions its headers declare, and $(echo "$exported" | wc -l) in all"
+	# the other way round, independent of how a declaration is laid out: every function of the
+	# static library whose name a public header writes as a call, name(, must be exported
+	for f in $(nm -g --defined-only "$prefix/lib/lib$name.a" | awk '$2 == "T" { print $3 }'); do
+		(cd "$prefix/include/handspring" && grep -Eq "(^|[^A-Za-z0-9_])$f\(" ${lib#*:}) || continue
+		echo "$exported" | grep -qx "$f" || fail "lib$name.so does not export $f (named in a public header)"
+	done
+	echo "check-readme: lib$name.so: $n functions declared in its public headers, $(echo "$exported" | wc -l) exported"
 done
 
 # 4. the README's examples
