@@ -1,15 +1,27 @@
 # handspring — plain Makefile with knobs:
 #   make [CC=clang] [OPT=-O0] [SANITIZE=1] [BUILD=build/x]
-# Targets: all (library + tool), check, run (the main job), golden, bench, plots, install, clean.
+# Targets: all (static and shared libraries + tool), check, check-readme, run (the main job),
+# golden, bench, plots, install, uninstall, clean.
+#   make install [PREFIX=/usr/local] [DESTDIR=/staging] [LIBDIR=...] [LDCONFIG=:]
 
 CC       ?= cc
 OPT      ?= -O2
 SANITIZE ?= 0
 BUILD    ?= build
 PREFIX   ?= /usr/local
+BINDIR     ?= $(PREFIX)/bin
+LIBDIR     ?= $(PREFIX)/lib
+INCLUDEDIR ?= $(PREFIX)/include
+PKGCONFIGDIR ?= $(LIBDIR)/pkgconfig
+INSTALL  ?= install
+LDCONFIG ?= ldconfig
 
-# the physics (model/) needs libccd only; the harness (harness/) adds libyaml and GSL
-PKGS := ccd yaml-0.1 gsl
+# the physics (model/) needs libccd only; the harness (harness/) adds libyaml and GSL. While a
+# model/ file still includes a GSL header (the tracker's noise, to move to the harness: noise is
+# input), GSL is added to the physics' link and to handspring.pc's Requires.private here.
+MODEL_PKGS   := ccd $(if $(shell grep -l '<gsl/' model/*.c model/*.h 2>/dev/null),gsl)
+HARNESS_PKGS := yaml-0.1 gsl
+PKGS := $(MODEL_PKGS) $(HARNESS_PKGS)
 # recursive on purpose: pkg-config is asked only after `deps` has installed it
 PKG_CFLAGS = $(shell pkg-config --cflags $(PKGS))
 PKG_LIBS   = $(shell pkg-config --libs $(PKGS))
@@ -20,17 +32,18 @@ FP   := -ffp-contract=off -fno-fast-math
 # Include paths by layer: each layer sees the public headers below it and its own private ones,
 # so the compiler enforces the boundary (the harness cannot reach model/*.h).
 PUBLIC_INC  := -Imodel/include -Iharness/include
-CFLAGS_BASE = -std=c11 -D_POSIX_C_SOURCE=200809L $(OPT) -g $(WARN) $(FP) $(PKG_CFLAGS) $(CFLAGS)
+ifeq ($(SANITIZE),1)
+# every layer, not only the programs: the library code is what the sanitizers must see
+SAN_CFLAGS := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
+LDFLAGS    += -fsanitize=address,undefined
+endif
+CFLAGS_BASE = -std=c11 -D_POSIX_C_SOURCE=200809L $(OPT) -g $(WARN) $(FP) $(SAN_CFLAGS) $(PKG_CFLAGS) $(CFLAGS)
 CFLAGS_ALL  = $(CFLAGS_BASE) $(PUBLIC_INC)
 CFLAGS_MODEL   = $(CFLAGS_BASE) -Imodel/include -Imodel
 CFLAGS_HARNESS = $(CFLAGS_BASE) -Imodel/include -Iharness/include -Iharness
 # tests may look inside either layer (one test file per model file)
 CFLAGS_TESTS   = $(CFLAGS_BASE) $(PUBLIC_INC) -Imodel -Iharness -Itests
 LDLIBS_ALL = $(PKG_LIBS) -lm $(LDLIBS)
-ifeq ($(SANITIZE),1)
-CFLAGS_BASE += -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
-LDFLAGS    += -fsanitize=address,undefined
-endif
 
 LIB_SRC  := $(wildcard model/*.c)
 LIB_OBJ  := $(LIB_SRC:%.c=$(BUILD)/obj/%.o)
@@ -38,17 +51,47 @@ LIB      := $(BUILD)/libhandspring.a
 HLIB_SRC := $(wildcard harness/*.c)
 HLIB_OBJ := $(HLIB_SRC:%.c=$(BUILD)/obj/%.o)
 HLIB     := $(BUILD)/libhandspring-harness.a
-# what programs of the harness layer and above link: the harness first, then the physics
+# what programs of the harness layer and above link: the harness first, then the physics.
+# The tool, tests, bench and plots link these static archives (non-PIC code), so they run from
+# the build folder without LD_LIBRARY_PATH.
 LIBS     := $(HLIB) $(LIB)
 MODEL_H   = $(wildcard model/*.h model/include/*.h)
 HARNESS_H = $(wildcard harness/*.h harness/include/*.h)
+PUBLIC_H := model/include/handspring.h model/include/hs_math.h harness/include/hs_harness.h
 TOOL     := $(BUILD)/handspring
 TEST_SRC := $(wildcard tests/test_*.c)
 TESTS    := $(TEST_SRC:tests/%.c=$(BUILD)/tests/%)
 
-.PHONY: all deps check check-core run golden bench plots install clean
+# Shared libraries: version from HS_VERSION in handspring.h (0.1.0), soname by the major number:
+# libhandspring.so -> libhandspring.so.0 (soname) -> libhandspring.so.0.1.0, the same for the
+# harness. They are built from a second object set compiled with -fPIC under $(BUILD)/pic, so
+# the static archives and every program linked from them keep the non-PIC code they had (the
+# benchmarks measure exactly what they measured before). -fno-semantic-interposition lets calls
+# inside the library bind directly; the version scripts export only the functions the public
+# headers declare (every other hs_* symbol is internal and stays local). The harness's own
+# run path is $ORIGIN: it finds libhandspring.so.0 in its own folder (built or installed, the two
+# always sit together), also for a program whose run path (-Wl,-rpath) names only that folder.
+HS_VERSION_NUM := $(shell sed -n 's/^.define HS_VERSION "\(.*\)"/\1/p' model/include/handspring.h)
+HS_SOVERSION   := $(firstword $(subst ., ,$(HS_VERSION_NUM)))
+PIC_FLAGS    := -fPIC -fno-semantic-interposition
+LIB_PIC_OBJ  := $(LIB_SRC:%.c=$(BUILD)/pic/%.o)
+HLIB_PIC_OBJ := $(HLIB_SRC:%.c=$(BUILD)/pic/%.o)
+SOLIB        := $(BUILD)/libhandspring.so.$(HS_VERSION_NUM)
+HSOLIB       := $(BUILD)/libhandspring-harness.so.$(HS_VERSION_NUM)
+SOLIBS       := $(SOLIB) $(HSOLIB)
+# link every dependency into the shared objects and let none stay undefined (not with the
+# sanitizers, whose runtime the program brings)
+ifeq ($(SANITIZE),1)
+SO_LDFLAGS :=
+else
+SO_LDFLAGS := -Wl,--no-undefined
+endif
 
-all: $(LIB) $(HLIB) $(TOOL)
+.PHONY: all shared tool deps check check-core check-readme run golden bench plots install uninstall clean
+
+all: $(LIB) $(HLIB) $(SOLIBS) $(TOOL)
+shared: $(SOLIBS)
+tool: $(TOOL)
 
 deps:
 	@sh scripts/deps.sh
@@ -61,6 +104,14 @@ $(BUILD)/obj/harness/%.o: harness/%.c $(HARNESS_H) $(wildcard model/include/*.h)
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS_HARNESS) -c $< -o $@
 
+$(BUILD)/pic/model/%.o: model/%.c $(MODEL_H) | deps
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS_MODEL) $(PIC_FLAGS) -c $< -o $@
+
+$(BUILD)/pic/harness/%.o: harness/%.c $(HARNESS_H) $(wildcard model/include/*.h) | deps
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS_HARNESS) $(PIC_FLAGS) -c $< -o $@
+
 $(BUILD)/obj/tool/%.o: tool/%.c $(wildcard model/include/*.h harness/include/*.h) | deps
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS_ALL) -c $< -o $@
@@ -72,6 +123,31 @@ $(LIB): $(LIB_OBJ)
 $(HLIB): $(HLIB_OBJ)
 	@rm -f $@
 	ar rcs $@ $^
+
+# Export list: every function a public header declares (a line that starts a declaration and
+# names hs_something followed by '('), static inline ones excluded; the rest is local.
+$(BUILD)/pic/%.map: Makefile
+	@mkdir -p $(dir $@)
+	@{ echo '{ global:'; sed -n -e '/static inline/d' \
+		-e 's/^[A-Za-z_][A-Za-z0-9_ *]*[ *]\(hs_[A-Za-z0-9_]*\)(.*/  \1;/p' $(filter %.h,$^); \
+		echo '  local: *; };'; } > $@
+$(BUILD)/pic/handspring.map: model/include/handspring.h model/include/hs_math.h
+$(BUILD)/pic/handspring-harness.map: harness/include/hs_harness.h
+
+# shared objects, their soname link (what programs load) and their development link (-l...)
+$(SOLIB): $(LIB_PIC_OBJ) $(BUILD)/pic/handspring.map
+	$(CC) -shared $(LDFLAGS) $(SO_LDFLAGS) -Wl,-soname,libhandspring.so.$(HS_SOVERSION) \
+		-Wl,--version-script=$(BUILD)/pic/handspring.map -o $@ $(LIB_PIC_OBJ) \
+		$$(pkg-config --libs $(MODEL_PKGS)) -lm
+	ln -sf $(notdir $@) $(BUILD)/libhandspring.so.$(HS_SOVERSION)
+	ln -sf libhandspring.so.$(HS_SOVERSION) $(BUILD)/libhandspring.so
+
+$(HSOLIB): $(HLIB_PIC_OBJ) $(SOLIB) $(BUILD)/pic/handspring-harness.map
+	$(CC) -shared $(LDFLAGS) $(SO_LDFLAGS) -Wl,-soname,libhandspring-harness.so.$(HS_SOVERSION) \
+		-Wl,-rpath,'$$ORIGIN' -Wl,--version-script=$(BUILD)/pic/handspring-harness.map -o $@ $(HLIB_PIC_OBJ) $(SOLIB) \
+		$$(pkg-config --libs $(HARNESS_PKGS)) -lm
+	ln -sf $(notdir $@) $(BUILD)/libhandspring-harness.so.$(HS_SOVERSION)
+	ln -sf libhandspring-harness.so.$(HS_SOVERSION) $(BUILD)/libhandspring-harness.so
 
 $(TOOL): $(BUILD)/obj/tool/handspring.o $(LIBS)
 	$(CC) $(LDFLAGS) -o $@ $^ $(LDLIBS_ALL)
@@ -91,12 +167,14 @@ check-core: $(LIB) $(HLIB) $(TOOL) $(TESTS)
 	done; exit $$fail
 
 # The README's test command: unit, golden, bad-input and determinism tests, then the same
-# suite built and run again under AddressSanitizer + UndefinedBehaviorSanitizer.
+# suite built and run again under AddressSanitizer + UndefinedBehaviorSanitizer, the
+# reliability subset, and the README's examples against an installed copy.
 check: deps
 	@$(MAKE) --no-print-directory check-core
 	@$(MAKE) --no-print-directory check-core BUILD=$(BUILD)/asan SANITIZE=1 OPT=-O1
 	@$(MAKE) --no-print-directory check-reliability
-	@echo "check: all suites passed (plain and ASan+UBSan)"
+	@$(MAKE) --no-print-directory check-readme
+	@echo "check: all suites passed (plain and ASan+UBSan, reliability, README examples)"
 
 # The main job: every catalog scenario, a summary table, trajectories under $(BUILD)/traj.
 run: all
@@ -132,13 +210,50 @@ bench: all
 	@if [ -f bench/bench.mk ]; then $(MAKE) --no-print-directory -f Makefile -f bench/bench.mk bench-run; \
 	else echo "bench: no benchmarks yet"; fi
 
+# Installs the headers (include/handspring/), both libraries (static, shared with their soname and
+# development links), handspring.pc and handspring-harness.pc, and the tool. Programs include
+# <handspring/handspring.h> (Cflags: -I${includedir}); the headers include each other by their
+# file names from the same folder. ldconfig runs only for a real install (no DESTDIR) by root
+# into /usr or /usr/local, whose lib folders the loader's cache covers; LDCONFIG=: skips it.
+# `make uninstall` with the same PREFIX (and DESTDIR, LIBDIR...) removes exactly these files and
+# the include/handspring folder, never a folder it may share with others.
+SO_NAMES  := libhandspring libhandspring-harness
+INSTALLED_LIBS = $(foreach n,$(SO_NAMES),$(n).a $(n).so $(n).so.$(HS_SOVERSION) $(n).so.$(HS_VERSION_NUM))
+PC_FILES  := handspring.pc handspring-harness.pc
+# the .pc files name their folders relative to ${prefix} where they can (relocatable with
+# pkg-config --define-variable=prefix=...)
+PC_LIBDIR     = $(patsubst $(PREFIX)/%,$${prefix}/%,$(LIBDIR))
+PC_INCLUDEDIR = $(patsubst $(PREFIX)/%,$${prefix}/%,$(INCLUDEDIR))
+RUN_LDCONFIG = if [ -z "$(DESTDIR)" ] && [ "$$(id -u)" = 0 ] && command -v $(LDCONFIG) >/dev/null 2>&1; then \
+		case "$(PREFIX)" in /usr|/usr/|/usr/local|/usr/local/) $(LDCONFIG) ;; esac; fi
+
 install: all
-	install -d $(DESTDIR)$(PREFIX)/include/handspring $(DESTDIR)$(PREFIX)/lib/pkgconfig $(DESTDIR)$(PREFIX)/bin
-	install -m 644 model/include/handspring.h model/include/hs_math.h harness/include/hs_harness.h $(DESTDIR)$(PREFIX)/include/handspring/
-	install -m 644 $(LIB) $(HLIB) $(DESTDIR)$(PREFIX)/lib/
-	install -m 755 $(TOOL) $(DESTDIR)$(PREFIX)/bin/
-	sed -e 's|@PREFIX@|$(PREFIX)|g' -e 's|@VERSION@|$(shell sed -n 's/^#define HS_VERSION "\(.*\)"/\1/p' model/include/handspring.h)|' \
-		scripts/handspring.pc.in > $(DESTDIR)$(PREFIX)/lib/pkgconfig/handspring.pc
+	$(INSTALL) -d $(DESTDIR)$(INCLUDEDIR)/handspring $(DESTDIR)$(LIBDIR) $(DESTDIR)$(PKGCONFIGDIR) $(DESTDIR)$(BINDIR)
+	$(INSTALL) -m 644 $(PUBLIC_H) $(DESTDIR)$(INCLUDEDIR)/handspring/
+	$(INSTALL) -m 644 $(LIB) $(HLIB) $(DESTDIR)$(LIBDIR)/
+	$(INSTALL) -m 755 $(SOLIBS) $(DESTDIR)$(LIBDIR)/
+	@set -e; for n in $(SO_NAMES); do \
+		ln -sf $$n.so.$(HS_VERSION_NUM) $(DESTDIR)$(LIBDIR)/$$n.so.$(HS_SOVERSION); \
+		ln -sf $$n.so.$(HS_SOVERSION) $(DESTDIR)$(LIBDIR)/$$n.so; done
+	@set -e; for pc in $(PC_FILES); do \
+		sed -e 's|@PREFIX@|$(PREFIX)|g' -e 's|@LIBDIR@|$(PC_LIBDIR)|g' -e 's|@INCLUDEDIR@|$(PC_INCLUDEDIR)|g' \
+			-e 's|@VERSION@|$(HS_VERSION_NUM)|g' -e 's|@MODEL_PKGS@|$(MODEL_PKGS)|g' scripts/$$pc.in > $(DESTDIR)$(PKGCONFIGDIR)/$$pc; \
+		chmod 644 $(DESTDIR)$(PKGCONFIGDIR)/$$pc; done
+	$(INSTALL) -m 755 $(TOOL) $(DESTDIR)$(BINDIR)/
+	@$(RUN_LDCONFIG)
+
+uninstall:
+	rm -f $(addprefix $(DESTDIR)$(INCLUDEDIR)/handspring/,$(notdir $(PUBLIC_H)))
+	@d=$(DESTDIR)$(INCLUDEDIR)/handspring; if [ -d "$$d" ] && [ -z "$$(ls -A "$$d")" ]; then rmdir "$$d"; fi
+	rm -f $(addprefix $(DESTDIR)$(LIBDIR)/,$(INSTALLED_LIBS))
+	rm -f $(addprefix $(DESTDIR)$(PKGCONFIGDIR)/,$(PC_FILES))
+	rm -f $(DESTDIR)$(BINDIR)/$(notdir $(TOOL))
+	@$(RUN_LDCONFIG)
+
+# The README's examples, extracted and built against a copy installed under $(BUILD)/readme
+# through pkg-config (gcc, clang, g++ as C++; static and shared), then uninstalled again.
+check-readme: all
+	@BUILD=$(BUILD) MAKE="$(MAKE)" sh tests/readme_example.sh
 
 clean:
 	rm -rf $(BUILD)

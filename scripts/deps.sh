@@ -1,7 +1,11 @@
 #!/bin/sh
 # Installs what handspring needs, when it is missing: Debian packages through apt-get as root,
-# otherwise the exact command to run. clang is a base package: `make check` builds the tool with
-# gcc and clang and compares them (the determinism pair). `deps.sh bench` adds the benchmark peers
+# otherwise it prints the exact command to run as root (with `sudo` in front only where sudo
+# exists) and exits 1. Needs nothing beyond a POSIX shell and coreutils, so it runs on a fresh
+# Debian with only a compiler and make. clang is a base package: `make check` builds the tool with
+# gcc and clang and compares them (the determinism pair); g++ (and clang's clang++) compile the
+# README's examples and the public headers as C++, and pkg-config links them against an installed
+# copy (make check-readme). `deps.sh bench` adds the benchmark peers
 # (ODE, MuJoCo); `deps.sh fuzz` adds the compiler-rt runtime that holds libFuzzer; `deps.sh
 # valgrind` adds valgrind (make valgrind, make determinism).
 set -eu
@@ -17,6 +21,7 @@ has_file /usr/include/gsl/gsl_odeiv2.h || need="$need libgsl-dev"
 has_file /usr/include/yaml.h || need="$need libyaml-dev"
 has_cmd gnuplot || need="$need gnuplot-nox"
 has_cmd clang || need="$need clang"
+has_cmd g++ || need="$need g++"
 
 for extra in "$@"; do
 	case "$extra" in
@@ -52,6 +57,8 @@ if [ "$(id -u)" = 0 ] && has_cmd apt-get; then
 	exit 0
 fi
 
+sudo=""
+if [ "$(id -u)" != 0 ] && has_cmd sudo; then sudo="sudo "; fi
 echo "deps: missing Debian packages:$need" >&2
-echo "deps: install them with: sudo apt-get install -y$need" >&2
+echo "deps: install them as root with: ${sudo}apt-get install -y$need" >&2
 exit 1

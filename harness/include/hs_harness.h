@@ -2,8 +2,11 @@
 // world, drive it with hand and stylus scripts or recorded input, and check `expect` clauses;
 // the scenario catalog; trajectories and their comparison with goldens.
 //
-// Link with `pkg-config --cflags --libs handspring-harness` (libyaml, GSL). The physics alone
-// (handspring.h) needs neither.
+// Use: #include <handspring/hs_harness.h> (it includes handspring.h), link with
+// `pkg-config --cflags --libs handspring-harness` (libhandspring-harness, libhandspring, and for
+// --static also libyaml and GSL). The physics alone (handspring.h) needs neither.
+// The scenario file format: scenarios/README.md in the repository; the models the scenarios
+// drive: docs/model.md (index docs/README.md).
 #ifndef HS_HARNESS_H
 #define HS_HARNESS_H
 

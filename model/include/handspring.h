@@ -10,10 +10,17 @@
 // one fixed time step per world. Worlds are deterministic: the same calls give bit-identical
 // states on every run and across compilers (see hs_world_hash).
 //
-// Ownership: the caller owns what it creates (hs_shape_*, hs_world_create, hs_scenario_load)
-// and destroys it with the matching *_destroy. A world copies the shapes added to it, so the
-// caller's shape may be destroyed right after hs_world_add_shape. Objects are named by
-// handles (hs_object_id) that stay valid for the life of the world.
+// Ownership: the caller owns what it creates (hs_shape_*, hs_world_create; hs_scenario_load of
+// hs_harness.h) and destroys it with the matching *_destroy. A world copies the shapes added to
+// it, so the caller's shape may be destroyed right after hs_world_add_shape. Objects are named
+// by handles (hs_object_id) that stay valid for the life of the world.
+//
+// Use: #include <handspring/handspring.h>, link with `pkg-config --cflags --libs handspring`
+// (libccd and libm; add --static for libhandspring.a). Valid C99/C11 and C++11.
+// The models in detail: docs/model.md in the repository (index docs/README.md) — the 18-sensor
+// glove layout, check points and lines, contact states, stacking modes `paper` and `support`,
+// and every choice made where the papers are silent. A comment below that cites DESIGN.md means
+// that page.
 #ifndef HANDSPRING_H
 #define HANDSPRING_H
 
