@@ -364,12 +364,20 @@ static const double S0 = -0x1.5555555555555p-3, S1 = 0x1.1111111111069p-7, S2 = 
 static const double C0 = 0x1.555555555554ap-5, C1 = -0x1.6c16c16c14e00p-10, C2 = 0x1.a01a019c5c392p-16,
                     C3 = -0x1.27e4f7cd31882p-22, C4 = 0x1.1ee9c3356fde3p-29, C5 = -0x1.8f99cb785236ep-37;
 
-// sin(x + y) - x for |x| <= pi/4, y the tail of the reduced argument
-static double sin_corr(double x, double y) {
-	double z = x * x, v = z * x;
-	double r = S1 + z * (S2 + z * (S3 + z * (S4 + z * (S5 + z * S6))));
-	// sin(x + y) ~ sin x + y cos x ~ x + v S0 + v z r + y (1 - z/2)
-	return v * S0 + (y + z * (v * r - 0.5 * y));
+// sin(x + y) as hi + lo for |x| <= pi/4, y the tail of the reduced argument. S0 x^3 is up to a
+// tenth of the result, so it is carried exactly: rounding it would cost up to 0.2 ulp.
+static dd sin_dd(double x, double y) {
+	dd z = two_prod(x, x), v = two_prod(z.hi, x), w = two_prod(v.hi, S0);
+	double zh = z.hi;
+	double r = S1 + zh * (S2 + zh * (S3 + zh * (S4 + zh * (S5 + zh * S6))));
+	// sin(x + y) ~ sin x + y cos x ~ x + S0 x^3 + x^3 z r + y (1 - z/2)
+	double tail = (w.lo + S0 * (v.lo + z.lo * x)) + (y + zh * (v.hi * r - 0.5 * y));
+	dd s = fast_two_sum(x, w.hi);
+	return fast_two_sum(s.hi, s.lo + tail);
+}
+static double sin_k(double x, double y) {
+	dd s = sin_dd(x, y);
+	return s.hi + s.lo;
 }
 // cos(x + y) as hi + lo; x^2 exactly, since its rounding error alone would cost 0.25 ulp
 static dd cos_dd(double x, double y) {
@@ -460,16 +468,16 @@ double hs_sin(double x) {
 	if (ax < PIO4) {
 		if (ax < 0x1p-26) // x^3/6 is below a third of an ulp; keeps -0
 			return x;
-		return x + sin_corr(x, 0.0);
+		return sin_k(x, 0.0);
 	}
 	if (!(ax < INFINITY))
 		return x - x; // NaN for NaN and ±inf
 	unsigned n = reduce_pio2(x, &y0, &y1);
 	dd c;
 	switch (n) {
-	case 0: return y0 + sin_corr(y0, y1);
+	case 0: return sin_k(y0, y1);
 	case 1: c = cos_dd(y0, y1); return c.hi + c.lo;
-	case 2: return -(y0 + sin_corr(y0, y1));
+	case 2: return -(sin_k(y0, y1));
 	default: c = cos_dd(y0, y1); return -(c.hi + c.lo);
 	}
 }
@@ -486,9 +494,9 @@ double hs_cos(double x) {
 	dd c;
 	switch (n) {
 	case 0: c = cos_dd(y0, y1); return c.hi + c.lo;
-	case 1: return -(y0 + sin_corr(y0, y1));
+	case 1: return -(sin_k(y0, y1));
 	case 2: c = cos_dd(y0, y1); return -(c.hi + c.lo);
-	default: return y0 + sin_corr(y0, y1);
+	default: return sin_k(y0, y1);
 	}
 }
 
@@ -510,7 +518,7 @@ double hs_tan(double x) {
 	if (ax >= PIO4)
 		n = reduce_pio2(x, &y0, &y1);
 	// sin / cos both carried to ~2^-60, so the quotient is rounded about once
-	dd s = fast_two_sum(y0, sin_corr(y0, y1)), c = cos_dd(y0, y1);
+	dd s = sin_dd(y0, y1), c = cos_dd(y0, y1);
 	if (n & 1u) {
 		dd mc = {-c.hi, -c.lo};
 		return dd_div(mc, s);
@@ -618,16 +626,25 @@ static const double B[13] = {
 	0x1.613c8f8c07e94p-7, 0x1.e5f5461007570p-9, 0x1.639c9099e0fb1p-6, -0x1.57fdbf98788c8p-6,
 	0x1.0b46df1e2795dp-5,
 };
-static double asin_poly(double z) {
-	double r = B[12];
-	for (int k = 11; k >= 0; k--)
-		r = B[k] + z * r;
-	return r;
+// B(z) - B[0] over z
+static double asin_poly1(double z) {
+	double z2 = z * z; // two Horner chains in z^2 halve the latency
+	double odd = B[2] + z2 * (B[4] + z2 * (B[6] + z2 * (B[8] + z2 * (B[10] + z2 * B[12]))));
+	double even = B[1] + z2 * (B[3] + z2 * (B[5] + z2 * (B[7] + z2 * (B[9] + z2 * B[11]))));
+	return even + z * odd;
 }
 
-// For 1/2 <= |x| <= 1: asin(s + sl) - s with s + sl = sqrt((1 - |x|)/2); the sqrt tail is
-// exact, since 2 asin(s) is not small next to the result.
-static double asin_half(double ax, double *s_out) {
+// asin(s) - s = s z B(z) (z = s^2 + zl) as hi + lo; s z B[0] is up to a tenth of the result, so it
+// is carried exactly, as in sin_dd.
+static dd asin_tail(double s, double z, double zl) {
+	dd v = two_prod(s, z), w = two_prod(v.hi, B[0]);
+	double lo = w.lo + (B[0] * (v.lo + s * zl) + v.hi * z * asin_poly1(z));
+	return fast_two_sum(w.hi, lo);
+}
+
+// For 1/2 <= |x| <= 1: asin(s + sl) - s as hi + lo, with s + sl = sqrt((1 - |x|)/2) and the
+// sqrt tail exact, since 2 asin(s) is not small next to the result.
+static dd asin_half(double ax, double *s_out) {
 	double z = 0.5 * (1.0 - ax); // exact
 	double s = sqrt(z), sl = 0.0;
 	if (s > 0) {
@@ -635,8 +652,16 @@ static double asin_half(double ax, double *s_out) {
 		sl = ((z - m.hi) - m.lo) / (s + s);
 	}
 	*s_out = s;
-	// d asin/ds = 1/sqrt(1 - s^2) ~ 1 + z/2 (the rest is below 2^-60 of the result)
-	return sl * (1.0 + 0.5 * z) + s * z * asin_poly(z);
+	dd t = asin_tail(s, z, 0.0);
+	// d asin/ds ~ 1 + z/2, less the z/3 sl that asin_tail already took in through z = (s + sl)^2
+	t.lo += sl * (1.0 + z * 0x1.5555555555555p-3);
+	return t;
+}
+
+// kh + kl - (a + t.hi + t.lo), rounded once (about): kh + kl = pi/2 or pi, the rest smaller
+static double sub3(double kh, double kl, double a, dd t) {
+	dd u = two_sum(kh, -a), v = two_sum(u.hi, -t.hi);
+	return v.hi + ((u.lo + v.lo) + (kl - t.lo));
 }
 
 double hs_asin(double x) {
@@ -646,12 +671,13 @@ double hs_asin(double x) {
 	if (ax < 0x1p-26) // x^3/6 is below a third of an ulp; keeps -0
 		return x;
 	if (ax < 0.5) {
-		double z = x * x;
-		return x + x * z * asin_poly(z);
+		dd z = two_prod(x, x), t = asin_tail(x, z.hi, z.lo), s = fast_two_sum(x, t.hi);
+		return s.hi + (s.lo + t.lo);
 	}
-	double s, c = asin_half(ax, &s);
-	dd h = two_sum(PIO2_HI, -2.0 * s); // pi/2 - 2 asin(sqrt((1 - x)/2))
-	v = h.hi + (h.lo + (PIO2_LO - 2.0 * c));
+	double s;
+	dd c = asin_half(ax, &s);
+	dd c2 = {2.0 * c.hi, 2.0 * c.lo};
+	v = sub3(PIO2_HI, PIO2_LO, 2.0 * s, c2); // pi/2 - 2 asin(sqrt((1 - x)/2))
 	return x < 0 ? -v : v;
 }
 
@@ -660,15 +686,17 @@ double hs_acos(double x) {
 	if (!(ax <= 1.0))
 		return (x - x) / (x - x);
 	if (ax < 0.5) { // pi/2 - asin(x)
-		double z = x * x;
-		dd h = two_sum(PIO2_HI, -x);
-		return h.hi + (h.lo + (PIO2_LO - x * z * asin_poly(z)));
+		dd z = two_prod(x, x);
+		return sub3(PIO2_HI, PIO2_LO, x, asin_tail(x, z.hi, z.lo));
 	}
-	double s, c = asin_half(ax, &s);
-	if (x > 0) // 2 asin(sqrt((1 - x)/2))
-		return 2.0 * (s + c);
-	dd h = two_sum(PI_HI, -2.0 * s); // pi - 2 asin(sqrt((1 + x)/2))
-	return h.hi + (h.lo + (PI_LO - 2.0 * c));
+	double s;
+	dd c = asin_half(ax, &s);
+	if (x > 0) { // 2 asin(sqrt((1 - x)/2))
+		dd a = fast_two_sum(s, c.hi);
+		return 2.0 * (a.hi + (a.lo + c.lo));
+	}
+	dd c2 = {2.0 * c.hi, 2.0 * c.lo};
+	return sub3(PI_HI, PI_LO, 2.0 * s, c2); // pi - 2 asin(sqrt((1 + x)/2))
 }
 
 // ---- exp, log, pow ----
@@ -677,13 +705,20 @@ double hs_acos(double x) {
 static const double E0 = 0x1.ffffffffffdbdp-2, E1 = 0x1.555555555521ap-3, E2 = 0x1.55555cf14c204p-5,
                     E3 = 0x1.11111cddefd2bp-7;
 
-// v 2^m for v in [1/2, 4), rounded once even when the result is subnormal or overflows
-static double scale2(double v, int m) {
+// (h + l) 2^m for h in [1, 2), |l| < 2^-7 h, rounded once, also to a subnormal or to inf
+static double scale2(double h, double l, int m) {
 	if (m > 1023)
-		return (v * pow2i(m - 1023)) * 0x1p1023;
-	if (m < -1022)
-		return (v * pow2i(m + 1000)) * 0x1p-1000;
-	return v * pow2i(m);
+		return ((h + l) * pow2i(m - 1023)) * 0x1p1023;
+	if (m > -1022) // h + l >= 0.99: normal
+		return (h + l) * pow2i(m);
+	// Possibly subnormal: in units of 2^-1022 the subnormal spacing is ulp(1), so adding 1 rounds
+	// at the right place once; rounding h + l first and scaling would round twice.
+	double sc = pow2i(m + 1022), sh = h * sc, sl = l * sc; // exact: both stay normal
+	double v = sh + sl;
+	if (v >= 1.0)
+		return v * 0x1p-1022;
+	dd a = two_sum(1.0, sh);
+	return ((a.hi + (a.lo + sl)) - 1.0) * 0x1p-1022; // the subtraction and the scaling are exact
 }
 
 // exp(x + xl) for -746 <= x <= 710, xl a small tail: x = (128 m + j) ln2/128 + r,
@@ -697,7 +732,7 @@ static double exp_core(double x, double xl) {
 	int m = (int)((k - j) / EXP_N);
 	double p = r + r * r * (E0 + r * (E1 + r * (E2 + r * E3)));
 	double th = exp_tab[2 * j], tl = exp_tab[2 * j + 1];
-	return scale2(th + (tl + th * p), m);
+	return scale2(th, tl + th * p, m);
 }
 
 double hs_exp(double x) {

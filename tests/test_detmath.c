@@ -219,7 +219,7 @@ static void test_golden_bits(void **state) {
 	assert_same(hs_sin(1e22), -0x1.b453ab76bf397p-1); assert_same(hs_cos(2), -0x1.aa22657537205p-2);
 	assert_same(hs_cos(100), 0x1.b981dbf665fdfp-1); assert_same(hs_tan(1), 0x1.8eb245cbee3a6p+0);
 	assert_same(hs_tan(3), -0x1.23ef71254b86fp-3); assert_same(hs_atan(2), 0x1.1b6e192ebbe44p+0);
-	assert_same(hs_asin(-0.3), -0x1.380159e14f6fep-2); assert_same(hs_acos(0.99), 0x1.21df72882bfd8p-3);
+	assert_same(hs_asin(-0.3), -0x1.380159e14f6ffp-2); assert_same(hs_acos(0.99), 0x1.21df72882bfd8p-3);
 	assert_same(hs_exp(10), 0x1.5829dcf95056p+14); assert_same(hs_exp(100), 0x1.3494a9b171bf5p+144);
 	assert_same(hs_log(3), 0x1.193ea7aad030bp+0); assert_same(hs_cbrt(100), 0x1.290fca9c761f8p+2);
 	assert_same(hs_pow(0.7, 55.5), 0x1.5b93b7d78ff7fp-29); assert_same(hs_pow(1.5, 1.0 / 3), 0x1.250bfe1b082f5p+0);
@@ -233,7 +233,7 @@ static void test_golden_bits(void **state) {
 		for (int k = 0; k < 11; k++)
 			h = (h ^ bits(v[k])) * 1099511628211ULL;
 	}
-	if (h != 0x1e60fb75ebb65fc8ULL) {
+	if (h != 0x1c72f79db3b4c9cfULL) {
 		print_error("detmath bits hash %016llx changed\n", (unsigned long long)h);
 		fail();
 	}
