@@ -67,6 +67,16 @@ static void g_near_kpio2(gen_ctx *g, double *x, double *y) { // within 32 ulps o
 		v = nextafter(v, dir);
 	*x = v, *y = 0;
 }
+static double any_double(gen_ctx *g) { // uniform over the bit patterns, NaNs skipped
+	double v;
+	do {
+		uint64_t b = next_u64(g);
+		memcpy(&v, &b, sizeof v);
+	} while (isnan(v));
+	return v;
+}
+static void g_any(gen_ctx *g, double *x, double *y) { *x = any_double(g), *y = 0; }
+static void g_atan2_any(gen_ctx *g, double *y, double *x) { *y = any_double(g), *x = any_double(g); }
 static void g_unit(gen_ctx *g, double *x, double *y) { *x = uni(g, -1, 1), *y = 0; }
 static void g_near1(gen_ctx *g, double *x, double *y) { *x = sgn(g) * (1 - logu(g, -53, -1)), *y = 0; }
 static void g_half(gen_ctx *g, double *x, double *y) { *x = sgn(g) * uni(g, 0.45, 0.55), *y = 0; }
@@ -130,7 +140,7 @@ static double gs_cos(double x) { return gsl_sf_cos(x); }
 static double gs_exp(double x) { return x < 709.78 ? gsl_sf_exp(x) : INFINITY; }
 static double gs_log(double x) { return gsl_sf_log(x); }
 
-#define MAX_DOM 6
+#define MAX_DOM 7
 typedef struct func {
 	const char *name;
 	double (*hs1)(double), (*lm1)(double), (*gs1)(double);
@@ -144,21 +154,21 @@ typedef struct func {
 static const func funcs[] = {
 	{"sin", hs_sin, l_sin, gs_sin, r_sin, 0, 0, 0, 1,
 	 {{"|x|<pi/4", g_pio4}, {"|x|<100", g_model}, {"|x|<1e5", g_1e5}, {"2^-40..2^30", g_wide},
-	  {"2^30..2^1024", g_huge}, {"near k pi/2", g_near_kpio2}}},
+	  {"2^30..2^1024", g_huge}, {"near k pi/2", g_near_kpio2}, {"any double", g_any}}},
 	{"cos", hs_cos, l_cos, gs_cos, r_cos, 0, 0, 0, 1,
 	 {{"|x|<pi/4", g_pio4}, {"|x|<100", g_model}, {"|x|<1e5", g_1e5}, {"2^-40..2^30", g_wide},
-	  {"2^30..2^1024", g_huge}, {"near k pi/2", g_near_kpio2}}},
+	  {"2^30..2^1024", g_huge}, {"near k pi/2", g_near_kpio2}, {"any double", g_any}}},
 	{"tan", hs_tan, l_tan, 0, r_tan, 0, 0, 0, 1,
 	 {{"|x|<pi/4", g_pio4}, {"|x|<100", g_model}, {"|x|<1e5", g_1e5}, {"2^-40..2^30", g_wide},
-	  {"2^30..2^1024", g_huge}, {"near k pi/2", g_near_kpio2}}},
+	  {"2^30..2^1024", g_huge}, {"near k pi/2", g_near_kpio2}, {"any double", g_any}}},
 	{"asin", hs_asin, l_asin, 0, r_asin, 0, 0, 0, 0,
 	 {{"|x|<1", g_unit}, {"near ±1", g_near1}, {"near ±1/2", g_half}, {"2^-60..1/2", g_small}}},
 	{"acos", hs_acos, l_acos, 0, r_acos, 0, 0, 0, 0,
 	 {{"|x|<1", g_unit}, {"near ±1", g_near1}, {"near ±1/2", g_half}, {"2^-60..1/2", g_small}}},
 	{"atan", hs_atan, l_atan, 0, r_atan, 0, 0, 0, 0,
-	 {{"|x|<2", g_two}, {"2^-40..2^60", g_atan_wide}, {"2^-60..1/2", g_small}}},
+	 {{"|x|<2", g_two}, {"2^-40..2^60", g_atan_wide}, {"2^-60..1/2", g_small}, {"any double", g_any}}},
 	{"atan2", 0, 0, 0, 0, hs_atan2, l_atan2, r_atan2, 0,
-	 {{"|y|,|x|<1", g_atan2_unit}, {"2^-30..2^30", g_atan2}, {"2^-1000..2^1000", g_atan2_far}}},
+	 {{"|y|,|x|<1", g_atan2_unit}, {"2^-30..2^30", g_atan2}, {"2^-1000..2^1000", g_atan2_far}, {"any doubles", g_atan2_any}}},
 	{"exp", hs_exp, l_exp, gs_exp, r_exp, 0, 0, 0, 3,
 	 {{"-745..709.78", g_exp_all}, {"subnormal results", g_exp_sub}, {"2^-60..8", g_exp_small}, {"|x|<10", g_exp_mid}}},
 	{"log", hs_log, l_log, gs_log, r_log, 0, 0, 0, 0,
