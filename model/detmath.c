@@ -26,11 +26,14 @@ static const uint32_t two_over_pi[40] = {
 #define PIO2_2 0x1.0b4611a600000p-34
 #define PIO2_3 0x1.3198a2e000000p-69
 #define PIO2_3T 0x1.b839a252049c1p-104
+// pi/2 and pi as hi + lo; 2/pi rounded
 #define PIO2_HI 0x1.921fb54442d18p+0
 #define PIO2_LO 0x1.1a62633145c07p-54
 #define PI_HI 0x1.921fb54442d18p+1
 #define PI_LO 0x1.1a62633145c07p-53
 #define INV_PIO2 0x1.45f306dc9c883p-1
+// exp: ln2/EXP_N in two parts, the first of 35 bits so that k LN2_N_HI is exact for |k| < 2^18;
+// exp_tab holds 2^(j/EXP_N) as hi, lo
 #define EXP_N 128
 #define LN2_N_HI 0x1.62e42fefc0000p-8
 #define LN2_N_LO -0x1.c610ca86c3899p-44
@@ -165,6 +168,7 @@ static const double exp_tab[2 * EXP_N] = {
 	0x1.fa7c1819e90d8p+0, 0x1.74853f3a5931ep-55,
 	0x1.fd3c22b8f71f1p+0, 0x1.2eb74966579e7p-57,
 };
+// atan(i/8) as hi, lo
 static const double atan_tab[2 * 9] = {
 	0x0.0p+0, 0x0.0p+0,
 	0x1.fd5ba9aac2f6ep-4, -0x1.cd37686760c17p-59,
@@ -176,9 +180,12 @@ static const double atan_tab[2 * 9] = {
 	0x1.700a7c5784634p-1, -0x1.8c34d25aadef6p-56,
 	0x1.921fb54442d18p-1, 0x1.1a62633145c07p-55,
 };
+// ln2 in two parts, the first of 42 bits so that e LN2_HI is exact for any exponent e
 #define LN2_HI 0x1.62e42fefa3800p-1
 #define LN2_LO 0x1.ef35793c76730p-45
-static const double log_tab[3 * 128] = { // invc (9 bits), -log(invc) hi, lo
+// log: for z in [1 + i/128, 1 + (i+1)/128) (halved for i >= 53), invc ~ 1/z with 9 bits so that
+// z invc is exact, and -log(invc) as hi, lo
+static const double log_tab[3 * 128] = {
 	0x1.0000000000000p+0, 0x0.0p+0, 0x0.0p+0,
 	0x1.fa00000000000p-1, 0x1.82448a388a2aap-7, 0x1.04b16137f09a0p-62,
 	0x1.f600000000000p-1, 0x1.432a925980cc1p-6, -0x1.8cdaf39004192p-60,
