@@ -1,12 +1,10 @@
 // manipulate.c — how the hand moves objects (1999 paper §3.2, Fig. 2-3) and how objects
 // interfering with a moved object follow it (§4.3, paper mode).
-#include "internal.h"
-
-bool hs_hand_near(const hs_world *world, const hs_hand *hand, int object) {
-	const hs_body *body = &world->bodies[object];
-	double r = world->shapes[body->shape].radius + hand->radius;
-	return hs_length_sq(hs_sub(body->pos, hand->center)) <= r * r;
-}
+#include "broadphase.h"
+#include "contact.h"
+#include "manipulate.h"
+#include "motion.h"
+#include "support.h"
 
 static bool bodies_overlap(const hs_world *world, int i, int j) {
 	const hs_body *a = &world->bodies[i], *b = &world->bodies[j];
@@ -53,11 +51,7 @@ static hs_vec3 part_position(const hs_hand *hand, const hs_contact *c) {
 	if (c->part < HS_HAND_POINTS)
 		return hand->points[c->part];
 	const hs_vec3 *line = hand->lines[c->part - HS_HAND_POINTS];
-	hs_vec3 d = hs_sub(line[1], line[0]);
-	double len_sq = hs_length_sq(d);
-	double u = len_sq > 0.0 ? hs_dot(hs_sub(c->point, line[0]), d) / len_sq : 0.0;
-	u = u < 0.0 ? 0.0 : (u > 1.0 ? 1.0 : u);
-	return hs_mul_add(line[0], u, d);
+	return hs_segment_closest(line[0], line[1], c->point);
 }
 
 static hs_vec3 part_displacement(const hs_hand *hand, const hs_contact *c) {

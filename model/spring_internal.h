@@ -4,7 +4,10 @@
 
 #include <gsl/gsl_rng.h>
 
-#include "internal.h"
+#include "motion.h"
+#include "spring_compat_tmp.h" // TEMPORARY: see the file
+#include "spring_world.h"
+#include "world_internal.h"
 
 // The tracker daemon (§3, §5.1): stylus samples at a fixed rate in a ring buffer, velocity and
 // acceleration estimates, rest / motion events with hysteresis.

@@ -27,7 +27,7 @@
 #include <string.h>
 #include <time.h>
 
-#include "internal.h"
+#include "world_internal.h"
 #include "harness_internal.h"
 
 #define FLOOR_SLOP 1e-9 // m: deepest penetration accepted after a frame

@@ -18,7 +18,7 @@
 
 #include <cmocka.h>
 
-#include "internal.h"
+#include "world_internal.h"
 #include "harness_internal.h"
 #include "test_util.h"
 

@@ -599,7 +599,7 @@ static void test_invalid_input_rejected(void **state) {
 	for (int k = 0; k < 12; ++k)
 		assert_int_equal(hs_world_enable_springs(w, &bad[k]), HS_ERR_INVALID_ARGUMENT);
 	assert_int_equal(hs_world_enable_springs(w, &sd), HS_OK);
-	hs_object_id none = {0}, bogus = {5};
+	hs_object_id none = {0}, bogus = {5, 0, 0};
 	assert_int_equal(hs_world_spring_attach(w, none), HS_ERR_INVALID_ARGUMENT);
 	assert_int_equal(hs_world_set_stylus(w, hs_v3(NAN, 0, 0), hs_quat_identity(), false), HS_ERR_INVALID_ARGUMENT);
 	assert_int_equal(hs_world_set_stylus(w, hs_v3(0, 0, 0), hs_q(2, 0, 0, 0), false), HS_ERR_INVALID_ARGUMENT);
