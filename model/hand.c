@@ -311,8 +311,34 @@ void hs_hand_update_bounds(hs_hand *hand) {
 	hand->radius = hand->local_radius + 1e-6;
 }
 
+void hs_hand_keep_previous(hs_hand *hand) {
+	memcpy(hand->prev_points, hand->points, sizeof hand->points);
+	memcpy(hand->prev_lines, hand->lines, sizeof hand->lines);
+	hand->prev_wrist_pos = hand->wrist_pos;
+	hand->prev_wrist_rot = hand->wrist_rot;
+	memcpy(hand->prev_sensors, hand->sensors, sizeof hand->sensors);
+}
+
 void hs_hand_refresh(hs_hand *hand) {
+	if (!hand->placed) { // as hs_world_add_hand left it
+		memset(hand->points, 0, sizeof hand->points);
+		memset(hand->prev_points, 0, sizeof hand->prev_points);
+		memset(hand->lines, 0, sizeof hand->lines);
+		memset(hand->prev_lines, 0, sizeof hand->prev_lines);
+		memset(hand->local_points, 0, sizeof hand->local_points);
+		memset(hand->local_lines, 0, sizeof hand->local_lines);
+		hand->local_center = hs_v3(0, 0, 0);
+		hand->local_radius = 0.0;
+		hs_hand_update_bounds(hand);
+		return;
+	}
+	// the previous points: the same two calls that placed them, on the previous reading
+	hs_hand_local_shape(&hand->def, hand->prev_sensors, hand->local_points, hand->local_lines);
+	hs_hand_place(hand->local_points, (const hs_vec3(*)[2])hand->local_lines, hand->prev_wrist_pos,
+	              hand->prev_wrist_rot, hand->prev_points, hand->prev_lines);
 	hs_hand_update_shape(hand);
+	hs_hand_place(hand->local_points, (const hs_vec3(*)[2])hand->local_lines, hand->wrist_pos, hand->wrist_rot,
+	              hand->points, hand->lines);
 	hs_hand_update_bounds(hand);
 }
 

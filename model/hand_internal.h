@@ -8,17 +8,23 @@
 
 #include "handspring.h"
 
-// A hand of a world. MODEL: `def`. STATE (state.c's hand_io lists them): wrist pose, sensors,
-// check points and lines now and one frame ago, `placed`. CACHES, rebuilt from the state after a
-// load (hs_hand_refresh): the shape in the wrist frame and the bounding spheres.
+// A hand of a world. MODEL: `def`. STATE (state.c's hand_io lists them): the wrist pose and
+// sensors now and at the end of the last step, `placed`. CACHES, rebuilt from the state after a
+// load (hs_hand_refresh): the check points and lines now and one frame ago (the kinematics of
+// those two readings, §3.1: bit for bit what hs_world_set_hand computed), the shape in the wrist
+// frame and the bounding spheres. 51 words of state instead of the 866 of the points and lines.
 typedef struct hs_hand {
 	hs_hand_def def;
 	hs_vec3 wrist_pos;
 	hs_quat wrist_rot;
 	uint8_t sensors[HS_GLOVE_SENSORS];
+	hs_vec3 prev_wrist_pos; // the reading the previous points were placed from
+	hs_quat prev_wrist_rot;
+	uint8_t prev_sensors[HS_GLOVE_SENSORS];
+	bool placed; // set at least once: before that its previous points are its current ones
+	// cache: points and lines of (sensors, wrist) and of (prev_sensors, prev_wrist); zero until placed
 	hs_vec3 points[HS_HAND_POINTS], prev_points[HS_HAND_POINTS];
 	hs_vec3 lines[HS_HAND_LINES][2], prev_lines[HS_HAND_LINES][2];
-	bool placed; // set at least once: before that its previous points are its current ones
 	// cache: bounding sphere of the check points and lines (radius < 0: touches nothing)
 	hs_vec3 center;
 	double radius;
@@ -38,6 +44,8 @@ void hs_hand_place(const hs_vec3 local_points[HS_HAND_POINTS], const hs_vec3 loc
 void hs_hand_update_shape(hs_hand *hand);
 // The world bounding sphere from the wrist pose and the shape cache (radius -1 before placement).
 void hs_hand_update_bounds(hs_hand *hand);
+// The reading of this frame becomes the previous one (the end of a step, a first placement).
+void hs_hand_keep_previous(hs_hand *hand);
 // Rebuilds every cache from the state alone (after hs_world_load_state).
 void hs_hand_refresh(hs_hand *hand);
 

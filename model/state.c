@@ -118,16 +118,17 @@ static void body_io(hs_state_io *io, const hs_world *w, hs_body *b) {
 	hs_state_quat(io, &b->grip_rot); // zero until a grasp begins
 }
 
-// One hand: 866 words. Its definition is in the checksum; its caches are rebuilt after a load.
+// One hand: 51 words, the two readings its check points now and a frame ago come from (the points
+// and lines are rebuilt from them after a load). Its definition is in the checksum.
 static void hand_io(hs_state_io *io, hs_hand *h) {
 	hs_state_vec3(io, &h->wrist_pos);
 	hs_state_rotation(io, &h->wrist_rot);
 	for (int i = 0; i < HS_GLOVE_SENSORS; ++i)
 		hs_state_u8(io, &h->sensors[i]);
-	hs_state_vec3_array(io, h->points, HS_HAND_POINTS);
-	hs_state_vec3_array(io, h->prev_points, HS_HAND_POINTS);
-	hs_state_vec3_array(io, &h->lines[0][0], 2 * HS_HAND_LINES);
-	hs_state_vec3_array(io, &h->prev_lines[0][0], 2 * HS_HAND_LINES);
+	hs_state_vec3(io, &h->prev_wrist_pos);
+	hs_state_rotation(io, &h->prev_wrist_rot);
+	for (int i = 0; i < HS_GLOVE_SENSORS; ++i)
+		hs_state_u8(io, &h->prev_sensors[i]);
 	hs_state_bool(io, &h->placed);
 }
 
@@ -170,15 +171,10 @@ hs_status hs_world_save_state(const hs_world *world, void *buffer, size_t size) 
 }
 
 uint64_t hs_world_hash(const hs_world *world) {
-	hs_state_io io = {.mode = HS_STATE_HASH, .hash = HS_HASH_SEED};
-	if (!world)
-		return io.hash;
-	world_io(&io, (hs_world *)world); // HASH mode only reads the fields
-	// a final avalanche (MurmurHash3's fmix64) so nearby states give unrelated hashes
-	uint64_t h = io.hash ^ (uint64_t)io.words;
-	h = (h ^ (h >> 33)) * 0xFF51AFD7ED558CCDull;
-	h = (h ^ (h >> 33)) * 0xC4CEB9FE1A85EC53ull;
-	return h ^ (h >> 33);
+	hs_state_io io = {.mode = HS_STATE_HASH, .lane = {HS_HASH_SEED, ~HS_HASH_SEED, HS_HASH_SEED >> 1, 1}};
+	if (world)
+		world_io(&io, (hs_world *)world); // HASH mode only reads the fields
+	return hs_state_hash_of(&io);
 }
 
 #if defined(__GNUC__)

@@ -19,6 +19,8 @@
 #include <stdbool.h>
 #include <stddef.h>
 #include <stdint.h>
+#include <limits.h>
+#include <string.h>
 
 #include "hs_math.h"
 
@@ -37,7 +39,7 @@ typedef struct hs_state_io {
 	size_t words;            // words visited so far
 	size_t limit;            // SAVE / CHECK / LOAD: words the buffer holds
 	bool overflow;           // SAVE / CHECK / LOAD ran past limit (nothing read or written there)
-	uint64_t hash;           // HASH: running hash of the words
+	uint64_t lane[4];        // HASH: word k is mixed into lane k mod 4 (four independent chains)
 	int objects;             // the world's object count, for walks over per-object arrays
 	const char *error;       // CHECK: why the buffer is refused (first refusal), NULL while valid
 	size_t error_word;       // CHECK: the word where it was refused
@@ -50,22 +52,102 @@ static inline uint64_t hs_state_mix(uint64_t h, uint64_t word) {
 	return h ^ (h >> 29);
 }
 uint64_t hs_state_mix_f64(uint64_t h, double v);
+// The hash of a HASH walk: its four lanes and word count folded and avalanched (fmix64).
+uint64_t hs_state_hash_of(const hs_state_io *io);
 
-void hs_state_u64(hs_state_io *io, uint64_t *v);
-void hs_state_f64(hs_state_io *io, double *v);   // CHECK: finite
-void hs_state_i64(hs_state_io *io, int64_t *v);
-void hs_state_int(hs_state_io *io, int *v);      // CHECK: fits an int
-void hs_state_long(hs_state_io *io, long *v);    // CHECK: fits a long (32 bits on i386)
-void hs_state_u8(hs_state_io *io, uint8_t *v);   // CHECK: 0..255
-void hs_state_bool(hs_state_io *io, bool *v);    // CHECK: 0 or 1
-void hs_state_vec3(hs_state_io *io, hs_vec3 *v); // 3 words
-void hs_state_quat(hs_state_io *io, hs_quat *v); // 4 words (w, x, y, z); CHECK: finite only
-// Ranged and array forms.
-void hs_state_int_range(hs_state_io *io, int *v, int lo, int hi);      // CHECK: lo <= v <= hi
-void hs_state_long_range(hs_state_io *io, long *v, long lo, long hi);  // CHECK: lo <= v <= hi
-void hs_state_u8_range(hs_state_io *io, uint8_t *v, uint8_t hi);       // CHECK: v <= hi
-void hs_state_rotation(hs_state_io *io, hs_quat *v);                   // CHECK: a unit quaternion
-void hs_state_vec3_array(hs_state_io *io, hs_vec3 *v, int count);
+// HASH runs every frame: each call below does it inline (one mix into the lane of the word),
+// and calls the out-of-line *_io function of state_io.c for the other modes.
+static inline void hs_state_hash_word(hs_state_io *io, uint64_t word) {
+	size_t k = io->words++ & 3u;
+	io->lane[k] = hs_state_mix(io->lane[k], word);
+}
+static inline uint64_t hs_state_bits(double v) {
+	uint64_t bits;
+	memcpy(&bits, &v, sizeof bits);
+	return bits;
+}
+
+void hs_state_u64_io(hs_state_io *io, uint64_t *v);
+void hs_state_f64_io(hs_state_io *io, double *v);
+void hs_state_long_range_io(hs_state_io *io, long *v, long lo, long hi);
+void hs_state_int_range_io(hs_state_io *io, int *v, int lo, int hi);
+void hs_state_u8_range_io(hs_state_io *io, uint8_t *v, uint8_t hi);
+void hs_state_bool_io(hs_state_io *io, bool *v);
+void hs_state_rotation_io(hs_state_io *io, hs_quat *v);
+
+static inline void hs_state_u64(hs_state_io *io, uint64_t *v) {
+	if (io->mode == HS_STATE_HASH)
+		hs_state_hash_word(io, *v);
+	else
+		hs_state_u64_io(io, v);
+}
+static inline void hs_state_i64(hs_state_io *io, int64_t *v) {
+	uint64_t w = (uint64_t)*v;
+	hs_state_u64(io, &w);
+	if (io->mode == HS_STATE_LOAD)
+		*v = (int64_t)w;
+}
+// CHECK: finite
+static inline void hs_state_f64(hs_state_io *io, double *v) {
+	if (io->mode == HS_STATE_HASH)
+		hs_state_hash_word(io, hs_state_bits(*v));
+	else
+		hs_state_f64_io(io, v);
+}
+// CHECK: lo <= v <= hi
+static inline void hs_state_long_range(hs_state_io *io, long *v, long lo, long hi) {
+	if (io->mode == HS_STATE_HASH)
+		hs_state_hash_word(io, (uint64_t)(int64_t)*v);
+	else
+		hs_state_long_range_io(io, v, lo, hi);
+}
+static inline void hs_state_long(hs_state_io *io, long *v) { hs_state_long_range(io, v, LONG_MIN, LONG_MAX); }
+static inline void hs_state_int_range(hs_state_io *io, int *v, int lo, int hi) {
+	if (io->mode == HS_STATE_HASH)
+		hs_state_hash_word(io, (uint64_t)(int64_t)*v);
+	else
+		hs_state_int_range_io(io, v, lo, hi);
+}
+static inline void hs_state_int(hs_state_io *io, int *v) { hs_state_int_range(io, v, INT_MIN, INT_MAX); }
+// CHECK: v <= hi
+static inline void hs_state_u8_range(hs_state_io *io, uint8_t *v, uint8_t hi) {
+	if (io->mode == HS_STATE_HASH)
+		hs_state_hash_word(io, *v);
+	else
+		hs_state_u8_range_io(io, v, hi);
+}
+static inline void hs_state_u8(hs_state_io *io, uint8_t *v) { hs_state_u8_range(io, v, UINT8_MAX); }
+// CHECK: 0 or 1
+static inline void hs_state_bool(hs_state_io *io, bool *v) {
+	if (io->mode == HS_STATE_HASH)
+		hs_state_hash_word(io, *v ? 1u : 0u);
+	else
+		hs_state_bool_io(io, v);
+}
+// 3 words
+static inline void hs_state_vec3(hs_state_io *io, hs_vec3 *v) {
+	hs_state_f64(io, &v->x);
+	hs_state_f64(io, &v->y);
+	hs_state_f64(io, &v->z);
+}
+// 4 words (w, x, y, z); CHECK: finite only (zero quaternions are allowed)
+static inline void hs_state_quat(hs_state_io *io, hs_quat *v) {
+	hs_state_f64(io, &v->w);
+	hs_state_f64(io, &v->x);
+	hs_state_f64(io, &v->y);
+	hs_state_f64(io, &v->z);
+}
+// 4 words; CHECK: a unit quaternion (hs_quat_is_unit)
+static inline void hs_state_rotation(hs_state_io *io, hs_quat *v) {
+	if (io->mode == HS_STATE_HASH)
+		hs_state_quat(io, v);
+	else
+		hs_state_rotation_io(io, v);
+}
+static inline void hs_state_vec3_array(hs_state_io *io, hs_vec3 *v, int count) {
+	for (int i = 0; i < count; ++i)
+		hs_state_vec3(io, &v[i]);
+}
 // A definition checksum: SAVE writes it, CHECK refuses a buffer whose word differs (`what`
 // names the definition in the reason), LOAD skips it, HASH ignores it.
 void hs_state_def(hs_state_io *io, uint64_t checksum, const char *what);

@@ -30,7 +30,8 @@ static uint64_t word(hs_state_io *io, uint64_t v) {
 	case HS_STATE_SIZE:
 		return v;
 	case HS_STATE_HASH:
-		io->hash = hs_state_mix(io->hash, v);
+		io->words--; // the inline hs_state_hash_word counts its own words
+		hs_state_hash_word(io, v);
 		return v;
 	case HS_STATE_SAVE:
 		if (at < io->limit)
@@ -58,22 +59,24 @@ void hs_state_refuse(hs_state_io *io, const char *why) {
 
 static bool loading(const hs_state_io *io) { return io->mode == HS_STATE_LOAD; }
 
-void hs_state_u64(hs_state_io *io, uint64_t *v) {
+uint64_t hs_state_hash_of(const hs_state_io *io) {
+	uint64_t h = io->lane[0];
+	for (int k = 1; k < 4; ++k) // rotations keep equal lanes from cancelling
+		h ^= (io->lane[k] << (16 * k)) | (io->lane[k] >> (64 - 16 * k));
+	h ^= (uint64_t)io->words;
+	h = (h ^ (h >> 33)) * 0xFF51AFD7ED558CCDull;
+	h = (h ^ (h >> 33)) * 0xC4CEB9FE1A85EC53ull;
+	return h ^ (h >> 33);
+}
+
+void hs_state_u64_io(hs_state_io *io, uint64_t *v) {
 	uint64_t w = word(io, *v);
 	if (loading(io))
 		*v = w;
 }
 
-void hs_state_i64(hs_state_io *io, int64_t *v) {
-	uint64_t w = word(io, (uint64_t)*v);
-	if (loading(io))
-		*v = (int64_t)w;
-}
-
-void hs_state_f64(hs_state_io *io, double *v) {
-	uint64_t bits;
-	memcpy(&bits, v, sizeof bits);
-	uint64_t w = word(io, bits);
+void hs_state_f64_io(hs_state_io *io, double *v) {
+	uint64_t w = word(io, hs_state_bits(*v));
 	double d;
 	memcpy(&d, &w, sizeof d);
 	if (!isfinite(d))
@@ -82,7 +85,7 @@ void hs_state_f64(hs_state_io *io, double *v) {
 		*v = d;
 }
 
-void hs_state_long_range(hs_state_io *io, long *v, long lo, long hi) {
+void hs_state_long_range_io(hs_state_io *io, long *v, long lo, long hi) {
 	int64_t w = (int64_t)word(io, (uint64_t)(int64_t)*v);
 	if (w < (int64_t)lo || w > (int64_t)hi)
 		hs_state_refuse(io, "an integer out of range");
@@ -90,18 +93,14 @@ void hs_state_long_range(hs_state_io *io, long *v, long lo, long hi) {
 		*v = (long)w;
 }
 
-void hs_state_long(hs_state_io *io, long *v) { hs_state_long_range(io, v, LONG_MIN, LONG_MAX); }
-
-void hs_state_int_range(hs_state_io *io, int *v, int lo, int hi) {
+void hs_state_int_range_io(hs_state_io *io, int *v, int lo, int hi) {
 	long l = *v;
-	hs_state_long_range(io, &l, lo, hi);
+	hs_state_long_range_io(io, &l, lo, hi);
 	if (loading(io))
 		*v = (int)l;
 }
 
-void hs_state_int(hs_state_io *io, int *v) { hs_state_int_range(io, v, INT_MIN, INT_MAX); }
-
-void hs_state_u8_range(hs_state_io *io, uint8_t *v, uint8_t hi) {
+void hs_state_u8_range_io(hs_state_io *io, uint8_t *v, uint8_t hi) {
 	uint64_t w = word(io, *v);
 	if (w > hi)
 		hs_state_refuse(io, "a flag or enum out of range");
@@ -109,9 +108,7 @@ void hs_state_u8_range(hs_state_io *io, uint8_t *v, uint8_t hi) {
 		*v = (uint8_t)w;
 }
 
-void hs_state_u8(hs_state_io *io, uint8_t *v) { hs_state_u8_range(io, v, UINT8_MAX); }
-
-void hs_state_bool(hs_state_io *io, bool *v) {
+void hs_state_bool_io(hs_state_io *io, bool *v) {
 	uint64_t w = word(io, *v ? 1u : 0u);
 	if (w > 1)
 		hs_state_refuse(io, "a boolean neither 0 nor 1");
@@ -119,24 +116,12 @@ void hs_state_bool(hs_state_io *io, bool *v) {
 		*v = w != 0;
 }
 
-void hs_state_vec3(hs_state_io *io, hs_vec3 *v) {
-	hs_state_f64(io, &v->x);
-	hs_state_f64(io, &v->y);
-	hs_state_f64(io, &v->z);
-}
-
-void hs_state_quat(hs_state_io *io, hs_quat *v) {
-	hs_state_f64(io, &v->w);
-	hs_state_f64(io, &v->x);
-	hs_state_f64(io, &v->y);
-	hs_state_f64(io, &v->z);
-}
-
-void hs_state_rotation(hs_state_io *io, hs_quat *v) {
+void hs_state_rotation_io(hs_state_io *io, hs_quat *v) {
+	size_t first = io->words;
 	hs_quat q = *v;
 	hs_state_quat(io, &q); // CHECK leaves q as it was: read the words again to test them
-	if (io->mode == HS_STATE_CHECK && io->words >= 4 && io->words <= io->limit) {
-		const unsigned char *p = io->in + 8 * (io->words - 4);
+	if (io->mode == HS_STATE_CHECK && first + 4 <= io->limit) {
+		const unsigned char *p = io->in + 8 * first;
 		uint64_t w[4] = {get_le(p), get_le(p + 8), get_le(p + 16), get_le(p + 24)};
 		memcpy(&q.w, &w[0], 8);
 		memcpy(&q.x, &w[1], 8);
@@ -147,11 +132,6 @@ void hs_state_rotation(hs_state_io *io, hs_quat *v) {
 	}
 	if (loading(io))
 		*v = q;
-}
-
-void hs_state_vec3_array(hs_state_io *io, hs_vec3 *v, int count) {
-	for (int i = 0; i < count; ++i)
-		hs_state_vec3(io, &v[i]);
 }
 
 void hs_state_def(hs_state_io *io, uint64_t checksum, const char *what) {

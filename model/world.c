@@ -335,11 +335,8 @@ hs_status hs_world_step(hs_world *world) {
 		hs_grid_update(world, i);
 	}
 	hs_awake_compact(world);
-	for (int h = 0; h < world->hand_count; ++h) { // a hand not set again stays where it is
-		hs_hand *hand = &world->hands[h];
-		memcpy(hand->prev_points, hand->points, sizeof hand->points);
-		memcpy(hand->prev_lines, hand->lines, sizeof hand->lines);
-	}
+	for (int h = 0; h < world->hand_count; ++h) // a hand not set again stays where it is
+		hs_hand_keep_previous(&world->hands[h]);
 	world->frame++;
 	return HS_OK;
 }
@@ -397,7 +394,7 @@ hs_hand_id hs_world_add_hand(hs_world *world, const hs_hand_def *def, hs_status 
 	hs_hand *hand = &world->hands[world->hand_count];
 	memset(hand, 0, sizeof *hand);
 	hand->def = *def;
-	hand->wrist_rot = hs_quat_identity();
+	hand->wrist_rot = hand->prev_wrist_rot = hs_quat_identity();
 	hs_hand_update_bounds(hand); // touches nothing until it is set
 	set_status(status, HS_OK);
 	int index = world->hand_count++;
@@ -428,8 +425,7 @@ hs_status hs_world_set_hand(hs_world *world, hs_hand_id id, hs_vec3 wrist_positi
 	hs_hand_place(hand->local_points, (const hs_vec3(*)[2])hand->local_lines, hand->wrist_pos, hand->wrist_rot,
 	              hand->points, hand->lines);
 	if (!hand->placed) { // no motion before the first pose
-		memcpy(hand->prev_points, hand->points, sizeof hand->points);
-		memcpy(hand->prev_lines, hand->lines, sizeof hand->lines);
+		hs_hand_keep_previous(hand);
 		hand->placed = true;
 	}
 	hs_hand_update_bounds(hand);

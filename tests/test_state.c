@@ -123,6 +123,20 @@ static void test_hand_world_continues_identically(void **state) {
 	size_t size;
 	unsigned char *buffer = save(r.world, &size);
 	uint64_t at_n = hs_world_hash(r.world);
+	hs_vec3 points[HS_HAND_POINTS], reloaded[HS_HAND_POINTS];
+	drive_hand(&r, r.world, N_FRAMES); // the reading of the next frame is set: points and previous differ
+	assert_int_equal(hs_world_hand_points(r.world, r.hand, points), HS_OK);
+	hs_hand cached = r.world->hands[0];
+	unsigned char *set = save(r.world, &size);
+	assert_int_equal(hs_world_load_state(r.world, set, size), HS_OK);
+	assert_int_equal(hs_world_hand_points(r.world, r.hand, reloaded), HS_OK);
+	assert_memory_equal(points, reloaded, sizeof points); // the caches are rebuilt bit for bit
+	assert_memory_equal(cached.prev_points, r.world->hands[0].prev_points, sizeof cached.prev_points);
+	assert_memory_equal(cached.lines, r.world->hands[0].lines, sizeof cached.lines);
+	assert_memory_equal(cached.prev_lines, r.world->hands[0].prev_lines, sizeof cached.prev_lines);
+	assert_true(cached.center.x == r.world->hands[0].center.x && cached.radius == r.world->hands[0].radius);
+	free(set);
+	assert_int_equal(hs_world_load_state(r.world, buffer, size), HS_OK);
 	uint64_t first[M_FRAMES], again[M_FRAMES], other[M_FRAMES];
 	step_hand(&r, r.world, N_FRAMES, M_FRAMES, first);
 	assert_int_equal(hs_world_load_state(r.world, buffer, size), HS_OK);
@@ -393,9 +407,12 @@ static void test_hash_sees_what_the_old_one_missed(void **state) {
 	w->hands[0].sensors[3] ^= 1;
 	assert_true(hs_world_hash(w) != h);
 	w->hands[0].sensors[3] ^= 1;
-	w->hands[0].prev_points[5].z += 1e-9;
+	w->hands[0].prev_wrist_pos.z += 1e-9; // where the previous check points were placed from
 	assert_true(hs_world_hash(w) != h);
-	w->hands[0].prev_points[5].z -= 1e-9;
+	w->hands[0].prev_wrist_pos.z -= 1e-9;
+	w->hands[0].prev_sensors[7] ^= 1;
+	assert_true(hs_world_hash(w) != h);
+	w->hands[0].prev_sensors[7] ^= 1;
 	assert_true(hs_world_hash(w) == h);
 	hs_world_destroy(w);
 }
