@@ -312,6 +312,53 @@ static void test_world_shapes(void **state) {
 	hs_world_destroy(w);
 }
 
+// Handles know their world and generation (Box2D's b2BodyId): one world's handle is refused by
+// another built the same way, and a handle of another generation by its own world.
+static void test_handles_know_their_world(void **state) {
+	(void)state;
+	hs_object_id obj_a, obj_b;
+	hs_hand_id hand_a, hand_b;
+	hs_world *a = small_world(&obj_a, &hand_a);
+	hs_shape_id shape_a = small_shape;
+	hs_world *b = small_world(&obj_b, &hand_b);
+	assert_int_equal(obj_a.index1, obj_b.index1); // the same index, different worlds
+	assert_int_not_equal(obj_a.world, obj_b.world);
+	assert_int_not_equal(obj_a.world, 0);
+	hs_object_state out;
+	assert_int_equal(hs_world_object_state(a, obj_a, &out), HS_OK);
+	assert_int_equal(hs_world_object_state(b, obj_a, &out), HS_ERR_INVALID_ARGUMENT);
+	assert_null(hs_world_shape(b, shape_a));
+	hs_object_def od = hs_default_object_def();
+	od.shape = shape_a;
+	hs_status st = HS_OK;
+	assert_int_equal(hs_world_add_object(b, &od, &st).index1, 0);
+	assert_int_equal(st, HS_ERR_INVALID_ARGUMENT);
+	uint8_t s[HS_GLOVE_SENSORS] = {0};
+	assert_int_equal(hs_world_set_hand(b, hand_a, hs_v3(0, 0, 0.3), hs_quat_identity(), s), HS_ERR_INVALID_ARGUMENT);
+	assert_int_equal(hs_world_set_hand(a, hand_a, hs_v3(0, 0, 0.3), hs_quat_identity(), s), HS_OK);
+	hs_object_id stale = obj_a;
+	stale.generation++;
+	assert_int_equal(hs_world_object_state(a, stale, &out), HS_ERR_INVALID_ARGUMENT);
+	hs_hand_id stale_hand = hand_a;
+	stale_hand.generation = 0;
+	hs_vec3 points[HS_HAND_POINTS];
+	assert_int_equal(hs_world_hand_points(a, stale_hand, points), HS_ERR_INVALID_ARGUMENT);
+	// the handles the world hands out by index are the ones it made
+	hs_object_id at = hs_world_object_at(a, 0);
+	assert_true(at.index1 == obj_a.index1 && at.world == obj_a.world && at.generation == obj_a.generation);
+	hs_hand_id hat = hs_world_hand_at(a, 0);
+	assert_true(hat.index1 == hand_a.index1 && hat.world == hand_a.world && hat.generation == hand_a.generation);
+	hs_shape_id sat = hs_world_shape_at(a, 0);
+	assert_true(sat.index1 == shape_a.index1 && sat.world == shape_a.world);
+	assert_int_equal(hs_world_object_at(a, 1).index1, 0);
+	assert_int_equal(hs_world_hand_at(a, 1).index1, 0);
+	assert_int_equal(hs_world_shape_at(a, 1).index1, 0);
+	assert_int_equal(hs_world_hand_at(NULL, 0).index1, 0);
+	assert_int_equal(hs_world_shape_at(NULL, 0).index1, 0);
+	hs_world_destroy(a);
+	hs_world_destroy(b);
+}
+
 static void test_world_objects(void **state) {
 	(void)state;
 	hs_object_id obj;
@@ -946,6 +993,7 @@ int main(void) {
 	    cmocka_unit_test(test_polyhedron),        cmocka_unit_test(test_shape_queries),
 	    cmocka_unit_test(test_world_create),      cmocka_unit_test(test_world_dt_extremes),
 	    cmocka_unit_test(test_world_shapes),      cmocka_unit_test(test_world_objects),
+	    cmocka_unit_test(test_handles_know_their_world),
 	    cmocka_unit_test(test_world_huge_numbers), cmocka_unit_test(test_hand_functions),
 	    cmocka_unit_test(test_hand_null_def),     cmocka_unit_test(test_world_hands),
 	    cmocka_unit_test(test_springs),           cmocka_unit_test(test_scenario_functions),

@@ -120,6 +120,15 @@ static void test_hand_world_continues_identically(void **state) {
 	assert_int_equal(hs_world_object_state(r.world, r.flyer, &flyer), HS_OK);
 	assert_int_equal(target.contact, HS_CONTACT_GRASP); // a grasp in progress
 	assert_true(flyer.position.z > 0.2);                // an object in flight
+	hs_contact contacts[8];
+	int n = hs_world_contacts(r.world, contacts, 8);
+	assert_true(n >= 2);
+	for (int k = 0; k < n && k < 8; ++k) { // the contacts' handles are the world's own
+		hs_object_state cs;
+		hs_vec3 points[HS_HAND_POINTS];
+		assert_int_equal(hs_world_object_state(r.world, contacts[k].object, &cs), HS_OK);
+		assert_int_equal(hs_world_hand_points(r.world, contacts[k].hand, points), HS_OK);
+	}
 	size_t size;
 	unsigned char *buffer = save(r.world, &size);
 	uint64_t at_n = hs_world_hash(r.world);
