@@ -53,18 +53,17 @@ static uint64_t hand_def_checksum(uint64_t h, const hs_hand_def *d) {
 	return h;
 }
 
-// What the world was built from: a state means nothing in a world built otherwise.
+// What the world was built from: a state means nothing in a world built otherwise. Left out on
+// purpose: max_objects and max_shapes (room, not behaviour: the counts are in the header) and
+// skip_work (it changes no result, broadphase.c), so a state moves between such worlds.
+// max_hands sizes the contact list: the header carries the contact capacity.
 static uint64_t definition_checksum(const hs_world *w) {
 	const hs_world_def *d = &w->def;
 	uint64_t h = hs_state_mix_f64(HS_HASH_SEED, d->dt);
 	h = mix_vec3(h, d->gravity);
 	h = hs_state_mix_f64(h, d->floor_tolerance);
-	h = hs_state_mix(h, (uint64_t)d->max_objects);
-	h = hs_state_mix(h, (uint64_t)d->max_shapes);
-	h = hs_state_mix(h, (uint64_t)d->max_hands);
 	h = hs_state_mix(h, (uint64_t)d->stacking);
 	h = hs_state_mix_f64(h, d->grasp_threshold_deg);
-	h = hs_state_mix(h, d->skip_work ? 1u : 0u);
 	for (int i = 0; i < w->shape_count; ++i)
 		h = shape_checksum(h, &w->shapes[i]);
 	for (int i = 0; i < w->object_count; ++i) {
@@ -91,7 +90,7 @@ static int header_of(const hs_world *w, uint64_t out[HS_STATE_HEADER_WORDS], con
 	    "another hand count",
 	    "another shape count",
 	    "another contact capacity (max_hands)",
-	    "another world definition (dt, gravity, capacities, shapes, masses or hand definitions)"};
+	    "another world definition (dt, gravity, tolerance, stacking, shapes, masses or hand definitions)"};
 	for (int i = 0; i < HS_STATE_HEADER_WORDS; ++i) {
 		out[i] = words[i];
 		why[i] = reasons[i];

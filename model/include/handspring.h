@@ -237,8 +237,9 @@ double hs_world_dt(const hs_world *world);
 /// (every pose, previous pose, velocity, contact and grasp field of every object, every hand's
 /// wrist and sensors now and at the last step's end, the frame counter, the numeric faults, the
 /// spring and tracker), each mixed in as one 64-bit word (multiply-xorshift in four lanes), so it
-/// is the same on every machine and costs about a nanosecond per word (0.4 µs for 10 objects). Two worlds with equal hashes continue
-/// identically (up to 64-bit collisions); a change of any single state field changes it.
+/// is the same on every machine and costs about a nanosecond per word (0.4 µs for 10 objects).
+/// Two worlds built from the same definitions with equal hashes continue identically (up to
+/// 64-bit collisions); a change of any single state field changes it.
 /// Not hashed: the definitions (they do not change while stepping), the work counters, caches.
 uint64_t hs_world_hash(const hs_world *world);
 
@@ -251,8 +252,9 @@ uint64_t hs_world_hash(const hs_world *world);
 // sign-extended), so the bytes are the same on every machine whatever its struct padding.
 // A 9-word header: magic "HSSTATE1", format version, library version (a hash of HS_VERSION),
 // kind (0 hand world, 1 spring world), object count, hand count, shape count, contact capacity,
-// and a checksum of the definitions (dt, gravity, tolerances, capacities, stacking, every shape's
-// counts, vertices and volume, every object's shape and mass, every hand definition). Then the
+// and a checksum of the definitions (dt, gravity, floor tolerance, stacking, grasp threshold,
+// every shape's counts, vertices and volume, every object's shape and mass, every hand
+// definition; not max_objects, max_shapes or skip_work, which change no result). Then the
 // world: frame, numeric faults, first fault frame and object; per object 35 words (pose, previous
 // pose, rot_prev, spin, velocity, contact state, floor contacts, grounded / asleep / held /
 // carried, grasped_by, grip pose); per hand 51 words (wrist pose and 18 sensors as last set and as
