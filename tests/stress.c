@@ -27,6 +27,7 @@
 #include <string.h>
 #include <time.h>
 
+#include "manipulate.h"
 #include "world_internal.h"
 #include "harness_internal.h"
 
