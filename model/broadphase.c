@@ -6,7 +6,7 @@
 // which a full scan would meet them, so a world with skip_work off gives the same bits.
 #include <string.h>
 
-#include "internal.h"
+#include "broadphase.h"
 
 static long cell_coord(double v, double cell) { return (long)floor(v / cell); }
 
@@ -112,4 +112,18 @@ void hs_awake_compact(hs_world *world) {
 			world->awake[kept++] = i;
 	}
 	world->awake_count = kept;
+}
+
+void hs_broadphase_reset(hs_world *world) {
+	// between steps the awake list holds exactly the objects not asleep, held or carried
+	// (hs_awake_compact ends every step; hs_wake keeps it for objects added since), in index order
+	world->awake_count = 0;
+	for (int i = 0; i < world->object_count; ++i) {
+		const hs_body *b = &world->bodies[i];
+		bool awake = !b->asleep || b->held || b->carried;
+		world->awake_flag[i] = (uint8_t)awake;
+		if (awake)
+			world->awake[world->awake_count++] = i;
+	}
+	world->grid_dirty = true; // filed again at the next step
 }

@@ -6,7 +6,8 @@
 //  (B) a check line crossing the part touches an edge when it enters and leaves through the two
 //      faces that meet at that edge; the contact normal is the pseudo-normal from G to the edge.
 //      A line through two faces that do not meet presses the face nearest to its middle.
-#include "internal.h"
+#include "clip.h"
+#include "contact.h"
 
 // Grasp when n_i · n_j <= cos(threshold) + eps: with a bare comparison rounding would decide the
 // 90 deg case (two adjoining cube faces) and two builds could disagree (DESIGN.md).
@@ -46,32 +47,6 @@ static int nearest_face(const hs_shape *shape, const hs_part *part, hs_vec3 p) {
 	return best;
 }
 
-hs_clip hs_clip_segment(const hs_shape *shape, const hs_part *part, hs_vec3 a, hs_vec3 b, double grow) {
-	hs_clip c = {0.0, 1.0, -1, -1, false};
-	hs_vec3 d = hs_sub(b, a);
-	for (int f = part->first_face; f < part->first_face + part->face_count; ++f) {
-		double num = shape->faces[f].offset + grow - hs_dot(shape->faces[f].normal, a);
-		double den = hs_dot(shape->faces[f].normal, d);
-		if (den == 0.0) {
-			if (num <= 0.0)
-				return c; // parallel and outside this face's plane
-			continue;
-		}
-		double t = num / den;
-		if (den < 0.0) { // entering through this face; the first of equal faces wins
-			if (t > c.t_in) {
-				c.t_in = t;
-				c.face_in = f;
-			}
-		} else if (t < c.t_out) {
-			c.t_out = t;
-			c.face_out = f;
-		}
-	}
-	c.hit = c.t_in <= c.t_out;
-	return c;
-}
-
 static int edge_between(const hs_shape *shape, const hs_part *part, int f1, int f2) {
 	for (int e = part->first_edge; e < part->first_edge + part->edge_count; ++e) {
 		const hs_edge *edge = &shape->edges[e];
@@ -98,8 +73,8 @@ static void push_contact(hs_world *world, int object, int hand, int part, bool e
 		return;
 	}
 	hs_contact *c = &world->contacts[world->contact_count++];
-	c->object.index1 = (uint32_t)object + 1;
-	c->hand.index1 = (uint32_t)hand + 1;
+	c->object = hs_object_handle(world, object);
+	c->hand = hs_hand_handle(world, hand);
 	c->part = part;
 	c->edge = edge;
 	c->feature = feature;
@@ -109,11 +84,7 @@ static void push_contact(hs_world *world, int object, int hand, int part, bool e
 
 // Squared distance from c to the segment p0-p1.
 static double segment_distance_sq(hs_vec3 c, hs_vec3 p0, hs_vec3 p1) {
-	hs_vec3 d = hs_sub(p1, p0);
-	double len_sq = hs_length_sq(d);
-	double u = len_sq > 0.0 ? hs_dot(hs_sub(c, p0), d) / len_sq : 0.0;
-	u = u < 0.0 ? 0.0 : (u > 1.0 ? 1.0 : u);
-	return hs_length_sq(hs_sub(hs_mul_add(p0, u, d), c));
+	return hs_length_sq(hs_sub(hs_segment_closest(p0, p1, c), c));
 }
 
 // `before` is the object's pose when the fingers were at their previous points: a point's
@@ -172,6 +143,12 @@ static void detect_part(hs_world *world, int object, int h, const hs_part *part,
 			             hs_mat3_mul(body->rot, f->normal));
 		}
 	}
+}
+
+bool hs_hand_near(const hs_world *world, const hs_hand *hand, int object) {
+	const hs_body *body = &world->bodies[object];
+	double r = world->shapes[body->shape].radius + hand->radius;
+	return hs_length_sq(hs_sub(body->pos, hand->center)) <= r * r;
 }
 
 int hs_contact_detect(hs_world *world, int object, const hs_body *before) {

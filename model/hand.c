@@ -21,7 +21,7 @@
 #include <stdint.h>
 #include <string.h>
 
-#include "internal.h"
+#include "hand_internal.h"
 
 // rad per sensor unit: 0.5° (paper §5.1)
 #define HS_RAD_PER_UNIT (HS_PI / 360.0)
@@ -273,6 +273,73 @@ void hs_hand_kinematics(const hs_hand_def *def, hs_vec3 wrist_position, hs_quat 
 	hs_vec3 local_points[HS_HAND_POINTS], local_lines[HS_HAND_LINES][2];
 	hs_hand_local_shape(def, sensors, local_points, local_lines);
 	hs_hand_place(local_points, (const hs_vec3(*)[2])local_lines, wrist_position, wrist_orientation, points, lines);
+}
+
+// ---------------------------------------------------------------------------------------------
+// A hand in a world: the caches derived from its sensors and wrist pose (hand_internal.h)
+
+void hs_hand_update_shape(hs_hand *hand) {
+	hs_hand_local_shape(&hand->def, hand->sensors, hand->local_points, hand->local_lines);
+	// bounding sphere about the mean check point, over points and line ends
+	hs_vec3 c = hs_v3(0, 0, 0);
+	for (int i = 0; i < HS_HAND_POINTS; ++i)
+		c = hs_add(c, hand->local_points[i]);
+	c = hs_scale(c, 1.0 / HS_HAND_POINTS);
+	double r_sq = 0.0;
+	for (int j = 0; j < HS_HAND_LINES; ++j)
+		for (int k = 0; k < 2; ++k) {
+			double d = hs_length_sq(hs_sub(hand->local_lines[j][k], c));
+			r_sq = d > r_sq ? d : r_sq;
+		}
+	for (int i = 0; i < HS_HAND_POINTS; ++i) {
+		double d = hs_length_sq(hs_sub(hand->local_points[i], c));
+		r_sq = d > r_sq ? d : r_sq;
+	}
+	hand->local_center = c;
+	hand->local_radius = sqrt(r_sq);
+}
+
+void hs_hand_update_bounds(hs_hand *hand) {
+	if (!hand->placed) { // touches nothing until it is set
+		hand->center = hs_v3(0, 0, 0);
+		hand->radius = -1.0;
+		return;
+	}
+	// kept in the wrist frame with the shape; grown by a micrometre so the rounding of the
+	// placement can never leave a check point outside it
+	hand->center = hs_add(hand->wrist_pos, hs_quat_rotate(hand->wrist_rot, hand->local_center));
+	hand->radius = hand->local_radius + 1e-6;
+}
+
+void hs_hand_keep_previous(hs_hand *hand) {
+	memcpy(hand->prev_points, hand->points, sizeof hand->points);
+	memcpy(hand->prev_lines, hand->lines, sizeof hand->lines);
+	hand->prev_wrist_pos = hand->wrist_pos;
+	hand->prev_wrist_rot = hand->wrist_rot;
+	memcpy(hand->prev_sensors, hand->sensors, sizeof hand->sensors);
+}
+
+void hs_hand_refresh(hs_hand *hand) {
+	if (!hand->placed) { // as hs_world_add_hand left it
+		memset(hand->points, 0, sizeof hand->points);
+		memset(hand->prev_points, 0, sizeof hand->prev_points);
+		memset(hand->lines, 0, sizeof hand->lines);
+		memset(hand->prev_lines, 0, sizeof hand->prev_lines);
+		memset(hand->local_points, 0, sizeof hand->local_points);
+		memset(hand->local_lines, 0, sizeof hand->local_lines);
+		hand->local_center = hs_v3(0, 0, 0);
+		hand->local_radius = 0.0;
+		hs_hand_update_bounds(hand);
+		return;
+	}
+	// the previous points: the same two calls that placed them, on the previous reading
+	hs_hand_local_shape(&hand->def, hand->prev_sensors, hand->local_points, hand->local_lines);
+	hs_hand_place(hand->local_points, (const hs_vec3(*)[2])hand->local_lines, hand->prev_wrist_pos,
+	              hand->prev_wrist_rot, hand->prev_points, hand->prev_lines);
+	hs_hand_update_shape(hand);
+	hs_hand_place(hand->local_points, (const hs_vec3(*)[2])hand->local_lines, hand->wrist_pos, hand->wrist_rot,
+	              hand->points, hand->lines);
+	hs_hand_update_bounds(hand);
 }
 
 // ---------------------------------------------------------------------------------------------

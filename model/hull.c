@@ -1,5 +1,5 @@
 // hull.c — 2D convex hull of the floor contact vertices V_i and the G' tests (1999 paper §4.2, Fig. 5).
-#include "internal.h"
+#include "hull.h"
 
 static double cross2(hs_vec2 o, hs_vec2 a, hs_vec2 b) {
 	return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
@@ -56,13 +56,10 @@ bool hs_hull_contains(const hs_vec2 *hull, int count, hs_vec2 p, double eps) {
 	return true;
 }
 
+// In the plane z = 0 the 3D projection gives the same bits as a 2D one: every added z term is +0.
 static double segment_distance_sq(hs_vec2 a, hs_vec2 b, hs_vec2 p) {
-	double dx = b.x - a.x, dy = b.y - a.y;
-	double len_sq = dx * dx + dy * dy;
-	double u = len_sq > 0.0 ? ((p.x - a.x) * dx + (p.y - a.y) * dy) / len_sq : 0.0;
-	u = u < 0.0 ? 0.0 : (u > 1.0 ? 1.0 : u);
-	double ex = a.x + u * dx - p.x, ey = a.y + u * dy - p.y;
-	return ex * ex + ey * ey;
+	hs_vec3 p3 = hs_v3(p.x, p.y, 0.0);
+	return hs_length_sq(hs_sub(hs_segment_closest(hs_v3(a.x, a.y, 0.0), hs_v3(b.x, b.y, 0.0), p3), p3));
 }
 
 int hs_hull_nearest_edge(const hs_vec2 *hull, int count, hs_vec2 p) {

@@ -1,12 +1,10 @@
 // manipulate.c — how the hand moves objects (1999 paper §3.2, Fig. 2-3) and how objects
 // interfering with a moved object follow it (§4.3, paper mode).
-#include "internal.h"
-
-bool hs_hand_near(const hs_world *world, const hs_hand *hand, int object) {
-	const hs_body *body = &world->bodies[object];
-	double r = world->shapes[body->shape].radius + hand->radius;
-	return hs_length_sq(hs_sub(body->pos, hand->center)) <= r * r;
-}
+#include "broadphase.h"
+#include "contact.h"
+#include "manipulate.h"
+#include "motion.h"
+#include "support.h"
 
 static bool bodies_overlap(const hs_world *world, int i, int j) {
 	const hs_body *a = &world->bodies[i], *b = &world->bodies[j];
@@ -53,11 +51,7 @@ static hs_vec3 part_position(const hs_hand *hand, const hs_contact *c) {
 	if (c->part < HS_HAND_POINTS)
 		return hand->points[c->part];
 	const hs_vec3 *line = hand->lines[c->part - HS_HAND_POINTS];
-	hs_vec3 d = hs_sub(line[1], line[0]);
-	double len_sq = hs_length_sq(d);
-	double u = len_sq > 0.0 ? hs_dot(hs_sub(c->point, line[0]), d) / len_sq : 0.0;
-	u = u < 0.0 ? 0.0 : (u > 1.0 ? 1.0 : u);
-	return hs_mul_add(line[0], u, d);
+	return hs_segment_closest(line[0], line[1], c->point);
 }
 
 static hs_vec3 part_displacement(const hs_hand *hand, const hs_contact *c) {
@@ -143,13 +137,12 @@ static void release(hs_body *body) {
 	body->asleep = 0;
 }
 
-void hs_manipulate(hs_world *world) {
-	world->contact_count = 0;
+// The objects a hand may touch, and those held last frame (they may be let go), in index order.
+static void collect_candidates(hs_world *world) {
 	bool skip = world->def.skip_work;
 	// carried or held last frame means awake: only the awake list needs looking at
 	for (int k = 0, n = skip ? world->awake_count : world->object_count; k < n; ++k)
 		world->bodies[skip ? world->awake[k] : k].carried = 0;
-	// the objects a hand may touch, and those held last frame (they may be let go), in index order
 	world->candidate_count = 0;
 	for (int h = 0; h < world->hand_count; ++h) {
 		int n = hs_grid_query(world, world->hands[h].center, world->hands[h].radius, world->near);
@@ -159,34 +152,63 @@ void hs_manipulate(hs_world *world) {
 	for (int k = 0; k < world->awake_count; ++k)
 		if (world->bodies[world->awake[k]].held)
 			add_candidate(world, world->awake[k]);
+}
+
+// Fig. 2: the contacts of object i (appended from world->contacts[first]) and their state. A held
+// object first moves with its wrist (§3.2 (2)); the grasp continues while the fingers, seen from
+// the object so moved, still grasp it, else it is looked at again from where it was.
+static hs_contact_state detect_and_classify(hs_world *world, int i, int first, int *n) {
+	hs_body *body = &world->bodies[i];
+	if (body->grasped_by > 0) {
+		hs_body before = *body;
+		follow_wrist(body, &world->hands[body->grasped_by - 1]);
+		*n = hs_contact_detect(world, i, &before);
+		if (hs_contact_grasps(&world->contacts[first], *n, (uint32_t)body->grasped_by, world->grasp_limit))
+			return HS_CONTACT_GRASP;
+		body->pos = before.pos; // the holder let go
+		body->rot = before.rot;
+		world->contact_count = first;
+	}
+	*n = hs_contact_detect(world, i, NULL);
+	return hs_contact_classify(&world->contacts[first], *n, world->grasp_limit);
+}
+
+// §3.2: a grasped object follows the grasping wrist, one contact pushes by eq. 1-2, several
+// contacts translate it by the parts' mean displacement (3).
+static void move_by_contacts(hs_world *world, hs_body *body, hs_contact_state state, const hs_contact *cs, int n) {
+	if (state == HS_CONTACT_GRASP) {
+		int h = grasping_hand(world, body, cs, n);
+		const hs_hand *hand = &world->hands[h];
+		if (body->grasped_by != h + 1) { // the grasp begins: fix the pose in the wrist frame
+			body->grasped_by = h + 1;
+			body->grip_pos = hs_quat_inv_rotate(hand->wrist_rot, hs_sub(body->pos, hand->wrist_pos));
+			body->grip_rot = hs_quat_normalize(hs_quat_mul(hs_quat_conj(hand->wrist_rot), body->rot));
+		}
+		follow_wrist(body, hand);
+	} else if (state == HS_CONTACT_PUSH_ONE) {
+		body->grasped_by = 0;
+		const hs_hand *hand = &world->hands[cs[0].hand.index1 - 1];
+		hs_push_at_one_point(body, cs[0].point, part_position(hand, &cs[0]));
+	} else {
+		body->grasped_by = 0;
+		hs_vec3 sum = hs_v3(0, 0, 0);
+		for (int k = 0; k < n; ++k)
+			sum = hs_add(sum, part_displacement(&world->hands[cs[k].hand.index1 - 1], &cs[k]));
+		body->pos = hs_add(body->pos, hs_scale(sum, 1.0 / n));
+	}
+}
+
+void hs_manipulate(hs_world *world) {
+	world->contact_count = 0;
+	collect_candidates(world);
+	// candidate_count may grow in the loop: carry_along adds objects it moved within reach
 	for (int c = 0; c < world->candidate_count; ++c) {
 		int i = world->candidates[c];
 		hs_body *body = &world->bodies[i];
-		int first = world->contact_count;
+		int first = world->contact_count, n = 0;
 		hs_vec3 old_pos = body->pos;
 		hs_quat old_rot = body->rot;
-		hs_contact_state state = HS_CONTACT_NONE;
-		int n = 0;
-		if (body->grasped_by > 0) {
-			// a held object moves with its wrist (§3.2 (2)); the grasp continues while the fingers,
-			// seen from the object so moved, still grasp it
-			hs_body before = *body;
-			follow_wrist(body, &world->hands[body->grasped_by - 1]);
-			n = hs_contact_detect(world, i, &before);
-			state = hs_contact_grasps(&world->contacts[first], n, (uint32_t)body->grasped_by, world->grasp_limit)
-			            ? HS_CONTACT_GRASP
-			            : HS_CONTACT_NONE;
-			if (state != HS_CONTACT_GRASP) { // the holder let go: look again from where the object was
-				body->pos = old_pos;
-				body->rot = old_rot;
-				world->contact_count = first;
-			}
-		}
-		if (state != HS_CONTACT_GRASP) {
-			n = hs_contact_detect(world, i, NULL);
-			state = hs_contact_classify(&world->contacts[first], n, world->grasp_limit);
-		}
-		const hs_contact *cs = &world->contacts[first];
+		hs_contact_state state = detect_and_classify(world, i, first, &n);
 		bool was_held = body->held != 0;
 		body->contact = (uint8_t)state;
 		body->held = 0;
@@ -195,26 +217,7 @@ void hs_manipulate(hs_world *world) {
 				release(body);
 			continue;
 		}
-		if (state == HS_CONTACT_GRASP) {
-			int h = grasping_hand(world, body, cs, n);
-			const hs_hand *hand = &world->hands[h];
-			if (body->grasped_by != h + 1) { // the grasp begins: fix the pose in the wrist frame
-				body->grasped_by = h + 1;
-				body->grip_pos = hs_quat_inv_rotate(hand->wrist_rot, hs_sub(body->pos, hand->wrist_pos));
-				body->grip_rot = hs_quat_normalize(hs_quat_mul(hs_quat_conj(hand->wrist_rot), body->rot));
-			}
-			follow_wrist(body, hand);
-		} else if (state == HS_CONTACT_PUSH_ONE) {
-			body->grasped_by = 0;
-			const hs_hand *hand = &world->hands[cs[0].hand.index1 - 1];
-			hs_push_at_one_point(body, cs[0].point, part_position(hand, &cs[0]));
-		} else { // push at several points: translate by the parts' mean displacement (§3.2 (3))
-			body->grasped_by = 0;
-			hs_vec3 sum = hs_v3(0, 0, 0);
-			for (int k = 0; k < n; ++k)
-				sum = hs_add(sum, part_displacement(&world->hands[cs[k].hand.index1 - 1], &cs[k]));
-			body->pos = hs_add(body->pos, hs_scale(sum, 1.0 / n));
-		}
+		move_by_contacts(world, body, state, &world->contacts[first], n);
 		hs_motion_keep_above_floor(world, body); // §4.2 for a pushed object; the trajectory shows its floor contacts
 		body->prev = old_pos;
 		body->rot_prev = old_rot;

@@ -9,7 +9,7 @@
 //  - A tipping rotation stops exactly where the next vertex reaches the floor (the smallest such
 //    angle), and the object loses its inertia there: §4.1 "inertia is not conserved and an object
 //    does not rebound after interfering with ... a floor".
-#include "internal.h"
+#include "motion.h"
 
 // Penetration below this depth (m) is rounding, not interference: lifting it again every frame
 // would make resting objects creep.

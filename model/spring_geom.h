@@ -2,7 +2,7 @@
 #ifndef HS_SPRING_GEOM_H
 #define HS_SPRING_GEOM_H
 
-#include "internal.h"
+#include "world_internal.h"
 
 // Where an object reaches, relative to G in world axes: its world-axis bounding box, or a sphere.
 // Objects keep their orientation in the spring model (no torque, §4.2), so it is fixed per object.

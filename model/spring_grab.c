@@ -110,7 +110,7 @@ void hs_spring_detach(hs_world *world, hs_spring_system *sys, bool classify, dou
 	int i = sys->attached;
 	hs_body *body = &world->bodies[i];
 	hs_release *r = &sys->release;
-	r->object.index1 = (uint32_t)i + 1;
+	r->object = hs_object_handle(world, i);
 	r->time = time;
 	r->hand_speed = hs_length(sys->tracker.velocity);
 	if (classify && !sys->tracker.at_rest) { // §4.4 throw: the object takes the hand's velocity

@@ -3,7 +3,7 @@
 #ifndef HS_SPRING_PARAMS_H
 #define HS_SPRING_PARAMS_H
 
-#include "internal.h"
+#include "world_internal.h"
 
 // One object's spring, derived from the definition and the object's mass (never state).
 typedef struct hs_spring_params {

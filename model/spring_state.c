@@ -5,37 +5,16 @@
 // and speeds; each object's mass, x0, k, c come from hs_body and def), what lives in hs_body (the
 // world's walk visits it: position, velocity, ...), the frame-start scratch (saved_pos/vel, written
 // before each read), and the geometry cache, which a load empties so the next step rebuilds it from
-// the loaded orientations. LOAD checks every value it reads (indices, enums, finite numbers, unit
-// quaternions, the ring's head against its count) and reports the first bad one in io->invalid /
-// io->why; the loader must then discard the system.
-#include "spring.h"
+// the loaded orientations. A load's CHECK pass refuses what would make a later step read out of
+// bounds or compute with garbage: indices and enums out of range, flags not 0 or 1, non-finite
+// numbers, stylus orientations that are not unit quaternions.
+#include "spring_world.h"
+#include "state.h"
+#include "world_internal.h"
 #include "spring_system.h"
 
-#define HS_UNIT_TOLERANCE 1e-6 // |q| or |u| this close to 1 is a unit (hs_world_set_stylus's test)
-
-// Marks the load invalid (the first reason is kept).
-static void check(hs_state_io *io, bool ok, const char *why) {
-	if (io->mode != HS_STATE_LOAD || ok || io->invalid)
-		return;
-	io->invalid = true;
-	io->why = why;
-}
-
-static bool finite_quat(hs_quat q) { return isfinite(q.w) && isfinite(q.x) && isfinite(q.y) && isfinite(q.z); }
-
-static bool unit_quat(hs_quat q) {
-	return finite_quat(q) && fabs(sqrt(hs_quat_dot(q, q)) - 1.0) <= HS_UNIT_TOLERANCE;
-}
-
-static bool unit_vec3(hs_vec3 v) { return hs_vec3_is_finite(v) && fabs(hs_length(v) - 1.0) <= HS_UNIT_TOLERANCE; }
-
-// An enum or small index through an int word: stored into *field only when within [lo, hi].
-static bool state_ranged(hs_state_io *io, int *value, int lo, int hi, const char *why) {
-	hs_state_int(io, value);
-	bool ok = *value >= lo && *value <= hi;
-	check(io, ok, why);
-	return io->mode == HS_STATE_LOAD && ok;
-}
+// An enum stored as an int word, within [lo, hi].
+static void enum_io(hs_state_io *io, int *stored, int lo, int hi) { hs_state_int_range(io, stored, lo, hi); }
 
 static void tracker_ring_io(hs_tracker *tr, hs_state_io *io) {
 	for (int i = 0; i < HS_TRACKER_CAPACITY; ++i) { // all of it: unfilled slots are zero
@@ -44,35 +23,25 @@ static void tracker_ring_io(hs_tracker *tr, hs_state_io *io) {
 		hs_state_vec3(io, &s->position);
 		hs_state_quat(io, &s->orientation);
 		hs_state_bool(io, &s->button);
-		check(io, isfinite(s->time) && hs_vec3_is_finite(s->position) && finite_quat(s->orientation),
-		      "spring: a tracker sample is not finite");
 	}
 }
 
 // The tracker daemon (§5.1): its clock, ring buffer, estimates and events.
 static void tracker_io(hs_tracker *tr, hs_state_io *io) {
-	hs_state_long(io, &tr->next_tick);
-	hs_state_long(io, &tr->count);
-	hs_state_int(io, &tr->head);
-	check(io, tr->next_tick >= 0, "spring: the tracker's next tick is negative");
-	check(io, tr->count >= 0 && tr->head == (int)((tr->count + HS_TRACKER_CAPACITY - 1) % HS_TRACKER_CAPACITY),
-	      "spring: the tracker's ring head does not match its sample count");
+	hs_state_long_range(io, &tr->next_tick, 0, LONG_MAX);
+	hs_state_long_range(io, &tr->count, 0, LONG_MAX);
+	hs_state_int_range(io, &tr->head, 0, HS_TRACKER_CAPACITY - 1);
 	tracker_ring_io(tr, io);
 	hs_state_vec3(io, &tr->velocity);
 	hs_state_vec3(io, &tr->acceleration);
 	hs_state_vec3(io, &tr->heading);
-	check(io, hs_vec3_is_finite(tr->velocity) && hs_vec3_is_finite(tr->acceleration) && hs_vec3_is_finite(tr->heading),
-	      "spring: a tracker estimate is not finite");
 	hs_state_bool(io, &tr->at_rest);
 	int event = (int)tr->last_event;
-	if (state_ranged(io, &event, HS_TRACKER_EVENT_NONE, HS_TRACKER_EVENT_MOTION_END,
-	                 "spring: the tracker's last event is not an hs_tracker_event"))
-		tr->last_event = (hs_tracker_event)event;
+	enum_io(io, &event, HS_TRACKER_EVENT_NONE, HS_TRACKER_EVENT_MOTION_END);
+	tr->last_event = (hs_tracker_event)event;
 	hs_state_f64(io, &tr->last_event_time);
-	hs_state_long(io, &tr->motion_starts);
-	hs_state_long(io, &tr->motion_ends);
-	check(io, isfinite(tr->last_event_time) && tr->motion_starts >= 0 && tr->motion_ends >= 0,
-	      "spring: the tracker's event time or counts are out of range");
+	hs_state_long_range(io, &tr->motion_starts, 0, LONG_MAX);
+	hs_state_long_range(io, &tr->motion_ends, 0, LONG_MAX);
 }
 
 // The stylus: its poses at the end and the start of the coming frame, button, velocity.
@@ -80,54 +49,55 @@ static void stylus_io(hs_spring_system *sys, hs_state_io *io) {
 	hs_state_bool(io, &sys->has_stylus);
 	hs_state_vec3(io, &sys->stylus);
 	hs_state_vec3(io, &sys->stylus_prev);
-	hs_state_quat(io, &sys->rot);
-	hs_state_quat(io, &sys->rot_prev);
+	hs_state_rotation(io, &sys->rot);
+	hs_state_rotation(io, &sys->rot_prev);
 	hs_state_bool(io, &sys->button);
 	hs_state_bool(io, &sys->button_prev);
 	hs_state_vec3(io, &sys->stylus_velocity);
-	check(io, hs_vec3_is_finite(sys->stylus) && hs_vec3_is_finite(sys->stylus_prev) &&
-	              hs_vec3_is_finite(sys->stylus_velocity),
-	      "spring: a stylus position or velocity is not finite");
-	check(io, unit_quat(sys->rot) && unit_quat(sys->rot_prev), "spring: a stylus orientation is not a unit quaternion");
 }
 
 // The spring: its object, how it got it, its direction, the candidate and the last release.
 static void spring_io(hs_spring_system *sys, hs_state_io *io) {
 	int n = sys->capacity;
-	hs_state_int(io, &sys->attached);
-	check(io, sys->attached >= -1 && sys->attached < n, "spring: the attached object index is out of range");
+	hs_state_int_range(io, &sys->attached, -1, n - 1);
 	int kind = (int)sys->attach_kind;
-	if (state_ranged(io, &kind, HS_ATTACH_NONE, HS_ATTACH_API, "spring: the attach kind is not an hs_attach_kind"))
-		sys->attach_kind = (hs_attach_kind)kind;
-	check(io, (sys->attached < 0) == (sys->attach_kind == HS_ATTACH_NONE),
-	      "spring: the attach kind does not match the attached object");
+	enum_io(io, &kind, HS_ATTACH_NONE, HS_ATTACH_API);
+	sys->attach_kind = (hs_attach_kind)kind;
 	hs_state_vec3(io, &sys->axis);
-	check(io, unit_vec3(sys->axis), "spring: the spring's axis is not a unit vector");
-	hs_state_int(io, &sys->candidate);
-	check(io, sys->candidate >= -1 && sys->candidate < n, "spring: the candidate index is out of range");
+	hs_state_int_range(io, &sys->candidate, -1, n - 1);
 	hs_release *r = &sys->release;
 	int rkind = (int)r->kind;
-	if (state_ranged(io, &rkind, HS_RELEASE_NONE, HS_RELEASE_THROW, "spring: the release kind is not an hs_release_kind"))
-		r->kind = (hs_release_kind)rkind;
-	int object = (int)r->object.index1;
-	if (state_ranged(io, &object, 0, n, "spring: the released object is out of range"))
-		r->object.index1 = (uint32_t)object;
-	check(io, (r->kind == HS_RELEASE_NONE) == (r->object.index1 == 0),
-	      "spring: the release kind does not match its object");
+	enum_io(io, &rkind, HS_RELEASE_NONE, HS_RELEASE_THROW);
+	r->kind = (hs_release_kind)rkind;
+	int object = (int)r->object.index1; // index + 1 (0: none); the world tag is rebuilt below
+	hs_state_int_range(io, &object, 0, n);
+	r->object.index1 = (uint32_t)object;
 	hs_state_f64(io, &r->time);
 	hs_state_vec3(io, &r->velocity);
 	hs_state_f64(io, &r->hand_speed);
-	check(io, isfinite(r->time) && hs_vec3_is_finite(r->velocity) && isfinite(r->hand_speed) && r->hand_speed >= 0.0,
-	      "spring: the last release's numbers are out of range");
+}
+
+// The spring definition as one checksum: a state saved under other spring parameters is refused.
+static uint64_t def_checksum(const hs_spring_def *d) {
+	const double numbers[] = {d->friction_static, d->friction_sliding, d->restitution, d->walls.x_min,
+	                          d->walls.x_max,     d->walls.y_min,      d->walls.y_max, d->rest_length_ref,
+	                          d->rest_mass_ref,   d->rest_exponent,    d->rest_length_min, d->rest_length_max,
+	                          d->tracker_rate,    d->rest_speed,       d->motion_speed, d->catch_radius,
+	                          d->grab_range,      d->select_range};
+	uint64_t h = hs_state_mix(0x5350524E47ull, (uint64_t)d->integrator); // "SPRNG"
+	h = hs_state_mix(h, d->walls.enabled ? 1u : 0u);
+	h = hs_state_mix(h, (uint64_t)(int64_t)d->tracker_window);
+	for (size_t i = 0; i < sizeof numbers / sizeof numbers[0]; ++i)
+		h = hs_state_mix_f64(h, numbers[i]);
+	return h;
 }
 
 void hs_spring_state_io(hs_spring_system *sys, hs_state_io *io) {
+	hs_state_def(io, def_checksum(&sys->def), "the spring definition differs");
 	for (int i = 0; i < sys->capacity; ++i) { // every slot: the size depends on the definitions only
-		hs_state_u8(io, &sys->on_floor[i]);
-		hs_state_u8(io, &sys->sliding[i]);
-		hs_state_u8(io, &sys->separated[i]);
-		check(io, sys->on_floor[i] <= 1 && sys->sliding[i] <= 1 && sys->separated[i] <= 1,
-		      "spring: an object's floor flags are not 0 or 1");
+		hs_state_u8_range(io, &sys->on_floor[i], 1);
+		hs_state_u8_range(io, &sys->sliding[i], 1);
+		hs_state_u8_range(io, &sys->separated[i], 1);
 	}
 	stylus_io(sys, io);
 	spring_io(sys, io);

@@ -10,7 +10,10 @@
 // (spring_grab.c), then the per-object flags the world reports.
 #include <string.h>
 
-#include "spring.h"
+#include "motion.h"
+#include "spring_world.h"
+#include "state.h"
+#include "world_internal.h"
 #include "spring_collide.h"
 #include "spring_contact.h"
 #include "spring_grab.h"
@@ -91,7 +94,7 @@ static void finish_bodies(hs_world *world, hs_spring_system *sys) {
 		if (!hs_vec3_is_finite(body->pos) || !hs_vec3_is_finite(body->vel)) {
 			body->pos = sys->saved_pos[i]; // an explicit integrator blew up: freeze, count, go on
 			body->vel = sys->saved_vel[i];
-			world->counters.numeric_faults++;
+			hs_world_note_fault(world, i);
 		}
 		body->prev = sys->saved_pos[i];
 		bool still = body->vel.x == 0.0 && body->vel.y == 0.0 && body->vel.z == 0.0;

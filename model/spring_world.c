@@ -3,7 +3,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "spring.h"
+#include "spring_world.h"
+#include "state.h"
+#include "world_internal.h"
 #include "spring_grab.h"
 #include "spring_params.h"
 
@@ -66,14 +68,9 @@ hs_status hs_world_set_stylus(hs_world *world, hs_vec3 position, hs_quat orienta
 	return HS_OK;
 }
 
-static int index_of(const hs_world *world, hs_object_id id) {
-	if (!world || id.index1 < 1 || id.index1 > (uint32_t)world->object_count)
-		return -1;
-	return (int)id.index1 - 1;
-}
 
 hs_status hs_world_spring_attach(hs_world *world, hs_object_id id) {
-	int i = index_of(world, id);
+	int i = hs_object_index(world, id);
 	if (i < 0 || !world->spring || !world->spring->has_stylus)
 		return HS_ERR_INVALID_ARGUMENT;
 	hs_spring_system *sys = world->spring;
@@ -91,19 +88,15 @@ hs_status hs_world_spring_detach(hs_world *world) {
 	return HS_OK;
 }
 
-static hs_object_id id_of(int i) {
-	hs_object_id id = {i >= 0 ? (uint32_t)i + 1 : 0};
-	return id;
-}
 
 hs_status hs_world_spring_state(const hs_world *world, hs_spring_state *out) {
 	if (!world || !world->spring || !out)
 		return HS_ERR_INVALID_ARGUMENT;
 	const hs_spring_system *sys = world->spring;
 	memset(out, 0, sizeof *out);
-	out->attached = id_of(sys->attached);
+	out->attached = hs_object_handle(world, sys->attached);
 	out->attach_kind = sys->attach_kind;
-	out->candidate = id_of(sys->candidate);
+	out->candidate = hs_object_handle(world, sys->candidate);
 	out->stylus = sys->stylus;
 	out->stylus_orientation = sys->rot;
 	out->button = sys->button;
@@ -119,7 +112,7 @@ hs_status hs_world_spring_state(const hs_world *world, hs_spring_state *out) {
 }
 
 hs_status hs_world_spring_object(const hs_world *world, hs_object_id id, hs_spring_object *out) {
-	int i = index_of(world, id);
+	int i = hs_object_index(world, id);
 	if (i < 0 || !world->spring || !out)
 		return HS_ERR_INVALID_ARGUMENT;
 	const hs_spring_system *sys = world->spring;
@@ -168,5 +161,6 @@ hs_status hs_world_spring_last_release(const hs_world *world, hs_release *out) {
 	if (!world || !world->spring || !out)
 		return HS_ERR_INVALID_ARGUMENT;
 	*out = world->spring->release;
+	out->object = hs_object_handle(world, (int)out->object.index1 - 1); // the state keeps the index only
 	return HS_OK;
 }

@@ -1,22 +1,235 @@
-// state.c — PLACEHOLDER until the state block lands: saving and loading are refused.
-#include "internal.h"
+// state.c — the world's state as one block (DESIGN.md "State"; MuJoCo's mj_getState /
+// mj_setState): the header that ties a buffer to a kind of world, the one walk over every state
+// field (world_io), and the four uses of it: size, save, load (checked first) and hash.
+#include <limits.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <string.h>
 
-size_t hs_world_state_size(const hs_world *world) {
-	(void)world;
-	return 0;
+#include "broadphase.h"
+#include "state.h"
+#include "world_internal.h"
+
+#define HS_STATE_MAGIC 0x3145544154535348ull // "HSSTATE1", little-endian
+#define HS_STATE_FORMAT 1                    // bump when the walk changes
+#define HS_STATE_HEADER_WORDS 9
+#define HS_HASH_SEED 0x6A09E667F3BCC909ull // any fixed odd start
+
+// The library version as a word: the hash of HS_VERSION's characters.
+static uint64_t library_word(void) {
+	uint64_t h = HS_HASH_SEED;
+	for (const char *c = HS_VERSION; *c; ++c)
+		h = hs_state_mix(h, (uint64_t)(unsigned char)*c);
+	return h;
 }
 
+static uint64_t mix_vec3(uint64_t h, hs_vec3 v) {
+	return hs_state_mix_f64(hs_state_mix_f64(hs_state_mix_f64(h, v.x), v.y), v.z);
+}
+
+static uint64_t shape_checksum(uint64_t h, const hs_shape *s) {
+	h = hs_state_mix(h, (uint64_t)s->kind);
+	h = hs_state_mix(h, (uint64_t)s->part_count);
+	h = hs_state_mix(h, (uint64_t)s->vertex_count);
+	h = hs_state_mix(h, (uint64_t)s->face_count);
+	h = hs_state_mix(h, (uint64_t)s->edge_count);
+	h = hs_state_mix_f64(h, s->volume);
+	h = hs_state_mix_f64(h, s->radius);
+	h = hs_state_mix_f64(h, s->sphere_radius);
+	for (int i = 0; i < s->vertex_count; ++i)
+		h = mix_vec3(h, s->vertices[i]);
+	return h;
+}
+
+static uint64_t hand_def_checksum(uint64_t h, const hs_hand_def *d) {
+	h = hs_state_mix(h, d->left ? 1u : 0u);
+	h = hs_state_mix_f64(h, d->finger_radius);
+	h = hs_state_mix_f64(h, d->dip_per_pip);
+	for (int f = 0; f < 5; ++f) {
+		for (int s = 0; s < 3; ++s)
+			h = hs_state_mix_f64(h, d->segment_length[f][s]);
+		h = mix_vec3(h, d->base[f]);
+	}
+	return h;
+}
+
+// What the world was built from: a state means nothing in a world built otherwise. Left out on
+// purpose: max_objects and max_shapes (room, not behaviour: the counts are in the header) and
+// skip_work (it changes no result, broadphase.c), so a state moves between such worlds.
+// max_hands sizes the contact list: the header carries the contact capacity.
+static uint64_t definition_checksum(const hs_world *w) {
+	const hs_world_def *d = &w->def;
+	uint64_t h = hs_state_mix_f64(HS_HASH_SEED, d->dt);
+	h = mix_vec3(h, d->gravity);
+	h = hs_state_mix_f64(h, d->floor_tolerance);
+	h = hs_state_mix(h, (uint64_t)d->stacking);
+	h = hs_state_mix_f64(h, d->grasp_threshold_deg);
+	for (int i = 0; i < w->shape_count; ++i)
+		h = shape_checksum(h, &w->shapes[i]);
+	for (int i = 0; i < w->object_count; ++i) {
+		h = hs_state_mix(h, (uint64_t)w->bodies[i].shape);
+		h = hs_state_mix_f64(h, w->bodies[i].mass);
+	}
+	for (int i = 0; i < w->hand_count; ++i)
+		h = hand_def_checksum(h, &w->hands[i].def);
+	return h;
+}
+
+// The header words this world writes and accepts, in order, with the reason a mismatch gives.
+static int header_of(const hs_world *w, uint64_t out[HS_STATE_HEADER_WORDS], const char *why[HS_STATE_HEADER_WORDS]) {
+	const uint64_t words[HS_STATE_HEADER_WORDS] = {
+	    HS_STATE_MAGIC,          HS_STATE_FORMAT,        library_word(),
+	    w->spring ? 1u : 0u,     (uint64_t)w->object_count, (uint64_t)w->hand_count,
+	    (uint64_t)w->shape_count, (uint64_t)w->contact_capacity, definition_checksum(w)};
+	static const char *const reasons[HS_STATE_HEADER_WORDS] = {
+	    "not a handspring state (wrong magic)",
+	    "another state format version",
+	    "saved by another library version",
+	    "another kind of world (hand model / spring model)",
+	    "another object count",
+	    "another hand count",
+	    "another shape count",
+	    "another contact capacity (max_hands)",
+	    "another world definition (dt, gravity, tolerance, stacking, shapes, masses or hand definitions)"};
+	for (int i = 0; i < HS_STATE_HEADER_WORDS; ++i) {
+		out[i] = words[i];
+		why[i] = reasons[i];
+	}
+	return HS_STATE_HEADER_WORDS;
+}
+
+// One object: 35 words. The model fields (shape, mass) are in the definition checksum instead.
+static void body_io(hs_state_io *io, const hs_world *w, hs_body *b) {
+	hs_state_vec3(io, &b->pos);
+	hs_state_vec3(io, &b->prev);
+	hs_state_rotation(io, &b->rot);
+	hs_state_rotation(io, &b->rot_prev);
+	hs_state_rotation(io, &b->spin);
+	hs_state_vec3(io, &b->vel);
+	hs_state_u8_range(io, &b->contact, HS_CONTACT_PUSH_MANY);
+	hs_state_int_range(io, &b->floor_contacts, 0, w->shapes[b->shape].vertex_count);
+	hs_state_u8_range(io, &b->grounded, 1);
+	hs_state_u8_range(io, &b->asleep, 1);
+	hs_state_u8_range(io, &b->held, 1);
+	hs_state_u8_range(io, &b->carried, 1);
+	hs_state_int_range(io, &b->grasped_by, 0, w->hand_count);
+	hs_state_vec3(io, &b->grip_pos);
+	hs_state_quat(io, &b->grip_rot); // zero until a grasp begins
+}
+
+// One hand: 51 words, the two readings its check points now and a frame ago come from (the points
+// and lines are rebuilt from them after a load). Its definition is in the checksum.
+static void hand_io(hs_state_io *io, hs_hand *h) {
+	hs_state_vec3(io, &h->wrist_pos);
+	hs_state_rotation(io, &h->wrist_rot);
+	for (int i = 0; i < HS_GLOVE_SENSORS; ++i)
+		hs_state_u8(io, &h->sensors[i]);
+	hs_state_vec3(io, &h->prev_wrist_pos);
+	hs_state_rotation(io, &h->prev_wrist_rot);
+	for (int i = 0; i < HS_GLOVE_SENSORS; ++i)
+		hs_state_u8(io, &h->prev_sensors[i]);
+	hs_state_bool(io, &h->placed);
+}
+
+// The whole state after the header: the single list of what a step reads from the last one.
+static void world_io(hs_state_io *io, hs_world *w) {
+	io->objects = w->object_count;
+	hs_state_long_range(io, &w->frame, 0, LONG_MAX);
+	hs_state_long_range(io, &w->counters.numeric_faults, 0, LONG_MAX);
+	hs_state_long_range(io, &w->first_fault_frame, -1, LONG_MAX);
+	hs_state_int_range(io, &w->first_fault_object, -1, w->object_count - 1);
+	for (int i = 0; i < w->object_count; ++i)
+		body_io(io, w, &w->bodies[i]);
+	for (int h = 0; h < w->hand_count; ++h)
+		hand_io(io, &w->hands[h]);
+	if (w->spring)
+		hs_spring_state_io(w->spring, io);
+}
+
+static size_t state_words(const hs_world *w) {
+	hs_state_io io = {.mode = HS_STATE_SIZE};
+	world_io(&io, (hs_world *)w); // SIZE mode reads nothing and writes nothing
+	return HS_STATE_HEADER_WORDS + io.words;
+}
+
+size_t hs_world_state_size(const hs_world *world) { return world ? 8 * state_words(world) : 0; }
+
 hs_status hs_world_save_state(const hs_world *world, void *buffer, size_t size) {
-	(void)world, (void)buffer, (void)size;
-	return HS_ERR_INVALID_ARGUMENT;
+	if (!world || !buffer)
+		return HS_ERR_INVALID_ARGUMENT;
+	size_t words = state_words(world);
+	if (size < 8 * words)
+		return HS_ERR_INVALID_ARGUMENT;
+	hs_state_io io = {.mode = HS_STATE_SAVE, .out = buffer, .limit = words};
+	uint64_t header[HS_STATE_HEADER_WORDS];
+	const char *why[HS_STATE_HEADER_WORDS];
+	for (int i = 0, n = header_of(world, header, why); i < n; ++i)
+		hs_state_u64(&io, &header[i]);
+	world_io(&io, (hs_world *)world); // SAVE mode only reads the fields
+	return io.overflow ? HS_ERR_INVALID_ARGUMENT : HS_OK;
+}
+
+uint64_t hs_world_hash(const hs_world *world) {
+	hs_state_io io = {.mode = HS_STATE_HASH, .lane = {HS_HASH_SEED, ~HS_HASH_SEED, HS_HASH_SEED >> 1, 1}};
+	if (world)
+		world_io(&io, (hs_world *)world); // HASH mode only reads the fields
+	return hs_state_hash_of(&io);
+}
+
+#if defined(__GNUC__)
+__attribute__((format(printf, 2, 3)))
+#endif
+static hs_status refuse(hs_world *w, const char *format, ...) {
+	va_list args;
+	va_start(args, format);
+	vsnprintf(w->state_error, sizeof w->state_error, format, args);
+	va_end(args);
+	return HS_ERR_STATE_MISMATCH;
+}
+
+// The header first: a buffer of another kind of world is named as such, not as a wrong size.
+static hs_status check_header(hs_world *w, const void *buffer, size_t size) {
+	if (size < 8 * HS_STATE_HEADER_WORDS)
+		return refuse(w, "%zu bytes: too short for a state header", size);
+	uint64_t expected[HS_STATE_HEADER_WORDS], found[HS_STATE_HEADER_WORDS];
+	const char *why[HS_STATE_HEADER_WORDS];
+	int n = header_of(w, expected, why);
+	hs_state_io io = {.mode = HS_STATE_LOAD, .in = buffer, .limit = HS_STATE_HEADER_WORDS};
+	for (int i = 0; i < n; ++i) {
+		found[i] = 0;
+		hs_state_u64(&io, &found[i]);
+		if (found[i] != expected[i])
+			return refuse(w, "%s (header word %d)", why[i], i);
+	}
+	size_t words = state_words(w);
+	if (size != 8 * words)
+		return refuse(w, "%zu bytes where this world's state is %zu", size, 8 * words);
+	return HS_OK;
 }
 
 hs_status hs_world_load_state(hs_world *world, const void *buffer, size_t size) {
-	(void)world, (void)buffer, (void)size;
-	return HS_ERR_INVALID_ARGUMENT;
+	if (!world || !buffer)
+		return HS_ERR_INVALID_ARGUMENT;
+	world->state_error[0] = '\0';
+	hs_status status = check_header(world, buffer, size);
+	if (status != HS_OK)
+		return status;
+	size_t words = size / 8;
+	// first pass: read and validate every word, writing nothing
+	hs_state_io io = {.mode = HS_STATE_CHECK, .in = buffer, .limit = words, .words = HS_STATE_HEADER_WORDS};
+	world_io(&io, world);
+	if (io.error)
+		return refuse(world, "%s at word %zu", io.error, io.error_word);
+	if (io.overflow || io.words != words)
+		return refuse(world, "the walk read %zu words of %zu", io.words, words);
+	// second pass: the same walk, now writing; then the caches follow the state
+	io = (hs_state_io){.mode = HS_STATE_LOAD, .in = buffer, .limit = words, .words = HS_STATE_HEADER_WORDS};
+	world_io(&io, world);
+	for (int h = 0; h < world->hand_count; ++h)
+		hs_hand_refresh(&world->hands[h]);
+	hs_broadphase_reset(world);
+	world->contact_count = 0; // the last step's contacts are output, not state
+	return HS_OK;
 }
 
-const char *hs_world_state_error(const hs_world *world) {
-	(void)world;
-	return "not implemented";
-}
+const char *hs_world_state_error(const hs_world *world) { return world ? world->state_error : "no world"; }

@@ -6,7 +6,10 @@
 // the falling body inside a support leaves through the support's upper faces; a vertex of the
 // support inside the falling body leaves through the body's lower faces. Edge-edge crossings
 // with no vertex inside are not lifted (they are shallow when a body lands from a frame's fall).
-#include "internal.h"
+#include "broadphase.h"
+#include "clip.h"
+#include "motion.h"
+#include "support.h"
 
 static hs_vec3 to_local(const hs_body *b, hs_vec3 p) { return hs_quat_inv_rotate(b->rot, hs_sub(p, b->pos)); }
 

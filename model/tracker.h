@@ -3,7 +3,7 @@
 #ifndef HS_TRACKER_H
 #define HS_TRACKER_H
 
-#include "internal.h"
+#include "handspring.h"
 
 // The tracker daemon (§3, §5.1): stylus samples at a fixed rate in a ring buffer, velocity and
 // acceleration estimates, rest / motion events with hysteresis. The first four fields come from

@@ -1,9 +1,23 @@
 // world.c — a world with a fixed dt that owns its shapes and objects and steps them.
 // Everything is allocated when the world is built; hs_world_step never allocates.
+#include <stdatomic.h>
 #include <stdlib.h>
 #include <string.h>
 
-#include "internal.h"
+#include "broadphase.h"
+#include "contact.h"
+#include "manipulate.h"
+#include "motion.h"
+#include "support.h"
+#include "world_internal.h"
+
+// Tags of the worlds of this process, 1 to 65535 and round again (0 is the null handle's): a
+// handle of one world is refused by another for the first 65535 worlds created after it.
+static atomic_uint world_tags;
+
+static uint16_t next_world_tag(void) {
+	return (uint16_t)(atomic_fetch_add(&world_tags, 1u) % 65535u + 1u);
+}
 
 hs_world_def hs_default_world_def(void) {
 	hs_world_def def;
@@ -59,6 +73,9 @@ hs_world *hs_world_create(const hs_world_def *def, hs_status *status) {
 		return NULL;
 	}
 	world->def = *def;
+	world->tag = next_world_tag();
+	world->first_fault_frame = -1;
+	world->first_fault_object = -1;
 	world->grasp_limit = hs_grasp_limit(def->grasp_threshold_deg);
 	world->shapes = calloc((size_t)def->max_shapes, sizeof *world->shapes);
 	size_t objects = def->max_objects > 0 ? (size_t)def->max_objects : 1;
@@ -185,24 +202,27 @@ hs_shape_id hs_world_add_shape(hs_world *world, const hs_shape *shape, hs_status
 		return none;
 	}
 	set_status(status, HS_OK);
-	hs_shape_id id = {(uint32_t)++world->shape_count};
+	hs_shape_id id = {(uint32_t)++world->shape_count, world->tag, HS_GENERATION};
 	return id;
 }
 
-static bool valid_shape_id(const hs_world *world, hs_shape_id id) {
-	return world && id.index1 >= 1 && id.index1 <= (uint32_t)world->shape_count;
+const hs_shape *hs_world_shape(const hs_world *world, hs_shape_id id) {
+	int i = hs_shape_index(world, id);
+	return i >= 0 ? &world->shapes[i] : NULL;
 }
 
-const hs_shape *hs_world_shape(const hs_world *world, hs_shape_id id) {
-	return valid_shape_id(world, id) ? &world->shapes[id.index1 - 1] : NULL;
+hs_shape_id hs_world_shape_at(const hs_world *world, int i) {
+	hs_shape_id id = {0, 0, 0};
+	if (world && i >= 0 && i < world->shape_count)
+		id = (hs_shape_id){(uint32_t)i + 1, world->tag, HS_GENERATION};
+	return id;
 }
 
 hs_object_id hs_world_add_object(hs_world *world, const hs_object_def *def, hs_status *status) {
 	hs_object_id none = {0};
-	if (!world || !def || !valid_shape_id(world, def->shape) || !within(def->position, HS_MAX_COORDINATE) ||
+	if (!world || !def || hs_shape_index(world, def->shape) < 0 || !within(def->position, HS_MAX_COORDINATE) ||
 	    !within(def->velocity, HS_MAX_SPEED) || !within(def->angular_velocity, HS_MAX_SPEED) ||
-	    !hs_quat_is_finite(def->orientation) || !isfinite(def->density) || !(def->density > 0.0) ||
-	    fabs(sqrt(hs_quat_dot(def->orientation, def->orientation)) - 1.0) > 1e-6) {
+	    !hs_quat_is_unit(def->orientation) || !isfinite(def->density) || !(def->density > 0.0)) {
 		set_status(status, HS_ERR_INVALID_ARGUMENT);
 		return none;
 	}
@@ -213,7 +233,7 @@ hs_object_id hs_world_add_object(hs_world *world, const hs_object_def *def, hs_s
 	double dt = world->def.dt;
 	hs_body *body = &world->bodies[world->object_count];
 	memset(body, 0, sizeof *body);
-	body->shape = (int)def->shape.index1 - 1;
+	body->shape = hs_shape_index(world, def->shape);
 	body->pos = def->position;
 	body->rot = hs_quat_normalize(def->orientation);
 	body->rot_prev = body->rot;
@@ -230,16 +250,15 @@ hs_object_id hs_world_add_object(hs_world *world, const hs_object_def *def, hs_s
 		body->floor_contacts = hs_motion_floor_points(world, body);
 	}
 	set_status(status, HS_OK);
-	hs_object_id id = {(uint32_t)++world->object_count};
-	hs_wake(world, world->object_count - 1); // new objects look at the world once
+	int index = world->object_count++;
+	hs_wake(world, index); // new objects look at the world once
 	world->grid_dirty = true;
-	return id;
+	return hs_object_handle(world, index);
 }
 
 static const hs_body *body_of(const hs_world *world, hs_object_id id) {
-	if (!world || id.index1 < 1 || id.index1 > (uint32_t)world->object_count)
-		return NULL;
-	return &world->bodies[id.index1 - 1];
+	int i = hs_object_index(world, id);
+	return i >= 0 ? &world->bodies[i] : NULL;
 }
 
 hs_status hs_world_object_state(const hs_world *world, hs_object_id id, hs_object_state *out) {
@@ -258,10 +277,8 @@ hs_status hs_world_object_state(const hs_world *world, hs_object_id id, hs_objec
 int hs_world_object_count(const hs_world *world) { return world ? world->object_count : 0; }
 
 hs_object_id hs_world_object_at(const hs_world *world, int i) {
-	hs_object_id id = {0};
-	if (world && i >= 0 && i < world->object_count)
-		id.index1 = (uint32_t)i + 1;
-	return id;
+	hs_object_id none = {0, 0, 0};
+	return world ? hs_object_handle(world, i) : none;
 }
 
 static bool body_is_finite(const hs_body *body) {
@@ -273,7 +290,10 @@ hs_status hs_world_step(hs_world *world) {
 	if (!world)
 		return HS_ERR_INVALID_ARGUMENT;
 	if (world->spring) { // the workbench model replaces the 1999 motion in its worlds
+		long faults = world->counters.numeric_faults;
 		hs_spring_step(world);
+		if (world->counters.numeric_faults > faults && world->first_fault_frame < 0)
+			world->first_fault_frame = world->frame; // counted without an object: still the first
 		world->frame++;
 		return HS_OK;
 	}
@@ -310,16 +330,13 @@ hs_status hs_world_step(hs_world *world) {
 			hs_support_step(world, i);
 		if (!body_is_finite(body)) { // never let a NaN spread: freeze the object and count it
 			*body = saved;
-			world->counters.numeric_faults++;
+			hs_world_note_fault(world, i);
 		}
 		hs_grid_update(world, i);
 	}
 	hs_awake_compact(world);
-	for (int h = 0; h < world->hand_count; ++h) { // a hand not set again stays where it is
-		hs_hand *hand = &world->hands[h];
-		memcpy(hand->prev_points, hand->points, sizeof hand->points);
-		memcpy(hand->prev_lines, hand->lines, sizeof hand->lines);
-	}
+	for (int h = 0; h < world->hand_count; ++h) // a hand not set again stays where it is
+		hs_hand_keep_previous(&world->hands[h]);
 	world->frame++;
 	return HS_OK;
 }
@@ -328,26 +345,22 @@ long hs_world_frame(const hs_world *world) { return world ? world->frame : 0; }
 double hs_world_time(const hs_world *world) { return world ? (double)world->frame * world->def.dt : 0.0; }
 double hs_world_dt(const hs_world *world) { return world ? world->def.dt : 0.0; }
 
-static uint64_t fnv1a(uint64_t h, const void *data, size_t size) {
-	const unsigned char *p = data;
-	for (size_t i = 0; i < size; ++i) {
-		h ^= p[i];
-		h *= 1099511628211ull;
+void hs_world_note_fault(hs_world *world, int object) {
+	world->counters.numeric_faults++;
+	if (world->first_fault_frame < 0) {
+		world->first_fault_frame = world->frame;
+		world->first_fault_object = object;
 	}
-	return h;
 }
 
-uint64_t hs_world_hash(const hs_world *world) {
-	uint64_t h = 14695981039346656037ull;
+hs_status hs_world_first_fault(const hs_world *world, long *frame, hs_object_id *object) {
 	if (!world)
-		return h;
-	for (int i = 0; i < world->object_count; ++i) {
-		const hs_body *b = &world->bodies[i];
-		double pose[7] = {b->pos.x, b->pos.y, b->pos.z, b->rot.w, b->rot.x, b->rot.y, b->rot.z};
-		h = fnv1a(h, pose, sizeof pose);
-		h = fnv1a(h, &b->contact, sizeof b->contact);
-	}
-	return h;
+		return HS_ERR_INVALID_ARGUMENT;
+	if (frame)
+		*frame = world->first_fault_frame;
+	if (object)
+		*object = hs_object_handle(world, world->first_fault_object);
+	return HS_OK;
 }
 
 hs_world_counters hs_world_get_counters(const hs_world *world) {
@@ -381,59 +394,41 @@ hs_hand_id hs_world_add_hand(hs_world *world, const hs_hand_def *def, hs_status 
 	hs_hand *hand = &world->hands[world->hand_count];
 	memset(hand, 0, sizeof *hand);
 	hand->def = *def;
-	hand->wrist_rot = hs_quat_identity();
-	hand->radius = -1.0; // touches nothing until it is set
+	hand->wrist_rot = hand->prev_wrist_rot = hs_quat_identity();
+	hs_hand_update_bounds(hand); // touches nothing until it is set
 	set_status(status, HS_OK);
-	hs_hand_id id = {(uint32_t)++world->hand_count};
-	return id;
+	int index = world->hand_count++;
+	return hs_hand_handle(world, index);
+}
+
+hs_hand_id hs_world_hand_at(const hs_world *world, int i) {
+	hs_hand_id none = {0, 0, 0};
+	return world ? hs_hand_handle(world, i) : none;
 }
 
 static hs_hand *hand_of(const hs_world *world, hs_hand_id id) {
-	if (!world || id.index1 < 1 || id.index1 > (uint32_t)world->hand_count)
-		return NULL;
-	return &world->hands[id.index1 - 1];
+	int h = hs_hand_index(world, id);
+	return h >= 0 ? &world->hands[h] : NULL;
 }
 
 hs_status hs_world_set_hand(hs_world *world, hs_hand_id id, hs_vec3 wrist_position, hs_quat wrist_orientation,
                             const uint8_t sensors[HS_GLOVE_SENSORS]) {
 	hs_hand *hand = hand_of(world, id);
-	if (!hand || !sensors || !within(wrist_position, HS_MAX_COORDINATE) || !hs_quat_is_finite(wrist_orientation) ||
-	    fabs(sqrt(hs_quat_dot(wrist_orientation, wrist_orientation)) - 1.0) > 1e-6)
+	if (!hand || !sensors || !within(wrist_position, HS_MAX_COORDINATE) || !hs_quat_is_unit(wrist_orientation))
 		return HS_ERR_INVALID_ARGUMENT;
 	hand->wrist_pos = wrist_position;
 	hand->wrist_rot = hs_quat_normalize(wrist_orientation);
 	if (!hand->placed || memcmp(hand->sensors, sensors, sizeof hand->sensors) != 0) {
 		memcpy(hand->sensors, sensors, sizeof hand->sensors); // the glove moved: a new hand shape
-		hs_hand_local_shape(&hand->def, hand->sensors, hand->local_points, hand->local_lines);
-		// bounding sphere about the mean check point, over points and line ends
-		hs_vec3 c = hs_v3(0, 0, 0);
-		for (int i = 0; i < HS_HAND_POINTS; ++i)
-			c = hs_add(c, hand->local_points[i]);
-		c = hs_scale(c, 1.0 / HS_HAND_POINTS);
-		double r_sq = 0.0;
-		for (int j = 0; j < HS_HAND_LINES; ++j)
-			for (int k = 0; k < 2; ++k) {
-				double d = hs_length_sq(hs_sub(hand->local_lines[j][k], c));
-				r_sq = d > r_sq ? d : r_sq;
-			}
-		for (int i = 0; i < HS_HAND_POINTS; ++i) {
-			double d = hs_length_sq(hs_sub(hand->local_points[i], c));
-			r_sq = d > r_sq ? d : r_sq;
-		}
-		hand->local_center = c;
-		hand->local_radius = sqrt(r_sq);
+		hs_hand_update_shape(hand);
 	}
 	hs_hand_place(hand->local_points, (const hs_vec3(*)[2])hand->local_lines, hand->wrist_pos, hand->wrist_rot,
 	              hand->points, hand->lines);
 	if (!hand->placed) { // no motion before the first pose
-		memcpy(hand->prev_points, hand->points, sizeof hand->points);
-		memcpy(hand->prev_lines, hand->lines, sizeof hand->lines);
+		hs_hand_keep_previous(hand);
 		hand->placed = true;
 	}
-	// the bounding sphere, kept in the wrist frame with the shape; grown by a micrometre so the
-	// rounding of the placement can never leave a check point outside it
-	hand->center = hs_add(hand->wrist_pos, hs_quat_rotate(hand->wrist_rot, hand->local_center));
-	hand->radius = hand->local_radius + 1e-6;
+	hs_hand_update_bounds(hand);
 	return HS_OK;
 }
 

@@ -27,7 +27,8 @@
 #include <string.h>
 #include <time.h>
 
-#include "internal.h"
+#include "manipulate.h"
+#include "world_internal.h"
 #include "harness_internal.h"
 
 #define FLOOR_SLOP 1e-9 // m: deepest penetration accepted after a frame

@@ -18,7 +18,7 @@
 
 #include <cmocka.h>
 
-#include "internal.h"
+#include "world_internal.h"
 #include "harness_internal.h"
 #include "test_util.h"
 
@@ -200,6 +200,9 @@ static void run_hand_world(hs_stacking stacking) {
 	hs_hand_grip(&hd, grasp, &c, &axis);
 	hs_contact contacts[64];
 	bool grasped = false;
+	size_t state_size = hs_world_state_size(w);
+	unsigned char *saved = malloc(state_size);
+	assert_non_null(saved);
 	count_begin();
 	for (int f = 0; f < 400; ++f) {
 		double t = (f + 1) / 60.0;
@@ -219,8 +222,13 @@ static void run_hand_world(hs_stacking stacking) {
 		hs_world_contacts(w, contacts, 64);
 		(void)hs_world_hash(w);
 		(void)hs_world_get_counters(w);
+		if (f == 200) // saving and loading the state allocate nothing either
+			assert_int_equal(hs_world_save_state(w, saved, state_size), HS_OK);
+		if (f == 210)
+			assert_int_equal(hs_world_load_state(w, saved, state_size), HS_OK);
 	}
 	count_end_expect_none(stacking == HS_STACKING_PAPER ? "hand world, paper stacking" : "hand world, support stacking");
+	free(saved);
 	assert_true(grasped); // the run did exercise the grasp
 	hs_world_destroy(w);
 }

@@ -22,6 +22,9 @@
 static const double NaN = NAN;
 static const double Inf = INFINITY;
 
+// The shape handle of the last small_world.
+static hs_shape_id small_shape;
+
 // A world with one 10 cm cube (handle 1) and one hand (handle 1), room for one more object.
 static hs_world *small_world(hs_object_id *object, hs_hand_id *hand) {
 	hs_world_def def = hs_default_world_def();
@@ -35,7 +38,7 @@ static hs_world *small_world(hs_object_id *object, hs_hand_id *hand) {
 	hs_shape *cube = hs_shape_box(hs_v3(0.1, 0.1, 0.1), NULL);
 	assert_non_null(cube);
 	hs_object_def od = hs_default_object_def();
-	od.shape = hs_world_add_shape(w, cube, NULL);
+	od.shape = small_shape = hs_world_add_shape(w, cube, NULL);
 	hs_shape_destroy(cube);
 	od.position = hs_v3(0, 0, 0.05);
 	*object = hs_world_add_object(w, &od, NULL);
@@ -300,12 +303,60 @@ static void test_world_shapes(void **state) {
 	assert_int_equal(hs_world_add_shape(w, cube, &st).index1, 0); // max_shapes = 2
 	assert_int_equal(st, HS_ERR_CAPACITY);
 	hs_shape_destroy(cube);
-	assert_non_null(hs_world_shape(w, (hs_shape_id){1}));
+	assert_non_null(hs_world_shape(w, small_shape));
+	assert_null(hs_world_shape(w, (hs_shape_id){1, 0, 0})); // no world tag
 	assert_null(hs_world_shape(w, (hs_shape_id){0}));
-	assert_null(hs_world_shape(w, (hs_shape_id){3}));
-	assert_null(hs_world_shape(w, (hs_shape_id){UINT32_MAX}));
-	assert_null(hs_world_shape(NULL, (hs_shape_id){1}));
+	assert_null(hs_world_shape(w, (hs_shape_id){3, 0, 0}));
+	assert_null(hs_world_shape(w, (hs_shape_id){UINT32_MAX, 0, 0}));
+	assert_null(hs_world_shape(NULL, small_shape));
 	hs_world_destroy(w);
+}
+
+// Handles know their world and generation (Box2D's b2BodyId): one world's handle is refused by
+// another built the same way, and a handle of another generation by its own world.
+static void test_handles_know_their_world(void **state) {
+	(void)state;
+	hs_object_id obj_a, obj_b;
+	hs_hand_id hand_a, hand_b;
+	hs_world *a = small_world(&obj_a, &hand_a);
+	hs_shape_id shape_a = small_shape;
+	hs_world *b = small_world(&obj_b, &hand_b);
+	assert_int_equal(obj_a.index1, obj_b.index1); // the same index, different worlds
+	assert_int_not_equal(obj_a.world, obj_b.world);
+	assert_int_not_equal(obj_a.world, 0);
+	hs_object_state out;
+	assert_int_equal(hs_world_object_state(a, obj_a, &out), HS_OK);
+	assert_int_equal(hs_world_object_state(b, obj_a, &out), HS_ERR_INVALID_ARGUMENT);
+	assert_null(hs_world_shape(b, shape_a));
+	hs_object_def od = hs_default_object_def();
+	od.shape = shape_a;
+	hs_status st = HS_OK;
+	assert_int_equal(hs_world_add_object(b, &od, &st).index1, 0);
+	assert_int_equal(st, HS_ERR_INVALID_ARGUMENT);
+	uint8_t s[HS_GLOVE_SENSORS] = {0};
+	assert_int_equal(hs_world_set_hand(b, hand_a, hs_v3(0, 0, 0.3), hs_quat_identity(), s), HS_ERR_INVALID_ARGUMENT);
+	assert_int_equal(hs_world_set_hand(a, hand_a, hs_v3(0, 0, 0.3), hs_quat_identity(), s), HS_OK);
+	hs_object_id stale = obj_a;
+	stale.generation++;
+	assert_int_equal(hs_world_object_state(a, stale, &out), HS_ERR_INVALID_ARGUMENT);
+	hs_hand_id stale_hand = hand_a;
+	stale_hand.generation = 0;
+	hs_vec3 points[HS_HAND_POINTS];
+	assert_int_equal(hs_world_hand_points(a, stale_hand, points), HS_ERR_INVALID_ARGUMENT);
+	// the handles the world hands out by index are the ones it made
+	hs_object_id at = hs_world_object_at(a, 0);
+	assert_true(at.index1 == obj_a.index1 && at.world == obj_a.world && at.generation == obj_a.generation);
+	hs_hand_id hat = hs_world_hand_at(a, 0);
+	assert_true(hat.index1 == hand_a.index1 && hat.world == hand_a.world && hat.generation == hand_a.generation);
+	hs_shape_id sat = hs_world_shape_at(a, 0);
+	assert_true(sat.index1 == shape_a.index1 && sat.world == shape_a.world);
+	assert_int_equal(hs_world_object_at(a, 1).index1, 0);
+	assert_int_equal(hs_world_hand_at(a, 1).index1, 0);
+	assert_int_equal(hs_world_shape_at(a, 1).index1, 0);
+	assert_int_equal(hs_world_hand_at(NULL, 0).index1, 0);
+	assert_int_equal(hs_world_shape_at(NULL, 0).index1, 0);
+	hs_world_destroy(a);
+	hs_world_destroy(b);
 }
 
 static void test_world_objects(void **state) {
@@ -314,7 +365,7 @@ static void test_world_objects(void **state) {
 	hs_hand_id hand;
 	hs_world *w = small_world(&obj, &hand);
 	hs_object_def good = hs_default_object_def();
-	good.shape.index1 = 1;
+	good.shape = small_shape;
 	good.position = hs_v3(1, 0, 0.05);
 	hs_object_def d;
 	hs_status st;
@@ -355,8 +406,8 @@ static void test_world_objects(void **state) {
 	// state: invalid handles and NULL
 	hs_object_state out;
 	assert_int_equal(hs_world_object_state(w, (hs_object_id){0}, &out), HS_ERR_INVALID_ARGUMENT);
-	assert_int_equal(hs_world_object_state(w, (hs_object_id){3}, &out), HS_ERR_INVALID_ARGUMENT);
-	assert_int_equal(hs_world_object_state(w, (hs_object_id){UINT32_MAX}, &out), HS_ERR_INVALID_ARGUMENT);
+	assert_int_equal(hs_world_object_state(w, (hs_object_id){3, 0, 0}, &out), HS_ERR_INVALID_ARGUMENT);
+	assert_int_equal(hs_world_object_state(w, (hs_object_id){UINT32_MAX, 0, 0}, &out), HS_ERR_INVALID_ARGUMENT);
 	assert_int_equal(hs_world_object_state(w, obj, NULL), HS_ERR_INVALID_ARGUMENT);
 	assert_int_equal(hs_world_object_state(NULL, obj, &out), HS_ERR_INVALID_ARGUMENT);
 	assert_int_equal(hs_world_object_count(NULL), 0);
@@ -541,8 +592,8 @@ static void test_world_hands(void **state) {
 	hs_vec3 p = hs_v3(0, 0, 0.3);
 	assert_int_equal(hs_world_set_hand(NULL, hand, p, id, s), HS_ERR_INVALID_ARGUMENT);
 	assert_int_equal(hs_world_set_hand(w, (hs_hand_id){0}, p, id, s), HS_ERR_INVALID_ARGUMENT);
-	assert_int_equal(hs_world_set_hand(w, (hs_hand_id){2}, p, id, s), HS_ERR_INVALID_ARGUMENT);
-	assert_int_equal(hs_world_set_hand(w, (hs_hand_id){UINT32_MAX}, p, id, s), HS_ERR_INVALID_ARGUMENT);
+	assert_int_equal(hs_world_set_hand(w, (hs_hand_id){2, 0, 0}, p, id, s), HS_ERR_INVALID_ARGUMENT);
+	assert_int_equal(hs_world_set_hand(w, (hs_hand_id){UINT32_MAX, 0, 0}, p, id, s), HS_ERR_INVALID_ARGUMENT);
 	assert_int_equal(hs_world_set_hand(w, hand, p, id, NULL), HS_ERR_INVALID_ARGUMENT);
 	assert_int_equal(hs_world_set_hand(w, hand, hs_v3(NaN, 0, 0), id, s), HS_ERR_INVALID_ARGUMENT);
 	assert_int_equal(hs_world_set_hand(w, hand, hs_v3(0, -Inf, 0), id, s), HS_ERR_INVALID_ARGUMENT);
@@ -553,7 +604,7 @@ static void test_world_hands(void **state) {
 	hs_vec3 points[HS_HAND_POINTS];
 	assert_int_equal(hs_world_hand_points(NULL, hand, points), HS_ERR_INVALID_ARGUMENT);
 	assert_int_equal(hs_world_hand_points(w, (hs_hand_id){0}, points), HS_ERR_INVALID_ARGUMENT);
-	assert_int_equal(hs_world_hand_points(w, (hs_hand_id){9}, points), HS_ERR_INVALID_ARGUMENT);
+	assert_int_equal(hs_world_hand_points(w, (hs_hand_id){9, 0, 0}, points), HS_ERR_INVALID_ARGUMENT);
 	assert_int_equal(hs_world_hand_points(w, hand, NULL), HS_ERR_INVALID_ARGUMENT);
 	assert_int_equal(hs_world_hand_points(w, hand, points), HS_OK);
 	hs_world_destroy(w);
@@ -635,14 +686,14 @@ static void test_springs(void **state) {
 	// handles
 	assert_int_equal(hs_world_spring_attach(NULL, obj), HS_ERR_INVALID_ARGUMENT);
 	assert_int_equal(hs_world_spring_attach(w, (hs_object_id){0}), HS_ERR_INVALID_ARGUMENT);
-	assert_int_equal(hs_world_spring_attach(w, (hs_object_id){2}), HS_ERR_INVALID_ARGUMENT);
-	assert_int_equal(hs_world_spring_attach(w, (hs_object_id){UINT32_MAX}), HS_ERR_INVALID_ARGUMENT);
+	assert_int_equal(hs_world_spring_attach(w, (hs_object_id){2, 0, 0}), HS_ERR_INVALID_ARGUMENT);
+	assert_int_equal(hs_world_spring_attach(w, (hs_object_id){UINT32_MAX, 0, 0}), HS_ERR_INVALID_ARGUMENT);
 	assert_int_equal(hs_world_spring_detach(NULL), HS_ERR_INVALID_ARGUMENT);
 	assert_int_equal(hs_world_spring_detach(w), HS_OK); // nothing attached: nothing to do
 	assert_int_equal(hs_world_spring_state(NULL, &ss), HS_ERR_INVALID_ARGUMENT);
 	assert_int_equal(hs_world_spring_state(w, NULL), HS_ERR_INVALID_ARGUMENT);
 	assert_int_equal(hs_world_spring_object(w, (hs_object_id){0}, &so), HS_ERR_INVALID_ARGUMENT);
-	assert_int_equal(hs_world_spring_object(w, (hs_object_id){5}, &so), HS_ERR_INVALID_ARGUMENT);
+	assert_int_equal(hs_world_spring_object(w, (hs_object_id){5, 0, 0}, &so), HS_ERR_INVALID_ARGUMENT);
 	assert_int_equal(hs_world_spring_object(w, obj, NULL), HS_ERR_INVALID_ARGUMENT);
 	assert_int_equal(hs_world_spring_object(NULL, obj, &so), HS_ERR_INVALID_ARGUMENT);
 	assert_int_equal(hs_world_tracker_state(NULL, &ts), HS_ERR_INVALID_ARGUMENT);
@@ -941,6 +992,7 @@ int main(void) {
 	    cmocka_unit_test(test_polyhedron),        cmocka_unit_test(test_shape_queries),
 	    cmocka_unit_test(test_world_create),      cmocka_unit_test(test_world_dt_extremes),
 	    cmocka_unit_test(test_world_shapes),      cmocka_unit_test(test_world_objects),
+	    cmocka_unit_test(test_handles_know_their_world),
 	    cmocka_unit_test(test_world_huge_numbers), cmocka_unit_test(test_hand_functions),
 	    cmocka_unit_test(test_hand_null_def),     cmocka_unit_test(test_world_hands),
 	    cmocka_unit_test(test_springs),           cmocka_unit_test(test_scenario_functions),

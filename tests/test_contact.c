@@ -8,7 +8,10 @@
 
 #include <cmocka.h>
 
-#include "internal.h"
+#include "broadphase.h"
+#include "contact.h"
+#include "manipulate.h"
+#include "world_internal.h"
 #include "test_util.h"
 
 #define FAR hs_v3(100, 100, 100)
@@ -264,7 +267,7 @@ static void test_paper_mode_carries_interfering(void **state) {
 	(void)state;
 	hs_world *w = cube_world();
 	hs_object_def od = hs_default_object_def();
-	od.shape.index1 = 1;
+	od.shape = (hs_shape_id){1, w->tag, HS_GENERATION};
 	od.position = hs_v3(0.95, 0, 2); // overlaps the first cube by 0.05
 	hs_world_add_object(w, &od, NULL);
 	move_point(w, 3, hs_v3(-0.6, 0, 2), hs_v3(-0.45, 0, 2)); // push the first cube by 0.05 along x

@@ -6,7 +6,7 @@
 
 #include <cmocka.h>
 
-#include "internal.h"
+#include "world_internal.h"
 #include "test_util.h"
 
 static hs_world *make_world(double dt, bool skip) {
@@ -246,7 +246,7 @@ static void test_invalid_input_rejected(void **state) {
 	od.orientation = hs_q(2, 0, 0, 0); // not a unit quaternion
 	assert_int_equal(hs_world_add_object(w, &od, &st).index1, 0);
 	hs_object_state s;
-	hs_object_id bogus = {7};
+	hs_object_id bogus = {7, 0, 0};
 	assert_int_equal(hs_world_object_state(w, bogus, &s), HS_ERR_INVALID_ARGUMENT);
 	assert_int_equal(hs_world_step(NULL), HS_ERR_INVALID_ARGUMENT);
 	hs_world_destroy(w);

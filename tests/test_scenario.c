@@ -195,8 +195,8 @@ static void test_orientation_and_model(void **state) {
 	assert_near(st.orientation.z, sqrt(0.5), 1e-15);
 	assert_near(hs_quat_dot(st.orientation, st.orientation), 1.0, 1e-15);
 	assert_int_equal(hs_world_object_count(w), 5);
-	assert_int_equal(hs_world_shape(w, (hs_shape_id){4})->kind, HS_SHAPE_SPHERE);
-	assert_int_equal(hs_world_shape(w, (hs_shape_id){5})->kind, HS_SHAPE_L_BLOCK);
+	assert_int_equal(hs_world_shape(w, hs_world_shape_at(w, 3))->kind, HS_SHAPE_SPHERE);
+	assert_int_equal(hs_world_shape(w, hs_world_shape_at(w, 4))->kind, HS_SHAPE_L_BLOCK);
 	hs_scenario_destroy(s);
 }
 
@@ -208,7 +208,7 @@ static void test_polyhedron(void **state) {
 	                                       "    vertices: [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]]\n"
 	                                       "    faces: [[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]]\n"
 	                                       "    position: [0, 0, 2]\n");
-	const hs_shape *shape = hs_world_shape(hs_scenario_world(s), (hs_shape_id){1});
+	const hs_shape *shape = hs_world_shape(hs_scenario_world(s), hs_world_shape_at(hs_scenario_world(s), 0));
 	assert_int_equal(shape->kind, HS_SHAPE_POLYHEDRON);
 	assert_int_equal(shape->vertex_count, 4);
 	assert_near(shape->volume, 1.0 / 6.0, 1e-12);

@@ -154,6 +154,30 @@ static inline hs_vec3 hs_mat3_tmul(hs_mat3 m, hs_vec3 v) {
 	             m.r0.z * v.x + m.r1.z * v.y + m.r2.z * v.z);
 }
 
+// Tolerance of a unit quaternion at the API boundary: | |q| - 1 | <= this. One value for every
+// entry point (object orientation, wrist, stylus), loose enough for a quaternion written with
+// a few decimals, tight enough that normalising it moves a vertex by less than a micrometre.
+#define HS_UNIT_QUAT_TOLERANCE 1e-6
+
+// True when q is finite and of unit length within HS_UNIT_QUAT_TOLERANCE.
+static inline int hs_quat_is_unit(hs_quat q) {
+	return hs_quat_is_finite(q) && fabs(sqrt(hs_quat_dot(q, q)) - 1.0) <= HS_UNIT_QUAT_TOLERANCE;
+}
+
+// The clamped parameter u in [0, 1] of the point of segment a-b nearest to p (0 for a point
+// segment): written once for the hull edges, the hand's check lines and the contact culling.
+static inline double hs_segment_param(hs_vec3 a, hs_vec3 b, hs_vec3 p) {
+	hs_vec3 d = hs_sub(b, a);
+	double len_sq = hs_length_sq(d);
+	double u = len_sq > 0.0 ? hs_dot(hs_sub(p, a), d) / len_sq : 0.0;
+	return u < 0.0 ? 0.0 : (u > 1.0 ? 1.0 : u);
+}
+
+// The point of segment a-b nearest to p.
+static inline hs_vec3 hs_segment_closest(hs_vec3 a, hs_vec3 b, hs_vec3 p) {
+	return hs_mul_add(a, hs_segment_param(a, b, p), hs_sub(b, a));
+}
+
 #ifdef __cplusplus
 }
 #endif

@@ -1,0 +1,29 @@
+// clip.c — Cyrus-Beck clipping of a segment against a convex part (Cyrus & Beck 1978): the hand's
+// check lines against an object's parts (1999 paper §3.2 (B)) and edges against supports (support.c).
+#include "clip.h"
+
+hs_clip hs_clip_segment(const hs_shape *shape, const hs_part *part, hs_vec3 a, hs_vec3 b, double grow) {
+	hs_clip c = {0.0, 1.0, -1, -1, false};
+	hs_vec3 d = hs_sub(b, a);
+	for (int f = part->first_face; f < part->first_face + part->face_count; ++f) {
+		double num = shape->faces[f].offset + grow - hs_dot(shape->faces[f].normal, a);
+		double den = hs_dot(shape->faces[f].normal, d);
+		if (den == 0.0) {
+			if (num <= 0.0)
+				return c; // parallel and outside this face's plane
+			continue;
+		}
+		double t = num / den;
+		if (den < 0.0) { // entering through this face; the first of equal faces wins
+			if (t > c.t_in) {
+				c.t_in = t;
+				c.face_in = f;
+			}
+		} else if (t < c.t_out) {
+			c.t_out = t;
+			c.face_out = f;
+		}
+	}
+	c.hit = c.t_in <= c.t_out;
+	return c;
+}

@@ -1,0 +1,23 @@
+// contact.h — hand-object contacts (1999 paper §3.2: (A) check points in faces, (B) check lines
+// across edges) and their classification (Fig. 2).
+#ifndef HS_CONTACT_H
+#define HS_CONTACT_H
+
+#include <stdbool.h>
+#include <stdint.h>
+
+#include "world_internal.h"
+
+// True when the object's bounding sphere overlaps the hand's.
+bool hs_hand_near(const hs_world *world, const hs_hand *hand, int object);
+// Appends the contacts of every hand with the object to world->contacts; returns how many.
+// `before` is the object's pose one frame ago when it has moved since (NULL: it has not).
+int hs_contact_detect(hs_world *world, int object, const hs_body *before);
+// The largest n_i · n_j of a grasp: cos(threshold) plus a tolerance (DESIGN.md), once per world.
+double hs_grasp_limit(double grasp_threshold_deg);
+// Fig. 2: the contact state of a set of contacts (grasp when two normals are >= threshold apart).
+hs_contact_state hs_contact_classify(const hs_contact *contacts, int count, double grasp_limit);
+// True when two of the contacts (only those of hand index + 1 `hand1`, or all when 0) grasp.
+bool hs_contact_grasps(const hs_contact *contacts, int count, uint32_t hand1, double grasp_limit);
+
+#endif

@@ -1,0 +1,52 @@
+// hand_internal.h — a hand placed in a world (1999 paper §3.1: 20 check points, 60 check lines
+// from the glove sensors and the tracked wrist).
+#ifndef HS_HAND_INTERNAL_H
+#define HS_HAND_INTERNAL_H
+
+#include <stdbool.h>
+#include <stdint.h>
+
+#include "handspring.h"
+
+// A hand of a world. MODEL: `def`. STATE (state.c's hand_io lists them): the wrist pose and
+// sensors now and at the end of the last step, `placed`. CACHES, rebuilt from the state after a
+// load (hs_hand_refresh): the check points and lines now and one frame ago (the kinematics of
+// those two readings, §3.1: bit for bit what hs_world_set_hand computed), the shape in the wrist
+// frame and the bounding spheres. 51 words of state instead of the 866 of the points and lines.
+typedef struct hs_hand {
+	hs_hand_def def;
+	hs_vec3 wrist_pos;
+	hs_quat wrist_rot;
+	uint8_t sensors[HS_GLOVE_SENSORS];
+	hs_vec3 prev_wrist_pos; // the reading the previous points were placed from
+	hs_quat prev_wrist_rot;
+	uint8_t prev_sensors[HS_GLOVE_SENSORS];
+	bool placed; // set at least once: before that its previous points are its current ones
+	// cache: points and lines of (sensors, wrist) and of (prev_sensors, prev_wrist); zero until placed
+	hs_vec3 points[HS_HAND_POINTS], prev_points[HS_HAND_POINTS];
+	hs_vec3 lines[HS_HAND_LINES][2], prev_lines[HS_HAND_LINES][2];
+	// cache: bounding sphere of the check points and lines (radius < 0: touches nothing)
+	hs_vec3 center;
+	double radius;
+	// cache: the shape in the wrist frame for `sensors`, recomputed only when the glove reading changes
+	hs_vec3 local_points[HS_HAND_POINTS], local_lines[HS_HAND_LINES][2];
+	hs_vec3 local_center; // its bounding sphere in the wrist frame
+	double local_radius;
+} hs_hand;
+
+// The hand's shape in its wrist frame (depends on the sensors only) and its placement.
+void hs_hand_local_shape(const hs_hand_def *def, const uint8_t sensors[HS_GLOVE_SENSORS],
+                         hs_vec3 points[HS_HAND_POINTS], hs_vec3 lines[HS_HAND_LINES][2]);
+void hs_hand_place(const hs_vec3 local_points[HS_HAND_POINTS], const hs_vec3 local_lines[HS_HAND_LINES][2],
+                   hs_vec3 wrist_position, hs_quat wrist_orientation, hs_vec3 points[HS_HAND_POINTS],
+                   hs_vec3 lines[HS_HAND_LINES][2]);
+// Recomputes the wrist-frame shape cache and its bounding sphere from hand->sensors.
+void hs_hand_update_shape(hs_hand *hand);
+// The world bounding sphere from the wrist pose and the shape cache (radius -1 before placement).
+void hs_hand_update_bounds(hs_hand *hand);
+// The reading of this frame becomes the previous one (the end of a step, a first placement).
+void hs_hand_keep_previous(hs_hand *hand);
+// Rebuilds every cache from the state alone (after hs_world_load_state).
+void hs_hand_refresh(hs_hand *hand);
+
+#endif

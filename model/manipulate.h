@@ -1,0 +1,17 @@
+// manipulate.h — object motion by the hand (1999 paper eq. 1-2, grasp, push; §3.2) and
+// interference among objects (§4.3).
+#ifndef HS_MANIPULATE_H
+#define HS_MANIPULATE_H
+
+#include <stdbool.h>
+
+#include "world_internal.h"
+
+// Eq. 1-2: moves the surface point c of the body toward b (translation T ∥ CG, rotation about G).
+void hs_push_at_one_point(hs_body *body, hs_vec3 c, hs_vec3 b);
+// One frame of the hands: detect, classify, move touched objects, release the untouched.
+void hs_manipulate(hs_world *world);
+// §4.3: true when an untouched free object interferes with another and so ignores gravity.
+bool hs_object_interferes(hs_world *world, int object);
+
+#endif

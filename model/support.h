@@ -1,0 +1,13 @@
+// support.h — the 'support' stacking mode (DESIGN.md, instead of the 1999 paper's §4.3): objects
+// rest on the faces of objects under them, rectified and judged for stability as on the floor.
+#ifndef HS_SUPPORT_H
+#define HS_SUPPORT_H
+
+#include "world_internal.h"
+
+// After its free step: lifts a body out of the objects it sank into and settles it on them.
+void hs_support_step(hs_world *world, int object);
+// A hand moved `object`: objects resting on or against it wake up and look again.
+void hs_support_wake_neighbours(hs_world *world, int object);
+
+#endif

@@ -1,0 +1,112 @@
+// world_internal.h — struct hs_world: what every stage of the step reads and writes (as MuJoCo's
+// mjData is seen by every engine_*.c), the handles that name its objects, and fault recording.
+#ifndef HS_WORLD_INTERNAL_H
+#define HS_WORLD_INTERNAL_H
+
+#include <stdbool.h>
+#include <stdint.h>
+
+#include "body.h"
+#include "hand_internal.h"
+#include "handspring.h"
+#include "hull.h"
+#include "spring_world.h"
+
+// Fields are MODEL (built by hs_world_create / add_*, read-only while stepping), STATE (saved,
+// loaded and hashed by state.c's world walk: frame, faults, bodies, hands, spring), CACHE (derived
+// from model and state; invalidated or rebuilt after a load) or SCRATCH (per call, never read
+// before it is written in the same step). Work counters other than numeric_faults are outside
+// the state: they count what was done, not what will happen.
+struct hs_world {
+	hs_world_def def;   // MODEL
+	uint16_t tag;       // MODEL: this world's tag in its handles (never 0)
+	int shape_count;    // MODEL
+	hs_shape *shapes;   // MODEL: deep copies, def.max_shapes of them
+	int object_count;   // MODEL
+	hs_body *bodies;    // STATE (but shape, mass), def.max_objects of them
+	int hand_count;     // MODEL
+	hs_hand *hands;     // STATE (but def and caches), def.max_hands of them
+	double grasp_limit; // MODEL: hs_grasp_limit(def.grasp_threshold_deg)
+	long frame;         // STATE
+	hs_world_counters counters; // numeric_faults is STATE, the rest are work counters
+	long first_fault_frame;     // STATE: frame of the first numeric fault (-1: none)
+	int first_fault_object;     // STATE: its object index (-1: none or not an object's)
+	hs_spring_system *spring;   // STATE (its own walk); NULL unless the world runs the spring model
+	// SCRATCH for the floor and support tests, sized at hs_world_add_shape for the largest shape:
+	// hs_motion_pose_vertices writes scratch_world, hs_motion_floor_points / support.c write
+	// scratch_points, hs_motion_settle builds scratch_hull; each is read only by the caller that
+	// just filled it.
+	int scratch_capacity;
+	hs_vec3 *scratch_world; // posed vertices
+	hs_vec2 *scratch_points;
+	hs_vec2 *scratch_hull;
+	// OUTPUT of the last step (hs_world_contacts), rebuilt from scratch by every step: not state
+	int contact_count, contact_capacity;
+	hs_contact *contacts; // this frame's hand contacts, grouped by object
+	// SCRATCH of the hand pass (manipulate.c)
+	int *queue;          // objects to move along with a moved one (§4.3), max_objects long
+	int *candidates;     // objects a hand may touch this frame, in index order
+	int candidate_count;
+	int *near;           // grid query results, max_objects long
+	// CACHE: broad phase (broadphase.c), objects filed by the floor cell of their centre
+	double grid_cell;   // m; 0 until built at the first step
+	double grid_radius; // m: the largest object's bounding radius
+	bool grid_dirty;    // objects were added (or a state loaded) since it was built
+	int grid_buckets;   // a power of two, at least twice max_objects
+	int *grid_head;     // bucket → first object (-1: none)
+	int *grid_next, *grid_bucket;
+	long *grid_ix, *grid_iy;
+	// CACHE: the awake objects in index order, the only ones the step visits when skip_work is on;
+	// between steps exactly the objects with !asleep || held || carried (hs_awake_rebuild)
+	int awake_count;
+	int *awake;
+	uint8_t *awake_flag;
+	char state_error[160]; // why the last hs_world_load_state refused ("" when it did not)
+};
+
+// Every live handle has this generation: objects, shapes and hands are never removed, so no slot
+// is reused yet. A handle whose generation differs is refused, so a removal can bump it later.
+#define HS_GENERATION 1
+
+static inline hs_object_id hs_object_handle(const hs_world *world, int i) {
+	hs_object_id id = {0, 0, 0};
+	if (i >= 0 && i < world->object_count)
+		id = (hs_object_id){(uint32_t)i + 1, world->tag, HS_GENERATION};
+	return id;
+}
+
+static inline hs_hand_id hs_hand_handle(const hs_world *world, int h) {
+	hs_hand_id id = {0, 0, 0};
+	if (h >= 0 && h < world->hand_count)
+		id = (hs_hand_id){(uint32_t)h + 1, world->tag, HS_GENERATION};
+	return id;
+}
+
+// The object index a handle names in this world; -1 for the null handle, a handle of another
+// world, a stale generation or an index out of range.
+static inline int hs_object_index(const hs_world *world, hs_object_id id) {
+	if (!world || id.world != world->tag || id.generation != HS_GENERATION || id.index1 < 1 ||
+	    id.index1 > (uint32_t)world->object_count)
+		return -1;
+	return (int)id.index1 - 1;
+}
+
+static inline int hs_hand_index(const hs_world *world, hs_hand_id id) {
+	if (!world || id.world != world->tag || id.generation != HS_GENERATION || id.index1 < 1 ||
+	    id.index1 > (uint32_t)world->hand_count)
+		return -1;
+	return (int)id.index1 - 1;
+}
+
+static inline int hs_shape_index(const hs_world *world, hs_shape_id id) {
+	if (!world || id.world != world->tag || id.generation != HS_GENERATION || id.index1 < 1 ||
+	    id.index1 > (uint32_t)world->shape_count)
+		return -1;
+	return (int)id.index1 - 1;
+}
+
+// Numeric trouble (a non-finite value caught and frozen): counts it and remembers the first
+// (frame, object); `object` -1 when the fault belongs to no single object.
+void hs_world_note_fault(hs_world *world, int object);
+
+#endif
