@@ -20,7 +20,7 @@ int main(int argc, char **argv) {
 		return status;
 	hs_world *w = hs_scenario_world(s);
 	hs_object_id id = hs_world_object_at(w, 0);
-	hs_hand_id hand = {1};
+	hs_hand_id hand = hs_world_hand_at(w, 0);
 	fprintf(out, "# %s: %s\n# object '%s'; hand = mean of the 20 check points, tip = index fingertip\n",
 	        hs_scenario_name(s), hs_scenario_description(s), hs_scenario_object_name(s, 0));
 	fprintf(out, "frame,t,x,y,z,contact,hand_x,hand_y,hand_z,tip_x,tip_y,tip_z\n");
