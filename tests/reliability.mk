@@ -12,7 +12,7 @@
 # Uses the Makefile's $(BUILD), $(CC), $(LDFLAGS), $(LDLIBS_ALL), $(LIB), $(LIB_SRC) and, for the
 # fuzz build, $(WARN), $(FP) and $(PKG_CFLAGS).
 
-.PHONY: stress-bin fuzz-bin fuzz-deps valgrind
+.PHONY: stress-bin fuzz-bin fuzz-deps valgrind soak-scenarios
 
 STRESS := $(BUILD)/stress
 
@@ -20,6 +20,21 @@ $(STRESS): $(BUILD)/obj/tests/stress.o $(LIBS)
 	$(CC) $(LDFLAGS) -o $@ $^ $(LDLIBS_ALL)
 
 stress-bin: $(STRESS)
+
+# The randomized soak of the determinism matrix: tests/soak_gen.c (GSL's mt19937, a fixed seed)
+# writes $(BUILD)/soak/hand.yaml and $(BUILD)/soak/spring.yaml, the same text on every run.
+SOAK_GEN  := $(BUILD)/soak_gen
+SOAK_SEED ?= 1999
+SOAK      := $(BUILD)/soak/hand.yaml $(BUILD)/soak/spring.yaml
+
+$(SOAK_GEN): $(BUILD)/obj/tests/soak_gen.o
+	$(CC) $(LDFLAGS) -o $@ $^ $(LDLIBS_ALL)
+
+$(SOAK) &: $(SOAK_GEN)
+	@mkdir -p $(BUILD)/soak
+	$(SOAK_GEN) $(BUILD)/soak $(SOAK_SEED)
+
+soak-scenarios: $(SOAK)
 
 stress: $(STRESS)
 	$(STRESS) --full
