@@ -3,11 +3,13 @@
 #   make stress          numerical stress: every case in full (the 1,000,000-frame soak included)
 #   make fuzz            libFuzzer on the scenario loader and the recorded-input reader,
 #                        FUZZ_SECONDS (default 60) each; findings in $(BUILD)/fuzz/artifacts
-#   make determinism     gcc and clang at -O0/-O2/-O3 plus the sanitizer builds run the catalog:
+#   make determinism     the determinism matrix (scripts/determinism.sh --full): gcc and clang at
+#                        -O0/-O2/-O3 and -march=native, i386, aarch64 (qemu), no-FMA libm paths and
+#                        the sanitizer builds run the catalog and the randomized soak (tests/soak_gen.c):
 #                        per-frame hashes must agree; then valgrind on the catalog
 #   make valgrind        valgrind on the catalog run and the bad-input corpus (slow: not in check)
-#   make check-reliability   (run by `make check`) the stress subset and the determinism
-#                        pair gcc -O0 / gcc -O2 / clang -O2
+#   make check-reliability   (run by `make check`) the stress subset and the quick matrix:
+#                        gcc -O2 / gcc -O0 / clang -O2 and gcc -O2 on the no-FMA libm paths
 #
 # Uses the Makefile's $(BUILD), $(CC), $(LDFLAGS), $(LDLIBS_ALL), $(LIB), $(LIB_SRC) and, for the
 # fuzz build, $(WARN), $(FP) and $(PKG_CFLAGS).
@@ -42,9 +44,12 @@ stress: $(STRESS)
 # the subset: every case, fewer frames (well under 30 s), then the compiler pair
 check-reliability:: $(STRESS)
 	@status=0; $(STRESS) --quick || status=1; \
-	BUILD=$(BUILD) sh scripts/determinism.sh --pair || status=1; exit $$status
+	BUILD=$(BUILD) sh scripts/determinism.sh --quick || status=1; exit $$status
 
+# the cross compilers, qemu and the i386/arm64 sysroots first (as root; otherwise the command to
+# run is printed and the matrix shows those columns as not made)
 determinism:
+	@BUILD=$(BUILD) sh scripts/deps-cross.sh || echo "determinism: continuing without the cross builds"
 	@BUILD=$(BUILD) sh scripts/determinism.sh --full
 	@$(MAKE) --no-print-directory valgrind
 
