@@ -130,7 +130,9 @@ spec() {
 # make_build NAME [WARN]: builds the tool in $det/NAME; 0 on success
 make_build() {
 	dir="$det/$1"
-	set -- "BUILD=$dir" "CC=$cc" "OPT=$opt" "SANITIZE=$san" "CFLAGS=$cflags" "LDFLAGS=$ldflags" ${2+"WARN=$2"}
+	# CFLAGS and LDFLAGS only when set: on make's command line they would replace what the
+	# Makefile adds to them (SANITIZE=1 appends -fsanitize=... to LDFLAGS)
+	set -- "BUILD=$dir" "CC=$cc" "OPT=$opt" "SANITIZE=$san" ${cflags:+"CFLAGS=$cflags"} ${ldflags:+"LDFLAGS=$ldflags"} ${2+"WARN=$2"}
 	# a build made with other flags or another Makefile starts from scratch (make tracks sources only)
 	stamp=$(printf '%s\n' "$*" | cat - Makefile tests/reliability.mk | cksum)
 	if [ ! -f "$dir/.stamp" ] || [ "$(cat "$dir/.stamp")" != "$stamp" ]; then
@@ -232,6 +234,7 @@ for name in "$@"; do printf " %-$(colw "$name")s" "$name"; done
 printf " %s\n" "frames"
 tmp="$det/.cmp"
 differ=0
+unrun=0
 for f in $rows; do
 	printf "%-${width}s" "$(label "$f")"
 	frames=""
@@ -242,6 +245,7 @@ for f in $rows; do
 		elif [ ! -f "$det/$name/traj/$f" ]; then
 			cell=X
 			bad=1
+			unrun=$((unrun + 1))
 		elif [ "$name" = "$ref" ]; then
 			cell=ref
 		elif [ -z "$frames" ]; then
@@ -272,7 +276,8 @@ printf '%s' "$notes" | sed '/^$/d; s/^/  /'
 echo "  ($(($(date +%s) - start)) s in all)"
 
 if [ "$bad" -ne 0 ]; then
-	echo "determinism: FAILED: $differ cells differ from $ref (F<n>: first frame whose hash differs; X: not run, see above)"
+	failed=$(for name in "$@"; do grep -l 'build failed' "$det/$name.skip"; done 2>/dev/null | wc -l)
+	echo "determinism: FAILED: $differ cells differ from $ref (F<n>: the first frame whose hash differs), $unrun not run (X), $failed builds failed"
 	exit 1
 fi
 same=yes
