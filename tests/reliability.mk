@@ -41,7 +41,7 @@ soak-scenarios: $(SOAK)
 stress: $(STRESS)
 	$(STRESS) --full
 
-# the subset: every case, fewer frames (well under 30 s), then the compiler pair
+# the subset: every case, fewer frames (well under 30 s), then the quick determinism matrix
 check-reliability:: $(STRESS)
 	@status=0; $(STRESS) --quick || status=1; \
 	BUILD=$(BUILD) sh scripts/determinism.sh --quick || status=1; exit $$status
