@@ -9,10 +9,12 @@
 #                        per-frame hashes must agree; then valgrind on the catalog
 #   make valgrind        valgrind on the catalog run and the bad-input corpus (slow: not in check)
 #   make check-reliability   (run by `make check`) the stress subset and the quick matrix:
-#                        gcc -O2 / gcc -O0 / clang -O2 and gcc -O2 on the no-FMA libm paths
+#                        gcc -O2 / gcc -O0 / clang -O2, gcc -O2 on the no-FMA libm paths, and i386
+#                        and aarch64 where scripts/deps-cross.sh has installed them
+#   make soak-scenarios  writes the randomized soak, $(BUILD)/soak/{hand,spring}.yaml
 #
-# Uses the Makefile's $(BUILD), $(CC), $(LDFLAGS), $(LDLIBS_ALL), $(LIB), $(LIB_SRC) and, for the
-# fuzz build, $(WARN), $(FP) and $(PKG_CFLAGS).
+# Uses the Makefile's $(BUILD), $(CC), $(LDFLAGS), $(LDLIBS_ALL), $(LIB), $(LIB_SRC), its rule for
+# $(BUILD)/obj/tests/%.o and, for the fuzz build, $(WARN), $(FP) and $(PKG_CFLAGS).
 
 .PHONY: stress-bin fuzz-bin fuzz-deps valgrind soak-scenarios
 
@@ -23,20 +25,18 @@ $(STRESS): $(BUILD)/obj/tests/stress.o $(LIBS)
 
 stress-bin: $(STRESS)
 
-# The randomized soak of the determinism matrix: tests/soak_gen.c (GSL's mt19937, a fixed seed)
-# writes $(BUILD)/soak/hand.yaml and $(BUILD)/soak/spring.yaml, the same text on every run.
+# The randomized soak of the determinism matrix: tests/soak_gen.c (GSL's mt19937, seed SOAK_SEED)
+# writes $(BUILD)/soak/hand.yaml and $(BUILD)/soak/spring.yaml, the same text on every run (it is
+# written every time: it takes milliseconds, and a changed SOAK_SEED takes effect).
 SOAK_GEN  := $(BUILD)/soak_gen
 SOAK_SEED ?= 1999
-SOAK      := $(BUILD)/soak/hand.yaml $(BUILD)/soak/spring.yaml
 
 $(SOAK_GEN): $(BUILD)/obj/tests/soak_gen.o
 	$(CC) $(LDFLAGS) -o $@ $^ $(LDLIBS_ALL)
 
-$(SOAK) &: $(SOAK_GEN)
+soak-scenarios: $(SOAK_GEN)
 	@mkdir -p $(BUILD)/soak
 	$(SOAK_GEN) $(BUILD)/soak $(SOAK_SEED)
-
-soak-scenarios: $(SOAK)
 
 stress: $(STRESS)
 	$(STRESS) --full
