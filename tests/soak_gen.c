@@ -1,16 +1,18 @@
 // soak_gen.c — writes the randomized determinism soak (scripts/determinism.sh): two scenario files
 // generated from a fixed seed with GSL's mt19937, so every run writes the same text.
 //
-//   soak_gen OUTDIR [SEED]      writes OUTDIR/hand.yaml and OUTDIR/spring.yaml (default seed 1999)
+//   soak_gen OUTDIR [SEED [SECONDS]]   writes OUTDIR/hand.yaml and OUTDIR/spring.yaml, each at least
+//                                      SECONDS long (default 62, at least 60) from seed SEED
+//                                      (default 1999)
 //
 // hand.yaml: a dozen objects of every built-in hand-model shape (cube, box, pyramid, L-block,
-//   ellipsoid, polyhedron: two of each) on the floor, and one hand that pokes them for over 60 s:
+//   ellipsoid, polyhedron: two of each) on the floor, and one hand that pokes them for SECONDS:
 //   fingertip pushes and flicks from random directions and speeds (states 1 and 3), grasps that
 //   carry an object to a free spot and put it down (state 2), and grasps that end in a throw.
 // spring.yaml: a spring world (walls, tracker noise on: model.spring.noise_seed) with spheres,
 //   cubes, boxes and a pyramid; the stylus picks objects (pen inside them), lifts and drops them,
-//   drags them along the floor, throws them and sometimes catches them again in flight, for over
-//   60 s.
+//   drags them along the floor, throws them and sometimes catches them again in flight, for
+//   SECONDS.
 // The generator keeps an estimate of where each object is (its own closed forms: a pushed object
 // moves by about the push, a placed or dropped one lands under the hand, a caught one is where
 // the parabola says), so the pokes really reach objects; an object whose landing it cannot
@@ -197,6 +199,7 @@ static int live_count(void) {
 // hand.yaml
 
 static double t_now;
+static double soak_seconds = 62.0; // each soak runs at least this long (s)
 
 // wrist from the index tip for the `point` posture at rpy [0, 30, yaw]: tip - Rz(yaw) (0.15588457,
 // 0.025, -0.09) (scenarios/hand/push_off_centre.yaml: the tip sits there in the wrist frame)
@@ -400,7 +403,7 @@ static void write_hand(const char *dir, unsigned long seed) {
 		add_hand_object(shapes[i % 6], i / 6 + 1);
 	emit("hands:\n  - name: right\n    keys:\n");
 	grip_key(0.0, 0, -0.6, 0.3, 0.12);
-	while (t_now < 62.0) {
+	while (t_now < soak_seconds) {
 		int i = live_target();
 		if (i < 0)
 			break;
@@ -582,7 +585,7 @@ static void write_spring(const char *dir, unsigned long seed) {
 	sy = 0;
 	sz = 0.45;
 	stylus_key(0.0, sx, sy, sz, NULL);
-	while (t_now < 62.0) {
+	while (t_now < soak_seconds) {
 		int i = live_target();
 		if (i < 0)
 			break;
@@ -592,20 +595,29 @@ static void write_spring(const char *dir, unsigned long seed) {
 	close_out(header, t_now + 1.0);
 }
 
+static bool read_number(const char *text, const char *what, unsigned long *value) {
+	char *end;
+	*value = strtoul(text, &end, 10);
+	if (*text == '\0' || *text == '-' || *end != '\0') {
+		fprintf(stderr, "soak_gen: the %s must be a decimal integer, got %s\n", what, text);
+		return false;
+	}
+	return true;
+}
+
 int main(int argc, char **argv) {
-	if (argc < 2 || argc > 3) {
-		fprintf(stderr, "usage: soak_gen OUTDIR [SEED]\n");
+	if (argc < 2 || argc > 4) {
+		fprintf(stderr, "usage: soak_gen OUTDIR [SEED [SECONDS]]\n");
 		return 2;
 	}
-	unsigned long seed = 1999;
-	if (argc == 3) {
-		char *end;
-		seed = strtoul(argv[2], &end, 10);
-		if (*argv[2] == '\0' || *end != '\0') {
-			fprintf(stderr, "soak_gen: the seed must be a decimal integer, got %s\n", argv[2]);
-			return 2;
-		}
+	unsigned long seed = 1999, seconds = 62;
+	if (argc >= 3 && !read_number(argv[2], "seed", &seed))
+		return 2;
+	if (argc >= 4 && (!read_number(argv[3], "length in seconds", &seconds) || seconds < 60 || seconds > 100000)) {
+		fprintf(stderr, "soak_gen: the length must be within [60, 100000] s, got %s\n", argv[3]);
+		return 2;
 	}
+	soak_seconds = (double)seconds;
 	rng = gsl_rng_alloc(gsl_rng_mt19937);
 	if (!rng) {
 		fprintf(stderr, "soak_gen: out of memory\n");
