@@ -7,6 +7,7 @@
 # 1. Debian packages (as root, through apt-get; otherwise it prints the exact command to run):
 #    gcc-i686-linux-gnu + libc6-dev-i386-cross    the i386 build (-m32 -msse2 -mfpmath=sse)
 #    gcc-aarch64-linux-gnu + libc6-dev-arm64-cross  the aarch64 build
+#    libc6-i386                                  runs the i386 tool (/lib/ld-linux.so.2, /lib32)
 #    qemu-user                                   runs the aarch64 tool (qemu-aarch64)
 #    Debian's cross compilers, not gcc-multilib: gcc-12-multilib and gcc-12-aarch64-linux-gnu
 #    conflict in bookworm, and the cross compilers carry their own C library.
@@ -34,6 +35,7 @@ has_cmd() { command -v "$1" >/dev/null 2>&1; }
 need=""
 has_cmd i686-linux-gnu-gcc || need="$need gcc-i686-linux-gnu"
 [ -e /usr/i686-linux-gnu/lib/libc.so ] || need="$need libc6-dev-i386-cross"
+[ -e /lib/ld-linux.so.2 ] || need="$need libc6-i386" # runs the i386 tool (its C library, in /lib32)
 has_cmd aarch64-linux-gnu-gcc || need="$need gcc-aarch64-linux-gnu"
 [ -e /usr/aarch64-linux-gnu/lib/libc.so ] || need="$need libc6-dev-arm64-cross"
 has_cmd qemu-aarch64 || need="$need qemu-user"
