@@ -28,7 +28,7 @@ PKG_LIBS   = $(shell pkg-config --libs $(PKGS))
 
 WARN := -Wall -Wextra -Wpedantic -Wshadow -Wconversion -Wmissing-prototypes -Wvla -Werror
 # determinism: no contraction into FMA, no fast-math, IEEE semantics everywhere
-FP   := -ffp-contract=off -fno-fast-math
+FP   := -ffp-contract=off -fno-fast-math -fno-tree-vectorize -fno-tree-slp-vectorize
 # Include paths by layer: each layer sees the public headers below it and its own private ones,
 # so the compiler enforces the boundary (the harness cannot reach model/*.h).
 PUBLIC_INC  := -Imodel/include -Iharness/include
