@@ -87,7 +87,7 @@ else
 SO_LDFLAGS := -Wl,--no-undefined
 endif
 
-.PHONY: all shared tool deps check check-core check-readme run golden bench plots install uninstall clean
+.PHONY: all shared tool deps check check-core check-readme check-resume run golden bench plots install uninstall clean
 
 all: $(LIB) $(HLIB) $(SOLIBS) $(TOOL)
 shared: $(SOLIBS)
@@ -174,7 +174,13 @@ check: deps
 	@$(MAKE) --no-print-directory check-core BUILD=$(BUILD)/asan SANITIZE=1 OPT=-O1
 	@$(MAKE) --no-print-directory check-reliability
 	@$(MAKE) --no-print-directory check-readme
-	@echo "check: all suites passed (plain and ASan+UBSan, reliability, README examples)"
+	@$(MAKE) --no-print-directory check-resume
+	@sh scripts/layout_check.sh
+	@echo "check: all suites passed (plain and ASan+UBSan, reliability, README examples, resume, layout)"
+
+# Save half-way and resume every catalog scenario: the rest of the run must be byte-identical.
+check-resume: all
+	@sh tests/resume_catalog.sh $(TOOL) scenarios
 
 # The main job: every catalog scenario, a summary table, trajectories under $(BUILD)/traj.
 run: all
