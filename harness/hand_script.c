@@ -319,12 +319,15 @@ bool hs_read_hands(hs_scenario_parser *p, const yaml_node_t *node) {
 	return true;
 }
 
-void hs_hands_drive(hs_world *world, const hs_hands *hands, double t) {
+void hs_hands_drive(hs_world *world, const hs_hands *hands, double t, hs_noise *noise,
+                    const hs_noise_options *options) {
 	for (int h = 0; h < hands->count; ++h) {
 		hs_vec3 wrist;
 		hs_quat rot;
 		uint8_t sensors[HS_GLOVE_SENSORS];
 		hs_hand_script_sample(&hands->scripts[h], t, &wrist, &rot, sensors);
+		if (noise) // what a real glove and tracker report (hands in order: one generator, one sequence)
+			hs_noise_hand(noise, options, &wrist, sensors);
 		hs_world_set_hand(world, hands->ids[h], wrist, rot, sensors);
 	}
 }

@@ -8,6 +8,7 @@
 
 #include "error.h"
 #include "handspring.h"
+#include "noise.h"
 
 typedef struct hs_hand_key {
 	double t;      // s
@@ -37,8 +38,10 @@ typedef struct hs_hands {
 	hs_hand_script *scripts;
 } hs_hands;
 
-// Gives every hand its pose and glove at time t (the end of the coming frame).
-void hs_hands_drive(hs_world *world, const hs_hands *hands, double t);
+// Gives every hand its pose and glove at time t (the end of the coming frame), with the input
+// noise of `options` when `noise` is not NULL.
+void hs_hands_drive(hs_world *world, const hs_hands *hands, double t, hs_noise *noise,
+                    const hs_noise_options *options);
 void hs_hands_free(hs_hands *hands);
 
 #endif

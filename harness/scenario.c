@@ -94,6 +94,11 @@ static bool read_scenario(hs_scenario_parser *p, const yaml_node_t *root) {
 		return false;
 	if (p->spring_key && !f.value[S_STYLUS])
 		return hs_yaml_fail(&p->y, p->spring_key, "'spring' options need a 'stylus': only spring worlds use them");
+	if (p->input_noise_key && !f.value[S_HANDS])
+		return hs_yaml_fail(&p->y, p->input_noise_key, "'input_noise' needs 'hands': only hand worlds use it");
+	if (p->seeded && !(s->noise = hs_noise_create(p->seed)))
+		return hs_yaml_fail(&p->y, root, "out of memory");
+	s->noise_options = p->noise;
 	if (f.value[S_HANDS] && !hs_count_hands(p, f.value[S_HANDS], &def))
 		return false;
 	if (!hs_read_objects(p, f.value[S_OBJECTS], def))
@@ -122,8 +127,8 @@ static bool read_text_file(const char *path, char **text, size_t *size, hs_error
 
 // The run's start: inputs at t = 0 (no motion before frame 1), initial states, frame 0 captured.
 static bool start(hs_scenario *s, const char *path, hs_error *err) {
-	hs_hands_drive(s->world, &s->hands, 0.0);
-	hs_stylus_drive(s->world, &s->stylus, 0.0);
+	hs_hands_drive(s->world, &s->hands, 0.0, s->noise, &s->noise_options);
+	hs_stylus_drive(s->world, &s->stylus, 0.0, s->noise_options.stylus ? s->noise : NULL);
 	s->initial = calloc((size_t)s->object_count, sizeof *s->initial);
 	if (!s->initial)
 		return hs_set_error(err, path, 1, "out of memory");
@@ -177,6 +182,7 @@ void hs_scenario_destroy(hs_scenario *s) {
 	hs_hands_free(&s->hands);
 	free(s->stylus.keys);
 	hs_expectations_free(&s->expect);
+	hs_noise_destroy(s->noise);
 	free(s);
 }
 
@@ -199,8 +205,8 @@ bool hs_scenario_step(hs_scenario *s) {
 	if (!s || s->frame >= s->frames || s->step_status != HS_OK)
 		return false;
 	double t = (double)(s->frame + 1) * s->dt; // inputs are given for the end of the coming frame
-	hs_hands_drive(s->world, &s->hands, t);
-	hs_stylus_drive(s->world, &s->stylus, t);
+	hs_hands_drive(s->world, &s->hands, t, s->noise, &s->noise_options);
+	hs_stylus_drive(s->world, &s->stylus, t, s->noise_options.stylus ? s->noise : NULL);
 	hs_status status = hs_world_step(s->world);
 	if (status != HS_OK) { // reported by hs_scenario_check as a failure
 		s->step_status = status;

@@ -8,6 +8,7 @@
 #include "expect.h"
 #include "hand_script.h"
 #include "hs_harness.h"
+#include "noise.h"
 #include "stylus_script.h"
 
 enum { HS_MAX_NAME = 64 }; // characters of an object name
@@ -26,6 +27,8 @@ struct hs_scenario {
 	bool springs;             // the scenario has a stylus: hs_world_enable_springs was called
 	hs_hands hands;           // hand worlds: glove + tracker scripts (1999 paper §5.1)
 	hs_stylus_script stylus;  // spring worlds: the stylus (workbench paper §3–§5)
+	hs_noise *noise;          // the input noise's generator (NULL: no noise)
+	hs_noise_options noise_options;
 	hs_expectations expect;
 	hs_status step_status;    // the first failed step (HS_OK: none)
 	long failed_frame;

@@ -6,6 +6,7 @@
 
 #include "handspring.h"
 #include "hs_harness.h"
+#include "noise.h"
 #include "yaml_read.h"
 
 typedef struct hs_name_entry {
@@ -19,6 +20,10 @@ typedef struct hs_scenario_parser {
 	hs_name_entry *sorted;         // object names in strcmp order, for duplicates and lookups by name
 	hs_spring_def spring;          // model.spring, read before the world exists
 	const yaml_node_t *spring_key; // where model.spring was given (NULL: not given)
+	hs_noise_options noise;        // model.spring.noise_seed, model.input_noise
+	bool seeded;                   // a noise seed was given: the scenario draws noise
+	unsigned long seed;
+	const yaml_node_t *input_noise_key; // where model.input_noise was given (NULL: not given)
 } hs_scenario_parser;
 
 // scenario_world.c

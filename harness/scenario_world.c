@@ -149,8 +149,8 @@ static bool read_spring(hs_scenario_parser *p, const yaml_node_t *node) {
 		int64_t seed;
 		if (!hs_yaml_integer(&p->y, f.value[SP_NOISE_SEED], "noise_seed", 0, 4294967295LL, &seed))
 			return false;
-		d->noise = true;
-		d->noise_seed = (unsigned long)seed;
+		p->seeded = p->noise.stylus = true; // the harness draws it: the model adds none (d->noise stays off)
+		p->seed = (unsigned long)seed;
 	}
 	return true;
 }
@@ -159,12 +159,47 @@ bool hs_read_gravity(hs_scenario_parser *p, const yaml_node_t *node, hs_world_de
 	return hs_yaml_vec3(&p->y, node, "gravity", &def->gravity);
 }
 
+enum { IN_GLOVE, IN_WRIST, IN_SEED, IN_COUNT };
+static const char *const input_noise_keys[IN_COUNT] = {"glove_units", "wrist_mm", "seed"};
+
+// model.input_noise: a glove's and a tracker's noise on hand input, from a seeded generator.
+static bool read_input_noise(hs_scenario_parser *p, const yaml_node_t *node) {
+	if (node->type != YAML_MAPPING_NODE)
+		return hs_yaml_fail(&p->y, node, "'input_noise' must be a mapping, got %s", hs_yaml_got(node).text);
+	hs_fields f;
+	if (!hs_yaml_mapping(&p->y, node, input_noise_keys, IN_COUNT, "model.input_noise", &f))
+		return false;
+	int64_t v;
+	if (!f.value[IN_SEED])
+		return hs_yaml_fail(&p->y, node, "'input_noise' needs a 'seed' (an integer within [0, 4294967295])");
+	if (!hs_yaml_integer(&p->y, f.value[IN_SEED], "seed", 0, 4294967295LL, &v))
+		return false;
+	p->seeded = true;
+	p->seed = (unsigned long)v;
+	if (f.value[IN_GLOVE]) {
+		if (!hs_yaml_integer(&p->y, f.value[IN_GLOVE], "glove_units", 0, 255, &v))
+			return false;
+		p->noise.glove_units = (int)v;
+	}
+	if (f.value[IN_WRIST]) {
+		double mm;
+		if (!hs_yaml_number(&p->y, f.value[IN_WRIST], "wrist_mm", &mm))
+			return false;
+		if (!(mm >= 0.0 && mm <= 1000.0))
+			return hs_yaml_fail(&p->y, f.value[IN_WRIST], "'wrist_mm' must be within [0, 1000] mm, got %s",
+			                    hs_yaml_show(f.value[IN_WRIST]).text);
+		p->noise.wrist = mm * 1e-3;
+	}
+	return true;
+}
+
 bool hs_read_model(hs_scenario_parser *p, const yaml_node_t *node, hs_world_def *def) {
-	static const char *const names[] = {"grasp_threshold_deg", "stacking", "floor_tolerance", "skip_work", "spring"};
+	static const char *const names[] = {"grasp_threshold_deg", "stacking",     "floor_tolerance",
+	                                    "skip_work",           "spring",       "input_noise"};
 	if (node->type != YAML_MAPPING_NODE)
 		return hs_yaml_fail(&p->y, node, "'model' must be a mapping, got %s", hs_yaml_got(node).text);
 	hs_fields f;
-	if (!hs_yaml_mapping(&p->y, node, names, 5, "model", &f))
+	if (!hs_yaml_mapping(&p->y, node, names, 6, "model", &f))
 		return false;
 	if (f.value[0]) {
 		if (!hs_yaml_number(&p->y, f.value[0], names[0], &def->grasp_threshold_deg))
@@ -191,6 +226,11 @@ bool hs_read_model(hs_scenario_parser *p, const yaml_node_t *node, hs_world_def 
 	if (f.value[4]) {
 		p->spring_key = f.key[4];
 		if (!read_spring(p, f.value[4]))
+			return false;
+	}
+	if (f.value[5]) {
+		p->input_noise_key = f.key[5];
+		if (!read_input_noise(p, f.value[5]))
 			return false;
 	}
 	return true;

@@ -173,12 +173,14 @@ bool hs_read_stylus(hs_scenario_parser *p, const yaml_node_t *node) {
 	return read_stylus_record(p, f.value[ST_RECORD], &s->stylus);
 }
 
-void hs_stylus_drive(hs_world *world, const hs_stylus_script *script, double t) {
+void hs_stylus_drive(hs_world *world, const hs_stylus_script *script, double t, hs_noise *noise) {
 	if (script->count == 0)
 		return;
 	hs_vec3 position;
 	hs_quat rot;
 	bool button;
 	hs_stylus_sample(script, t, &position, &rot, &button);
+	if (noise)
+		hs_noise_stylus(noise, &position, &rot);
 	hs_world_set_stylus(world, position, rot, button); // the keys were validated: finite, unit
 }

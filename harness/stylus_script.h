@@ -7,6 +7,7 @@
 
 #include "error.h"
 #include "handspring.h"
+#include "noise.h"
 
 // One stylus key (keyframes) or sample (recorded file).
 typedef struct hs_stylus_key {
@@ -27,7 +28,9 @@ void hs_stylus_sample(const hs_stylus_script *script, double t, hs_vec3 *positio
 // Reads a recorded stylus file (header t,x,y,z,qw,qx,qy,qz,button) into keys.
 bool hs_stylus_record_load(const char *path, hs_stylus_script *script, hs_error *err);
 
-// Sets the stylus for the frame that ends at time t. Never allocates.
-void hs_stylus_drive(hs_world *world, const hs_stylus_script *script, double t);
+// Sets the stylus for the frame that ends at time t, with tracker noise when `noise` is not NULL
+// (the spring's anchor then follows the noisy reading, as the tracker daemon's does, §5.1).
+// Never allocates.
+void hs_stylus_drive(hs_world *world, const hs_stylus_script *script, double t, hs_noise *noise);
 
 #endif
