@@ -197,8 +197,11 @@ const char *hs_scenario_object_name(const hs_scenario *s, int i) {
 	return s && i >= 0 && i < s->object_count ? s->object_names[i] : NULL;
 }
 
+// Non-finite values the world caught (and froze) so far: a run with any is not to be trusted.
+static long numeric_faults(const hs_scenario *s) { return hs_world_get_counters(s->world).numeric_faults; }
+
 int hs_scenario_expectation_count(const hs_scenario *s) {
-	return s ? s->expect.check_count + (s->step_status != HS_OK) : 0;
+	return s ? s->expect.check_count + (s->step_status != HS_OK) + (numeric_faults(s) > 0) : 0;
 }
 
 bool hs_scenario_step(hs_scenario *s) {
@@ -227,6 +230,15 @@ int hs_scenario_check(const hs_scenario *s, FILE *report) {
 		if (report)
 			fprintf(report, "FAIL  the world failed to step at frame %ld: %s\n", s->failed_frame,
 			        hs_status_string(s->step_status));
+	}
+	long faults = numeric_faults(s);
+	if (faults > 0) {
+		failed++;
+		// TODO(first_fault): once the model has hs_world_first_fault(world, &frame, &object), name them:
+		// "FAIL  numeric fault at frame F in object 'NAME' (N in all): non-finite values, the object frozen"
+		if (report)
+			fprintf(report, "FAIL  the world caught %ld numeric fault%s: non-finite values, the objects frozen\n", faults,
+			        faults == 1 ? "" : "s");
 	}
 	return failed;
 }

@@ -155,8 +155,10 @@ static bool read_spring(hs_scenario_parser *p, const yaml_node_t *node) {
 	return true;
 }
 
+// Checked here, at its own line, against the API's limit (hs_world_create would only say
+// "invalid argument" at the objects).
 bool hs_read_gravity(hs_scenario_parser *p, const yaml_node_t *node, hs_world_def *def) {
-	return hs_yaml_vec3(&p->y, node, "gravity", &def->gravity);
+	return hs_yaml_bounded_vec3(&p->y, node, "gravity", HS_MAX_GRAVITY, "m/s^2", &def->gravity);
 }
 
 enum { IN_GLOVE, IN_WRIST, IN_SEED, IN_COUNT };
@@ -421,7 +423,8 @@ static bool read_shape(hs_scenario_parser *p, const hs_fields *f, const yaml_nod
 	return true;
 }
 
-// The pose, initial motion and density of an object (the shape is read before).
+// The pose, initial motion and density of an object (the shape is read before). Speeds are checked
+// against the API's HS_MAX_SPEED at their own line, not refused later by hs_world_add_object.
 static bool read_object_def(hs_scenario_parser *p, const hs_fields *f, const yaml_node_t *obj, const char *name,
                             hs_object_def *def) {
 	static const char *const names[O_COUNT] = {[O_RPY] = "rpy_deg", [O_QUAT] = "quat"};
@@ -434,11 +437,13 @@ static bool read_object_def(hs_scenario_parser *p, const hs_fields *f, const yam
 		return false;
 	if (f->value[O_QUAT] && !hs_yaml_quat(&p->y, f->value[O_QUAT], "quat", &def->orientation))
 		return false;
-	if (f->value[O_VELOCITY] && !hs_yaml_vec3(&p->y, f->value[O_VELOCITY], "velocity", &def->velocity))
+	if (f->value[O_VELOCITY] &&
+	    !hs_yaml_bounded_vec3(&p->y, f->value[O_VELOCITY], "velocity", HS_MAX_SPEED, "m/s", &def->velocity))
 		return false;
 	if (f->value[O_ANGULAR]) {
 		hs_vec3 w = {0.0, 0.0, 0.0};
-		if (!hs_yaml_vec3(&p->y, f->value[O_ANGULAR], "angular_velocity_deg", &w))
+		if (!hs_yaml_bounded_vec3(&p->y, f->value[O_ANGULAR], "angular_velocity_deg", HS_MAX_SPEED * (180.0 / HS_PI),
+		                          "deg/s", &w))
 			return false;
 		def->angular_velocity = hs_scale(w, HS_PI / 180.0);
 	}

@@ -50,12 +50,42 @@ static bool yaml_failure(const yaml_parser_t *yp, const hs_yaml *y, const char *
 	return hs_set_error(y->err, y->path, line, "invalid YAML: %s", problem);
 }
 
+// A pass over the parser's events, counting how deep collections nest, that stops at the first
+// one beyond the limit: the document is never built for a hostile file. Invalid YAML ends the pass
+// quietly; the loader that follows reports it with its context.
+static bool check_depth(const hs_yaml *y, const char *text, size_t size) {
+	yaml_parser_t yp;
+	if (!yaml_parser_initialize(&yp))
+		return hs_set_error(y->err, y->path, 1, "out of memory");
+	yaml_parser_set_input_string(&yp, (const unsigned char *)text, size);
+	int depth = 0;
+	bool ok = true, end = false;
+	while (ok && !end) {
+		yaml_event_t event;
+		if (!yaml_parser_parse(&yp, &event))
+			break;
+		if (event.type == YAML_SEQUENCE_START_EVENT || event.type == YAML_MAPPING_START_EVENT) {
+			if (++depth > HS_YAML_MAX_DEPTH)
+				ok = hs_set_error(y->err, y->path, (unsigned long)event.start_mark.line + 1,
+				                  "nested deeper than %d levels", HS_YAML_MAX_DEPTH);
+		} else if (event.type == YAML_SEQUENCE_END_EVENT || event.type == YAML_MAPPING_END_EVENT) {
+			depth--;
+		}
+		end = event.type == YAML_STREAM_END_EVENT;
+		yaml_event_delete(&event);
+	}
+	yaml_parser_delete(&yp);
+	return ok;
+}
+
 bool hs_yaml_load(hs_yaml *y, const char *text, size_t size, const char *empty_message) {
+	y->loaded = false;
+	if (!check_depth(y, text, size))
+		return false;
 	yaml_parser_t yp;
 	yaml_document_t extra;
 	memset(&y->doc, 0, sizeof y->doc);
 	memset(&extra, 0, sizeof extra);
-	y->loaded = false;
 	if (!yaml_parser_initialize(&yp))
 		return hs_set_error(y->err, y->path, 1, "out of memory");
 	yaml_parser_set_input_string(&yp, (const unsigned char *)text, size);

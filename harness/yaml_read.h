@@ -19,8 +19,15 @@ typedef struct hs_yaml {
 	bool loaded;
 } hs_yaml;
 
-// Parses `text` (the whole file) into `doc`: exactly one document. False and y->err set on invalid
-// YAML, a second document, or (when it has none) `empty_message` at line 1.
+// Collections nested deeper than this are refused before the document is built: the schema needs
+// 6 (root, objects, an object, vertices, a vertex; or hands, a hand, keys, a key, a posture), and
+// libyaml's scanner takes time quadratic in the depth of flow collections ([[[[...).
+#define HS_YAML_MAX_DEPTH 8
+
+// Parses `text` (the whole file) into `doc`: exactly one document, at most HS_YAML_MAX_DEPTH deep.
+// False and y->err set on invalid YAML, too deep a nesting ("nested deeper than 8 levels" at the
+// collection that goes one level too deep), a second document, or (when it has none)
+// `empty_message` at line 1.
 bool hs_yaml_load(hs_yaml *y, const char *text, size_t size, const char *empty_message);
 // Frees what hs_yaml_load built (also after a failure).
 void hs_yaml_free(hs_yaml *y);

@@ -13,7 +13,9 @@
 #include <fcntl.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
+#include <time.h>
 #include <unistd.h>
 
 #define BAD_DIR "tests/bad"
@@ -264,6 +266,77 @@ static void test_damaged_bytes(void **state) {
 	free(path);
 }
 
+static double seconds_now(void) {
+	struct timespec ts;
+	clock_gettime(CLOCK_MONOTONIC, &ts);
+	return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+// hs_scenario_load fails with `expected` (after the path) within `limit` seconds.
+static void expect_fast_failure(const char *path, const char *expected, double limit) {
+	hs_error err;
+	double t0 = seconds_now();
+	hs_scenario *s = hs_scenario_load(path, &err);
+	double took = seconds_now() - t0;
+	assert_null(s);
+	assert_string_equal(err.message, expected);
+	print_message("%s: refused in %.4f s\n", path, took);
+	assert_true(took < limit);
+}
+
+// 200,000 nested '[' (400 kB with the closing ones): libyaml's scanner is quadratic in flow depth
+// (the loader took over a minute); the depth pass stops at the 9th level.
+static void test_deep_flow_nesting(void **state) {
+	(void)state;
+	char *path = temp_path("deep.yaml");
+	static const char head[] = "description: deep\ndt: 1/60\nduration: 1\nobjects: ";
+	size_t depth = 200000, n = sizeof head - 1;
+	char *text = malloc(n + 2 * depth + 1);
+	assert_non_null(text);
+	memcpy(text, head, n);
+	memset(text + n, '[', depth);
+	memset(text + n + depth, ']', depth);
+	text[n + 2 * depth] = '\n';
+	write_bytes(path, text, n + 2 * depth + 1);
+	free(text);
+	char want[512];
+	snprintf(want, sizeof want, "%s:4: nested deeper than 8 levels", path);
+	expect_fast_failure(path, want, 0.1);
+	remove(path);
+	free(path);
+}
+
+// A recorded file that is /dev/zero (no line breaks, no end) or a FIFO without a writer: an error
+// at once, naming the limit, instead of reading forever or waiting for a writer.
+static void test_endless_records(void **state) {
+	(void)state;
+	char *yaml = temp_path("zero.yaml"), want[512];
+	static const char head[] = "description: endless\ndt: 1/60\nduration: 1\n"
+	                           "objects:\n  - { name: a, shape: cube, size: 0.1, position: [0, 0, 0.05] }\n";
+	char text[1024];
+	snprintf(text, sizeof text, "%shands:\n  - { name: right, record: /dev/zero }\n", head);
+	write_bytes(yaml, text, strlen(text));
+	expect_fast_failure(yaml, "/dev/zero:1: line longer than 16 MiB (the limit for recorded input)", 0.5);
+	snprintf(text, sizeof text, "%sstylus: { record: /dev/zero }\n", head);
+	write_bytes(yaml, text, strlen(text));
+	expect_fast_failure(yaml, "/dev/zero:1: line longer than 16 MiB (the limit for recorded stylus input)", 0.5);
+	char *fifo = temp_path("fifo.csv");
+	remove(fifo);
+	assert_int_equal(mkfifo(fifo, 0600), 0);
+	snprintf(text, sizeof text, "%sstylus: { record: %s }\n", head, fifo);
+	write_bytes(yaml, text, strlen(text));
+	snprintf(want, sizeof want,
+	         "%s:1: empty recorded stylus input: the header t,x,y,z,qw,qx,qy,qz,button is missing", fifo);
+	expect_fast_failure(yaml, want, 0.5);
+	// a scenario file that is a FIFO without a writer reads as empty
+	snprintf(want, sizeof want, "%s:1: empty file: a scenario needs description, dt, duration and objects", fifo);
+	expect_fast_failure(fifo, want, 0.5);
+	remove(fifo);
+	remove(yaml);
+	free(fifo);
+	free(yaml);
+}
+
 // Usage errors: a message and exit status 2; --help: exit status 0.
 static void test_usage(void **state) {
 	(void)state;
@@ -344,6 +417,7 @@ int main(void) {
 	    cmocka_unit_test(test_binary_file),     cmocka_unit_test(test_invalid_utf8),
 	    cmocka_unit_test(test_every_truncation), cmocka_unit_test(test_damaged_bytes),
 	    cmocka_unit_test(test_usage),           cmocka_unit_test(test_missing_catalog),
+	    cmocka_unit_test(test_deep_flow_nesting), cmocka_unit_test(test_endless_records),
 	};
 	size_t nfixed = sizeof fixed / sizeof fixed[0];
 	struct CMUnitTest *tests = calloc(count + nfixed, sizeof *tests);

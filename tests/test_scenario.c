@@ -999,6 +999,33 @@ static void test_input_noise(void **state) {
 	load_error("e.yaml", text, "4: 'seed' must be within [0, 4294967295], got 4294967296");
 }
 
+// A run whose world caught a numeric fault fails: an explicit integrator (semi-implicit Euler,
+// omega dt = 2.8 at 20 frames/s) blows up on a stiff spring; the world freezes the object and counts
+// it, and hs_scenario_check adds a failing line.
+static void test_numeric_fault_fails(void **state) {
+	(void)state;
+	hs_scenario *s = load_text("fault.yaml", "description: blows up\ndt: 1/20\nduration: 60\n"
+	                                         "model: { spring: { integrator: semi_implicit_euler } }\n"
+	                                         "objects:\n  - { name: speck, shape: sphere, size: 0.01, density: 1000,"
+	                                         " position: [0, 0, 0.01] }\n"
+	                                         "stylus:\n  keys:\n    - { t: 0, position: [0.003, 0, 0.01] }\n"
+	                                         "    - { t: 0.1, button: true }\n    - { t: 0.5, position: [0, 0, 0.5] }\n"
+	                                         "expect:\n  - { object: speck, at: 1, attached: pick }\n");
+	run_all(s);
+	assert_true(hs_world_get_counters(hs_scenario_world(s)).numeric_faults > 0);
+	char report[2048] = "";
+	FILE *f = fmemopen(report, sizeof report, "w");
+	assert_non_null(f);
+	int failed = hs_scenario_check(s, f);
+	fclose(f);
+	assert_int_equal(failed, 1);
+	assert_int_equal(hs_scenario_expectation_count(s), 2);
+	assert_non_null(strstr(report, "PASS  line 13: speck attached pick"));
+	assert_non_null(strstr(report, "FAIL  the world caught "));
+	assert_non_null(strstr(report, " numeric faults: non-finite values, the objects frozen\n"));
+	hs_scenario_destroy(s);
+}
+
 // still with `to`: the pose may change after the window
 static void test_still_window(void **state) {
 	(void)state;
@@ -1039,6 +1066,7 @@ int main(void) {
 	    cmocka_unit_test(test_noise_draws),
 	    cmocka_unit_test(test_stylus_noise),
 	    cmocka_unit_test(test_input_noise),
+	    cmocka_unit_test(test_numeric_fault_fails),
 	};
 	return cmocka_run_group_tests_name("scenario", tests, make_temp_dir, remove_temp_dir);
 }
