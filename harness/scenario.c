@@ -112,6 +112,14 @@ static bool read_scenario(hs_scenario_parser *p, const yaml_node_t *root) {
 	return hs_prepare_checks(p, root);
 }
 
+// FNV-1a, 64 bits: a state file and the scenario file it continues must match byte for byte.
+static uint64_t fnv1a(const char *text, size_t size) {
+	uint64_t h = 14695981039346656037ull;
+	for (size_t i = 0; i < size; ++i)
+		h = (h ^ (unsigned char)text[i]) * 1099511628211ull;
+	return h;
+}
+
 // The file's text: read whole, NUL bytes refused (libyaml would stop or complain at one).
 static bool read_text_file(const char *path, char **text, size_t *size, hs_error *err) {
 	if (!hs_read_file(path, text, size, err))
@@ -157,6 +165,8 @@ hs_scenario *hs_scenario_load(const char *path, hs_error *err) {
 		p.s = calloc(1, sizeof *p.s);
 		ok = p.s ? read_scenario(&p, hs_yaml_root(&p.y)) : hs_set_error(err, path, 1, "out of memory");
 	}
+	if (ok)
+		p.s->source_hash = fnv1a(text, size);
 	free(p.sorted);
 	hs_yaml_free(&p.y);
 	free(text);
@@ -198,10 +208,13 @@ const char *hs_scenario_object_name(const hs_scenario *s, int i) {
 }
 
 // Non-finite values the world caught (and froze) so far: a run with any is not to be trusted.
-static long numeric_faults(const hs_scenario *s) { return hs_world_get_counters(s->world).numeric_faults; }
+long hs_scenario_faults(const hs_scenario *s) {
+	return hs_world_get_counters(s->world).numeric_faults + s->fault_offset;
+}
+
 
 int hs_scenario_expectation_count(const hs_scenario *s) {
-	return s ? s->expect.check_count + (s->step_status != HS_OK) + (numeric_faults(s) > 0) : 0;
+	return s ? s->expect.check_count + (s->step_status != HS_OK) + (hs_scenario_faults(s) > 0) : 0;
 }
 
 bool hs_scenario_step(hs_scenario *s) {
@@ -231,7 +244,7 @@ int hs_scenario_check(const hs_scenario *s, FILE *report) {
 			fprintf(report, "FAIL  the world failed to step at frame %ld: %s\n", s->failed_frame,
 			        hs_status_string(s->step_status));
 	}
-	long faults = numeric_faults(s);
+	long faults = hs_scenario_faults(s);
 	if (faults > 0) {
 		failed++;
 		// TODO(first_fault): once the model has hs_world_first_fault(world, &frame, &object), name them:

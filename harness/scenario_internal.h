@@ -32,7 +32,12 @@ struct hs_scenario {
 	hs_expectations expect;
 	hs_status step_status;    // the first failed step (HS_OK: none)
 	long failed_frame;
+	uint64_t source_hash;     // FNV-1a of the scenario file's bytes: a state file names the file it continues
+	long fault_offset;        // numeric faults before a resume that the world's counters do not hold
 };
+
+// Numeric faults the world caught in this run (a resumed run counts those before the save too).
+long hs_scenario_faults(const hs_scenario *s);
 
 // The state of the i-th object (zero when the world refuses).
 hs_object_state hs_scenario_state_of(const hs_scenario *s, int object);

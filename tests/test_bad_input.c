@@ -337,10 +337,58 @@ static void test_endless_records(void **state) {
 	free(yaml);
 }
 
+static char *read_text(const char *path) {
+	FILE *f = fopen(path, "rb");
+	assert_non_null(f);
+	int fd = fileno(f);
+	char *text = read_fd(fd);
+	fclose(f);
+	return text;
+}
+
+// handspring run --save-at F --state-out S, then --resume S --out REST: REST is the header and the
+// full run's rows after frame F, byte for byte, and the report is the full run's. Needs the model's
+// state block: skipped while hs_world_save_state is a placeholder. TODO(state): remove the skip.
+static void test_tool_resume(void **state) {
+	(void)state;
+	const char *scenario = "scenarios/spring/select_among_three.yaml"; // seeded input noise
+	char *full = temp_path("full.csv"), *st = temp_path("state.bin"), *rest = temp_path("rest.csv");
+	const char *save[] = {"run", scenario, "--save-at", "100", "--state-out", st, NULL};
+	tool_result r = run_tool(save);
+	bool placeholder = r.status == 2 && strstr(r.err, "the world cannot save its state") != NULL;
+	free_result(&r);
+	if (placeholder) {
+		print_message("TODO(state): hs_world_save_state is a placeholder: --save-at/--resume not tested\n");
+		free(full), free(st), free(rest);
+		skip();
+	}
+	const char *whole[] = {"run", scenario, "--out", full, NULL}, *resume[] = {"run", scenario, "--resume", st, "--out", rest, NULL};
+	tool_result a = run_tool(whole), b = run_tool(resume);
+	assert_int_equal(a.status, b.status);
+	char *fa = read_text(full), *fb = read_text(rest);
+	const char *rows = strchr(fa, '\n') + 1, *header_end = rows;
+	while (*rows && strtol(rows, NULL, 10) <= 100)
+		rows = strchr(rows, '\n') + 1;
+	size_t header = (size_t)(header_end - fa);
+	assert_memory_equal(fb, fa, header);
+	assert_string_equal(fb + header, rows);
+	// the reports agree but for the lines that name the files
+	char *pa = strstr(a.out, "frames:"), *pb = strstr(b.out, "frames:");
+	assert_non_null(pa);
+	assert_non_null(pb);
+	*strstr(pa, "trajectory:") = '\0';
+	*strstr(pb, "resumed from:") = '\0';
+	assert_string_equal(pa, pb);
+	free(fa), free(fb);
+	free_result(&a), free_result(&b);
+	remove(full), remove(st), remove(rest);
+	free(full), free(st), free(rest);
+}
+
 // Usage errors: a message and exit status 2; --help: exit status 0.
 static void test_usage(void **state) {
 	(void)state;
-	static const char *const cases[][4] = {
+	static const char *const cases[][8] = {
 	    {NULL},
 	    {"frobnicate", NULL},
 	    {"run", NULL},
@@ -349,6 +397,8 @@ static void test_usage(void **state) {
 	    {"run", "a.yaml", "--out", NULL},
 	    {"list", "--dir", NULL},
 	    {"all", "extra", NULL},
+	    {"run", "a.yaml", "--save-at", "3", NULL},
+	    {"run", "a.yaml", "--save-at", "x", "--state-out", "s", NULL},
 	};
 	for (size_t i = 0; i < sizeof cases / sizeof cases[0]; ++i) {
 		tool_result r = run_tool(cases[i]);
@@ -418,6 +468,7 @@ int main(void) {
 	    cmocka_unit_test(test_every_truncation), cmocka_unit_test(test_damaged_bytes),
 	    cmocka_unit_test(test_usage),           cmocka_unit_test(test_missing_catalog),
 	    cmocka_unit_test(test_deep_flow_nesting), cmocka_unit_test(test_endless_records),
+	    cmocka_unit_test(test_tool_resume),
 	};
 	size_t nfixed = sizeof fixed / sizeof fixed[0];
 	struct CMUnitTest *tests = calloc(count + nfixed, sizeof *tests);

@@ -1026,6 +1026,132 @@ static void test_numeric_fault_fails(void **state) {
 	hs_scenario_destroy(s);
 }
 
+// Runs a loaded scenario to the end, rows of frames after `after` (-1: every frame, header first)
+// into a string.
+static char *run_rows(hs_scenario *s, bool header) {
+	char *text = NULL;
+	size_t size = 0;
+	FILE *f = open_memstream(&text, &size);
+	assert_non_null(f);
+	if (header) {
+		hs_trajectory_write_header(f);
+		hs_trajectory_write_frame(f, s);
+	}
+	while (hs_scenario_step(s))
+		hs_trajectory_write_frame(f, s);
+	fclose(f);
+	return text;
+}
+
+static char *report_of(const hs_scenario *s) {
+	char *text = NULL;
+	size_t size = 0;
+	FILE *f = open_memstream(&text, &size);
+	assert_non_null(f);
+	hs_scenario_check(s, f);
+	fclose(f);
+	return text;
+}
+
+// The rows of `trajectory` (header first) whose frame is after `frame`.
+static const char *rows_after(const char *trajectory, long frame) {
+	const char *line = strchr(trajectory, '\n') + 1;
+	while (*line && strtol(line, NULL, 10) <= frame)
+		line = strchr(line, '\n') + 1;
+	return line;
+}
+
+static const char resume_spring[] = "description: resume a noisy spring run\ndt: 1/60\nduration: 2\n"
+                                    "model: { spring: { noise_seed: 5 } }\n"
+                                    "objects:\n  - { name: ball, shape: sphere, size: 0.05, position: [0, 0, 0.05] }\n"
+                                    "  - { name: other, shape: sphere, size: 0.05, position: [1, 0, 0.05] }\n"
+                                    "stylus:\n  keys:\n    - { t: 0, position: [0, 0, 0.05] }\n"
+                                    "    - { t: 0.3, button: true }\n    - { t: 1.0, position: [0, 0, 0.4] }\n"
+                                    "    - { t: 1.5, position: [0.3, 0, 0.4], button: false }\n"
+                                    "expect:\n  - { object: ball, at: 0.5, attached: pick }\n"
+                                    "  - { object: ball, at: end, above: 0 }\n"
+                                    "  - { object: '*', contact_sequence: [0, 2, 0] }\n"
+                                    "  - { object: other, still: true }\n"
+                                    "  - { object: ball, released: throw }\n"
+                                    "  - { object: ball, lands_at: 1.8, tolerance: 1 }\n"
+                                    "  - { object: [ball, other], conserved: momentum, from: 0.1, to: 1.9, tolerance: 1 }\n";
+
+static const char resume_hand[] = "description: resume a noisy hand run\ndt: 1/60\nduration: 1\n"
+                                  "model: { input_noise: { glove_units: 3, wrist_mm: 1, seed: 9 } }\n"
+                                  "objects:\n  - { name: block, shape: cube, size: 0.05, position: [0, 0, 0.025] }\n"
+                                  "hands:\n  - name: right\n    keys:\n"
+                                  "      - { t: 0, grip: [0, 0, 0.12], rpy_deg: [0, 90, 0], posture: { grasp: 0.11 } }\n"
+                                  "      - { t: 0.4, grip: [0, 0, 0.025] }\n      - { t: 0.5, posture: { grasp: 0.045 } }\n"
+                                  "      - { t: 0.9, grip: [0, 0, 0.2] }\n"
+                                  "expect:\n  - { object: block, at: end, above: 0.1 }\n"
+                                  "  - { object: block, contact_sequence: [0, 2] }\n";
+
+// hs_scenario_save at frame F, then hs_scenario_resume in a freshly loaded scenario: the rest of the
+// trajectory is the full run's, byte for byte, and so is the report. Needs the model's state block
+// (hs_world_save_state): skipped while it is a placeholder. TODO(state): remove the skip then.
+static void test_save_and_resume(void **state) {
+	(void)state;
+	const char *texts[] = {resume_spring, resume_hand};
+	for (int t = 0; t < 2; ++t) {
+		hs_scenario *full = load_text("resume.yaml", texts[t]);
+		if (hs_world_state_size(hs_scenario_world(full)) == 0) {
+			hs_scenario_destroy(full);
+			print_message("TODO(state): hs_world_save_state is a placeholder: save/resume not tested\n");
+			skip();
+		}
+		char *whole = run_rows(full, true), *whole_report = report_of(full);
+		for (long at = 0; at <= 60; at += 30) {
+			hs_scenario *first = load_text("resume.yaml", texts[t]);
+			for (long f = 0; f < at; ++f)
+				assert_true(hs_scenario_step(first));
+			FILE *saved = tmpfile();
+			assert_non_null(saved);
+			hs_error err;
+			if (hs_scenario_save(first, saved, &err) != HS_OK)
+				fail_msg("%s", err.message);
+			hs_scenario_destroy(first);
+			rewind(saved);
+			hs_scenario *second = load_text("resume.yaml", texts[t]);
+			if (hs_scenario_resume(second, saved, &err) != HS_OK)
+				fail_msg("%s", err.message);
+			fclose(saved);
+			char *rest = run_rows(second, false), *report = report_of(second);
+			assert_string_equal(rest, rows_after(whole, at));
+			assert_string_equal(report, whole_report);
+			free(rest), free(report);
+			hs_scenario_destroy(second);
+		}
+		free(whole), free(whole_report);
+		hs_scenario_destroy(full);
+	}
+}
+
+// A state file is checked before anything is restored: not a state file, another scenario's.
+static void test_resume_refusals(void **state) {
+	(void)state;
+	hs_scenario *s = load_text("resume.yaml", resume_spring);
+	FILE *f = tmpfile();
+	assert_non_null(f);
+	fputs("frame,t,object\n", f);
+	rewind(f);
+	hs_error err;
+	assert_int_equal(hs_scenario_resume(s, f, &err), HS_ERR_STATE_MISMATCH);
+	assert_string_equal(err.message, "state file: not a handspring state file");
+	fclose(f);
+	hs_scenario *other = load_text("other.yaml", resume_hand);
+	f = tmpfile();
+	assert_non_null(f);
+	if (hs_scenario_save(other, f, &err) == HS_OK) { // needs the model's state block (TODO(state))
+		rewind(f);
+		assert_int_equal(hs_scenario_resume(s, f, &err), HS_ERR_STATE_MISMATCH);
+		assert_string_equal(err.message, "state file: saved from scenario 'other', not 'resume'");
+	}
+	fclose(f);
+	assert_true(hs_scenario_step(s)); // the scenario is unchanged and runs
+	hs_scenario_destroy(other);
+	hs_scenario_destroy(s);
+}
+
 // still with `to`: the pose may change after the window
 static void test_still_window(void **state) {
 	(void)state;
@@ -1067,6 +1193,8 @@ int main(void) {
 	    cmocka_unit_test(test_stylus_noise),
 	    cmocka_unit_test(test_input_noise),
 	    cmocka_unit_test(test_numeric_fault_fails),
+	    cmocka_unit_test(test_save_and_resume),
+	    cmocka_unit_test(test_resume_refusals),
 	};
 	return cmocka_run_group_tests_name("scenario", tests, make_temp_dir, remove_temp_dir);
 }
