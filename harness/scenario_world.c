@@ -342,19 +342,95 @@ static bool read_polyhedron(hs_scenario_parser *p, const hs_fields *f, const yam
 	return ok;
 }
 
-typedef enum shape_name { SH_CUBE, SH_BOX, SH_PYRAMID, SH_L_BLOCK, SH_ELLIPSOID, SH_SPHERE, SH_POLYHEDRON, SH_COUNT } shape_name;
-static const char *const shape_names[SH_COUNT] = {"cube", "box", "pyramid", "l_block", "ellipsoid", "sphere", "polyhedron"};
+// The built-in shapes: one row each, with how many numbers `size` takes and how they are made.
+typedef hs_shape *(*shape_maker)(const double v[3], double thickness, hs_status *status);
 
-static bool read_shape(hs_scenario_parser *p, const hs_fields *f, const yaml_node_t *obj, const char *name, hs_shape **shape) {
-	const yaml_node_t *kind = f->value[O_SHAPE], *size = f->value[O_SIZE];
+static hs_shape *make_cube(const double v[3], double t, hs_status *st) {
+	(void)t;
+	return hs_shape_box(hs_v3(v[0], v[0], v[0]), st);
+}
+static hs_shape *make_box(const double v[3], double t, hs_status *st) {
+	(void)t;
+	return hs_shape_box(hs_v3(v[0], v[1], v[2]), st);
+}
+static hs_shape *make_pyramid(const double v[3], double t, hs_status *st) {
+	(void)t;
+	return hs_shape_pyramid(v[0], v[1], st);
+}
+static hs_shape *make_l_block(const double v[3], double t, hs_status *st) {
+	return hs_shape_l_block(hs_v3(v[0], v[1], v[2]), t, st);
+}
+static hs_shape *make_ellipsoid(const double v[3], double t, hs_status *st) {
+	(void)t;
+	return hs_shape_ellipsoid(hs_v3(v[0], v[1], v[2]), st);
+}
+static hs_shape *make_sphere(const double v[3], double t, hs_status *st) {
+	(void)t;
+	return hs_shape_sphere(v[0], st);
+}
+
+enum { SH_L_BLOCK = 3, SH_POLYHEDRON = 6, SH_COUNT = 7 };
+static const struct {
+	const char *name;
+	int sizes;        // numbers in `size`: 1 a scalar, else a list
+	const char *what; // what `size` holds, for messages
+	shape_maker make;
+} shapes[SH_COUNT] = {
+    {"cube", 1, " (the edge)", make_cube},
+    {"box", 3, " [x, y, z]", make_box},
+    {"pyramid", 2, " [base, height]", make_pyramid},
+    {"l_block", 3, " [x, y, z]", make_l_block},
+    {"ellipsoid", 3, " [a, b, c] (semi-axes)", make_ellipsoid},
+    {"sphere", 1, " (the radius)", make_sphere},
+    {"polyhedron", 0, "", NULL}, // vertices and faces instead: read_polyhedron
+};
+
+// `size` (and an l_block's `thickness`) of a built-in shape.
+static bool read_size(hs_scenario_parser *p, const hs_fields *f, const yaml_node_t *obj, const char *name, int sh,
+                      double v[3], double *thickness) {
+	const yaml_node_t *size = f->value[O_SIZE];
+	if (!size)
+		return hs_yaml_fail(&p->y, obj, "object '%s' is missing 'size'", name);
+	const yaml_node_t *e[3] = {size, size, size};
+	int n = shapes[sh].sizes;
+	if (n == 1) {
+		if (!hs_yaml_is_scalar(size))
+			return hs_yaml_fail(&p->y, size, "'size' of a %s must be a number%s, got %s", shapes[sh].name,
+			                    shapes[sh].what, hs_yaml_got(size).text);
+		if (!hs_yaml_number(&p->y, size, "size", &v[0]))
+			return false;
+	} else if (!hs_yaml_numbers(&p->y, size, "size", n, shapes[sh].what, v, e)) {
+		return false;
+	}
+	for (int i = 0; i < n; ++i)
+		if (!check_length(p, e[i], "size", v[i]))
+			return false;
+	if (sh != SH_L_BLOCK)
+		return true;
+	const yaml_node_t *t = f->value[O_THICKNESS];
+	if (!t)
+		return hs_yaml_fail(&p->y, obj, "object '%s' is missing 'thickness'", name);
+	if (!hs_yaml_number(&p->y, t, "thickness", thickness))
+		return false;
+	double limit = fmin(v[0], v[2]); // foot height and upright width stay inside the bounding box
+	if (!(*thickness > 0.0 && *thickness < limit))
+		return hs_yaml_fail(&p->y, t, "'thickness' must be within (0, %g) m (less than size x and z), got %s", limit,
+		                    hs_yaml_show(t).text);
+	return true;
+}
+
+static bool read_shape(hs_scenario_parser *p, const hs_fields *f, const yaml_node_t *obj, const char *name,
+                       hs_shape **shape) {
+	const yaml_node_t *kind = f->value[O_SHAPE];
 	if (!kind)
 		return hs_yaml_fail(&p->y, obj, "object '%s' is missing 'shape'", name);
 	int sh = 0;
-	while (sh < SH_COUNT && !hs_yaml_scalar_is(kind, shape_names[sh]))
+	while (sh < SH_COUNT && !hs_yaml_scalar_is(kind, shapes[sh].name))
 		++sh;
 	if (sh == SH_COUNT)
-		return hs_yaml_fail(&p->y, kind, "unknown shape %s (expected cube, box, pyramid, l_block, ellipsoid, sphere or polyhedron)",
-		            hs_yaml_got(kind).text);
+		return hs_yaml_fail(&p->y, kind,
+		                    "unknown shape %s (expected cube, box, pyramid, l_block, ellipsoid, sphere or polyhedron)",
+		                    hs_yaml_got(kind).text);
 	if (sh != SH_POLYHEDRON && f->key[O_VERTICES])
 		return hs_yaml_fail(&p->y, f->key[O_VERTICES], "'vertices' is only for shape polyhedron");
 	if (sh != SH_POLYHEDRON && f->key[O_FACES])
@@ -366,60 +442,13 @@ static bool read_shape(hs_scenario_parser *p, const hs_fields *f, const yaml_nod
 			return hs_yaml_fail(&p->y, f->key[O_SIZE], "a polyhedron takes 'vertices' and 'faces', not 'size'");
 		return read_polyhedron(p, f, obj, name, shape);
 	}
-	if (!size)
-		return hs_yaml_fail(&p->y, obj, "object '%s' is missing 'size'", name);
 	double v[3] = {0.0, 0.0, 0.0}, thickness = 0.0;
-	const yaml_node_t *e[3] = {size, size, size};
-	int n = sh == SH_CUBE || sh == SH_SPHERE ? 1 : sh == SH_PYRAMID ? 2 : 3;
-	static const char *const what[SH_COUNT] = {" (the edge)", " [x, y, z]", " [base, height]", " [x, y, z]",
-	                                           " [a, b, c] (semi-axes)", " (the radius)", ""};
-	if (n == 1) {
-		if (!hs_yaml_is_scalar(size))
-			return hs_yaml_fail(&p->y, size, "'size' of a %s must be a number%s, got %s", shape_names[sh], what[sh], hs_yaml_got(size).text);
-		if (!hs_yaml_number(&p->y, size, "size", &v[0]))
-			return false;
-	} else if (!hs_yaml_numbers(&p->y, size, "size", n, what[sh], v, e)) {
+	if (!read_size(p, f, obj, name, sh, v, &thickness))
 		return false;
-	}
-	for (int i = 0; i < n; ++i)
-		if (!check_length(p, e[i], "size", v[i]))
-			return false;
-	if (sh == SH_L_BLOCK) {
-		const yaml_node_t *t = f->value[O_THICKNESS];
-		if (!t)
-			return hs_yaml_fail(&p->y, obj, "object '%s' is missing 'thickness'", name);
-		if (!hs_yaml_number(&p->y, t, "thickness", &thickness))
-			return false;
-		double limit = fmin(v[0], v[2]); // foot height and upright width stay inside the bounding box
-		if (!(thickness > 0.0 && thickness < limit))
-			return hs_yaml_fail(&p->y, t, "'thickness' must be within (0, %g) m (less than size x and z), got %s", limit, hs_yaml_show(t).text);
-	}
 	hs_status status = HS_OK;
-	switch ((shape_name)sh) {
-	case SH_CUBE:
-		*shape = hs_shape_box(hs_v3(v[0], v[0], v[0]), &status);
-		break;
-	case SH_BOX:
-		*shape = hs_shape_box(hs_v3(v[0], v[1], v[2]), &status);
-		break;
-	case SH_PYRAMID:
-		*shape = hs_shape_pyramid(v[0], v[1], &status);
-		break;
-	case SH_L_BLOCK:
-		*shape = hs_shape_l_block(hs_v3(v[0], v[1], v[2]), thickness, &status);
-		break;
-	case SH_ELLIPSOID:
-		*shape = hs_shape_ellipsoid(hs_v3(v[0], v[1], v[2]), &status);
-		break;
-	case SH_SPHERE:
-		*shape = hs_shape_sphere(v[0], &status);
-		break;
-	default:
-		*shape = NULL;
-		break;
-	}
+	*shape = shapes[sh].make(v, thickness, &status);
 	if (!*shape)
-		return hs_yaml_fail(&p->y, obj, "cannot make the %s: %s", shape_names[sh], hs_status_string(status));
+		return hs_yaml_fail(&p->y, obj, "cannot make the %s: %s", shapes[sh].name, hs_status_string(status));
 	return true;
 }
 
