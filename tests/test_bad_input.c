@@ -5,6 +5,7 @@
 #include <stddef.h>
 #include <stdint.h>
 #include <setjmp.h>
+#include <signal.h>
 #include <cmocka.h>
 
 #include "test_util.h"
@@ -328,6 +329,39 @@ static void test_endless_records(void **state) {
 	snprintf(want, sizeof want,
 	         "%s:1: empty recorded stylus input: the header t,x,y,z,qw,qx,qy,qz,button is missing", fifo);
 	expect_fast_failure(yaml, want, 0.5);
+	// a FIFO that never ends: the header, then comment lines without end: refused at 256 MiB. The
+	// writer holds the FIFO open read-write (so it is connected before the loader opens it, and never
+	// sees EPIPE): it is killed when the loader is done.
+	int fd = open(fifo, O_RDWR);
+	assert_true(fd >= 0);
+	pid_t writer = fork();
+	assert_true(writer >= 0);
+	if (writer == 0) {
+		static char line[1024];
+		memset(line, '#', sizeof line - 1);
+		line[sizeof line - 1] = '\n';
+		static const char header[] = "t,x,y,z,qw,qx,qy,qz,button\n";
+		if (write(fd, header, sizeof header - 1) < 0)
+			_exit(1);
+		while (write(fd, line, sizeof line) > 0) {
+		}
+		_exit(0);
+	}
+	close(fd);
+	hs_error err;
+	double t0 = seconds_now();
+	hs_scenario *s = hs_scenario_load(yaml, &err);
+	double took = seconds_now() - t0;
+	kill(writer, SIGKILL); // first: a failed assertion below must not leave it writing forever
+	int wstatus;
+	assert_int_equal(waitpid(writer, &wstatus, 0), writer);
+	assert_null(s);
+	print_message("%s (a FIFO without end): refused in %.4f s\n", fifo, took);
+	static const char tail[] = ": file larger than 256 MiB (the limit for recorded stylus input)";
+	size_t n = strlen(fifo), m = strlen(err.message);
+	assert_memory_equal(err.message, fifo, n); // the line depends on how the pipe delivers: not checked
+	assert_true(m > sizeof tail && strcmp(err.message + m - (sizeof tail - 1), tail) == 0);
+	assert_true(took < 5.0);
 	// a scenario file that is a FIFO without a writer reads as empty
 	snprintf(want, sizeof want, "%s:1: empty file: a scenario needs description, dt, duration and objects", fifo);
 	expect_fast_failure(fifo, want, 0.5);
