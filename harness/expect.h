@@ -9,7 +9,6 @@
 
 #include "handspring.h"
 #include "hs_harness.h"
-#include "yaml_read.h"
 
 enum {
 	HS_SEQ_CAPACITY = 64, // collapsed contact states recorded per check

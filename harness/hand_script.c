@@ -83,7 +83,8 @@ bool hs_record_load(const char *path, hs_hand_script *script, hs_error *err) {
 static const char *const posture_names[] = {"open", "fist", "pinch", "point", "grasp"};
 
 // posture: a word (open, fist, pinch, point) or a one-key mapping { fist: 0.5 } / { grasp: 0.05 }
-static bool read_posture(hs_scenario_parser *p, const yaml_node_t *node, const hs_hand_def *def, double out[HS_GLOVE_SENSORS]) {
+static bool read_posture(hs_scenario_parser *p, const yaml_node_t *node, const hs_hand_def *def,
+                         double out[HS_GLOVE_SENSORS]) {
 	int which = -1;
 	double amount = 1.0;
 	const yaml_node_t *amount_node = node;
@@ -103,13 +104,16 @@ static bool read_posture(hs_scenario_parser *p, const yaml_node_t *node, const h
 			return false;
 	}
 	if (which < 0)
-		return hs_yaml_fail(&p->y, node, "'posture' must be open, fist, pinch, point or a mapping like { grasp: 0.05 }, got %s",
-		            hs_yaml_got(node).text);
+		return hs_yaml_fail(&p->y, node,
+		                    "'posture' must be open, fist, pinch, point or a mapping like { grasp: 0.05 }, got %s",
+		                    hs_yaml_got(node).text);
 	uint8_t sensors[HS_GLOVE_SENSORS];
 	if (hs_hand_posture(def, (hs_posture)which, amount, sensors) != HS_OK)
-		return hs_yaml_fail(&p->y, amount_node, which == HS_POSTURE_GRASP ? "posture 'grasp' width must be within [0.01, 0.12] m, got %s"
-		                                                      : "posture '%s' amount must be within [0, 1], got %s",
-		            which == HS_POSTURE_GRASP ? hs_yaml_show(amount_node).text : posture_names[which], hs_yaml_show(amount_node).text);
+		return hs_yaml_fail(&p->y, amount_node,
+		                    which == HS_POSTURE_GRASP ? "posture 'grasp' width must be within [0.01, 0.12] m, got %s"
+		                                              : "posture '%s' amount must be within [0, 1], got %s",
+		                    which == HS_POSTURE_GRASP ? hs_yaml_show(amount_node).text : posture_names[which],
+		                    hs_yaml_show(amount_node).text);
 	for (int i = 0; i < HS_GLOVE_SENSORS; ++i)
 		out[i] = sensors[i];
 	return true;
@@ -117,11 +121,13 @@ static bool read_posture(hs_scenario_parser *p, const yaml_node_t *node, const h
 
 static bool read_sensor_list(hs_scenario_parser *p, const yaml_node_t *node, double out[HS_GLOVE_SENSORS]) {
 	if (node->type != YAML_SEQUENCE_NODE)
-		return hs_yaml_fail(&p->y, node, "'sensors' must be a list of 18 integers from 0 to 255, got %s", hs_yaml_got(node).text);
+		return hs_yaml_fail(&p->y, node, "'sensors' must be a list of 18 integers from 0 to 255, got %s",
+		                    hs_yaml_got(node).text);
 	if (hs_yaml_length(node) != HS_GLOVE_SENSORS)
-		return hs_yaml_fail(&p->y, node, "'sensors' must be a list of 18 integers from 0 to 255, got %ld", hs_yaml_length(node));
+		return hs_yaml_fail(&p->y, node, "'sensors' must be a list of 18 integers from 0 to 255, got %ld",
+		                    hs_yaml_length(node));
 	for (int i = 0; i < HS_GLOVE_SENSORS; ++i) {
-		long v;
+		int64_t v;
 		if (!hs_yaml_integer(&p->y, hs_yaml_item(&p->y, node, i), "sensors", 0, 255, &v))
 			return false;
 		out[i] = (double)v;
@@ -139,21 +145,23 @@ static bool read_angle_list(hs_scenario_parser *p, const yaml_node_t *node, doub
 		bool wrist = i == HS_SENSOR_WRIST_PITCH || i == HS_SENSOR_WRIST_YAW;
 		double lo = wrist ? -64.0 : 0.0, hi = wrist ? 63.5 : 127.5; // what 8 bits at 0.5 deg can say
 		if (!(deg[i] >= lo && deg[i] <= hi))
-			return hs_yaml_fail(&p->y, elements[i], "'angles_deg' entry %d must be within [%g, %g] deg, got %s", i + 1, lo, hi,
-			            hs_yaml_show(elements[i]).text);
+			return hs_yaml_fail(&p->y, elements[i], "'angles_deg' entry %d must be within [%g, %g] deg, got %s", i + 1,
+			                    lo, hi, hs_yaml_show(elements[i]).text);
 		out[i] = deg[i] / 0.5 + (wrist ? 128.0 : 0.0);
 	}
 	return true;
 }
 
 enum { K_T, K_WRIST, K_GRIP, K_RPY, K_QUAT, K_POSTURE, K_SENSORS, K_ANGLES, K_COUNT };
-static const char *const key_keys[K_COUNT] = {"t", "wrist", "grip", "rpy_deg", "quat", "posture", "sensors", "angles_deg"};
+static const char *const key_keys[K_COUNT] = {"t",    "wrist",   "grip",    "rpy_deg",
+                                              "quat", "posture", "sensors", "angles_deg"};
 
-static bool read_key(hs_scenario_parser *p, const yaml_node_t *node, const hs_hand_def *def, const hs_hand_key *previous,
-                     hs_hand_key *key) {
+static bool read_key(hs_scenario_parser *p, const yaml_node_t *node, const hs_hand_def *def,
+                     const hs_hand_key *previous, hs_hand_key *key) {
 	if (node->type != YAML_MAPPING_NODE)
-		return hs_yaml_fail(&p->y, node, "a hand key must be a mapping like { t: 0, wrist: [x, y, z], posture: open }, got %s",
-		            hs_yaml_got(node).text);
+		return hs_yaml_fail(&p->y, node,
+		                    "a hand key must be a mapping like { t: 0, wrist: [x, y, z], posture: open }, got %s",
+		                    hs_yaml_got(node).text);
 	hs_fields f;
 	if (!hs_yaml_mapping(&p->y, node, key_keys, K_COUNT, "hand key", &f))
 		return false;
@@ -162,8 +170,8 @@ static bool read_key(hs_scenario_parser *p, const yaml_node_t *node, const hs_ha
 	if (!hs_yaml_time(&p->y, f.value[K_T], "t", p->s->duration, &key->t))
 		return false;
 	if (previous && !(key->t > previous->t))
-		return hs_yaml_fail(&p->y, f.value[K_T], "hand keys must go forward in time: t = %s after t = %g", hs_yaml_show(f.value[K_T]).text,
-		            previous->t);
+		return hs_yaml_fail(&p->y, f.value[K_T], "hand keys must go forward in time: t = %s after t = %g",
+		                    hs_yaml_show(f.value[K_T]).text, previous->t);
 	static const int exclusive[][2] = {
 	    {K_WRIST, K_GRIP}, {K_RPY, K_QUAT}, {K_POSTURE, K_SENSORS}, {K_POSTURE, K_ANGLES}, {K_SENSORS, K_ANGLES}};
 	for (size_t i = 0; i < sizeof exclusive / sizeof exclusive[0]; ++i)
@@ -283,7 +291,8 @@ static bool read_hand(hs_scenario_parser *p, const yaml_node_t *node, int index)
 	if (!hs_yaml_exclusive(&p->y, &f, hand_keys, H_KEYS, H_RECORD, "give one"))
 		return false;
 	hs_hand_script *script = &hands->scripts[index];
-	if (f.value[H_KEYS] ? !read_keys(p, f.value[H_KEYS], &def, script) : !read_hand_record(p, f.value[H_RECORD], script))
+	if (f.value[H_KEYS] ? !read_keys(p, f.value[H_KEYS], &def, script)
+	                    : !read_hand_record(p, f.value[H_RECORD], script))
 		return false;
 	hs_status status = HS_OK;
 	hands->ids[index] = hs_world_add_hand(p->s->world, &def, &status);

@@ -58,13 +58,14 @@ bool hs_read_duration(hs_scenario_parser *p, const yaml_node_t *node) {
 		return hs_yaml_fail(&p->y, node, "'duration' must be > 0 s, got %s", hs_yaml_show(node).text);
 	double frames = d / p->s->dt;
 	if (!(frames < (double)MAX_FRAMES + 0.5))
-		return hs_yaml_fail(&p->y, node, frames < 1e15 ? "'duration' is %.0f frames of dt = %g s; at most %ld are allowed"
-		                                   : "'duration' is %.6g frames of dt = %g s; at most %ld are allowed",
-		            frames, p->s->dt,
-		            MAX_FRAMES);
+		return hs_yaml_fail(&p->y, node,
+		                    frames < 1e15 ? "'duration' is %.0f frames of dt = %g s; at most %ld are allowed"
+		                                  : "'duration' is %.6g frames of dt = %g s; at most %ld are allowed",
+		                    frames, p->s->dt, MAX_FRAMES);
 	long n = llround(frames);
 	if (n < 1)
-		return hs_yaml_fail(&p->y, node, "'duration' must be at least one frame (dt = %g s), got %s", p->s->dt, hs_yaml_show(node).text);
+		return hs_yaml_fail(&p->y, node, "'duration' must be at least one frame (dt = %g s), got %s", p->s->dt,
+		                    hs_yaml_show(node).text);
 	p->s->duration = d;
 	p->s->frames = n;
 	return true;
@@ -109,8 +110,9 @@ static bool read_spring(hs_scenario_parser *p, const yaml_node_t *node) {
 		while (i < 4 && !hs_yaml_scalar_is(v, integrator_names[i]))
 			++i;
 		if (i == 4)
-			return hs_yaml_fail(&p->y, v, "'integrator' must be exact, implicit_euler, semi_implicit_euler or rk4, got %s",
-			            hs_yaml_got(v).text);
+			return hs_yaml_fail(&p->y, v,
+			                    "'integrator' must be exact, implicit_euler, semi_implicit_euler or rk4, got %s",
+			                    hs_yaml_got(v).text);
 		d->integrator = (hs_integrator)i; // the names are in the enum's order
 	}
 	if (f.value[SP_FRICTION]) {
@@ -122,8 +124,9 @@ static bool read_spring(hs_scenario_parser *p, const yaml_node_t *node) {
 		if (!read_coefficient(p, f.value[SP_SLIDING], "sliding_friction", -1.0, &d->friction_sliding))
 			return false;
 		if (d->friction_sliding > d->friction_static)
-			return hs_yaml_fail(&p->y, f.value[SP_SLIDING], "'sliding_friction' must not exceed 'friction' (%g), got %s",
-			            d->friction_static, hs_yaml_show(f.value[SP_SLIDING]).text);
+			return hs_yaml_fail(&p->y, f.value[SP_SLIDING],
+			                    "'sliding_friction' must not exceed 'friction' (%g), got %s", d->friction_static,
+			                    hs_yaml_show(f.value[SP_SLIDING]).text);
 	}
 	if (f.value[SP_RESTITUTION] && !read_coefficient(p, f.value[SP_RESTITUTION], "restitution", 1.0, &d->restitution))
 		return false;
@@ -134,11 +137,14 @@ static bool read_spring(hs_scenario_parser *p, const yaml_node_t *node) {
 			return false;
 		for (int i = 0; i < 4; ++i)
 			if (!(fabs(w[i]) <= MAX_LENGTH))
-				return hs_yaml_fail(&p->y, e[i], "'walls' must be within [-%g, %g] m, got %s", MAX_LENGTH, MAX_LENGTH, hs_yaml_show(e[i]).text);
+				return hs_yaml_fail(&p->y, e[i], "'walls' must be within [-%g, %g] m, got %s", MAX_LENGTH, MAX_LENGTH,
+				                    hs_yaml_show(e[i]).text);
 		if (!(w[0] < w[1]))
-			return hs_yaml_fail(&p->y, e[1], "'walls' x_max must be greater than x_min (%g), got %s", w[0], hs_yaml_show(e[1]).text);
+			return hs_yaml_fail(&p->y, e[1], "'walls' x_max must be greater than x_min (%g), got %s", w[0],
+			                    hs_yaml_show(e[1]).text);
 		if (!(w[2] < w[3]))
-			return hs_yaml_fail(&p->y, e[3], "'walls' y_max must be greater than y_min (%g), got %s", w[2], hs_yaml_show(e[3]).text);
+			return hs_yaml_fail(&p->y, e[3], "'walls' y_max must be greater than y_min (%g), got %s", w[2],
+			                    hs_yaml_show(e[3]).text);
 		d->walls.enabled = true;
 		d->walls.x_min = w[0];
 		d->walls.x_max = w[1];
@@ -207,7 +213,8 @@ bool hs_read_model(hs_scenario_parser *p, const yaml_node_t *node, hs_world_def 
 		if (!hs_yaml_number(&p->y, f.value[0], names[0], &def->grasp_threshold_deg))
 			return false;
 		if (!(def->grasp_threshold_deg > 0.0 && def->grasp_threshold_deg <= 180.0))
-			return hs_yaml_fail(&p->y, f.value[0], "'grasp_threshold_deg' must be within (0, 180] deg, got %s", hs_yaml_show(f.value[0]).text);
+			return hs_yaml_fail(&p->y, f.value[0], "'grasp_threshold_deg' must be within (0, 180] deg, got %s",
+			                    hs_yaml_show(f.value[0]).text);
 	}
 	if (f.value[1]) {
 		if (hs_yaml_scalar_is(f.value[1], "paper"))
@@ -215,13 +222,15 @@ bool hs_read_model(hs_scenario_parser *p, const yaml_node_t *node, hs_world_def 
 		else if (hs_yaml_scalar_is(f.value[1], "support"))
 			def->stacking = HS_STACKING_SUPPORT;
 		else
-			return hs_yaml_fail(&p->y, f.value[1], "'stacking' must be paper or support, got %s", hs_yaml_got(f.value[1]).text);
+			return hs_yaml_fail(&p->y, f.value[1], "'stacking' must be paper or support, got %s",
+			                    hs_yaml_got(f.value[1]).text);
 	}
 	if (f.value[2]) {
 		if (!hs_yaml_number(&p->y, f.value[2], names[2], &def->floor_tolerance))
 			return false;
 		if (!(def->floor_tolerance > 0.0 && def->floor_tolerance <= 0.01))
-			return hs_yaml_fail(&p->y, f.value[2], "'floor_tolerance' must be within (0, 0.01] m, got %s", hs_yaml_show(f.value[2]).text);
+			return hs_yaml_fail(&p->y, f.value[2], "'floor_tolerance' must be within (0, 0.01] m, got %s",
+			                    hs_yaml_show(f.value[2]).text);
 	}
 	if (f.value[3] && !hs_yaml_bool(&p->y, f.value[3], names[3], &def->skip_work))
 		return false;
@@ -276,9 +285,11 @@ static bool read_object_name(hs_scenario_parser *p, const yaml_node_t *node, lon
 		return hs_yaml_fail(&p->y, v, "'name' must be a text, got %s", hs_yaml_got(v).text);
 	for (size_t i = 0; i < v->data.scalar.length; ++i)
 		if (!is_name_char(hs_yaml_scalar(v)[i]))
-			return hs_yaml_fail(&p->y, v, "object name '%s' may only use letters, digits, '_' and '-'", hs_yaml_show(v).text);
+			return hs_yaml_fail(&p->y, v, "object name '%s' may only use letters, digits, '_' and '-'",
+			                    hs_yaml_show(v).text);
 	if (v->data.scalar.length > HS_MAX_NAME)
-		return hs_yaml_fail(&p->y, v, "object name '%s' is longer than %d characters", hs_yaml_show(v).text, HS_MAX_NAME);
+		return hs_yaml_fail(&p->y, v, "object name '%s' is longer than %d characters", hs_yaml_show(v).text,
+		                    HS_MAX_NAME);
 	return hs_yaml_text(&p->y, v, "name", out);
 }
 
@@ -288,7 +299,8 @@ static int compare_names(const void *a, const void *b) {
 	return c ? c : (x->index > y->index) - (x->index < y->index);
 }
 
-static bool read_polyhedron(hs_scenario_parser *p, const hs_fields *f, const yaml_node_t *obj, const char *name, hs_shape **shape) {
+static bool read_polyhedron(hs_scenario_parser *p, const hs_fields *f, const yaml_node_t *obj, const char *name,
+                            hs_shape **shape) {
 	const yaml_node_t *vn = f->value[O_VERTICES], *fn = f->value[O_FACES];
 	if (!vn)
 		return hs_yaml_fail(&p->y, obj, "object '%s' is missing 'vertices'", name);
@@ -305,8 +317,9 @@ static bool read_polyhedron(hs_scenario_parser *p, const hs_fields *f, const yam
 	for (int i = 0; i < fcount; ++i) {
 		const yaml_node_t *face = hs_yaml_item(&p->y, fn, i);
 		if (face->type != YAML_SEQUENCE_NODE || hs_yaml_length(face) < 3 || hs_yaml_length(face) > MAX_FACE_SIZE)
-			return hs_yaml_fail(&p->y, face, "each face must be a list of 3 to %d vertex indices, got %s", MAX_FACE_SIZE,
-			            face->type == YAML_SEQUENCE_NODE ? "another count" : hs_yaml_got(face).text);
+			return hs_yaml_fail(&p->y, face, "each face must be a list of 3 to %d vertex indices, got %s",
+			                    MAX_FACE_SIZE,
+			                    face->type == YAML_SEQUENCE_NODE ? "another count" : hs_yaml_got(face).text);
 		total += hs_yaml_length(face);
 	}
 	hs_vec3 *vertices = malloc((size_t)vcount * sizeof *vertices);
@@ -508,7 +521,8 @@ static bool read_object(hs_scenario_parser *p, const yaml_node_t *obj, int index
 	if (ok) {
 		s->ids[index] = hs_world_add_object(s->world, &def, &status);
 		if (s->ids[index].index1 == 0)
-			ok = hs_yaml_fail(&p->y, obj, "object '%s': cannot add it to the world: %s", name, hs_status_string(status));
+			ok =
+			    hs_yaml_fail(&p->y, obj, "object '%s': cannot add it to the world: %s", name, hs_status_string(status));
 	}
 	return ok;
 }
@@ -537,8 +551,8 @@ bool hs_read_objects(hs_scenario_parser *p, const yaml_node_t *node, hs_world_de
 	qsort(sorted, (size_t)n, sizeof *sorted, compare_names);
 	int dup = -1, first = -1;
 	for (int i = 1; i < s->object_count; ++i)
-		if (strcmp(sorted[i].name, sorted[i - 1].name) == 0 && (i < 2 || strcmp(sorted[i - 1].name, sorted[i - 2].name) != 0) &&
-		    (dup < 0 || sorted[i].index < dup)) {
+		if (strcmp(sorted[i].name, sorted[i - 1].name) == 0 &&
+		    (i < 2 || strcmp(sorted[i - 1].name, sorted[i - 2].name) != 0) && (dup < 0 || sorted[i].index < dup)) {
 			dup = sorted[i].index;
 			first = sorted[i - 1].index;
 		}
@@ -546,8 +560,8 @@ bool hs_read_objects(hs_scenario_parser *p, const yaml_node_t *node, hs_world_de
 		hs_fields f;
 		const yaml_node_t *obj = hs_yaml_item(&p->y, node, dup), *first_obj = hs_yaml_item(&p->y, node, first);
 		hs_yaml_mapping(&p->y, obj, object_keys, O_COUNT, "object", &f); // succeeded in pass 1
-		return hs_yaml_fail(&p->y, f.value[O_NAME], "duplicate object name '%s' (first at line %lu)", s->object_names[dup],
-		            hs_yaml_line(first_obj));
+		return hs_yaml_fail(&p->y, f.value[O_NAME], "duplicate object name '%s' (first at line %lu)",
+		                    s->object_names[dup], hs_yaml_line(first_obj));
 	}
 	def.max_objects = s->object_count;
 	def.max_shapes = s->object_count;

@@ -57,7 +57,8 @@ long hs_yaml_length(const yaml_node_t *sequence);
 const yaml_node_t *hs_yaml_item(const hs_yaml *y, const yaml_node_t *sequence, long i);
 
 bool hs_yaml_number(const hs_yaml *y, const yaml_node_t *node, const char *key, double *out);
-bool hs_yaml_integer(const hs_yaml *y, const yaml_node_t *node, const char *key, int64_t lo, int64_t hi, int64_t *out);
+bool hs_yaml_integer(const hs_yaml *y, const yaml_node_t *node, const char *key, int64_t lo, int64_t hi,
+                     int64_t *out);
 bool hs_yaml_bool(const hs_yaml *y, const yaml_node_t *node, const char *key, bool *out);
 // A one-line text; `out` is a new string.
 bool hs_yaml_text(const hs_yaml *y, const yaml_node_t *node, const char *key, char **out);
