@@ -45,10 +45,12 @@ long hs_scenario_frame_count(const hs_scenario *scenario);
 bool hs_scenario_step(hs_scenario *scenario);
 
 /// Evaluates every `expect` clause; writes one line per clause (PASS/FAIL and the measured
-/// value) to `report` when not NULL. Returns the number of failed clauses.
+/// value) to `report` when not NULL, and a FAIL line when the world failed to step or caught a
+/// numeric fault. Returns the number of failed lines.
 int hs_scenario_check(const hs_scenario *scenario, FILE *report);
 /// Lines hs_scenario_check writes: one per clause and object it names ("*" names every object),
-/// plus one when the world failed to step.
+/// plus one when the world failed to step, plus one when it caught a numeric fault (a non-finite
+/// value: the run fails, whatever its clauses say).
 int hs_scenario_expectation_count(const hs_scenario *scenario);
 /// Writes the run's state at the current frame: a header (magic, version, the scenario's name, a
 /// checksum of the scenario file's bytes, the frame), the harness's own state (the input noise
