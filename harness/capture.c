@@ -150,6 +150,7 @@ void hs_capture_sequence(const hs_scenario *s, const hs_clause *c, hs_check *k, 
 void hs_capture_release(const hs_scenario *s, const hs_clause *c, hs_check *k, long frame) {
 	(void)c, (void)frame;
 	hs_release release;
+	memset(&release, 0, sizeof release); // no padding byte of it may reach a state file uninitialised
 	if (hs_world_spring_last_release(s->world, &release) == HS_OK && release.kind != HS_RELEASE_NONE &&
 	    hs_scenario_index_of(s, release.object) == k->object)
 		k->u.release = release;
