@@ -419,6 +419,18 @@ static void test_tool_resume(void **state) {
 	free(full), free(st), free(rest);
 }
 
+// --out - writes the trajectory to stdout (the summary goes to stderr), not to a file named '-'.
+static void test_out_stdout(void **state) {
+	(void)state;
+	const char *args[] = {"run", "scenarios/drop_cube.yaml", "--out", "-", NULL};
+	tool_result r = run_tool(args);
+	assert_int_equal(r.status, 0);
+	assert_true(strncmp(r.out, "frame,t,object,", 15) == 0);
+	assert_non_null(strstr(r.err, "trajectory: stdout\nPASS\n"));
+	assert_int_equal(access("-", F_OK), -1);
+	free_result(&r);
+}
+
 // Usage errors: a message and exit status 2; --help: exit status 0.
 static void test_usage(void **state) {
 	(void)state;
@@ -502,7 +514,7 @@ int main(void) {
 	    cmocka_unit_test(test_every_truncation), cmocka_unit_test(test_damaged_bytes),
 	    cmocka_unit_test(test_usage),           cmocka_unit_test(test_missing_catalog),
 	    cmocka_unit_test(test_deep_flow_nesting), cmocka_unit_test(test_endless_records),
-	    cmocka_unit_test(test_tool_resume),
+	    cmocka_unit_test(test_tool_resume),     cmocka_unit_test(test_out_stdout),
 	};
 	size_t nfixed = sizeof fixed / sizeof fixed[0];
 	struct CMUnitTest *tests = calloc(count + nfixed, sizeof *tests);
