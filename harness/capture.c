@@ -173,3 +173,146 @@ void hs_expect_capture(hs_scenario *s) {
 		hs_predicates[c->pred].capture(s, c, k, f);
 	}
 }
+
+// ---------------------------------------------------------------------------------------------
+// captures in a state file: every field as a 64-bit word, so the file means the same everywhere
+
+static void put_state(hs_state_io *io, const hs_object_state *st) {
+	hs_put_vec3(io, st->position);
+	hs_put_f64(io, st->orientation.w);
+	hs_put_vec3(io, hs_v3(st->orientation.x, st->orientation.y, st->orientation.z));
+	hs_put_vec3(io, st->velocity);
+	hs_put_i64(io, st->contact);
+	hs_put_i64(io, st->floor_contacts);
+	hs_put_u64(io, st->resting);
+}
+
+static void get_state(hs_state_io *io, hs_object_state *st) {
+	st->position = hs_get_vec3(io);
+	st->orientation.w = hs_get_f64(io);
+	hs_vec3 q = hs_get_vec3(io);
+	st->orientation.x = q.x, st->orientation.y = q.y, st->orientation.z = q.z;
+	st->velocity = hs_get_vec3(io);
+	st->contact = (hs_contact_state)hs_get_i64(io);
+	st->floor_contacts = (int)hs_get_i64(io);
+	st->resting = hs_get_u64(io) != 0;
+}
+
+static void put_at(hs_state_io *io, const hs_capture *u) {
+	put_state(io, &u->at.state);
+	hs_put_vec3(io, u->at.velocity);
+	hs_put_i64(io, u->at.holder);
+	hs_put_i64(io, u->at.candidate);
+	hs_put_i64(io, u->at.kind);
+	hs_put_f64(io, u->at.ratio);
+	hs_put_f64(io, u->at.extension);
+	hs_put_f64(io, u->at.rest_length);
+}
+
+static void get_at(hs_state_io *io, hs_capture *u) {
+	get_state(io, &u->at.state);
+	u->at.velocity = hs_get_vec3(io);
+	u->at.holder = (int)hs_get_i64(io);
+	u->at.candidate = (int)hs_get_i64(io);
+	u->at.kind = (hs_attach_kind)hs_get_i64(io);
+	u->at.ratio = hs_get_f64(io);
+	u->at.extension = hs_get_f64(io);
+	u->at.rest_length = hs_get_f64(io);
+}
+
+static void put_still(hs_state_io *io, const hs_capture *u) {
+	put_state(io, &u->still.state);
+	hs_put_u64(io, u->still.moved);
+	hs_put_i64(io, u->still.moved_frame);
+}
+
+static void get_still(hs_state_io *io, hs_capture *u) {
+	get_state(io, &u->still.state);
+	u->still.moved = hs_get_u64(io) != 0;
+	u->still.moved_frame = (long)hs_get_i64(io);
+}
+
+static void put_window(hs_state_io *io, const hs_capture *u) {
+	hs_put_u64(io, u->window.began);
+	for (int i = 0; i < 3; ++i) {
+		hs_put_f64(io, u->window.before[i]);
+		hs_put_f64(io, u->window.after[i]);
+	}
+	hs_put_f64(io, u->window.peak);
+	hs_put_i64(io, u->window.peak_frame);
+}
+
+static void get_window(hs_state_io *io, hs_capture *u) {
+	u->window.began = hs_get_u64(io) != 0;
+	for (int i = 0; i < 3; ++i) {
+		u->window.before[i] = hs_get_f64(io);
+		u->window.after[i] = hs_get_f64(io);
+	}
+	u->window.peak = hs_get_f64(io);
+	u->window.peak_frame = (long)hs_get_i64(io);
+}
+
+static void put_lands(hs_state_io *io, const hs_capture *u) {
+	hs_put_u64(io, u->lands.had_no_floor);
+	hs_put_u64(io, u->lands.landed);
+	hs_put_i64(io, u->lands.frame);
+}
+
+static void get_lands(hs_state_io *io, hs_capture *u) {
+	u->lands.had_no_floor = hs_get_u64(io) != 0;
+	u->lands.landed = hs_get_u64(io) != 0;
+	u->lands.frame = (long)hs_get_i64(io);
+}
+
+static void put_seq(hs_state_io *io, const hs_capture *u) {
+	hs_put_bytes(io, u->seq.states, HS_SEQ_CAPACITY);
+	hs_put_i64(io, u->seq.len);
+	hs_put_i64(io, u->seq.overflow);
+	hs_put_u64(io, u->seq.last);
+}
+
+static void get_seq(hs_state_io *io, hs_capture *u) {
+	hs_get_bytes(io, u->seq.states, HS_SEQ_CAPACITY);
+	int64_t len = hs_get_i64(io);
+	u->seq.len = len >= 0 && len <= HS_SEQ_CAPACITY ? (int)len : 0; // never index beyond the states
+	u->seq.overflow = (long)hs_get_i64(io);
+	u->seq.last = (unsigned char)hs_get_u64(io);
+}
+
+static void put_release(hs_state_io *io, const hs_capture *u) {
+	hs_put_i64(io, u->release.kind);
+	hs_put_u64(io, u->release.object.index1);
+	hs_put_f64(io, u->release.time);
+	hs_put_vec3(io, u->release.velocity);
+	hs_put_f64(io, u->release.hand_speed);
+}
+
+static void get_release(hs_state_io *io, hs_capture *u) {
+	u->release.kind = (hs_release_kind)hs_get_i64(io);
+	u->release.object.index1 = (uint32_t)hs_get_u64(io);
+	u->release.time = hs_get_f64(io);
+	u->release.velocity = hs_get_vec3(io);
+	u->release.hand_speed = hs_get_f64(io);
+}
+
+static const struct {
+	void (*put)(hs_state_io *io, const hs_capture *u);
+	void (*get)(hs_state_io *io, hs_capture *u);
+} stores[] = {
+    [HS_STORE_NONE] = {NULL, NULL},          [HS_STORE_AT] = {put_at, get_at},
+    [HS_STORE_STILL] = {put_still, get_still}, [HS_STORE_WINDOW] = {put_window, get_window},
+    [HS_STORE_LANDS] = {put_lands, get_lands}, [HS_STORE_SEQ] = {put_seq, get_seq},
+    [HS_STORE_RELEASE] = {put_release, get_release},
+};
+
+void hs_capture_put(hs_state_io *io, hs_store store, const hs_check *k) {
+	hs_put_u64(io, k->captured);
+	if (stores[store].put)
+		stores[store].put(io, &k->u);
+}
+
+void hs_capture_get(hs_state_io *io, hs_store store, hs_check *k) {
+	k->captured = hs_get_u64(io) != 0;
+	if (stores[store].get)
+		stores[store].get(io, &k->u);
+}

@@ -404,27 +404,36 @@ static bool eval_sequence(const hs_scenario *s, const hs_clause *c, const hs_che
 enum { AT = HS_PRED_AT, SPR = HS_PRED_SPRINGS, FT = HS_PRED_FROM_TO, WIN = HS_PRED_WINDOW, AX = HS_PRED_AXES,
        GRP = HS_PRED_GROUP };
 
+// short names for the table's store column (macros: an enum constant of another type would convert)
+#define S_AT HS_STORE_AT
+#define S_STILL HS_STORE_STILL
+#define S_WIN HS_STORE_WINDOW
+#define S_LANDS HS_STORE_LANDS
+#define S_SEQ HS_STORE_SEQ
+#define S_REL HS_STORE_RELEASE
+#define S_NONE HS_STORE_NONE
+
 const hs_predicate hs_predicates[HS_PREDICATE_COUNT] = {
-    // name               flags               tolerance  parse              capture               evaluate
-    {"near",              AT | AX,            "m",       parse_near,        hs_capture_at,        eval_near},
-    {"resting",           AT,                 NULL,      parse_flag,        hs_capture_at,        eval_resting},
-    {"floor_contacts",    AT,                 NULL,      parse_count,       hs_capture_at,        eval_floor_contacts},
-    {"on_face",           AT,                 NULL,      parse_flag,        hs_capture_at,        eval_on_face},
-    {"below",             AT,                 NULL,      parse_value,       hs_capture_at,        eval_height},
-    {"above",             AT,                 NULL,      parse_value,       hs_capture_at,        eval_height},
-    {"moved",             AT,                 NULL,      parse_nonnegative, hs_capture_at,        eval_moved},
-    {"turned_deg",        AT,                 NULL,      parse_nonnegative, hs_capture_at,        eval_turned},
-    {"speed_below",       AT,                 NULL,      parse_positive,    hs_capture_at,        eval_speed_below},
-    {"velocity",          AT,                 "m/s",     parse_vector,      hs_capture_at,        eval_velocity},
-    {"attached",          AT | SPR,           NULL,      parse_attached,    hs_capture_at,        eval_attached},
-    {"candidate",         AT | SPR,           NULL,      parse_flag,        hs_capture_at,        eval_candidate},
-    {"extension_ratio",   AT | SPR,           "a ratio", parse_value,       hs_capture_at,        eval_extension_ratio},
-    {"lands_at",          0,                  "s",       parse_time,        hs_capture_lands,     eval_lands_at},
-    {"still",             FT,                 NULL,      parse_flag,        hs_capture_still,     eval_still},
-    {"contact_sequence",  0,                  NULL,      parse_sequence,    hs_capture_sequence,  eval_sequence},
-    {"released",          SPR,                NULL,      parse_released,    hs_capture_release,   eval_released},
-    {"rest_length",       SPR,                "m",       parse_positive,    NULL,                 eval_spring_constant},
-    {"stiffness",         SPR,                "N/m",     parse_positive,    NULL,                 eval_spring_constant},
-    {"conserved",         SPR | FT | WIN | GRP, "relative", parse_conserved, hs_capture_conserved, eval_conserved},
-    {"swing_below",       SPR | FT | WIN,     NULL,      parse_positive,    hs_capture_swing,     eval_swing_below},
+    // name              flags            tolerance  parse              capture               store    evaluate
+    {"near",             AT | AX,         "m",       parse_near,        hs_capture_at,        S_AT,    eval_near},
+    {"resting",          AT,              NULL,      parse_flag,        hs_capture_at,        S_AT,    eval_resting},
+    {"floor_contacts",   AT,              NULL,      parse_count,       hs_capture_at,        S_AT,    eval_floor_contacts},
+    {"on_face",          AT,              NULL,      parse_flag,        hs_capture_at,        S_AT,    eval_on_face},
+    {"below",            AT,              NULL,      parse_value,       hs_capture_at,        S_AT,    eval_height},
+    {"above",            AT,              NULL,      parse_value,       hs_capture_at,        S_AT,    eval_height},
+    {"moved",            AT,              NULL,      parse_nonnegative, hs_capture_at,        S_AT,    eval_moved},
+    {"turned_deg",       AT,              NULL,      parse_nonnegative, hs_capture_at,        S_AT,    eval_turned},
+    {"speed_below",      AT,              NULL,      parse_positive,    hs_capture_at,        S_AT,    eval_speed_below},
+    {"velocity",         AT,              "m/s",     parse_vector,      hs_capture_at,        S_AT,    eval_velocity},
+    {"attached",         AT | SPR,        NULL,      parse_attached,    hs_capture_at,        S_AT,    eval_attached},
+    {"candidate",        AT | SPR,        NULL,      parse_flag,        hs_capture_at,        S_AT,    eval_candidate},
+    {"extension_ratio",  AT | SPR,        "a ratio", parse_value,       hs_capture_at,        S_AT,    eval_extension_ratio},
+    {"lands_at",         0,               "s",       parse_time,        hs_capture_lands,     S_LANDS, eval_lands_at},
+    {"still",            FT,              NULL,      parse_flag,        hs_capture_still,     S_STILL, eval_still},
+    {"contact_sequence", 0,               NULL,      parse_sequence,    hs_capture_sequence,  S_SEQ,   eval_sequence},
+    {"released",         SPR,             NULL,      parse_released,    hs_capture_release,   S_REL,   eval_released},
+    {"rest_length",      SPR,             "m",       parse_positive,    NULL,                 S_NONE,  eval_spring_constant},
+    {"stiffness",        SPR,             "N/m",     parse_positive,    NULL,                 S_NONE,  eval_spring_constant},
+    {"conserved",        SPR | FT | WIN | GRP, "relative", parse_conserved, hs_capture_conserved, S_WIN, eval_conserved},
+    {"swing_below",      SPR | FT | WIN,  NULL,      parse_positive,    hs_capture_swing,     S_WIN,   eval_swing_below},
 };

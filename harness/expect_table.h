@@ -5,6 +5,7 @@
 
 #include "expect.h"
 #include "scenario_parser.h"
+#include "state_io.h"
 
 // Rows of hs_predicates; the keys of a clause are the predicates' names, then the modifiers.
 #define HS_PREDICATE_COUNT 21
@@ -20,6 +21,17 @@ enum {
 	HS_PRED_GROUP = 1u << 5,   // `object` may name a group (a list or "*"): one check for the group
 };
 
+// The member of hs_capture a predicate records into: what a state file keeps of its checks.
+typedef enum hs_store {
+	HS_STORE_NONE, // judged from the world at the end
+	HS_STORE_AT,
+	HS_STORE_STILL,
+	HS_STORE_WINDOW,
+	HS_STORE_LANDS,
+	HS_STORE_SEQ,
+	HS_STORE_RELEASE,
+} hs_store;
+
 // What was expected and what was measured, for the report line.
 typedef struct hs_verdict {
 	char when[64]; // at-based rows: "at end (t = 3 s)" or "at t = 1.5 s"
@@ -34,6 +46,7 @@ typedef struct hs_predicate {
 	bool (*parse)(hs_scenario_parser *p, const hs_fields *f, hs_clause *c);
 	// records from the current frame: at-based rows once at the clause's frame, the others every frame
 	void (*capture)(const hs_scenario *s, const hs_clause *c, hs_check *k, long frame);
+	hs_store store; // where it records
 	// judges a check at the end; writes what was expected and what was measured
 	bool (*evaluate)(const hs_scenario *s, const hs_clause *c, const hs_check *k, hs_verdict *v);
 } hs_predicate;
@@ -48,5 +61,8 @@ void hs_capture_swing(const hs_scenario *s, const hs_clause *c, hs_check *k, lon
 void hs_capture_lands(const hs_scenario *s, const hs_clause *c, hs_check *k, long frame);
 void hs_capture_sequence(const hs_scenario *s, const hs_clause *c, hs_check *k, long frame);
 void hs_capture_release(const hs_scenario *s, const hs_clause *c, hs_check *k, long frame);
+// A check's captures in a state file, word by word (state_io.h), as its row's `store` says.
+void hs_capture_put(hs_state_io *io, hs_store store, const hs_check *k);
+void hs_capture_get(hs_state_io *io, hs_store store, hs_check *k);
 
 #endif
