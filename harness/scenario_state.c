@@ -3,9 +3,10 @@
 // A state file: a header (magic, version, the scenario's name, a checksum of the scenario file's
 // bytes, the frame), the harness's own state (the step status, the numeric faults so far, the input
 // noise generator, the capture queue and what every expectation check captured), then the world's
-// state block (hs_world_save_state), and a checksum of all that (FNV-1a). Scripts need no position: they are sampled by time. Numbers
-// are 64-bit little-endian words (state_io.h) and the world's block is portable; only the noise
-// generator's block is the bytes of GSL's state (gsl_rng_state), whose size is checked.
+// state block (hs_world_save_state), and a checksum of all that (FNV-1a). Scripts need no
+// position: they are sampled by time. Numbers are 64-bit little-endian words (state_io.h) and the
+// world's block is portable; only the noise generator's block is the bytes of GSL's state
+// (gsl_rng_state), whose size is checked.
 #include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
