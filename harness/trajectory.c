@@ -10,7 +10,16 @@
 
 #define TRAJECTORY_HEADER "frame,t,object,x,y,z,qw,qx,qy,qz,contact,floor,resting,hash"
 
-enum { FIELD_COUNT = 14, F_FRAME = 0, F_T = 1, F_OBJECT = 2, F_CONTACT = 10, F_FLOOR = 11, F_RESTING = 12, F_HASH = 13 };
+enum {
+	FIELD_COUNT = 14,
+	F_FRAME = 0,
+	F_T = 1,
+	F_OBJECT = 2,
+	F_CONTACT = 10,
+	F_FLOOR = 11,
+	F_RESTING = 12,
+	F_HASH = 13
+};
 
 static const char *const field_names[FIELD_COUNT] = {"frame", "t",  "object",  "x",     "y",       "z",   "qw",
                                                      "qx",    "qy", "qz",      "contact", "floor", "resting", "hash"};
@@ -155,15 +164,16 @@ static bool compare_rows(const comparison *c, reader *g, reader *n, double toler
 		if (same)
 			continue;
 		if (!numeric)
-			return mismatch(c, "frame %s, object %s, field %s: golden %s, now %s", g->field[F_FRAME], g->field[F_OBJECT],
-			                field_names[i], a, b);
+			return mismatch(c, "frame %s, object %s, field %s: golden %s, now %s", g->field[F_FRAME],
+			                g->field[F_OBJECT], field_names[i], a, b);
 		return mismatch(c, "frame %s, object %s, field %s: golden %s, now %s (difference %.3g)", g->field[F_FRAME],
 		                g->field[F_OBJECT], field_names[i], a, b, y - x);
 	}
 	return true;
 }
 
-bool hs_trajectory_compare(FILE *golden, FILE *actual, double tolerance, const char *label, char *why, size_t why_size) {
+bool hs_trajectory_compare(FILE *golden, FILE *actual, double tolerance, const char *label, char *why,
+                           size_t why_size) {
 	comparison c = {label ? label : "trajectory", why, why_size};
 	if (why && why_size > 0)
 		why[0] = '\0';

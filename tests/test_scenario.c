@@ -8,6 +8,7 @@
 #include <cmocka.h>
 
 #include "test_util.h"
+#include "noise.h"
 
 #include <dirent.h>
 #include <stdlib.h>
@@ -677,7 +678,7 @@ static void test_stylus_record(void **state) {
 }
 
 // model.spring reaches the world: friction 0 lets a pushed ball slide on, walls stop it, the noise
-// seed makes the tracker's samples noisy (and reproducible).
+// seed makes the stylus readings the harness gives the world noisy (and reproducible).
 static void test_spring_options(void **state) {
 	(void)state;
 	const char *text = "description: options\ndt: 1/60\nduration: 1\n"
@@ -859,6 +860,300 @@ static void test_spring_load_errors(void **state) {
 	load_error("e.yaml", text, "6: 'quat' must have norm 1 (within 1e-06), got norm 2");
 }
 
+// The harness's noise generator: Fastrak-like Gaussian stylus noise (0.762 mm and 0.15 deg RMS per
+// axis), uniform glove and wrist noise within their amplitudes, and a state that saves and loads.
+static void test_noise_draws(void **state) {
+	(void)state;
+	hs_noise *noise = hs_noise_create(7);
+	assert_non_null(noise);
+	enum { N = 20000 };
+	double sp[3] = {0, 0, 0}, sr = 0.0;
+	for (int i = 0; i < N; ++i) {
+		hs_vec3 p = hs_v3(0, 0, 0);
+		hs_quat q = hs_quat_identity();
+		hs_noise_stylus(noise, &p, &q);
+		sp[0] += p.x * p.x, sp[1] += p.y * p.y, sp[2] += p.z * p.z;
+		double angle = hs_quat_angle(q);
+		sr += angle * angle / 3.0; // three Gaussian components
+	}
+	for (int k = 0; k < 3; ++k)
+		assert_near(sqrt(sp[k] / N), HS_STYLUS_NOISE_POSITION, 0.03 * HS_STYLUS_NOISE_POSITION);
+	assert_near(sqrt(sr / N), HS_STYLUS_NOISE_ROTATION, 0.03 * HS_STYLUS_NOISE_ROTATION);
+	hs_noise_options options = {.glove_units = 4, .wrist = 1.3e-3};
+	int lowest = 0, highest = 0;
+	for (int i = 0; i < 2000; ++i) {
+		hs_vec3 w = hs_v3(0, 0, 0);
+		uint8_t sensors[HS_GLOVE_SENSORS];
+		memset(sensors, 100, sizeof sensors);
+		sensors[0] = 2; // clamped at 0
+		hs_noise_hand(noise, &options, &w, sensors);
+		assert_true(fabs(w.x) <= 1.3e-3 && fabs(w.y) <= 1.3e-3 && fabs(w.z) <= 1.3e-3);
+		assert_true(sensors[0] <= 6);
+		for (int k = 1; k < HS_GLOVE_SENSORS; ++k) {
+			assert_true(sensors[k] >= 96 && sensors[k] <= 104);
+			lowest += sensors[k] == 96;
+			highest += sensors[k] == 104;
+		}
+	}
+	assert_true(lowest > 0 && highest > 0); // both ends are drawn
+	// the state: saved, drawn from, loaded: the same draws again
+	size_t n = hs_noise_state_size(noise);
+	assert_true(n > 0);
+	unsigned char *saved = malloc(n);
+	assert_non_null(saved);
+	assert_true(hs_noise_save(noise, saved, n));
+	hs_vec3 a = hs_v3(0, 0, 0), b = hs_v3(0, 0, 0);
+	hs_quat qa = hs_quat_identity(), qb = hs_quat_identity();
+	hs_noise_stylus(noise, &a, &qa);
+	assert_false(hs_noise_load(noise, saved, n - 1));
+	assert_true(hs_noise_load(noise, saved, n));
+	hs_noise_stylus(noise, &b, &qb);
+	assert_memory_equal(&a, &b, sizeof a);
+	assert_memory_equal(&qa, &qb, sizeof qa);
+	free(saved);
+	hs_noise_destroy(noise);
+}
+
+// noise_seed: every stylus reading the world gets is the script's plus noise; the same seed gives
+// the same run, another seed another.
+static void test_stylus_noise(void **state) {
+	(void)state;
+	const char *text = "description: noisy stylus\ndt: 1/60\nduration: 2\n"
+	                   "model: { spring: { noise_seed: 11 } }\n" ONE_CUBE
+	                   "stylus: { keys: [{ t: 0, position: [0.2, 0.1, 0.5] }] }\n";
+	hs_scenario *s = load_text("noisy.yaml", text);
+	double sum2 = 0.0;
+	long n = 0;
+	while (hs_scenario_step(s)) {
+		hs_spring_state ss = spring_of(s);
+		hs_vec3 d = hs_sub(ss.stylus, hs_v3(0.2, 0.1, 0.5));
+		assert_true(hs_length(d) > 0.0 && hs_length(d) < 0.01);
+		sum2 += hs_dot(d, d) / 3.0;
+		n++;
+	}
+	assert_near(sqrt(sum2 / (double)n), HS_STYLUS_NOISE_POSITION, 0.15 * HS_STYLUS_NOISE_POSITION);
+	hs_vec3 last = spring_of(s).stylus;
+	hs_scenario_destroy(s);
+	s = load_text("noisy.yaml", text);
+	run_all(s);
+	hs_vec3 same = spring_of(s).stylus;
+	assert_memory_equal(&same, &last, sizeof last);
+	hs_scenario_destroy(s);
+	char other[1024];
+	snprintf(other, sizeof other, "%s", text);
+	memcpy(strstr(other, "noise_seed: 11"), "noise_seed: 12", 14);
+	s = load_text("noisy.yaml", other);
+	run_all(s);
+	hs_vec3 different = spring_of(s).stylus;
+	assert_true(memcmp(&different, &last, sizeof last) != 0);
+	hs_scenario_destroy(s);
+}
+
+#define ONE_HAND "hands:\n  - name: right\n    keys: [{ t: 0, wrist: [0.3, 0, 0.3], posture: open }]\n"
+
+// The hand's check points after each step (hand 1).
+static void hand_points(hs_scenario *s, hs_vec3 points[HS_HAND_POINTS]) {
+	hs_world *w = hs_scenario_world(s);
+	assert_int_equal(hs_world_hand_points(w, hs_world_hand_at(w, 0), points), HS_OK);
+}
+
+// model.input_noise: wrist noise moves the whole hand by at most wrist_mm per axis; glove noise
+// bends the fingers; both reproducible from the seed.
+static void test_input_noise(void **state) {
+	(void)state;
+	const char *head = "description: noisy hand\ndt: 1/60\nduration: 0.5\n";
+	char clean_text[1024], wrist_text[1024], glove_text[1024];
+	snprintf(clean_text, sizeof clean_text, "%s" ONE_CUBE ONE_HAND, head);
+	snprintf(wrist_text, sizeof wrist_text, "%smodel: { input_noise: { wrist_mm: 1.3, seed: 7 } }\n" ONE_CUBE ONE_HAND,
+	         head);
+	snprintf(glove_text, sizeof glove_text, "%smodel: { input_noise: { glove_units: 4, seed: 7 } }\n" ONE_CUBE ONE_HAND,
+	         head);
+	hs_scenario *clean = load_text("clean.yaml", clean_text), *wrist = load_text("wrist.yaml", wrist_text);
+	hs_scenario *glove = load_text("glove.yaml", glove_text), *again = load_text("glove.yaml", glove_text);
+	int moved = 0, bent = 0;
+	while (hs_scenario_step(clean)) {
+		assert_true(hs_scenario_step(wrist) && hs_scenario_step(glove) && hs_scenario_step(again));
+		hs_vec3 c[HS_HAND_POINTS], w[HS_HAND_POINTS], g[HS_HAND_POINTS], a[HS_HAND_POINTS];
+		hand_points(clean, c), hand_points(wrist, w), hand_points(glove, g), hand_points(again, a);
+		hs_vec3 shift = hs_sub(w[0], c[0]);
+		assert_true(fabs(shift.x) <= 1.3e-3 + 1e-12 && fabs(shift.y) <= 1.3e-3 + 1e-12 && fabs(shift.z) <= 1.3e-3 + 1e-12);
+		for (int i = 1; i < HS_HAND_POINTS; ++i) // a translation of the whole hand
+			assert_vec3_near(hs_sub(w[i], c[i]), shift, 1e-12);
+		moved += hs_length(shift) > 0.0;
+		assert_memory_equal(g, a, sizeof g); // the same seed, the same glove
+		bent += memcmp(g, c, sizeof g) != 0;
+	}
+	assert_int_equal(moved, 30);
+	assert_true(bent > 25);
+	hs_scenario_destroy(clean), hs_scenario_destroy(wrist), hs_scenario_destroy(glove), hs_scenario_destroy(again);
+	char text[1024];
+	snprintf(text, sizeof text, "%smodel: { input_noise: { glove_units: 4, seed: 7 } }\n" ONE_CUBE, head);
+	load_error("e.yaml", text, "4: 'input_noise' needs 'hands': only hand worlds use it");
+	snprintf(text, sizeof text, "%smodel: { input_noise: { glove_units: 4 } }\n" ONE_CUBE ONE_HAND, head);
+	load_error("e.yaml", text, "4: 'input_noise' needs a 'seed' (an integer within [0, 4294967295])");
+	snprintf(text, sizeof text, "%smodel: { input_noise: { glove_units: 256, seed: 1 } }\n" ONE_CUBE ONE_HAND, head);
+	load_error("e.yaml", text, "4: 'glove_units' must be within [0, 255], got 256");
+	snprintf(text, sizeof text, "%smodel: { input_noise: { wrist_mm: -1, seed: 1 } }\n" ONE_CUBE ONE_HAND, head);
+	load_error("e.yaml", text, "4: 'wrist_mm' must be within [0, 1000] mm, got -1");
+	snprintf(text, sizeof text, "%smodel: { input_noise: { seed: 4294967296 } }\n" ONE_CUBE ONE_HAND, head);
+	load_error("e.yaml", text, "4: 'seed' must be within [0, 4294967295], got 4294967296");
+}
+
+// A run whose world caught a numeric fault fails: an explicit integrator (semi-implicit Euler,
+// omega dt = 2.8 at 20 frames/s) blows up on a stiff spring; the world freezes the object and counts
+// it, and hs_scenario_check adds a failing line.
+static void test_numeric_fault_fails(void **state) {
+	(void)state;
+	hs_scenario *s = load_text("fault.yaml", "description: blows up\ndt: 1/20\nduration: 60\n"
+	                                         "model: { spring: { integrator: semi_implicit_euler } }\n"
+	                                         "objects:\n  - { name: speck, shape: sphere, size: 0.01, density: 1000,"
+	                                         " position: [0, 0, 0.01] }\n"
+	                                         "stylus:\n  keys:\n    - { t: 0, position: [0.003, 0, 0.01] }\n"
+	                                         "    - { t: 0.1, button: true }\n    - { t: 0.5, position: [0, 0, 0.5] }\n"
+	                                         "expect:\n  - { object: speck, at: 1, attached: pick }\n");
+	run_all(s);
+	assert_true(hs_world_get_counters(hs_scenario_world(s)).numeric_faults > 0);
+	char report[2048] = "";
+	FILE *f = fmemopen(report, sizeof report, "w");
+	assert_non_null(f);
+	int failed = hs_scenario_check(s, f);
+	fclose(f);
+	assert_int_equal(failed, 1);
+	assert_int_equal(hs_scenario_expectation_count(s), 2);
+	assert_non_null(strstr(report, "PASS  line 13: speck attached pick"));
+	long frame = -1;
+	hs_object_id first = {0, 0, 0};
+	assert_int_equal(hs_world_first_fault(hs_scenario_world(s), &frame, &first), HS_OK);
+	assert_true(frame > 0 && first.index1 == 1);
+	char line[160];
+	snprintf(line, sizeof line, "FAIL  numeric fault at frame %ld in object 'speck' (%ld in all): ", frame,
+	         hs_world_get_counters(hs_scenario_world(s)).numeric_faults);
+	if (!strstr(report, line))
+		fail_msg("no line '%s' in:\n%s", line, report);
+	hs_scenario_destroy(s);
+}
+
+// Runs a loaded scenario to the end, rows of frames after `after` (-1: every frame, header first)
+// into a string.
+static char *run_rows(hs_scenario *s, bool header) {
+	char *text = NULL;
+	size_t size = 0;
+	FILE *f = open_memstream(&text, &size);
+	assert_non_null(f);
+	if (header) {
+		hs_trajectory_write_header(f);
+		hs_trajectory_write_frame(f, s);
+	}
+	while (hs_scenario_step(s))
+		hs_trajectory_write_frame(f, s);
+	fclose(f);
+	return text;
+}
+
+static char *report_of(const hs_scenario *s) {
+	char *text = NULL;
+	size_t size = 0;
+	FILE *f = open_memstream(&text, &size);
+	assert_non_null(f);
+	hs_scenario_check(s, f);
+	fclose(f);
+	return text;
+}
+
+// The rows of `trajectory` (header first) whose frame is after `frame`.
+static const char *rows_after(const char *trajectory, long frame) {
+	const char *line = strchr(trajectory, '\n') + 1;
+	while (*line && strtol(line, NULL, 10) <= frame)
+		line = strchr(line, '\n') + 1;
+	return line;
+}
+
+static const char resume_spring[] = "description: resume a noisy spring run\ndt: 1/60\nduration: 2\n"
+                                    "model: { spring: { noise_seed: 5 } }\n"
+                                    "objects:\n  - { name: ball, shape: sphere, size: 0.05, position: [0, 0, 0.05] }\n"
+                                    "  - { name: other, shape: sphere, size: 0.05, position: [1, 0, 0.05] }\n"
+                                    "stylus:\n  keys:\n    - { t: 0, position: [0, 0, 0.05] }\n"
+                                    "    - { t: 0.3, button: true }\n    - { t: 1.0, position: [0, 0, 0.4] }\n"
+                                    "    - { t: 1.5, position: [0.3, 0, 0.4], button: false }\n"
+                                    "expect:\n  - { object: ball, at: 0.5, attached: pick }\n"
+                                    "  - { object: ball, at: end, above: 0 }\n"
+                                    "  - { object: '*', contact_sequence: [0, 2, 0] }\n"
+                                    "  - { object: other, still: true }\n"
+                                    "  - { object: ball, released: throw }\n"
+                                    "  - { object: ball, lands_at: 1.8, tolerance: 1 }\n"
+                                    "  - { object: [ball, other], conserved: momentum, from: 0.1, to: 1.9, tolerance: 1 }\n";
+
+static const char resume_hand[] = "description: resume a noisy hand run\ndt: 1/60\nduration: 1\n"
+                                  "model: { input_noise: { glove_units: 3, wrist_mm: 1, seed: 9 } }\n"
+                                  "objects:\n  - { name: block, shape: cube, size: 0.05, position: [0, 0, 0.025] }\n"
+                                  "hands:\n  - name: right\n    keys:\n"
+                                  "      - { t: 0, grip: [0, 0, 0.12], rpy_deg: [0, 90, 0], posture: { grasp: 0.11 } }\n"
+                                  "      - { t: 0.4, grip: [0, 0, 0.025] }\n      - { t: 0.5, posture: { grasp: 0.045 } }\n"
+                                  "      - { t: 0.9, grip: [0, 0, 0.2] }\n"
+                                  "expect:\n  - { object: block, at: end, above: 0.1 }\n"
+                                  "  - { object: block, contact_sequence: [0, 2] }\n";
+
+// hs_scenario_save at frame F, then hs_scenario_resume in a freshly loaded scenario: the rest of the
+// trajectory is the full run's, byte for byte, and so is the report. Needs the model's state block
+// (hs_world_save_state).
+static void test_save_and_resume(void **state) {
+	(void)state;
+	const char *texts[] = {resume_spring, resume_hand};
+	for (int t = 0; t < 2; ++t) {
+		hs_scenario *full = load_text("resume.yaml", texts[t]);
+		assert_true(hs_world_state_size(hs_scenario_world(full)) > 0);
+		char *whole = run_rows(full, true), *whole_report = report_of(full);
+		for (long at = 0; at <= 60; at += 30) {
+			hs_scenario *first = load_text("resume.yaml", texts[t]);
+			for (long f = 0; f < at; ++f)
+				assert_true(hs_scenario_step(first));
+			FILE *saved = tmpfile();
+			assert_non_null(saved);
+			hs_error err;
+			if (hs_scenario_save(first, saved, &err) != HS_OK)
+				fail_msg("%s", err.message);
+			hs_scenario_destroy(first);
+			rewind(saved);
+			hs_scenario *second = load_text("resume.yaml", texts[t]);
+			if (hs_scenario_resume(second, saved, &err) != HS_OK)
+				fail_msg("%s", err.message);
+			fclose(saved);
+			char *rest = run_rows(second, false), *report = report_of(second);
+			assert_string_equal(rest, rows_after(whole, at));
+			assert_string_equal(report, whole_report);
+			free(rest), free(report);
+			hs_scenario_destroy(second);
+		}
+		free(whole), free(whole_report);
+		hs_scenario_destroy(full);
+	}
+}
+
+// A state file is checked before anything is restored: not a state file, another scenario's.
+static void test_resume_refusals(void **state) {
+	(void)state;
+	hs_scenario *s = load_text("resume.yaml", resume_spring);
+	FILE *f = tmpfile();
+	assert_non_null(f);
+	fputs("frame,t,object\n", f);
+	rewind(f);
+	hs_error err;
+	assert_int_equal(hs_scenario_resume(s, f, &err), HS_ERR_STATE_MISMATCH);
+	assert_string_equal(err.message, "state file: not a handspring state file");
+	fclose(f);
+	hs_scenario *other = load_text("other.yaml", resume_hand);
+	f = tmpfile();
+	assert_non_null(f);
+	assert_int_equal(hs_scenario_save(other, f, &err), HS_OK);
+	rewind(f);
+	assert_int_equal(hs_scenario_resume(s, f, &err), HS_ERR_STATE_MISMATCH);
+	assert_string_equal(err.message, "state file: saved from scenario 'other', not 'resume'");
+	fclose(f);
+	assert_true(hs_scenario_step(s)); // the scenario is unchanged and runs
+	hs_scenario_destroy(other);
+	hs_scenario_destroy(s);
+}
+
 // still with `to`: the pose may change after the window
 static void test_still_window(void **state) {
 	(void)state;
@@ -896,6 +1191,12 @@ int main(void) {
 	    cmocka_unit_test(test_conserved_and_swing),
 	    cmocka_unit_test(test_spring_load_errors),
 	    cmocka_unit_test(test_still_window),
+	    cmocka_unit_test(test_noise_draws),
+	    cmocka_unit_test(test_stylus_noise),
+	    cmocka_unit_test(test_input_noise),
+	    cmocka_unit_test(test_numeric_fault_fails),
+	    cmocka_unit_test(test_save_and_resume),
+	    cmocka_unit_test(test_resume_refusals),
 	};
 	return cmocka_run_group_tests_name("scenario", tests, make_temp_dir, remove_temp_dir);
 }

@@ -1,7 +1,8 @@
 // handspring — the command-line tool: a thin shell over the library (handspring.h).
 //
 //   handspring list [--dir DIR]                         the catalog, one scenario per line
-//   handspring run FILE [--out TRAJ.csv]                one scenario: summary, expectations, hash
+//   handspring run FILE [--out TRAJ.csv] [--save-at FRAME --state-out PATH] [--resume PATH]
+//                                                        one scenario: summary, expectations, hash
 //   handspring all [--dir DIR] [--out-dir DIR] [--golden-dir DIR]
 //                                                        the whole catalog and a summary table
 //
@@ -22,7 +23,8 @@ static const char *const usage_main =
     "usage: handspring <command> [options]\n"
     "commands:\n"
     "  list [--dir DIR]                                   list the scenarios of a catalog\n"
-    "  run FILE [--out TRAJ.csv]                          run one scenario and check its expectations\n"
+    "  run FILE [--out TRAJ.csv] [--save-at FRAME --state-out PATH] [--resume PATH]\n"
+    "                                                     run one scenario and check its expectations\n"
     "  all [--dir DIR] [--out-dir DIR] [--golden-dir DIR] run every scenario of a catalog\n"
     "Run 'handspring <command> --help' for the options of a command.\n";
 
@@ -31,10 +33,18 @@ static const char *const usage_list =
     "Lists every scenario below DIR (default: scenarios): its name, then its description.\n";
 
 static const char *const usage_run =
-    "usage: handspring run FILE [--out TRAJ.csv]\n"
+    "usage: handspring run FILE [--out TRAJ.csv] [--save-at FRAME --state-out PATH] [--resume PATH]\n"
     "Runs the scenario FILE and prints its name, frames, objects, one PASS/FAIL line per expectation\n"
     "with the measured value, and the final state hash.\n"
-    "  --out TRAJ.csv  also write the trajectory (one row per object per frame, frame 0 included)\n"
+    "  --out TRAJ.csv     also write the trajectory (one row per object per frame, frame 0 included);\n"
+    "                     '-' writes it to stdout (the summary then goes to stderr)\n"
+    "  --save-at FRAME    with --state-out: when frame FRAME (0 to the scenario's frames) has run,\n"
+    "  --state-out PATH   write the run's state to PATH (the world, the input noise generator, what\n"
+    "                     the expectations captured so far), then run on to the end\n"
+    "  --resume PATH      load FILE, restore the state saved in PATH (saved from the same file) and\n"
+    "                     run the remaining frames; --out then holds the header and those frames only:\n"
+    "                     the same bytes as the full run's rows after the saved frame. The report is\n"
+    "                     the full run's.\n"
     "Exit status: 0 every expectation passed, 1 one failed, 2 bad input (one error line on stderr).\n";
 
 static const char *const usage_all =
@@ -158,64 +168,166 @@ static void run_scenario(hs_scenario *s, FILE **outs, int out_count) {
 				hs_trajectory_write_frame(outs[k], s);
 }
 
-static int cmd_run(int argc, char **argv) {
-	const char *file = NULL, *out = NULL;
+typedef struct run_options {
+	const char *file, *out, *state_out, *resume;
+	long save_at; // -1: no state saved
+} run_options;
+
+// A frame number: decimal digits only.
+static bool parse_frame(const char *text, long *frame) {
+	char *end;
+	errno = 0;
+	long v = strtol(text, &end, 10);
+	if (!*text || *end || errno || v < 0 || text[0] == '+' || text[0] == '-')
+		return false;
+	*frame = v;
+	return true;
+}
+
+// The options of `run`: -1 to go on, else the exit status (usage errors, --help).
+static int parse_run(int argc, char **argv, run_options *o) {
+	memset(o, 0, sizeof *o);
+	o->save_at = -1;
 	for (int i = 0; i < argc; ++i) {
 		bool missing = false;
+		const char *frame = NULL;
 		if (is_help(argv[i])) {
 			fputs(usage_run, stdout);
 			return EXIT_PASS;
-		} else if (option_value(argc, argv, &i, "--out", &out, &missing)) {
+		} else if (option_value(argc, argv, &i, "--out", &o->out, &missing) ||
+		           option_value(argc, argv, &i, "--state-out", &o->state_out, &missing) ||
+		           option_value(argc, argv, &i, "--resume", &o->resume, &missing)) {
 			if (missing)
-				return usage_error("run", usage_run, "%s needs a file name", "--out");
+				return usage_error("run", usage_run, "%s needs a file name", argv[i]);
+		} else if (option_value(argc, argv, &i, "--save-at", &frame, &missing)) {
+			if (missing || !parse_frame(frame, &o->save_at))
+				return usage_error("run", usage_run, "%s needs a frame number (0, 1, 2, ...)", "--save-at");
 		} else if (argv[i][0] == '-' && argv[i][1] != '\0') {
 			return usage_error("run", usage_run, "unknown option '%s'", argv[i]);
-		} else if (file) {
+		} else if (o->file) {
 			return usage_error("run", usage_run, "one scenario file only, got also '%s'", argv[i]);
 		} else {
-			file = argv[i];
+			o->file = argv[i];
 		}
 	}
-	if (!file)
+	if (!o->file)
 		return usage_error("run", usage_run, "%s", "missing the scenario FILE");
+	if ((o->save_at >= 0) != (o->state_out != NULL))
+		return usage_error("run", usage_run, "%s", "--save-at and --state-out go together");
+	return -1;
+}
+
+// Writes the run's state to `path` (complete or not at all).
+static bool save_state(hs_scenario *s, const char *path) {
+	output o;
 	hs_error err;
-	hs_scenario *s = hs_scenario_load(file, &err);
+	bool ok = output_open(&o, path);
+	if (!ok)
+		fprintf(stderr, "handspring: cannot write %s: %s\n", path, strerror(errno));
+	else if (!(ok = hs_scenario_save(s, o.file, &err) == HS_OK))
+		fprintf(stderr, "%s: %s\n", path, err.message);
+	if (!output_close(&o, ok) && ok) {
+		fprintf(stderr, "handspring: cannot write %s: %s\n", path, strerror(errno));
+		ok = false;
+	}
+	output_free(&o);
+	return ok;
+}
+
+static bool resume_state(hs_scenario *s, const char *path) {
+	FILE *in = fopen(path, "rb");
+	if (!in) {
+		fprintf(stderr, "%s: cannot read: %s\n", path, strerror(errno));
+		return false;
+	}
+	hs_error err;
+	bool ok = hs_scenario_resume(s, in, &err) == HS_OK;
+	if (!ok)
+		fprintf(stderr, "%s: %s\n", path, err.message);
+	fclose(in);
+	return ok;
+}
+
+// Steps to the end, writing the trajectory (a resumed run: only the frames it runs) and the state
+// at the frame asked for. False when the state could not be written or its frame was never reached.
+static bool run_saving(hs_scenario *s, FILE *traj, const run_options *o) {
+	hs_world *world = hs_scenario_world(s);
+	if (traj) {
+		hs_trajectory_write_header(traj);
+		if (!o->resume)
+			hs_trajectory_write_frame(traj, s);
+	}
+	bool saved = o->save_at < 0;
+	for (;;) { // the state after frame F: before stepping on (F = 0: before any step)
+		if (!saved && hs_world_frame(world) == o->save_at) {
+			if (!save_state(s, o->state_out))
+				return false;
+			saved = true;
+		}
+		if (!hs_scenario_step(s))
+			break;
+		if (traj)
+			hs_trajectory_write_frame(traj, s);
+	}
+	if (!saved)
+		fprintf(stderr, "handspring: the run ended at frame %ld, before frame %ld: no state written\n",
+		        hs_world_frame(world), o->save_at);
+	return saved;
+}
+
+static int print_summary(FILE *report, hs_scenario *s, const run_options *o) {
+	hs_world *world = hs_scenario_world(s);
+	fprintf(report, "scenario: %s\n", hs_scenario_name(s));
+	fprintf(report, "  %s\n", hs_scenario_description(s));
+	fprintf(report, "frames:   %ld (dt %.9g s, %.9g s)\n", hs_world_frame(world), hs_scenario_dt(s),
+	        (double)hs_world_frame(world) * hs_scenario_dt(s));
+	fprintf(report, "objects:  %d\n", hs_scenario_object_count(s));
+	int failed = hs_scenario_check(s, report);
+	int total = hs_scenario_expectation_count(s);
+	fprintf(report, "expectations: %d/%d passed\n", total - failed, total);
+	fprintf(report, "final hash: %016" PRIx64 "\n", hs_world_hash(world));
+	if (o->resume)
+		fprintf(report, "resumed from: %s\n", o->resume);
+	if (o->state_out)
+		fprintf(report, "state: %s (frame %ld)\n", o->state_out, o->save_at);
+	if (o->out)
+		fprintf(report, "trajectory: %s\n", strcmp(o->out, "-") == 0 ? "stdout" : o->out);
+	fprintf(report, "%s\n", failed ? "FAIL" : "PASS");
+	return failed;
+}
+
+static int cmd_run(int argc, char **argv) {
+	run_options o;
+	int status = parse_run(argc, argv, &o);
+	if (status >= 0)
+		return status;
+	hs_error err;
+	hs_scenario *s = hs_scenario_load(o.file, &err);
 	if (!s) {
 		fprintf(stderr, "%s\n", err.message);
 		return EXIT_BAD_INPUT;
 	}
-	output o;
-	memset(&o, 0, sizeof o);
-	if (out && !output_open(&o, out)) {
-		fprintf(stderr, "handspring: cannot write %s: %s\n", out, strerror(errno));
-		output_free(&o);
+	if (o.save_at > hs_scenario_frame_count(s)) {
+		fprintf(stderr, "handspring run: --save-at must be within [0, %ld] (the scenario's frames), got %ld\n",
+		        hs_scenario_frame_count(s), o.save_at);
 		hs_scenario_destroy(s);
 		return EXIT_BAD_INPUT;
 	}
-	FILE *outs[1] = {o.file};
-	run_scenario(s, outs, 1);
-	bool written = output_close(&o, true);
-	output_free(&o);
-	if (!written) {
-		fprintf(stderr, "handspring: cannot write %s: %s\n", out, strerror(errno));
-		hs_scenario_destroy(s);
-		return EXIT_BAD_INPUT;
+	bool to_stdout = o.out && strcmp(o.out, "-") == 0; // the trajectory on stdout, the summary on stderr
+	output traj;
+	memset(&traj, 0, sizeof traj);
+	bool ok = !o.resume || resume_state(s, o.resume);
+	if (ok && o.out && !to_stdout && !(ok = output_open(&traj, o.out)))
+		fprintf(stderr, "handspring: cannot write %s: %s\n", o.out, strerror(errno));
+	ok = ok && run_saving(s, to_stdout ? stdout : traj.file, &o);
+	if (!output_close(&traj, ok) && ok) {
+		fprintf(stderr, "handspring: cannot write %s: %s\n", o.out, strerror(errno));
+		ok = false;
 	}
-	hs_world *world = hs_scenario_world(s);
-	printf("scenario: %s\n", hs_scenario_name(s));
-	printf("  %s\n", hs_scenario_description(s));
-	printf("frames:   %ld (dt %.9g s, %.9g s)\n", hs_world_frame(world), hs_scenario_dt(s),
-	       (double)hs_world_frame(world) * hs_scenario_dt(s));
-	printf("objects:  %d\n", hs_scenario_object_count(s));
-	int failed = hs_scenario_check(s, stdout);
-	int total = hs_scenario_expectation_count(s);
-	printf("expectations: %d/%d passed\n", total - failed, total);
-	printf("final hash: %016" PRIx64 "\n", hs_world_hash(world));
-	if (out)
-		printf("trajectory: %s\n", out);
-	printf("%s\n", failed ? "FAIL" : "PASS");
+	output_free(&traj);
+	int failed = ok ? print_summary(to_stdout ? stderr : stdout, s, &o) : 0;
 	hs_scenario_destroy(s);
-	return failed ? EXIT_FAILED : EXIT_PASS;
+	return !ok ? EXIT_BAD_INPUT : failed ? EXIT_FAILED : EXIT_PASS;
 }
 
 static bool parse_dir_option(int argc, char **argv, int *i, const char *name, const char **value, int *status,

@@ -48,11 +48,23 @@ long hs_scenario_frame_count(const hs_scenario *scenario);
 bool hs_scenario_step(hs_scenario *scenario);
 
 /// Evaluates every `expect` clause; writes one line per clause (PASS/FAIL and the measured
-/// value) to `report` when not NULL. Returns the number of failed clauses.
+/// value) to `report` when not NULL, and a FAIL line when the world failed to step or caught a
+/// numeric fault. Returns the number of failed lines.
 int hs_scenario_check(const hs_scenario *scenario, FILE *report);
 /// Lines hs_scenario_check writes: one per clause and object it names ("*" names every object),
-/// plus one when the world failed to step.
+/// plus one when the world failed to step, plus one when it caught a numeric fault (a non-finite
+/// value: the run fails, whatever its clauses say).
 int hs_scenario_expectation_count(const hs_scenario *scenario);
+/// Writes the run's state at the current frame: a header (magic, version, the scenario's name, a
+/// checksum of the scenario file's bytes, the frame), the harness's own state (the input noise
+/// generator, what the expectations captured so far), then the world's state block
+/// (hs_world_save_state). HS_OK, or a status and `err` ("state file: what is wrong").
+hs_status hs_scenario_save(const hs_scenario *scenario, FILE *out, hs_error *err);
+/// Restores a state written by hs_scenario_save into a scenario just loaded from the same file
+/// (the same bytes: checked). Stepping then continues the saved run bit for bit, and
+/// hs_scenario_check reports what the full run reports. On failure the scenario is unchanged
+/// (HS_ERR_STATE_MISMATCH for a state from another scenario, file version or build).
+hs_status hs_scenario_resume(hs_scenario *scenario, FILE *in, hs_error *err);
 /// s: the scenario's frame time.
 double hs_scenario_dt(const hs_scenario *scenario);
 int hs_scenario_object_count(const hs_scenario *scenario);

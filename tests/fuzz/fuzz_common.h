@@ -8,7 +8,8 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "harness_internal.h"
+#include "error.h"
+#include "hand_script.h"
 
 // A crash the fuzzer reports with the input that caused it.
 #define FUZZ_REQUIRE(cond)                                                                              \

@@ -1,0 +1,318 @@
+// capture.c — what the expectation checks record while the run passes, each from the current
+// frame: a state at a clause's frame, a reference pose, a window's before and after, a landing,
+// contact states, a release. Called from hs_scenario_step; none of it allocates.
+#include <math.h>
+#include <string.h>
+
+#include "expect_table.h"
+#include "scenario_internal.h"
+
+// The object's velocity: in spring worlds the integrated one, else (P(t) − P(t − dt)) / dt.
+static hs_vec3 velocity_of(const hs_scenario *s, int object, const hs_object_state *st) {
+	hs_spring_object o;
+	if (s->springs && hs_world_spring_object(s->world, s->ids[object], &o) == HS_OK)
+		return o.velocity;
+	return st->velocity;
+}
+
+// What the at-based spring predicates need: who is on the spring, how, and its stretch.
+static void capture_spring(const hs_scenario *s, hs_check *k) {
+	hs_spring_state ss;
+	hs_spring_object o;
+	if (hs_world_spring_state(s->world, &ss) != HS_OK)
+		return;
+	k->u.at.candidate = hs_scenario_index_of(s, ss.candidate);
+	k->u.at.holder = hs_scenario_index_of(s, ss.attached);
+	if (k->u.at.holder < 0)
+		return;
+	k->u.at.kind = ss.attach_kind;
+	k->u.at.extension = ss.extension;
+	if (hs_world_spring_object(s->world, ss.attached, &o) == HS_OK) {
+		k->u.at.rest_length = o.rest_length;
+		k->u.at.ratio = ss.extension / o.rest_length;
+	}
+}
+
+void hs_capture_at(const hs_scenario *s, const hs_clause *c, hs_check *k, long frame) {
+	(void)c, (void)frame; // called once, at the clause's frame
+	k->u.at.state = hs_scenario_state_of(s, k->object);
+	k->u.at.velocity = velocity_of(s, k->object, &k->u.at.state);
+	k->u.at.holder = k->u.at.candidate = -1;
+	if (s->springs)
+		capture_spring(s, k);
+	k->captured = true;
+}
+
+static bool same_pose(const hs_object_state *a, const hs_object_state *b) {
+	double x[7] = {a->position.x,    a->position.y,    a->position.z,   a->orientation.w,
+	               a->orientation.x, a->orientation.y, a->orientation.z};
+	double y[7] = {b->position.x,    b->position.y,    b->position.z,   b->orientation.w,
+	               b->orientation.x, b->orientation.y, b->orientation.z};
+	return memcmp(x, y, sizeof x) == 0; // the exact bits: "still" means not one ulp of motion
+}
+
+void hs_capture_still(const hs_scenario *s, const hs_clause *c, hs_check *k, long frame) {
+	if (frame < c->frame || frame > c->last_frame || k->u.still.moved)
+		return;
+	hs_object_state st = hs_scenario_state_of(s, k->object);
+	if (frame == c->frame) {
+		k->u.still.state = st;
+		k->captured = true;
+	} else if (!same_pose(&k->u.still.state, &st)) {
+		k->u.still.moved = true;
+		k->u.still.moved_frame = frame;
+	}
+}
+
+// conserved: the group's momentum Σ m v (kg m/s), or its energy Σ (½ m |v|² − m g·G) (J) in out[0].
+static void group_quantity(const hs_scenario *s, const hs_clause *c, double out[3]) {
+	out[0] = out[1] = out[2] = 0.0;
+	for (int i = 0; i < c->member_count; ++i) {
+		hs_spring_object o;
+		hs_object_state st;
+		int object = s->expect.members[c->first_member + i];
+		if (hs_world_spring_object(s->world, s->ids[object], &o) != HS_OK ||
+		    hs_world_object_state(s->world, s->ids[object], &st) != HS_OK)
+			continue;
+		if (c->count == HS_CONSERVE_MOMENTUM) {
+			out[0] += o.mass * o.velocity.x;
+			out[1] += o.mass * o.velocity.y;
+			out[2] += o.mass * o.velocity.z;
+		} else {
+			out[0] += 0.5 * o.mass * hs_dot(o.velocity, o.velocity) - o.mass * hs_dot(s->gravity, st.position);
+		}
+	}
+}
+
+void hs_capture_conserved(const hs_scenario *s, const hs_clause *c, hs_check *k, long frame) {
+	if (frame < c->frame || frame > c->last_frame || k->captured)
+		return;
+	if (frame == c->frame) {
+		group_quantity(s, c, k->u.window.before);
+		k->u.window.began = true;
+	}
+	if (frame == c->last_frame) {
+		group_quantity(s, c, k->u.window.after);
+		k->captured = true;
+	}
+}
+
+// swing_below: the horizontal distance (m) from the stylus to the object's G.
+static double swing_of(const hs_scenario *s, int object) {
+	hs_spring_state ss;
+	hs_object_state st;
+	if (hs_world_spring_state(s->world, &ss) != HS_OK || hs_world_object_state(s->world, s->ids[object], &st) != HS_OK)
+		return 0.0;
+	double dx = st.position.x - ss.stylus.x, dy = st.position.y - ss.stylus.y;
+	return sqrt(dx * dx + dy * dy);
+}
+
+void hs_capture_swing(const hs_scenario *s, const hs_clause *c, hs_check *k, long frame) {
+	if (frame < c->frame || frame > c->last_frame || k->captured)
+		return;
+	double d = swing_of(s, k->object);
+	if (!k->u.window.began || d > k->u.window.peak) {
+		k->u.window.peak = d;
+		k->u.window.peak_frame = frame;
+	}
+	k->u.window.began = true;
+	k->captured = frame == c->last_frame;
+}
+
+// lands_at: the first frame with floor contacts after a frame without any.
+void hs_capture_lands(const hs_scenario *s, const hs_clause *c, hs_check *k, long frame) {
+	(void)c;
+	if (k->u.lands.landed)
+		return;
+	hs_object_state st = hs_scenario_state_of(s, k->object);
+	if (st.floor_contacts == 0) {
+		k->u.lands.had_no_floor = true;
+	} else if (k->u.lands.had_no_floor) {
+		k->u.lands.landed = true;
+		k->u.lands.frame = frame;
+	}
+}
+
+// contact_sequence: the object's contact state, repeats collapsed.
+void hs_capture_sequence(const hs_scenario *s, const hs_clause *c, hs_check *k, long frame) {
+	(void)c, (void)frame;
+	unsigned char state = (unsigned char)hs_scenario_state_of(s, k->object).contact;
+	if (k->u.seq.len > 0 && k->u.seq.last == state)
+		return;
+	k->u.seq.last = state;
+	if (k->u.seq.len < HS_SEQ_CAPACITY)
+		k->u.seq.states[k->u.seq.len++] = state;
+	else
+		k->u.seq.overflow++;
+}
+
+// released: the object's last release; at most one release per frame, so none is missed.
+void hs_capture_release(const hs_scenario *s, const hs_clause *c, hs_check *k, long frame) {
+	(void)c, (void)frame;
+	hs_release release;
+	memset(&release, 0, sizeof release); // no padding byte of it may reach a state file uninitialised
+	if (hs_world_spring_last_release(s->world, &release) == HS_OK && release.kind != HS_RELEASE_NONE &&
+	    hs_scenario_index_of(s, release.object) == k->object)
+		k->u.release = release;
+}
+
+void hs_expect_capture(hs_scenario *s) {
+	hs_expectations *e = &s->expect;
+	long f = s->frame;
+	while (e->capture_next < e->capture_count) {
+		hs_check *k = &e->checks[e->capture_order[e->capture_next]];
+		const hs_clause *c = &e->clauses[k->clause];
+		if (c->frame > f)
+			break;
+		hs_predicates[c->pred].capture(s, c, k, f);
+		e->capture_next++;
+	}
+	for (int i = 0; i < e->live_count; ++i) {
+		hs_check *k = &e->checks[e->live[i]];
+		const hs_clause *c = &e->clauses[k->clause];
+		hs_predicates[c->pred].capture(s, c, k, f);
+	}
+}
+
+// ---------------------------------------------------------------------------------------------
+// captures in a state file: every field as a 64-bit word, so the file means the same everywhere
+
+static void put_state(hs_state_io *io, const hs_object_state *st) {
+	hs_put_vec3(io, st->position);
+	hs_put_f64(io, st->orientation.w);
+	hs_put_vec3(io, hs_v3(st->orientation.x, st->orientation.y, st->orientation.z));
+	hs_put_vec3(io, st->velocity);
+	hs_put_i64(io, st->contact);
+	hs_put_i64(io, st->floor_contacts);
+	hs_put_u64(io, st->resting);
+}
+
+static void get_state(hs_state_io *io, hs_object_state *st) {
+	st->position = hs_get_vec3(io);
+	st->orientation.w = hs_get_f64(io);
+	hs_vec3 q = hs_get_vec3(io);
+	st->orientation.x = q.x, st->orientation.y = q.y, st->orientation.z = q.z;
+	st->velocity = hs_get_vec3(io);
+	st->contact = (hs_contact_state)hs_get_i64(io);
+	st->floor_contacts = (int)hs_get_i64(io);
+	st->resting = hs_get_u64(io) != 0;
+}
+
+static void put_at(hs_state_io *io, const hs_capture *u) {
+	put_state(io, &u->at.state);
+	hs_put_vec3(io, u->at.velocity);
+	hs_put_i64(io, u->at.holder);
+	hs_put_i64(io, u->at.candidate);
+	hs_put_i64(io, u->at.kind);
+	hs_put_f64(io, u->at.ratio);
+	hs_put_f64(io, u->at.extension);
+	hs_put_f64(io, u->at.rest_length);
+}
+
+static void get_at(hs_state_io *io, hs_capture *u) {
+	get_state(io, &u->at.state);
+	u->at.velocity = hs_get_vec3(io);
+	u->at.holder = (int)hs_get_i64(io);
+	u->at.candidate = (int)hs_get_i64(io);
+	u->at.kind = (hs_attach_kind)hs_get_i64(io);
+	u->at.ratio = hs_get_f64(io);
+	u->at.extension = hs_get_f64(io);
+	u->at.rest_length = hs_get_f64(io);
+}
+
+static void put_still(hs_state_io *io, const hs_capture *u) {
+	put_state(io, &u->still.state);
+	hs_put_u64(io, u->still.moved);
+	hs_put_i64(io, u->still.moved_frame);
+}
+
+static void get_still(hs_state_io *io, hs_capture *u) {
+	get_state(io, &u->still.state);
+	u->still.moved = hs_get_u64(io) != 0;
+	u->still.moved_frame = (long)hs_get_i64(io);
+}
+
+static void put_window(hs_state_io *io, const hs_capture *u) {
+	hs_put_u64(io, u->window.began);
+	for (int i = 0; i < 3; ++i) {
+		hs_put_f64(io, u->window.before[i]);
+		hs_put_f64(io, u->window.after[i]);
+	}
+	hs_put_f64(io, u->window.peak);
+	hs_put_i64(io, u->window.peak_frame);
+}
+
+static void get_window(hs_state_io *io, hs_capture *u) {
+	u->window.began = hs_get_u64(io) != 0;
+	for (int i = 0; i < 3; ++i) {
+		u->window.before[i] = hs_get_f64(io);
+		u->window.after[i] = hs_get_f64(io);
+	}
+	u->window.peak = hs_get_f64(io);
+	u->window.peak_frame = (long)hs_get_i64(io);
+}
+
+static void put_lands(hs_state_io *io, const hs_capture *u) {
+	hs_put_u64(io, u->lands.had_no_floor);
+	hs_put_u64(io, u->lands.landed);
+	hs_put_i64(io, u->lands.frame);
+}
+
+static void get_lands(hs_state_io *io, hs_capture *u) {
+	u->lands.had_no_floor = hs_get_u64(io) != 0;
+	u->lands.landed = hs_get_u64(io) != 0;
+	u->lands.frame = (long)hs_get_i64(io);
+}
+
+static void put_seq(hs_state_io *io, const hs_capture *u) {
+	hs_put_bytes(io, u->seq.states, HS_SEQ_CAPACITY);
+	hs_put_i64(io, u->seq.len);
+	hs_put_i64(io, u->seq.overflow);
+	hs_put_u64(io, u->seq.last);
+}
+
+static void get_seq(hs_state_io *io, hs_capture *u) {
+	hs_get_bytes(io, u->seq.states, HS_SEQ_CAPACITY);
+	int64_t len = hs_get_i64(io);
+	u->seq.len = len >= 0 && len <= HS_SEQ_CAPACITY ? (int)len : 0; // never index beyond the states
+	u->seq.overflow = (long)hs_get_i64(io);
+	u->seq.last = (unsigned char)hs_get_u64(io);
+}
+
+static void put_release(hs_state_io *io, const hs_capture *u) {
+	hs_put_i64(io, u->release.kind);
+	hs_put_u64(io, u->release.object.index1);
+	hs_put_f64(io, u->release.time);
+	hs_put_vec3(io, u->release.velocity);
+	hs_put_f64(io, u->release.hand_speed);
+}
+
+static void get_release(hs_state_io *io, hs_capture *u) {
+	u->release.kind = (hs_release_kind)hs_get_i64(io);
+	u->release.object.index1 = (uint32_t)hs_get_u64(io);
+	u->release.time = hs_get_f64(io);
+	u->release.velocity = hs_get_vec3(io);
+	u->release.hand_speed = hs_get_f64(io);
+}
+
+static const struct {
+	void (*put)(hs_state_io *io, const hs_capture *u);
+	void (*get)(hs_state_io *io, hs_capture *u);
+} stores[] = {
+    [HS_STORE_NONE] = {NULL, NULL},          [HS_STORE_AT] = {put_at, get_at},
+    [HS_STORE_STILL] = {put_still, get_still}, [HS_STORE_WINDOW] = {put_window, get_window},
+    [HS_STORE_LANDS] = {put_lands, get_lands}, [HS_STORE_SEQ] = {put_seq, get_seq},
+    [HS_STORE_RELEASE] = {put_release, get_release},
+};
+
+void hs_capture_put(hs_state_io *io, hs_store store, const hs_check *k) {
+	hs_put_u64(io, k->captured);
+	if (stores[store].put)
+		stores[store].put(io, &k->u);
+}
+
+void hs_capture_get(hs_state_io *io, hs_store store, hs_check *k) {
+	k->captured = hs_get_u64(io) != 0;
+	if (stores[store].get)
+		stores[store].get(io, &k->u);
+}

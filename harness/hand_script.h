@@ -1,0 +1,47 @@
+// hand_script.h — hand input (1999 paper §5.1: glove + tracker): keyframes or a recorded
+// glove+tracker file, sampled per frame.
+#ifndef HS_HARNESS_HAND_SCRIPT_H
+#define HS_HARNESS_HAND_SCRIPT_H
+
+#include <stdbool.h>
+#include <stdint.h>
+
+#include "error.h"
+#include "handspring.h"
+#include "noise.h"
+
+typedef struct hs_hand_key {
+	double t;      // s
+	hs_vec3 wrist; // m
+	hs_quat rot;
+	double sensors[HS_GLOVE_SENSORS]; // sensor units, interpolated linearly, rounded when applied
+} hs_hand_key;
+
+typedef struct hs_hand_script {
+	int key_count;
+	hs_hand_key *keys; // strictly increasing t
+} hs_hand_script;
+
+// The hand at time t: positions and sensors linear between keys, orientation by slerp; before
+// the first key and after the last the nearest key holds.
+void hs_hand_script_sample(const hs_hand_script *script, double t, hs_vec3 *wrist, hs_quat *rot,
+                           uint8_t sensors[HS_GLOVE_SENSORS]);
+// Reads a recorded glove+tracker CSV (header t,x,y,z,qw,qx,qy,qz,s0..s17; any rate) into keys.
+// Errors are "PATH:LINE: what is wrong".
+bool hs_record_load(const char *path, hs_hand_script *script, hs_error *err);
+
+// The hands of a scenario and their scripts.
+typedef struct hs_hands {
+	int count;
+	char **names;
+	hs_hand_id *ids;
+	hs_hand_script *scripts;
+} hs_hands;
+
+// Gives every hand its pose and glove at time t (the end of the coming frame), with the input
+// noise of `options` when `noise` is not NULL.
+void hs_hands_drive(hs_world *world, const hs_hands *hands, double t, hs_noise *noise,
+                    const hs_noise_options *options);
+void hs_hands_free(hs_hands *hands);
+
+#endif

@@ -1,0 +1,88 @@
+// noise.c — input noise from GSL's mt19937, explicitly seeded. Determinism: the generator's
+// integers and gsl_rng_uniform / gsl_rng_uniform_pos (an integer divided by 2^32) are exact on
+// every machine; the Gaussian transform is Box–Muller through the library's own hs_log, hs_cos and
+// hs_sin (hs_math.h) and sqrt, never libm's log, sin or cos, whose last bits differ across CPUs —
+// which is also why gsl_ran_gaussian (it calls libm's log) is not used.
+#include <gsl/gsl_rng.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "noise.h"
+
+struct hs_noise {
+	gsl_rng *rng;
+};
+
+hs_noise *hs_noise_create(unsigned long seed) {
+	hs_noise *noise = calloc(1, sizeof *noise);
+	if (!noise)
+		return NULL;
+	noise->rng = gsl_rng_alloc(gsl_rng_mt19937);
+	if (!noise->rng) {
+		free(noise);
+		return NULL;
+	}
+	gsl_rng_set(noise->rng, seed);
+	return noise;
+}
+
+void hs_noise_destroy(hs_noise *noise) {
+	if (!noise)
+		return;
+	gsl_rng_free(noise->rng);
+	free(noise);
+}
+
+// Two independent N(0, 1) draws (Box–Muller): u1, u2 in (0, 1], r = √(−2 ln u1), θ = 2π u2.
+static void gaussian_pair(hs_noise *noise, double *a, double *b) {
+	double u1 = gsl_rng_uniform_pos(noise->rng), u2 = gsl_rng_uniform_pos(noise->rng);
+	double r = sqrt(-2.0 * hs_log(u1)), theta = 2.0 * HS_PI * u2;
+	*a = r * hs_cos(theta);
+	*b = r * hs_sin(theta);
+}
+
+void hs_noise_stylus(hs_noise *noise, hs_vec3 *position, hs_quat *orientation) {
+	double n[6]; // x, y, z of the position, then of the rotation vector
+	for (int i = 0; i < 6; i += 2)
+		gaussian_pair(noise, &n[i], &n[i + 1]);
+	*position = hs_add(*position, hs_scale(hs_v3(n[0], n[1], n[2]), HS_STYLUS_NOISE_POSITION));
+	hs_vec3 rv = hs_scale(hs_v3(n[3], n[4], n[5]), HS_STYLUS_NOISE_ROTATION);
+	double angle = hs_length(rv);
+	if (angle > 0.0)
+		*orientation = hs_quat_normalize(
+		    hs_quat_mul(hs_quat_from_axis_angle(hs_scale(rv, 1.0 / angle), angle), *orientation));
+}
+
+void hs_noise_hand(hs_noise *noise, const hs_noise_options *options, hs_vec3 *wrist,
+                   uint8_t sensors[HS_GLOVE_SENSORS]) {
+	if (options->wrist > 0.0) {
+		double d[3];
+		for (int i = 0; i < 3; ++i) // uniform in [-wrist, wrist)
+			d[i] = (2.0 * gsl_rng_uniform(noise->rng) - 1.0) * options->wrist;
+		*wrist = hs_add(*wrist, hs_v3(d[0], d[1], d[2]));
+	}
+	if (options->glove_units > 0) {
+		unsigned long span = 2ul * (unsigned long)options->glove_units + 1ul;
+		for (int i = 0; i < HS_GLOVE_SENSORS; ++i) { // integers: -units..+units, each equally likely
+			long v = (long)sensors[i] + (long)gsl_rng_uniform_int(noise->rng, span) - options->glove_units;
+			sensors[i] = (uint8_t)(v < 0 ? 0 : v > 255 ? 255 : v);
+		}
+	}
+}
+
+size_t hs_noise_state_size(const hs_noise *noise) { return noise ? gsl_rng_size(noise->rng) : 0; }
+
+bool hs_noise_save(const hs_noise *noise, void *buffer, size_t size) {
+	if (!noise || size != gsl_rng_size(noise->rng))
+		return false;
+	memcpy(buffer, gsl_rng_state(noise->rng), size);
+	return true;
+}
+
+bool hs_noise_load(hs_noise *noise, const void *buffer, size_t size) {
+	if (!noise || size != gsl_rng_size(noise->rng))
+		return false;
+	memcpy(gsl_rng_state(noise->rng), buffer, size);
+	return true;
+}

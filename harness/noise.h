@@ -1,0 +1,45 @@
+// noise.h — input noise: what a real tracker and glove add to the pose and sensors they report.
+// Noise is input, not physics (DESIGN.md "State"): the harness draws it from its own seeded
+// generator and gives the world the noisy readings, so the model holds no random generator.
+#ifndef HS_HARNESS_NOISE_H
+#define HS_HARNESS_NOISE_H
+
+#include <stdbool.h>
+#include <stddef.h>
+#include <stdint.h>
+
+#include "handspring.h"
+
+// The Fastrak's static accuracy (workbench paper §5.1, [13]): RMS per axis of each reading.
+#define HS_STYLUS_NOISE_POSITION (0.03 * 0.0254)        // m: 0.03 inch
+#define HS_STYLUS_NOISE_ROTATION (0.15 * HS_PI / 180.0) // rad: 0.15° per component of the rotation vector
+
+// What a scenario asks for (model.spring.noise_seed, model.input_noise).
+typedef struct hs_noise_options {
+	bool stylus;     // Gaussian tracker noise on the stylus pose, every frame
+	int glove_units; // hands: each sensor ± this many units, uniform, every frame (0: none)
+	double wrist;    // m, hands: each wrist coordinate ± this, uniform, every frame (0: none)
+} hs_noise_options;
+
+typedef struct hs_noise hs_noise;
+
+// A generator (GSL's mt19937) seeded explicitly; NULL when out of memory.
+hs_noise *hs_noise_create(unsigned long seed);
+void hs_noise_destroy(hs_noise *noise);
+
+// Adds tracker noise to a stylus reading: position + N(0, σp²) per axis, then a rotation whose
+// rotation vector is N(0, σr²) per axis, applied before the reading (world frame). Six draws in a
+// fixed order: x, y, z, then the rotation vector's x, y, z.
+void hs_noise_stylus(hs_noise *noise, hs_vec3 *position, hs_quat *orientation);
+// Adds uniform noise to a hand reading: the wrist (x, y, z) ± options->wrist, then each sensor in
+// order ± options->glove_units, clamped to 0..255. Nothing is drawn for a zero amplitude.
+void hs_noise_hand(hs_noise *noise, const hs_noise_options *options, hs_vec3 *wrist,
+                   uint8_t sensors[HS_GLOVE_SENSORS]);
+
+// The generator's state as bytes (gsl_rng_state: a memcpy, so a state file resumes on the same
+// kind of build), for hs_scenario_save / hs_scenario_resume.
+size_t hs_noise_state_size(const hs_noise *noise);
+bool hs_noise_save(const hs_noise *noise, void *buffer, size_t size);
+bool hs_noise_load(hs_noise *noise, const void *buffer, size_t size);
+
+#endif

@@ -1,0 +1,23 @@
+// record.h — recorded tracker files (glove and stylus CSV): one reader for both.
+#ifndef HS_HARNESS_RECORD_H
+#define HS_HARNESS_RECORD_H
+
+#include <stdbool.h>
+
+#include "error.h"
+
+// A header, then rows of `columns` numbers with t strictly increasing (column 1), x y z within
+// ±1000 m (2-4) and qw qx qy qz a unit quaternion (5-8, HS_QUAT_NORM_TOLERANCE); blank and '#'
+// lines are skipped. The caller checks the rest. Files and lines are bounded (file_read.h).
+typedef struct hs_record_rows {
+	long count;
+	double *values; // count × columns
+	long *lines;    // each row's line in the file
+} hs_record_rows;
+
+// `what` names the file in messages ("recorded input"); `shown` is how messages write the header.
+bool hs_record_read(const char *path, const char *what, const char *header, const char *shown, int columns,
+                    long max_rows, hs_record_rows *rows, hs_error *err);
+void hs_record_rows_free(hs_record_rows *rows);
+
+#endif

@@ -1,0 +1,48 @@
+// scenario_internal.h — the scenario as the harness's files share it: what the file built, the
+// input scripts, the expectations and the run so far.
+#ifndef HS_HARNESS_SCENARIO_INTERNAL_H
+#define HS_HARNESS_SCENARIO_INTERNAL_H
+
+#include <stdint.h>
+
+#include "expect.h"
+#include "hand_script.h"
+#include "hs_harness.h"
+#include "noise.h"
+#include "stylus_script.h"
+
+enum { HS_MAX_NAME = 64 }; // characters of an object name
+
+struct hs_scenario {
+	char *name, *description;
+	double dt, duration; // s
+	long frames;         // to run: llround(duration / dt)
+	long frame;          // run so far
+	hs_world *world;
+	int object_count;
+	char **object_names;
+	hs_object_id *ids;
+	hs_object_state *initial; // every object at frame 0 (moved, turned_deg)
+	hs_vec3 gravity;          // m/s²: the potential energy of `conserved: energy`
+	bool springs;             // the scenario has a stylus: hs_world_enable_springs was called
+	hs_hands hands;           // hand worlds: glove + tracker scripts (1999 paper §5.1)
+	hs_stylus_script stylus;  // spring worlds: the stylus (workbench paper §3–§5)
+	hs_noise *noise;          // the input noise's generator (NULL: no noise)
+	hs_noise_options noise_options;
+	hs_expectations expect;
+	hs_status step_status;    // the first failed step (HS_OK: none)
+	long failed_frame;
+	uint64_t source_hash;     // FNV-1a of the scenario file's bytes: a state file names the file it continues
+	long fault_offset;        // numeric faults before a resume that the world's counters do not hold
+};
+
+// Numeric faults the world caught in this run (a resumed run counts those before the save too).
+long hs_scenario_faults(const hs_scenario *s);
+
+// The state of the i-th object (zero when the world refuses).
+hs_object_state hs_scenario_state_of(const hs_scenario *s, int object);
+// The index of an object handle, -1 for the null handle or another world's: objects were added
+// in the file's order, so the handle's index1 is index + 1.
+int hs_scenario_index_of(const hs_scenario *s, hs_object_id id);
+
+#endif

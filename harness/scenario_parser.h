@@ -1,0 +1,48 @@
+// scenario_parser.h — reading a scenario file's sections into an hs_scenario. Each section's
+// reader lives with its concept: the world (scenario_world.c), hands (hand_script.c), the stylus
+// (stylus_script.c), expectations (expect.c); scenario.c calls them in order.
+#ifndef HS_HARNESS_SCENARIO_PARSER_H
+#define HS_HARNESS_SCENARIO_PARSER_H
+
+#include "handspring.h"
+#include "hs_harness.h"
+#include "noise.h"
+#include "yaml_read.h"
+
+typedef struct hs_name_entry {
+	const char *name;
+	int index;
+} hs_name_entry;
+
+typedef struct hs_scenario_parser {
+	hs_yaml y;
+	hs_scenario *s;
+	hs_name_entry *sorted;         // object names in strcmp order, for duplicates and lookups by name
+	hs_spring_def spring;          // model.spring, read before the world exists
+	const yaml_node_t *spring_key; // where model.spring was given (NULL: not given)
+	hs_noise_options noise;        // model.spring.noise_seed, model.input_noise
+	bool seeded;                   // a noise seed was given: the scenario draws noise
+	unsigned long seed;
+	const yaml_node_t *input_noise_key; // where model.input_noise was given (NULL: not given)
+} hs_scenario_parser;
+
+// scenario_world.c
+bool hs_read_dt(hs_scenario_parser *p, const yaml_node_t *node);
+bool hs_read_duration(hs_scenario_parser *p, const yaml_node_t *node);
+bool hs_read_gravity(hs_scenario_parser *p, const yaml_node_t *node, hs_world_def *def);
+bool hs_read_model(hs_scenario_parser *p, const yaml_node_t *node, hs_world_def *def);
+// Creates the world (room for exactly these objects) and adds them.
+bool hs_read_objects(hs_scenario_parser *p, const yaml_node_t *node, hs_world_def def);
+// Index of the object named by a scalar, or -1: the one lookup by name.
+int hs_find_object(const hs_scenario_parser *p, const yaml_node_t *node);
+
+// hand_script.c: the world's room for hands (before it is created), then the hands
+bool hs_count_hands(hs_scenario_parser *p, const yaml_node_t *node, hs_world_def *def);
+bool hs_read_hands(hs_scenario_parser *p, const yaml_node_t *node);
+// stylus_script.c: switches the world to the spring model (with model.spring) and reads its script
+bool hs_read_stylus(hs_scenario_parser *p, const yaml_node_t *node);
+// expect.c: the clauses, then everything the run records (so stepping never allocates)
+bool hs_read_expect(hs_scenario_parser *p, const yaml_node_t *node);
+bool hs_prepare_checks(hs_scenario_parser *p, const yaml_node_t *root);
+
+#endif
