@@ -15,7 +15,9 @@ enum {
 	MAX_FACE_SIZE = 1000,    // vertices of one polyhedron face
 };
 static const long MAX_FRAMES = 10000000L;
-static const double MIN_DT = 1.0 / 2000.0, MAX_DT = 1.0 / 12.0; // s: the hand paper ran at 12–17 fps
+// A scenario's frame time lies within the model's (test_scenario checks the two ranges nest).
+#define MIN_DT HS_SCENARIO_MIN_DT
+#define MAX_DT HS_SCENARIO_MAX_DT
 static const double MAX_LENGTH = 1000.0;                        // m: largest size and coordinate accepted
 
 bool hs_read_dt(hs_scenario_parser *p, const yaml_node_t *node) {

@@ -29,7 +29,6 @@
 
 #include "manipulate.h"
 #include "world_internal.h"
-#include "harness_internal.h"
 
 #define FLOOR_SLOP 1e-9 // m: deepest penetration accepted after a frame
 #define WALL_SLOP 1e-9  // m

@@ -19,7 +19,6 @@
 #include <cmocka.h>
 
 #include "world_internal.h"
-#include "harness_internal.h"
 #include "test_util.h"
 
 #if defined(__SANITIZE_ADDRESS__)

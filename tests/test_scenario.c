@@ -1002,6 +1002,13 @@ static void test_input_noise(void **state) {
 // A run whose world caught a numeric fault fails: an explicit integrator (semi-implicit Euler,
 // omega dt = 2.8 at 20 frames/s) blows up on a stiff spring; the world freezes the object and counts
 // it, and hs_scenario_check adds a failing line.
+// The scenario's frame times are a sub-range of the model's, written once each.
+static void test_dt_ranges_nest(void **state) {
+	(void)state;
+	assert_true(HS_SCENARIO_MIN_DT >= HS_MIN_DT && HS_SCENARIO_MAX_DT <= HS_MAX_DT);
+	assert_true(HS_SCENARIO_MIN_DT < HS_SCENARIO_MAX_DT);
+}
+
 static void test_numeric_fault_fails(void **state) {
 	(void)state;
 	hs_scenario *s = load_text("fault.yaml", "description: blows up\ndt: 1/20\nduration: 60\n"
@@ -1195,6 +1202,7 @@ int main(void) {
 	    cmocka_unit_test(test_stylus_noise),
 	    cmocka_unit_test(test_input_noise),
 	    cmocka_unit_test(test_numeric_fault_fails),
+	    cmocka_unit_test(test_dt_ranges_nest),
 	    cmocka_unit_test(test_save_and_resume),
 	    cmocka_unit_test(test_resume_refusals),
 	};

@@ -382,17 +382,17 @@ static int cmd_list(int argc, char **argv) {
 	return status;
 }
 
-static int cmd_all(int argc, char **argv) {
-	const char *dir = "scenarios", *out_dir = NULL, *golden_dir = NULL;
+// `all`'s options; -1 to go on, else the exit status.
+static int all_options(int argc, char **argv, const char **dir, const char **out_dir, const char **golden_dir) {
 	for (int i = 0; i < argc; ++i) {
 		int status = -1;
 		if (is_help(argv[i])) {
 			fputs(usage_all, stdout);
 			return EXIT_PASS;
 		}
-		if (parse_dir_option(argc, argv, &i, "--dir", &dir, &status, "all", usage_all) ||
-		    parse_dir_option(argc, argv, &i, "--out-dir", &out_dir, &status, "all", usage_all) ||
-		    parse_dir_option(argc, argv, &i, "--golden-dir", &golden_dir, &status, "all", usage_all)) {
+		if (parse_dir_option(argc, argv, &i, "--dir", dir, &status, "all", usage_all) ||
+		    parse_dir_option(argc, argv, &i, "--out-dir", out_dir, &status, "all", usage_all) ||
+		    parse_dir_option(argc, argv, &i, "--golden-dir", golden_dir, &status, "all", usage_all)) {
 			if (status >= 0)
 				return status;
 			continue;
@@ -400,6 +400,74 @@ static int cmd_all(int argc, char **argv) {
 		return usage_error("all", usage_all, argv[i][0] == '-' ? "unknown option '%s'" : "unexpected argument '%s'",
 		                   argv[i]);
 	}
+	return -1;
+}
+
+// Runs one loaded scenario writing its trajectory to out_dir and golden_dir (either may be NULL);
+// false on a write error (said on stderr).
+static bool all_run_one(hs_scenario *s, const char *name, const char *path, const char *out_dir,
+                        const char *golden_dir) {
+	output outs[2];
+	memset(outs, 0, sizeof outs);
+	const char *dirs[2] = {out_dir, golden_dir};
+	bool io_ok = true;
+	for (int k = 0; k < 2 && io_ok; ++k) {
+		if (!dirs[k])
+			continue;
+		char *csv = join_csv(dirs[k], name);
+		io_ok = csv && output_open(&outs[k], csv);
+		if (!io_ok)
+			fprintf(stderr, "handspring: cannot write %s: %s\n", csv ? csv : name, strerror(errno));
+		else if (k == 1)
+			fprintf(outs[k].file,
+			        "# handspring golden trajectory of scenario %s (%s)\n"
+			        "# regenerate with make golden\n",
+			        name, path);
+		free(csv);
+	}
+	FILE *files[2] = {outs[0].file, outs[1].file};
+	if (io_ok)
+		run_scenario(s, files, 2);
+	for (int k = 0; k < 2; ++k) {
+		if (!output_close(&outs[k], io_ok) && io_ok) {
+			fprintf(stderr, "handspring: cannot write %s: %s\n", outs[k].path, strerror(errno));
+			io_ok = false;
+		}
+		output_free(&outs[k]);
+	}
+	return io_ok;
+}
+
+// Checks a run scenario: its table row on stdout, its FAIL lines into log. Returns the failures.
+static int all_report(hs_scenario *s, const char *name, int width, FILE *log) {
+	char *report = NULL;
+	size_t report_size = 0;
+	FILE *r = open_memstream(&report, &report_size);
+	int fails = hs_scenario_check(s, r);
+	if (r)
+		fclose(r);
+	int total = hs_scenario_expectation_count(s);
+	char expect[32];
+	snprintf(expect, sizeof expect, "%d/%d", total - fails, total);
+	printf("%-*s  %9ld  %7d  %11s  %016" PRIx64 "  %s\n", width, name, hs_world_frame(hs_scenario_world(s)),
+	       hs_scenario_object_count(s), expect, hs_world_hash(hs_scenario_world(s)), fails ? "FAIL" : "PASS");
+	fflush(stdout);
+	for (char *line = report; fails && line && *line;) { // keep only the FAIL lines
+		char *end = strchr(line, '\n');
+		size_t n = end ? (size_t)(end - line) : strlen(line);
+		if (log && strncmp(line, "FAIL", 4) == 0)
+			fprintf(log, "%s: %.*s\n", name, (int)n, line);
+		line = end ? end + 1 : line + n;
+	}
+	free(report);
+	return fails;
+}
+
+static int cmd_all(int argc, char **argv) {
+	const char *dir = "scenarios", *out_dir = NULL, *golden_dir = NULL;
+	int status = all_options(argc, argv, &dir, &out_dir, &golden_dir);
+	if (status >= 0)
+		return status;
 	hs_catalog catalog;
 	hs_error err;
 	if (!hs_catalog_load(dir, &catalog, &err)) {
@@ -423,71 +491,16 @@ static int cmd_all(int argc, char **argv) {
 	for (int i = 0; i < catalog.count; ++i) {
 		const char *name = catalog.names[i];
 		hs_scenario *s = hs_scenario_load(catalog.paths[i], &err);
-		if (!s) {
+		if (!s)
 			fprintf(stderr, "%s\n", err.message);
-			printf("%-*s  %9s  %7s  %11s  %-16s  %s\n", width, name, "-", "-", "-", "-", "BAD INPUT");
+		if (!s || !all_run_one(s, name, catalog.paths[i], out_dir, golden_dir)) {
+			printf("%-*s  %9s  %7s  %11s  %-16s  %s\n", width, name, "-", "-", "-", "-", s ? "WRITE ERROR" : "BAD INPUT");
 			bad++;
-			continue;
-		}
-		output outs[2];
-		memset(outs, 0, sizeof outs);
-		const char *dirs[2] = {out_dir, golden_dir};
-		bool io_ok = true;
-		for (int k = 0; k < 2 && io_ok; ++k) {
-			if (!dirs[k])
-				continue;
-			char *path = join_csv(dirs[k], name);
-			io_ok = path && output_open(&outs[k], path);
-			if (!io_ok)
-				fprintf(stderr, "handspring: cannot write %s: %s\n", path ? path : name, strerror(errno));
-			else if (k == 1)
-				fprintf(outs[k].file,
-				        "# handspring golden trajectory of scenario %s (%s)\n"
-				        "# regenerate with make golden\n",
-				        name, catalog.paths[i]);
-			free(path);
-		}
-		FILE *files[2] = {outs[0].file, outs[1].file};
-		if (io_ok)
-			run_scenario(s, files, 2);
-		for (int k = 0; k < 2; ++k) {
-			if (!output_close(&outs[k], io_ok) && io_ok) {
-				fprintf(stderr, "handspring: cannot write %s: %s\n", outs[k].path, strerror(errno));
-				io_ok = false;
-			}
-			output_free(&outs[k]);
-		}
-		if (!io_ok) {
-			printf("%-*s  %9s  %7s  %11s  %-16s  %s\n", width, name, "-", "-", "-", "-", "WRITE ERROR");
-			bad++;
-			hs_scenario_destroy(s);
-			continue;
-		}
-		char *report = NULL;
-		size_t report_size = 0;
-		FILE *r = open_memstream(&report, &report_size);
-		int fails = hs_scenario_check(s, r);
-		if (r)
-			fclose(r);
-		int total = hs_scenario_expectation_count(s);
-		char expect[32];
-		snprintf(expect, sizeof expect, "%d/%d", total - fails, total);
-		printf("%-*s  %9ld  %7d  %11s  %016" PRIx64 "  %s\n", width, name, hs_world_frame(hs_scenario_world(s)),
-		       hs_scenario_object_count(s), expect, hs_world_hash(hs_scenario_world(s)), fails ? "FAIL" : "PASS");
-		fflush(stdout);
-		if (fails) {
+		} else if (all_report(s, name, width, log)) {
 			failed++;
-			for (char *line = report; line && *line;) { // keep only the FAIL lines
-				char *end = strchr(line, '\n');
-				size_t n = end ? (size_t)(end - line) : strlen(line);
-				if (log && strncmp(line, "FAIL", 4) == 0)
-					fprintf(log, "%s: %.*s\n", name, (int)n, line);
-				line = end ? end + 1 : line + n;
-			}
 		} else {
 			passed++;
 		}
-		free(report);
 		hs_scenario_destroy(s);
 	}
 	if (log)

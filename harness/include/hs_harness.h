@@ -23,6 +23,11 @@ extern "C" {
 // ---------------------------------------------------------------------------------------------
 // Scenarios: a YAML file that builds a world, drives it and states what must happen.
 
+/// The frame times a scenario may choose (s): 1/2000 to 1/12 (the hand paper ran at 12–17
+/// frames/s), a sub-range of the model's [HS_MIN_DT, HS_MAX_DT] that keeps catalog runs short.
+#define HS_SCENARIO_MIN_DT (1.0 / 2000.0)
+#define HS_SCENARIO_MAX_DT (1.0 / 12.0)
+
 typedef struct hs_scenario hs_scenario;
 
 /// An error message `file:line: what is wrong` (no trailing newline).
