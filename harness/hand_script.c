@@ -266,13 +266,9 @@ static bool read_keys(hs_scenario_parser *p, const yaml_node_t *keys, const hs_h
 }
 
 static bool read_hand_record(hs_scenario_parser *p, const yaml_node_t *node, hs_hand_script *script) {
-	char *file = NULL;
-	if (!hs_yaml_text(&p->y, node, "record", &file))
-		return false;
-	char *full = hs_sibling_path(p->y.path, file);
-	free(file);
+	char *full = hs_yaml_sibling_file(&p->y, node, "record");
 	if (!full)
-		return hs_yaml_fail(&p->y, node, "out of memory");
+		return false;
 	bool ok = hs_record_load(full, script, p->y.err);
 	free(full);
 	return ok;

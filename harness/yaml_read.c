@@ -4,6 +4,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "file_read.h"
 #include "yaml_read.h"
 
 bool hs_yaml_fail(const hs_yaml *y, const yaml_node_t *node, const char *fmt, ...) {
@@ -335,4 +336,15 @@ bool hs_yaml_exclusive(const hs_yaml *y, const hs_fields *f, const char *const *
 		return hs_yaml_fail(y, hs_yaml_before(f->key[a], f->key[b]) ? f->key[b] : f->key[a],
 		                    "'%s' and '%s' are exclusive: %s", names[a], names[b], why);
 	return true;
+}
+
+char *hs_yaml_sibling_file(const hs_yaml *y, const yaml_node_t *node, const char *key) {
+	char *file = NULL;
+	if (!hs_yaml_text(y, node, key, &file))
+		return NULL;
+	char *full = hs_sibling_path(y->path, file);
+	free(file);
+	if (!full)
+		hs_yaml_fail(y, node, "out of memory");
+	return full;
 }

@@ -62,6 +62,9 @@ bool hs_yaml_integer(const hs_yaml *y, const yaml_node_t *node, const char *key,
 bool hs_yaml_bool(const hs_yaml *y, const yaml_node_t *node, const char *key, bool *out);
 // A one-line text; `out` is a new string.
 bool hs_yaml_text(const hs_yaml *y, const yaml_node_t *node, const char *key, char **out);
+// A file named by a text value, as a path beside the scenario file (malloc'd); NULL with the
+// error set when the value is not text or memory runs out.
+char *hs_yaml_sibling_file(const hs_yaml *y, const yaml_node_t *node, const char *key);
 // A time in [0, duration] s.
 bool hs_yaml_time(const hs_yaml *y, const yaml_node_t *node, const char *key, double duration, double *out);
 // `count` numbers in a list; `elements` (optional) receives their nodes for range messages.
