@@ -118,7 +118,7 @@ static bool read_at(hs_scenario_parser *p, const yaml_node_t *node, const hs_fie
 		return hs_yaml_fail(&p->y, at, "'at' must be 'end' or a time within [0, %g] s, got %s", s->duration,
 		                    hs_yaml_show(at).text);
 	} else {
-		c->frame = llround(t / s->dt);
+		c->frame = (long)llround(t / s->dt); // t <= duration: within MAX_FRAMES
 	}
 	return true;
 }
@@ -143,13 +143,13 @@ static bool read_from_to(hs_scenario_parser *p, const yaml_node_t *node, const h
 	if (f->value[HS_E_FROM]) {
 		if (!hs_yaml_time(&p->y, f->value[HS_E_FROM], "from", s->duration, &t))
 			return false;
-		c->frame = llround(t / s->dt);
+		c->frame = (long)llround(t / s->dt); // t <= duration: within MAX_FRAMES
 	}
 	c->last_frame = s->frames;
 	if (f->value[HS_E_TO]) {
 		if (!hs_yaml_time(&p->y, f->value[HS_E_TO], "to", s->duration, &t))
 			return false;
-		c->last_frame = llround(t / s->dt);
+		c->last_frame = (long)llround(t / s->dt);
 	}
 	bool window = hs_predicates[c->pred].flags & HS_PRED_WINDOW; // still: from = end is fine
 	if (!(c->last_frame > c->frame) && (f->value[HS_E_TO] || window))

@@ -64,7 +64,7 @@ bool hs_read_duration(hs_scenario_parser *p, const yaml_node_t *node) {
 		                    frames < 1e15 ? "'duration' is %.0f frames of dt = %g s; at most %ld are allowed"
 		                                  : "'duration' is %.6g frames of dt = %g s; at most %ld are allowed",
 		                    frames, p->s->dt, MAX_FRAMES);
-	long n = llround(frames);
+	long n = (long)llround(frames); // below MAX_FRAMES + 0.5: fits a 32-bit long
 	if (n < 1)
 		return hs_yaml_fail(&p->y, node, "'duration' must be at least one frame (dt = %g s), got %s", p->s->dt,
 		                    hs_yaml_show(node).text);
