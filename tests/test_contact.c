@@ -18,8 +18,9 @@
 
 // A unit cube (faces at ±0.5 about G) with G at (0, 0, 2), out of the floor's reach, and one hand
 // whose parts are all far away until a test puts some of them somewhere.
-static hs_world *cube_world(void) {
+static hs_world *cube_world_dt(double dt) {
 	hs_world_def def = hs_default_world_def();
+	def.dt = dt;
 	hs_world *w = hs_world_create(&def, NULL);
 	hs_shape *cube = hs_shape_box(hs_v3(1, 1, 1), NULL);
 	hs_object_def od = hs_default_object_def();
@@ -39,6 +40,8 @@ static hs_world *cube_world(void) {
 	hand->placed = true;
 	return w;
 }
+
+static hs_world *cube_world(void) { return cube_world_dt(1.0 / 60); }
 
 static void move_point(hs_world *w, int i, hs_vec3 from, hs_vec3 to) {
 	w->hands[0].prev_points[i] = from;
@@ -232,10 +235,69 @@ static void test_grasp_follow_release(void **state) {
 	hand->points[3] = hand->points[7] = FAR; // the hand opens
 	hs_world_step(w);
 	assert_int_equal(w->bodies[0].contact, HS_CONTACT_NONE);
-	hs_vec3 expected = hs_add(hs_add(last, hs_sub(last, before)), hs_v3(0, 0, -9.81 / 3600)); // eq. 3
+	// eq. 3 on the exact parabola of v = (last - before) / dt: last + v dt + g dt²/2
+	hs_vec3 expected = hs_add(hs_add(last, hs_sub(last, before)), hs_v3(0, 0, -0.5 * 9.81 / 3600));
 	assert_vec3_near(w->bodies[0].pos, expected, 1e-14);
 	assert_near(hs_quat_angle(w->bodies[0].spin), 10 * HS_PI / 180, 1e-12); // keeps turning
 	hs_world_destroy(w);
+}
+
+// The thumb tip (3) and index tip (7) hold the cube at its ±x faces; the wrist and both tips move
+// by u per frame from frame 1 to `frames`, then the hand opens. Returns the release frame's index.
+static int carry_and_release(hs_world *w, hs_vec3 u_dt, int frames) {
+	hs_hand *hand = &w->hands[0];
+	move_point(w, 3, hs_v3(-0.6, 0, 2), hs_v3(-0.45, 0, 2));
+	move_point(w, 7, hs_v3(0.6, 0, 2), hs_v3(0.45, 0, 2));
+	hs_world_step(w);
+	assert_int_equal(w->bodies[0].contact, HS_CONTACT_GRASP);
+	for (int k = 1; k <= frames; ++k) {
+		hs_vec3 shift = hs_scale(u_dt, k);
+		hand->wrist_pos = shift;
+		hand->points[3] = hs_add(hs_v3(-0.45, 0, 2), shift);
+		hand->points[7] = hs_add(hs_v3(0.45, 0, 2), shift);
+		hand->center = hs_add(hs_v3(0, 0, 2), shift);
+		hs_world_step(w);
+		assert_int_equal(w->bodies[0].contact, HS_CONTACT_GRASP);
+	}
+	hand->points[3] = hand->points[7] = FAR; // the hand opens
+	return frames + 1;
+}
+
+// Release on the exact parabola (DESIGN.md "Release"): a cube carried at constant velocity
+// u = (2, 0, 1) m/s and let go flies P(n + k) = P(n) + u k dt + g (k dt)²/2 from its last held
+// position P(n), so it peaks v_z²/(2g) = 1/19.62 = 0.050968 m above P(n) at every frame rate
+// (the last two held positions alone gave v_z - g dt/2: 0.0428 m at 60 frames/s). The peak is
+// the vertex of the parabola through the three highest frames (exact for samples of a parabola).
+static void test_release_on_exact_parabola(void **state) {
+	(void)state;
+	const double rates[] = {12, 17, 30, 60, 120}, g = 9.81;
+	for (int r = 0; r < 5; ++r) {
+		double dt = 1.0 / rates[r];
+		hs_world *w = cube_world_dt(dt);
+		hs_vec3 u = hs_v3(2, 0, 1);
+		carry_and_release(w, hs_scale(u, dt), 6);
+		hs_vec3 pn = w->bodies[0].pos; // the last held position: (0, 0, 2) + 6 u dt
+		assert_vec3_near(pn, hs_add(hs_v3(0, 0, 2), hs_scale(u, 6 * dt)), 1e-14);
+		double z[64];
+		int n = (int)(0.3 / dt) + 2;
+		for (int k = 1; k <= n; ++k) {
+			hs_world_step(w);
+			assert_int_equal(w->bodies[0].contact, HS_CONTACT_NONE);
+			double t = k * dt;
+			hs_vec3 exact = hs_v3(pn.x + u.x * t, pn.y, pn.z + u.z * t - 0.5 * g * t * t);
+			assert_vec3_near(w->bodies[0].pos, exact, 1e-13);
+			z[k] = w->bodies[0].pos.z;
+		}
+		int top = 1;
+		for (int k = 2; k < n; ++k)
+			top = z[k] > z[top] ? k : top;
+		assert_true(top > 0 && top < n);
+		double zm = top > 1 ? z[top - 1] : pn.z, zp = z[top + 1];
+		double curve = zp - 2.0 * z[top] + zm, slope = 0.5 * (zp - zm);
+		double peak = z[top] - slope * slope / (2.0 * curve) - pn.z;
+		assert_near(peak, u.z * u.z / (2.0 * g), 1e-9 * u.z * u.z / (2.0 * g));
+		hs_world_destroy(w);
+	}
 }
 
 // A fast hand keeps its grasp: the fingers' motion is judged relative to the held object, which
@@ -292,6 +354,7 @@ int main(void) {
 	    cmocka_unit_test(test_push_many_translates),
 	    cmocka_unit_test(test_grasp_follow_release),
 	    cmocka_unit_test(test_grasp_holds_fast_hand),
+	    cmocka_unit_test(test_release_on_exact_parabola),
 	    cmocka_unit_test(test_paper_mode_carries_interfering),
 	};
 	return cmocka_run_group_tests_name("contact", tests, NULL, NULL);

@@ -4,9 +4,14 @@
 #include <stdarg.h>
 #include <stddef.h>
 #include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
 
 #include <cmocka.h>
 
+#include "hs_harness.h"
 #include "test_util.h"
 
 #define DEG (HS_PI / 180.0)
@@ -662,6 +667,53 @@ static void test_null_sensors_write_nothing(void **state) {
 	assert_near(hs_length(a), 1.0, EPS);
 }
 
+// Runs scenarios/hand/throw_at_target.yaml at `fps` frames/s (its dt line replaced); returns the
+// block's distance on the floor from the target centre (2, 0) at the end.
+static double throw_distance(int fps) {
+	FILE *in = fopen("scenarios/hand/throw_at_target.yaml", "rb");
+	assert_non_null(in);
+	static char text[16384], changed[16500];
+	size_t n = fread(text, 1, sizeof text - 1, in);
+	fclose(in);
+	text[n] = '\0';
+	char *dt = strstr(text, "\ndt: 1/60\n");
+	assert_non_null(dt);
+	snprintf(changed, sizeof changed, "%.*s\ndt: 1/%d\n%s", (int)(dt - text), text, fps, dt + strlen("\ndt: 1/60\n"));
+	char dir[] = "/tmp/hs_throw_XXXXXX", path[64];
+	assert_non_null(mkdtemp(dir));
+	snprintf(path, sizeof path, "%s/throw_at_target.yaml", dir);
+	FILE *out = fopen(path, "wb");
+	assert_non_null(out);
+	fputs(changed, out);
+	fclose(out);
+	hs_error err;
+	hs_scenario *s = hs_scenario_load(path, &err);
+	remove(path);
+	rmdir(dir);
+	if (!s)
+		fail_msg("%s", err.message);
+	while (hs_scenario_step(s)) {
+	}
+	hs_world *w = hs_scenario_world(s);
+	hs_object_state st;
+	assert_int_equal(hs_world_object_state(w, hs_world_object_at(w, 0), &st), HS_OK);
+	double dx = st.position.x - 2.0, dy = st.position.y;
+	hs_scenario_destroy(s);
+	return sqrt(dx * dx + dy * dy);
+}
+
+// DESIGN.md "Release": a throw lands in the same place at any frame rate. hand/throw_at_target at
+// 17, 30, 60 and 120 frames/s lands 0.021, 0.041, 0.041, 0.019 m from the target centre (inside
+// its 0.15 m). Not at 12 frames/s (1.11 m short): its swing from rest to 3.9 m/s lasts 0.1 s, and
+// at 12 frames/s the one held frame inside it is mid-swing, so the held motion is 0.6 of the
+// swing's velocity (docs/model.md, open points).
+static void test_throw_lands_at_any_rate(void **state) {
+	(void)state;
+	const int rates[] = {17, 30, 60, 120};
+	for (int r = 0; r < 4; ++r)
+		assert_true(throw_distance(rates[r]) < 0.15);
+}
+
 int main(void) {
 	const struct CMUnitTest tests[] = {
 	    cmocka_unit_test(test_sensor_mapping),
@@ -683,6 +735,7 @@ int main(void) {
 	    cmocka_unit_test(test_pinch),
 	    cmocka_unit_test(test_invalid_arguments),
 	    cmocka_unit_test(test_null_sensors_write_nothing),
+	    cmocka_unit_test(test_throw_lands_at_any_rate),
 	};
 	return cmocka_run_group_tests_name("hand", tests, NULL, NULL);
 }
