@@ -205,12 +205,19 @@ static bool read_input_noise(hs_scenario_parser *p, const yaml_node_t *node) {
 
 bool hs_read_model(hs_scenario_parser *p, const yaml_node_t *node, hs_world_def *def) {
 	static const char *const names[] = {"grasp_threshold_deg", "stacking",     "floor_tolerance",
-	                                    "skip_work",           "spring",       "input_noise"};
+	                                    "skip_work",           "spring",       "input_noise", "grasp_rule"};
 	if (node->type != YAML_MAPPING_NODE)
 		return hs_yaml_fail(&p->y, node, "'model' must be a mapping, got %s", hs_yaml_got(node).text);
 	hs_fields f;
-	if (!hs_yaml_mapping(&p->y, node, names, 6, "model", &f))
+	if (!hs_yaml_mapping(&p->y, node, names, 7, "model", &f))
 		return false;
+	if (f.value[6]) { // a grasp's two contacts on different fingers (default) or any two (the paper)
+		if (hs_yaml_scalar_is(f.value[6], "fingers") || hs_yaml_scalar_is(f.value[6], "any"))
+			def->grasp_any_contacts = hs_yaml_scalar_is(f.value[6], "any");
+		else
+			return hs_yaml_fail(&p->y, f.value[6], "'grasp_rule' must be fingers or any, got %s",
+			                    hs_yaml_got(f.value[6]).text);
+	}
 	if (f.value[0]) {
 		if (!hs_yaml_number(&p->y, f.value[0], names[0], &def->grasp_threshold_deg))
 			return false;

@@ -179,22 +179,34 @@ double hs_grasp_limit(double grasp_threshold_deg) {
 	return hs_cos(grasp_threshold_deg * (HS_PI / 180.0)) + HS_GRASP_EPS;
 }
 
-hs_contact_state hs_contact_classify(const hs_contact *contacts, int count, double grasp_limit) {
+hs_contact_state hs_contact_classify(const hs_contact *contacts, int count, double grasp_limit, bool any_contacts) {
 	if (count == 0)
 		return HS_CONTACT_NONE;
 	if (count == 1)
 		return HS_CONTACT_PUSH_ONE;
-	return hs_contact_grasps(contacts, count, 0, grasp_limit) ? HS_CONTACT_GRASP : HS_CONTACT_PUSH_MANY;
+	return hs_contact_grasps(contacts, count, 0, grasp_limit, any_contacts) ? HS_CONTACT_GRASP : HS_CONTACT_PUSH_MANY;
 }
 
-bool hs_contact_grasps(const hs_contact *contacts, int count, uint32_t hand1, double grasp_limit) {
+// The finger of a contact's part: check point i is on finger i / 4, check line j on j / 12 (§3.1).
+static int finger_of(int part) {
+	return part < HS_HAND_POINTS ? part / 4 : (part - HS_HAND_POINTS) / 12;
+}
+
+// Two contacts may make a grasp when they lie on different hands or different fingers (DESIGN.md
+// "Real input": two points of one finger sunk into an object are not a grasp), or with the
+// paper's "any two contacts" rule (§3.2 (2)).
+static bool may_grasp(const hs_contact *a, const hs_contact *b, bool any_contacts) {
+	return any_contacts || a->hand.index1 != b->hand.index1 || finger_of(a->part) != finger_of(b->part);
+}
+
+bool hs_contact_grasps(const hs_contact *contacts, int count, uint32_t hand1, double grasp_limit, bool any_contacts) {
 	for (int i = 0; i < count; ++i) {
 		if (hand1 && contacts[i].hand.index1 != hand1)
 			continue;
 		for (int j = i + 1; j < count; ++j)
-			if ((!hand1 || contacts[j].hand.index1 == hand1) &&
+			if ((!hand1 || contacts[j].hand.index1 == hand1) && may_grasp(&contacts[i], &contacts[j], any_contacts) &&
 			    hs_dot(contacts[i].normal, contacts[j].normal) <= grasp_limit)
-				return true; // any two normals at >= the threshold (§3.2 (2))
+				return true; // two normals at >= the threshold (§3.2 (2))
 	}
 	return false;
 }

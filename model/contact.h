@@ -15,9 +15,12 @@ bool hs_hand_near(const hs_world *world, const hs_hand *hand, int object);
 int hs_contact_detect(hs_world *world, int object, const hs_body *before);
 // The largest n_i · n_j of a grasp: cos(threshold) plus a tolerance (DESIGN.md), once per world.
 double hs_grasp_limit(double grasp_threshold_deg);
-// Fig. 2: the contact state of a set of contacts (grasp when two normals are >= threshold apart).
-hs_contact_state hs_contact_classify(const hs_contact *contacts, int count, double grasp_limit);
-// True when two of the contacts (only those of hand index + 1 `hand1`, or all when 0) grasp.
-bool hs_contact_grasps(const hs_contact *contacts, int count, uint32_t hand1, double grasp_limit);
+// Fig. 2: the contact state of a set of contacts (grasp when two normals are >= threshold apart,
+// on different fingers or hands unless `any_contacts`, the paper's rule).
+hs_contact_state hs_contact_classify(const hs_contact *contacts, int count, double grasp_limit, bool any_contacts);
+// True when two of the contacts (only those of hand index + 1 `hand1`, or all when 0) grasp: their
+// normals are >= the threshold apart and, unless `any_contacts`, they lie on different fingers or
+// hands.
+bool hs_contact_grasps(const hs_contact *contacts, int count, uint32_t hand1, double grasp_limit, bool any_contacts);
 
 #endif

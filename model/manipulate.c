@@ -68,10 +68,11 @@ static hs_vec3 part_displacement(const hs_hand *hand, const hs_contact *c) {
 // hands squeezing from either side; the lower index on a tie).
 static int grasping_hand(const hs_world *world, const hs_body *body, const hs_contact *cs, int n) {
 	double limit = world->grasp_limit;
-	if (body->grasped_by > 0 && hs_contact_grasps(cs, n, (uint32_t)body->grasped_by, limit))
+	bool any = world->def.grasp_any_contacts;
+	if (body->grasped_by > 0 && hs_contact_grasps(cs, n, (uint32_t)body->grasped_by, limit, any))
 		return body->grasped_by - 1;
 	for (int h = 0; h < world->hand_count; ++h)
-		if (hs_contact_grasps(cs, n, (uint32_t)h + 1, limit))
+		if (hs_contact_grasps(cs, n, (uint32_t)h + 1, limit, any))
 			return h;
 	int counts[64] = {0};
 	for (int k = 0; k < n; ++k)
@@ -177,14 +178,15 @@ static hs_contact_state detect_and_classify(hs_world *world, int i, int first, i
 		hs_body before = *body;
 		follow_wrist(body, &world->hands[body->grasped_by - 1]);
 		*n = hs_contact_detect(world, i, &before);
-		if (hs_contact_grasps(&world->contacts[first], *n, (uint32_t)body->grasped_by, world->grasp_limit))
+		if (hs_contact_grasps(&world->contacts[first], *n, (uint32_t)body->grasped_by, world->grasp_limit,
+		                      world->def.grasp_any_contacts))
 			return HS_CONTACT_GRASP;
 		body->pos = before.pos; // the holder let go
 		body->rot = before.rot;
 		world->contact_count = first;
 	}
 	*n = hs_contact_detect(world, i, NULL);
-	return hs_contact_classify(&world->contacts[first], *n, world->grasp_limit);
+	return hs_contact_classify(&world->contacts[first], *n, world->grasp_limit, world->def.grasp_any_contacts);
 }
 
 // §3.2: a grasped object follows the grasping wrist, one contact pushes by eq. 1-2, several

@@ -64,6 +64,7 @@ static uint64_t definition_checksum(const hs_world *w) {
 	h = hs_state_mix_f64(h, d->floor_tolerance);
 	h = hs_state_mix(h, (uint64_t)d->stacking);
 	h = hs_state_mix_f64(h, d->grasp_threshold_deg);
+	h = hs_state_mix(h, d->grasp_any_contacts ? 1u : 0u);
 	for (int i = 0; i < w->shape_count; ++i)
 		h = shape_checksum(h, &w->shapes[i]);
 	for (int i = 0; i < w->object_count; ++i) {
@@ -90,7 +91,7 @@ static int header_of(const hs_world *w, uint64_t out[HS_STATE_HEADER_WORDS], con
 	    "another hand count",
 	    "another shape count",
 	    "another contact capacity (max_hands)",
-	    "another world definition (dt, gravity, tolerance, stacking, shapes, masses or hand definitions)"};
+	    "another world definition (dt, gravity, tolerance, stacking, grasp rule, shapes, masses or hand definitions)"};
 	for (int i = 0; i < HS_STATE_HEADER_WORDS; ++i) {
 		out[i] = words[i];
 		why[i] = reasons[i];

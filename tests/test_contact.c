@@ -133,26 +133,42 @@ static hs_contact with_normal(hs_vec3 n) {
 	return c;
 }
 
-// Fig. 2: none / one point / grasp (two normals >= threshold apart) / several points.
+// Fig. 2: none / one point / grasp (two normals >= threshold apart) / several points; the paper's
+// rule (any two contacts) first, then the default (two fingers or hands).
 static void test_classification(void **state) {
 	(void)state;
 	hs_contact cs[3] = {with_normal(hs_v3(1, 0, 0)), with_normal(hs_v3(0, 1, 0)), with_normal(hs_v3(1, 0, 0))};
-	assert_int_equal(hs_contact_classify(cs, 0, hs_grasp_limit(90)), HS_CONTACT_NONE);
-	assert_int_equal(hs_contact_classify(cs, 1, hs_grasp_limit(90)), HS_CONTACT_PUSH_ONE);
-	assert_int_equal(hs_contact_classify(cs, 2, hs_grasp_limit(90)), HS_CONTACT_GRASP); // adjoining faces: exactly 90
-	assert_int_equal(hs_contact_classify(cs, 2, hs_grasp_limit(91)), HS_CONTACT_PUSH_MANY);
+	assert_int_equal(hs_contact_classify(cs, 0, hs_grasp_limit(90), true), HS_CONTACT_NONE);
+	assert_int_equal(hs_contact_classify(cs, 1, hs_grasp_limit(90), true), HS_CONTACT_PUSH_ONE);
+	assert_int_equal(hs_contact_classify(cs, 2, hs_grasp_limit(90), true), HS_CONTACT_GRASP); // adjoining faces: exactly 90
+	assert_int_equal(hs_contact_classify(cs, 2, hs_grasp_limit(91), true), HS_CONTACT_PUSH_MANY);
 	hs_contact same[2] = {cs[0], cs[2]};
-	assert_int_equal(hs_contact_classify(same, 2, hs_grasp_limit(90)), HS_CONTACT_PUSH_MANY);
+	assert_int_equal(hs_contact_classify(same, 2, hs_grasp_limit(90), true), HS_CONTACT_PUSH_MANY);
 	// 90 deg reached through rounding (cos(pi/2) is 6e-17, not 0): the tolerance decides, not the ulp
 	hs_vec3 n = hs_quat_rotate(hs_quat_from_axis_angle(hs_v3(0, 0, 1), HS_PI / 2 + 1e-12), hs_v3(1, 0, 0));
 	hs_contact rounded[2] = {cs[0], with_normal(n)};
-	assert_int_equal(hs_contact_classify(rounded, 2, hs_grasp_limit(90)), HS_CONTACT_GRASP);
+	assert_int_equal(hs_contact_classify(rounded, 2, hs_grasp_limit(90), true), HS_CONTACT_GRASP);
 	hs_vec3 m = hs_quat_rotate(hs_quat_from_axis_angle(hs_v3(0, 0, 1), 89.0 * HS_PI / 180), hs_v3(1, 0, 0));
 	hs_contact short_of[2] = {cs[0], with_normal(m)};
-	assert_int_equal(hs_contact_classify(short_of, 2, hs_grasp_limit(90)), HS_CONTACT_PUSH_MANY);
+	assert_int_equal(hs_contact_classify(short_of, 2, hs_grasp_limit(90), true), HS_CONTACT_PUSH_MANY);
 	// three contacts: any pair at the threshold makes a grasp (Fig. 4)
 	hs_contact three[3] = {cs[0], cs[2], with_normal(hs_v3(-1, 0, 0))};
-	assert_int_equal(hs_contact_classify(three, 3, hs_grasp_limit(90)), HS_CONTACT_GRASP);
+	assert_int_equal(hs_contact_classify(three, 3, hs_grasp_limit(90), true), HS_CONTACT_GRASP);
+	// the default rule: the pair must lie on different fingers (point i: i / 4; line j: j / 12) or hands
+	hs_contact pair[2] = {cs[0], cs[1]};
+	const int parts[][2] = {{3, 7}, {3, 2}, {3, HS_HAND_POINTS + 0}, {3, HS_HAND_POINTS + 12}, {7, HS_HAND_POINTS + 23}};
+	const hs_contact_state want[] = {HS_CONTACT_GRASP, HS_CONTACT_PUSH_MANY, HS_CONTACT_PUSH_MANY, HS_CONTACT_GRASP,
+	                                 HS_CONTACT_PUSH_MANY};
+	for (int k = 0; k < 5; ++k) {
+		pair[0].part = parts[k][0];
+		pair[1].part = parts[k][1];
+		assert_int_equal(hs_contact_classify(pair, 2, hs_grasp_limit(90), false), want[k]);
+		assert_int_equal(hs_contact_classify(pair, 2, hs_grasp_limit(90), true), HS_CONTACT_GRASP);
+	}
+	pair[0].part = pair[1].part = 3; // one finger of each of two hands
+	pair[0].hand.index1 = 1;
+	pair[1].hand.index1 = 2;
+	assert_int_equal(hs_contact_classify(pair, 2, hs_grasp_limit(90), false), HS_CONTACT_GRASP);
 }
 
 static hs_body body_at(hs_vec3 g) {
@@ -300,6 +316,91 @@ static void test_release_on_exact_parabola(void **state) {
 	}
 }
 
+// The catalog's pyramid (base 0.08, height 0.08: G 0.02 above the base) at (0, 0, 2), the grasp
+// rule chosen, one hand far away (as cube_world).
+static hs_world *pyramid_world(bool any_contacts) {
+	hs_world_def def = hs_default_world_def();
+	def.grasp_any_contacts = any_contacts;
+	hs_world *w = hs_world_create(&def, NULL);
+	hs_shape *pyramid = hs_shape_pyramid(0.08, 0.08, NULL);
+	hs_object_def od = hs_default_object_def();
+	od.shape = hs_world_add_shape(w, pyramid, NULL);
+	hs_shape_destroy(pyramid);
+	od.position = hs_v3(0, 0, 2);
+	assert_int_equal(hs_world_add_object(w, &od, NULL).index1, 1);
+	hs_hand_def hd = hs_default_hand_def();
+	assert_int_equal(hs_world_add_hand(w, &hd, NULL).index1, 1);
+	hs_hand *hand = &w->hands[0];
+	for (int i = 0; i < HS_HAND_POINTS; ++i)
+		hand->points[i] = hand->prev_points[i] = FAR;
+	for (int j = 0; j < HS_HAND_LINES; ++j)
+		hand->lines[j][0] = hand->lines[j][1] = hand->prev_lines[j][0] = hand->prev_lines[j][1] = FAR;
+	hand->center = hs_v3(0, 0, 2);
+	hand->radius = 1000;
+	hand->placed = true;
+	return w;
+}
+
+// DESIGN.md "Real input": the DIP (6) and the tip (7) of one index finger sunk into the pyramid's
+// +x side face (normal (2, 0, 1)/√5) and its base (normal -z), 116.6 deg apart (cos = -1/√5), do
+// not grasp it by default: two contacts on one finger push at several points (3). With the paper's
+// rule (grasp_any_contacts) they grasp it (2), and a rising wrist lifts it 0.2 m in two frames;
+// by default the rising finger leaves it behind.
+static void pyramid_by_one_finger(bool any_contacts) {
+	hs_world *w = pyramid_world(any_contacts);
+	hs_vec3 n = hs_scale(hs_v3(2, 0, 1), 1.0 / sqrt(5.0));
+	hs_vec3 dip = hs_v3(0.025, 0, 2.0); // 4.5 mm inside the side face, 20 mm above the base
+	move_point(w, 6, hs_mul_add(dip, 0.01, n), dip);
+	move_point(w, 7, hs_v3(0.03, 0, 1.97), hs_v3(0.03, 0, 1.985)); // up through the base, 5 mm in
+	hs_world_step(w);
+	assert_int_equal(w->contact_count, 2);
+	assert_near(hs_dot(w->contacts[0].normal, w->contacts[1].normal), -1.0 / sqrt(5.0), 1e-12);
+	assert_int_equal(w->bodies[0].contact, any_contacts ? HS_CONTACT_GRASP : HS_CONTACT_PUSH_MANY);
+	assert_int_equal(hs_contact_classify(w->contacts, 2, w->grasp_limit, any_contacts),
+	                 any_contacts ? HS_CONTACT_GRASP : HS_CONTACT_PUSH_MANY);
+	hs_hand *hand = &w->hands[0];
+	hs_vec3 p0 = w->bodies[0].pos;
+	for (int k = 1; k <= 2; ++k) { // the wrist and the finger rise 0.1 m a frame
+		hs_vec3 lift = hs_v3(0, 0, 0.1 * k);
+		hand->wrist_pos = lift;
+		hand->points[6] = hs_add(dip, lift);
+		hand->points[7] = hs_add(hs_v3(0.03, 0, 1.985), lift);
+		hs_world_step(w);
+		if (any_contacts) { // held: it follows the wrist
+			assert_int_equal(w->bodies[0].contact, HS_CONTACT_GRASP);
+			assert_near(w->bodies[0].pos.z - p0.z, 0.1 * k, 1e-12);
+		} else { // shoved a few mm by the push, then left behind by the rising finger
+			assert_int_not_equal(w->bodies[0].contact, HS_CONTACT_GRASP);
+			assert_true(w->bodies[0].pos.z - p0.z < 0.01);
+		}
+	}
+	hs_world_destroy(w);
+}
+
+static void test_one_finger_does_not_grasp(void **state) {
+	(void)state;
+	pyramid_by_one_finger(false);
+	pyramid_by_one_finger(true);
+}
+
+// Where a grasp continues the rule holds too: a held cube whose only contacts left are two
+// points of one finger (the thumb's tip and IP joint, on faces 180 deg apart) is let go.
+static void test_grasp_continues_on_two_fingers_only(void **state) {
+	(void)state;
+	hs_world *w = cube_world();
+	move_point(w, 3, hs_v3(-0.6, 0, 2), hs_v3(-0.45, 0, 2)); // thumb tip in the -x face
+	move_point(w, 7, hs_v3(0.6, 0, 2), hs_v3(0.45, 0, 2));   // index tip in the +x face
+	hs_world_step(w);
+	assert_int_equal(w->bodies[0].contact, HS_CONTACT_GRASP);
+	w->hands[0].points[7] = FAR;
+	w->hands[0].prev_points[2] = hs_v3(0.6, 0.1, 2); // the thumb's IP joint in the +x face
+	w->hands[0].points[2] = hs_v3(0.45, 0.1, 2);
+	hs_world_step(w);
+	assert_int_not_equal(w->bodies[0].contact, HS_CONTACT_GRASP);
+	assert_int_equal(w->bodies[0].grasped_by, 0);
+	hs_world_destroy(w);
+}
+
 // A fast hand keeps its grasp: the fingers' motion is judged relative to the held object, which
 // moves with the wrist. Sideways by 0.1 m a frame (6 m/s) — twice the cube's size — for 5 frames.
 static void test_grasp_holds_fast_hand(void **state) {
@@ -355,6 +456,8 @@ int main(void) {
 	    cmocka_unit_test(test_grasp_follow_release),
 	    cmocka_unit_test(test_grasp_holds_fast_hand),
 	    cmocka_unit_test(test_release_on_exact_parabola),
+	    cmocka_unit_test(test_one_finger_does_not_grasp),
+	    cmocka_unit_test(test_grasp_continues_on_two_fingers_only),
 	    cmocka_unit_test(test_paper_mode_carries_interfering),
 	};
 	return cmocka_run_group_tests_name("contact", tests, NULL, NULL);

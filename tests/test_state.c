@@ -50,11 +50,14 @@ typedef struct hand_rig {
 	hs_vec3 grip;
 } hand_rig;
 
+static bool rig_any_contacts; // the grasp rule of the hand worlds built next (default: false)
+
 static hand_rig hand_world(double cube_size, int extra_objects, bool skip_work) {
 	hand_rig r;
 	hs_world_def def = hs_default_world_def();
 	def.max_objects = 8;
 	def.skip_work = skip_work;
+	def.grasp_any_contacts = rig_any_contacts;
 	r.world = hs_world_create(&def, NULL);
 	assert_non_null(r.world);
 	hs_shape_id cube = add_shape(r.world, hs_shape_box(hs_v3(cube_size, cube_size, cube_size), NULL));
@@ -355,6 +358,11 @@ static void test_refuses_other_worlds(void **state) {
 	expect_refused(bigger.world, hand_state, size, "object count");
 	hand_rig other_shape = hand_world(0.06, 0, true); // the same counts, another cube
 	expect_refused(other_shape.world, hand_state, size, "world definition");
+	rig_any_contacts = true; // the same world with the paper's grasp rule
+	hand_rig other_rule = hand_world(0.05, 0, true);
+	rig_any_contacts = false;
+	expect_refused(other_rule.world, hand_state, size, "world definition");
+	hs_world_destroy(other_rule.world);
 	hs_object_id ball;
 	hs_world *springs = spring_world(false, &ball);
 	size_t spring_size;

@@ -177,6 +177,7 @@ typedef struct hs_world_def {
 	int max_hands;              ///< capacity, allocated at creation (default 2)
 	hs_stacking stacking;       ///< default HS_STACKING_PAPER
 	double grasp_threshold_deg; ///< deg: two contact normals this far apart make a grasp (default 90)
+	bool grasp_any_contacts;    ///< false (default): a grasp's two contacts lie on different fingers or hands; true: any two (the 1999 paper's rule)
 	bool skip_work;             ///< bounding-volume rejection and sleeping on (default true); off only to measure what they save
 } hs_world_def;
 
@@ -259,7 +260,7 @@ uint64_t hs_world_hash(const hs_world *world);
 // sign-extended), so the bytes are the same on every machine whatever its struct padding.
 // A 9-word header: magic "HSSTATE1", format version, library version (a hash of HS_VERSION),
 // kind (0 hand world, 1 spring world), object count, hand count, shape count, contact capacity,
-// and a checksum of the definitions (dt, gravity, floor tolerance, stacking, grasp threshold,
+// and a checksum of the definitions (dt, gravity, floor tolerance, stacking, grasp threshold and rule,
 // every shape's counts, vertices and volume, every object's shape and mass, every hand
 // definition; not max_objects, max_shapes or skip_work, which change no result). Then the
 // world: frame, numeric faults, first fault frame and object; per object 35 words (pose, previous
