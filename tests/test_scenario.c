@@ -236,9 +236,9 @@ static void test_load_errors(void **state) {
 	load_error("e.yaml", text, "7: 'tolerance' must be > 0, got 0");
 	snprintf(text, sizeof text, "%s" ONE_CUBE "expect:\n  - { object: a, at: end }\n", head);
 	load_error("e.yaml", text,
-	           "7: expect clause needs a predicate: near, resting, floor_contacts, on_face, below, above, moved, turned_deg, speed_below, "
-	           "velocity, attached, candidate, extension_ratio, lands_at, still, contact_sequence, released, rest_length, stiffness, "
-	           "conserved or swing_below");
+	           "7: expect clause needs a predicate: near, resting, floor_contacts, on_face, below, above, moved, turned_deg, "
+	           "moved_at_most, turned_at_most_deg, speed_below, velocity, attached, candidate, extension_ratio, lands_at, still, "
+	           "contact_sequence, never_contact, grasped, released, rest_length, stiffness, conserved or swing_below");
 	snprintf(text, sizeof text, "%s" ONE_CUBE "expect:\n  - { object: a, still: true, at: end }\n", head);
 	load_error("e.yaml", text, "7: 'at' is not used by 'still'");
 	snprintf(text, sizeof text, "%s" ONE_CUBE "expect:\n  - { object: a, still: true, from: 2 }\n", head);
@@ -842,7 +842,7 @@ static void test_spring_load_errors(void **state) {
 	         "%s" ONE_CUBE "stylus: { keys: [{ t: 0, position: [0, 0, 1] }] }\n"
 	         "expect:\n  - { object: a, at: end, resting: true, to: 0.5 }\n",
 	         head);
-	load_error("e.yaml", text, "8: 'to' is only for 'still', 'conserved' and 'swing_below'");
+	load_error("e.yaml", text, "8: 'to' is only for 'still', 'never_contact', 'grasped', 'conserved' and 'swing_below'");
 	snprintf(text, sizeof text,
 	         "%s" ONE_CUBE "stylus: { keys: [{ t: 0, position: [0, 0, 1] }] }\n"
 	         "expect:\n  - { object: a, still: true, from: 0.5, to: 0.5 }\n",
