@@ -883,10 +883,12 @@ static void test_noise_draws(void **state) {
 	int lowest = 0, highest = 0;
 	for (int i = 0; i < 2000; ++i) {
 		hs_vec3 w = hs_v3(0, 0, 0);
+		hs_quat r = hs_quat_identity();
 		uint8_t sensors[HS_GLOVE_SENSORS];
 		memset(sensors, 100, sizeof sensors);
 		sensors[0] = 2; // clamped at 0
-		hs_noise_hand(noise, &options, &w, sensors);
+		hs_noise_hand(noise, &options, &w, &r, sensors);
+		assert_true(r.w == 1.0); // no wrist_rotation: no rotation drawn
 		assert_true(fabs(w.x) <= 1.3e-3 && fabs(w.y) <= 1.3e-3 && fabs(w.z) <= 1.3e-3);
 		assert_true(sensors[0] <= 6);
 		for (int k = 1; k < HS_GLOVE_SENSORS; ++k) {
