@@ -28,6 +28,8 @@ static void print_header(FILE *out, const hs_scenario *s, const hs_robust *r) {
 	fprintf(out, "sweep %s: %d dt x %d seeds", s->name, r->dt_count, r->seeds);
 	if (s->springs)
 		fprintf(out, ", stylus noise (0.03 inch, 0.15 deg RMS)\n");
+	else if (s->hands.count == 0)
+		fprintf(out, ", no hand or stylus input to add noise to\n");
 	else if (r->has_levels)
 		fprintf(out, ", glove +-%d units, wrist +-%g mm, +-%g deg\n", n->glove_units, n->wrist * 1e3,
 		        n->wrist_rotation * (180.0 / HS_PI));
