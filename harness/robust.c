@@ -69,7 +69,7 @@ bool hs_read_robust(hs_scenario_parser *p, const yaml_node_t *node, bool hands) 
 	}
 	for (int i = R_GLOVE; i <= R_WRIST_DEG; ++i)
 		if (f.key[i] && !hands)
-			return hs_yaml_fail(&p->y, f.key[i], "'%s' needs 'hands': a spring world's cells draw the stylus noise",
+			return hs_yaml_fail(&p->y, f.key[i], "'%s' needs 'hands': the levels are of hand input noise",
 			                    robust_keys[i]);
 	r->has_levels = f.value[R_GLOVE] || f.value[R_WRIST] || f.value[R_WRIST_DEG];
 	return read_levels(p, &f, r);
