@@ -189,8 +189,10 @@ hs_scenario *hs_scenario_load_with(const char *path, const hs_scenario_options *
 		p.s = calloc(1, sizeof *p.s);
 		ok = p.s ? read_scenario(&p, hs_yaml_root(&p.y)) : hs_set_error(err, path, 1, "out of memory");
 	}
-	if (ok)
+	if (ok) {
 		p.s->source_hash = fnv1a(text, size);
+		p.s->overridden = options && (options->dt > 0.0 || options->noise);
+	}
 	free(p.sorted);
 	hs_yaml_free(&p.y);
 	free(text);

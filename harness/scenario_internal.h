@@ -43,6 +43,7 @@ struct hs_scenario {
 	hs_noise_options noise_options;
 	hs_expectations expect;
 	hs_robust robust;
+	bool overridden;          // loaded with a dt or noise option: a state file could not name the run
 	hs_status step_status;    // the first failed step (HS_OK: none)
 	long failed_frame;
 	uint64_t source_hash;     // FNV-1a of the scenario file's bytes: a state file names the file it continues

@@ -1240,6 +1240,12 @@ static void test_load_options(void **state) {
 	assert_non_null(s);
 	assert_true(hs_scenario_dt(s) == 1.0 / 30.0);
 	assert_int_equal(hs_scenario_frame_count(s), 45);
+	FILE *f = tmpfile();
+	assert_non_null(f);
+	assert_int_equal(hs_scenario_save(s, f, &err), HS_ERR_INVALID_ARGUMENT); // the file alone cannot name this run
+	assert_string_equal(err.message, "state file: a run loaded with a dt or noise seed option cannot be saved");
+	assert_int_equal(hs_scenario_resume(s, f, &err), HS_ERR_INVALID_ARGUMENT);
+	fclose(f);
 	hs_scenario_destroy(s);
 	double dt = 0.0;
 	assert_true(hs_scenario_parse_dt("1/12", &dt) && dt == 1.0 / 12.0);

@@ -46,7 +46,8 @@ typedef struct hs_scenario_options {
 	                          // ±0.15° (the tracker's static accuracy, paper §5.1); spring worlds the stylus's
 } hs_scenario_options;
 
-/// hs_scenario_load with overrides (`options` NULL: none).
+/// hs_scenario_load with overrides (`options` NULL: none). A run loaded with a dt or a noise seed
+/// cannot be saved or resumed (HS_ERR_INVALID_ARGUMENT): a state file names the file's bytes only.
 hs_scenario *hs_scenario_load_with(const char *path, const hs_scenario_options *options, hs_error *err);
 /// A frame time as the YAML `dt:` takes it ("1/60" or "0.0125") within [HS_SCENARIO_MIN_DT,
 /// HS_SCENARIO_MAX_DT]; false when it is not one.
