@@ -146,6 +146,19 @@ void hs_capture_sequence(const hs_scenario *s, const hs_clause *c, hs_check *k, 
 		k->u.seq.overflow++;
 }
 
+void hs_capture_contact(const hs_scenario *s, const hs_clause *c, hs_check *k, long frame) {
+	if (frame < c->frame || frame > c->last_frame || k->u.still.moved)
+		return;
+	hs_object_state st = hs_scenario_state_of(s, k->object);
+	bool never = c->pred >= 0 && strcmp(hs_predicates[c->pred].name, "never_contact") == 0;
+	if (never ? (long)st.contact == c->count : (long)st.contact != c->count) {
+		k->u.still.moved = true; // "moved" from what the clause allows: the first breaking frame
+		k->u.still.moved_frame = frame;
+		k->u.still.state = st;
+	}
+	k->captured = frame == c->last_frame;
+}
+
 // released: the object's last release; at most one release per frame, so none is missed.
 void hs_capture_release(const hs_scenario *s, const hs_clause *c, hs_check *k, long frame) {
 	(void)c, (void)frame;

@@ -1,5 +1,5 @@
 // expect.c — `expect` clauses: reading them (the object, the one predicate, its modifiers `at`,
-// `tolerance`, `axes`, `from`, `to`), preparing the checks before the run, and the report after
+// `tolerance`, `axes`, `from`, `to`, `robust`), preparing the checks before the run, and the report after
 // it. What each predicate means is its row in the table (expect_predicates.c).
 #include <math.h>
 #include <stdlib.h>
@@ -8,7 +8,7 @@
 #include "expect_table.h"
 #include "scenario_internal.h"
 
-static const char *const modifier_names[] = {"object", "at", "tolerance", "axes", "from", "to"};
+static const char *const modifier_names[] = {"object", "at", "tolerance", "axes", "from", "to", "robust"};
 
 // The keys of a clause: the predicates' names in table order, then the modifiers.
 static void clause_keys(const char *keys[HS_E_COUNT]) {
@@ -178,6 +178,8 @@ static bool read_clause(hs_scenario_parser *p, const yaml_node_t *node, hs_claus
 		return false;
 	if (!row->parse(p, &f, c))
 		return false;
+	if (f.value[HS_E_ROBUST] && !hs_yaml_bool(&p->y, f.value[HS_E_ROBUST], "robust", &c->robust))
+		return false;
 	return !(row->flags & HS_PRED_FROM_TO) || read_from_to(p, node, &f, c);
 }
 
@@ -339,6 +341,17 @@ int hs_expect_report(const hs_scenario *s, FILE *report) {
 			        check_label(s, k).text, v.what, v.measured);
 	}
 	return failed;
+}
+
+unsigned long hs_expect_first_failure(const hs_scenario *s, bool robust_only) {
+	for (int i = 0; i < s->expect.check_count; ++i) {
+		const hs_check *k = &s->expect.checks[i];
+		const hs_clause *c = &s->expect.clauses[k->clause];
+		hs_verdict v;
+		if ((!robust_only || c->robust) && !judge(s, k, &v))
+			return c->line;
+	}
+	return 0;
 }
 
 void hs_expectations_free(hs_expectations *e) {

@@ -29,8 +29,9 @@ typedef struct hs_clause {
 	hs_vec3 target;   // near: m; velocity: m/s
 	double tolerance; // near, rest_length: m; lands_at: s; velocity: m/s; stiffness: N/m; extension_ratio, conserved: 1
 	unsigned axes;    // near: bit 0 x, bit 1 y, bit 2 z
-	bool flag;        // resting, on_face, still, attached, candidate
-	long count;       // floor_contacts; attached: an hs_attach_kind (NONE: any); released: an hs_release_kind;
+	bool flag;        // resting, on_face, still, attached, candidate, grasped
+	bool robust;      // `robust: true`: an outcome that must hold in every cell of a sweep
+	long count;       // floor_contacts; never_contact, grasped: a contact state; attached: an hs_attach_kind (NONE: any); released: an hs_release_kind;
 	                  // conserved: an hs_conserved_quantity
 	double value;     // below/above/moved/swing_below: m; turned_deg: deg; lands_at: s; speed_below: m/s; ...
 	int seq_len;      // contact_sequence
@@ -102,5 +103,7 @@ void hs_expect_capture(hs_scenario *s);
 // One PASS/FAIL line per check to `report` (when not NULL); returns the failures.
 int hs_expect_report(const hs_scenario *s, FILE *report);
 void hs_expectations_free(hs_expectations *e);
+// The line of the first failing clause (only `robust: true` ones when `robust_only`), 0 when none.
+unsigned long hs_expect_first_failure(const hs_scenario *s, bool robust_only);
 
 #endif

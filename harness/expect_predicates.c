@@ -131,6 +131,25 @@ static bool parse_count(hs_scenario_parser *p, const hs_fields *f, hs_clause *c)
 	return true;
 }
 
+// never_contact: one contact state, 0-3
+static bool parse_contact_state(hs_scenario_parser *p, const hs_fields *f, hs_clause *c) {
+	int64_t n;
+	if (!hs_yaml_integer(&p->y, value_of(f, c), name_of(c), 0, 3, &n))
+		return false;
+	c->count = (long)n;
+	return true;
+}
+
+// grasped: only true; "never grasped" is never_contact: 2, one way to say one thing
+static bool parse_grasped(hs_scenario_parser *p, const hs_fields *f, hs_clause *c) {
+	if (!parse_flag(p, f, c))
+		return false;
+	if (!c->flag)
+		return hs_yaml_fail(&p->y, value_of(f, c), "'grasped' must be true; for never grasped write 'never_contact: 2'");
+	c->count = HS_CONTACT_GRASP;
+	return true;
+}
+
 static bool parse_value(hs_scenario_parser *p, const hs_fields *f, hs_clause *c) {
 	return hs_yaml_number(&p->y, value_of(f, c), name_of(c), &c->value);
 }
@@ -222,21 +241,26 @@ static bool eval_height(const hs_scenario *s, const hs_clause *c, const hs_check
 	return strcmp(name_of(c), "below") == 0 ? z < c->value : z > c->value;
 }
 
-// at least this far (m) from where it started
+// The at-most rows are the same measures bounded from above: their names end in "_at_most…".
+static bool at_most(const hs_clause *c) { return strstr(name_of(c), "_at_most") != NULL; }
+
+// moved: at least this far (m) from where it started; moved_at_most: at most this far
 static bool eval_moved(const hs_scenario *s, const hs_clause *c, const hs_check *k, hs_verdict *v) {
 	double d = hs_distance(k->u.at.state.position, s->initial[k->object].position);
-	snprintf(v->what, sizeof v->what, "moved at least %.9g m %s", c->value, v->when);
+	bool most = at_most(c);
+	snprintf(v->what, sizeof v->what, "moved at %s %.9g m %s", most ? "most" : "least", c->value, v->when);
 	snprintf(v->measured, sizeof v->measured, "moved %.6g m", d);
-	return d >= c->value;
+	return most ? d <= c->value : d >= c->value;
 }
 
-// turned at least this much (deg) from how it started
+// turned_deg: turned at least this much (deg) from how it started; turned_at_most_deg: at most
 static bool eval_turned(const hs_scenario *s, const hs_clause *c, const hs_check *k, hs_verdict *v) {
 	hs_quat rel = hs_quat_mul(k->u.at.state.orientation, hs_quat_conj(s->initial[k->object].orientation));
 	double a = hs_quat_angle(rel) * (180.0 / HS_PI);
-	snprintf(v->what, sizeof v->what, "turned at least %.9g deg %s", c->value, v->when);
+	bool most = at_most(c);
+	snprintf(v->what, sizeof v->what, "turned at %s %.9g deg %s", most ? "most" : "least", c->value, v->when);
 	snprintf(v->measured, sizeof v->measured, "turned %.6g deg", a);
-	return a >= c->value;
+	return most ? a <= c->value : a >= c->value;
 }
 
 static bool eval_speed_below(const hs_scenario *s, const hs_clause *c, const hs_check *k, hs_verdict *v) {
@@ -373,6 +397,25 @@ static bool eval_still(const hs_scenario *s, const hs_clause *c, const hs_check 
 	return k->u.still.moved != c->flag;
 }
 
+// never_contact and grasped: the first frame of [from, to] whose contact state broke the clause
+static bool eval_contact_watch(const hs_scenario *s, const hs_clause *c, const hs_check *k, hs_verdict *v) {
+	bool never = strcmp(name_of(c), "never_contact") == 0;
+	size_t w = never ? (size_t)snprintf(v->what, sizeof v->what, "never_contact %ld", c->count)
+	                 : (size_t)snprintf(v->what, sizeof v->what, "grasped (contact state 2)");
+	if (w < sizeof v->what)
+		snprintf(v->what + w, sizeof v->what - w, " from t = %g s to t = %g s", (double)c->frame * s->dt,
+		         (double)c->last_frame * s->dt);
+	if (k->u.still.moved) {
+		snprintf(v->measured, sizeof v->measured, "contact state %d at frame %ld (t = %.6g s)",
+		         (int)k->u.still.state.contact, k->u.still.moved_frame, (double)k->u.still.moved_frame * s->dt);
+		return false;
+	}
+	if (!k->captured)
+		return not_reached(s, v);
+	snprintf(v->measured, sizeof v->measured, never ? "never in state %ld" : "grasped on every frame", c->count);
+	return true;
+}
+
 // "[a, b, c]" of contact states into buf
 static size_t write_states(char *buf, size_t n, const unsigned char *states, int count) {
 	size_t w = (size_t)snprintf(buf, n, "[");
@@ -423,6 +466,8 @@ const hs_predicate hs_predicates[HS_PREDICATE_COUNT] = {
     {"above",            AT,                   NULL,       parse_value,       hs_capture_at,        S_AT,    eval_height},
     {"moved",            AT,                   NULL,       parse_nonnegative, hs_capture_at,        S_AT,    eval_moved},
     {"turned_deg",       AT,                   NULL,       parse_nonnegative, hs_capture_at,        S_AT,    eval_turned},
+    {"moved_at_most",    AT,                   NULL,       parse_nonnegative, hs_capture_at,        S_AT,    eval_moved},
+    {"turned_at_most_deg", AT,                 NULL,       parse_nonnegative, hs_capture_at,        S_AT,    eval_turned},
     {"speed_below",      AT,                   NULL,       parse_positive,    hs_capture_at,        S_AT,    eval_speed_below},
     {"velocity",         AT,                   "m/s",      parse_vector,      hs_capture_at,        S_AT,    eval_velocity},
     {"attached",         AT | SPR,             NULL,       parse_attached,    hs_capture_at,        S_AT,    eval_attached},
@@ -431,6 +476,8 @@ const hs_predicate hs_predicates[HS_PREDICATE_COUNT] = {
     {"lands_at",         0,                    "s",        parse_time,        hs_capture_lands,     S_LANDS, eval_lands_at},
     {"still",            FT,                   NULL,       parse_flag,        hs_capture_still,     S_STILL, eval_still},
     {"contact_sequence", 0,                    NULL,       parse_sequence,    hs_capture_sequence,  S_SEQ,   eval_sequence},
+    {"never_contact",    FT,                   NULL,       parse_contact_state, hs_capture_contact, S_STILL, eval_contact_watch},
+    {"grasped",          FT,                   NULL,       parse_grasped,     hs_capture_contact,   S_STILL, eval_contact_watch},
     {"released",         SPR,                  NULL,       parse_released,    hs_capture_release,   S_REL,   eval_released},
     {"rest_length",      SPR,                  "m",        parse_positive,    NULL,                 S_NONE,  eval_spring_constant},
     {"stiffness",        SPR,                  "N/m",      parse_positive,    NULL,                 S_NONE,  eval_spring_constant},

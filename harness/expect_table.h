@@ -8,8 +8,8 @@
 #include "state_io.h"
 
 // Rows of hs_predicates; the keys of a clause are the predicates' names, then the modifiers.
-#define HS_PREDICATE_COUNT 21
-enum { HS_E_OBJECT = HS_PREDICATE_COUNT, HS_E_AT, HS_E_TOLERANCE, HS_E_AXES, HS_E_FROM, HS_E_TO, HS_E_COUNT };
+#define HS_PREDICATE_COUNT 25
+enum { HS_E_OBJECT = HS_PREDICATE_COUNT, HS_E_AT, HS_E_TOLERANCE, HS_E_AXES, HS_E_FROM, HS_E_TO, HS_E_ROBUST, HS_E_COUNT };
 
 // What a predicate accepts and how it is watched.
 enum {
@@ -60,6 +60,8 @@ void hs_capture_conserved(const hs_scenario *s, const hs_clause *c, hs_check *k,
 void hs_capture_swing(const hs_scenario *s, const hs_clause *c, hs_check *k, long frame);
 void hs_capture_lands(const hs_scenario *s, const hs_clause *c, hs_check *k, long frame);
 void hs_capture_sequence(const hs_scenario *s, const hs_clause *c, hs_check *k, long frame);
+// never_contact and grasped: the first frame of [from, to] that breaks the clause (in the still store)
+void hs_capture_contact(const hs_scenario *s, const hs_clause *c, hs_check *k, long frame);
 void hs_capture_release(const hs_scenario *s, const hs_clause *c, hs_check *k, long frame);
 // A check's captures in a state file, word by word (state_io.h), as its row's `store` says.
 void hs_capture_put(hs_state_io *io, hs_store store, const hs_check *k);

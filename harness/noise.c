@@ -54,13 +54,23 @@ void hs_noise_stylus(hs_noise *noise, hs_vec3 *position, hs_quat *orientation) {
 		    hs_quat_mul(hs_quat_from_axis_angle(hs_scale(rv, 1.0 / angle), angle), *orientation));
 }
 
-void hs_noise_hand(hs_noise *noise, const hs_noise_options *options, hs_vec3 *wrist,
+// Three uniform draws in [-a, a), x then y then z.
+static hs_vec3 uniform3(hs_noise *noise, double a) {
+	double d[3];
+	for (int i = 0; i < 3; ++i)
+		d[i] = (2.0 * gsl_rng_uniform(noise->rng) - 1.0) * a;
+	return hs_v3(d[0], d[1], d[2]);
+}
+
+void hs_noise_hand(hs_noise *noise, const hs_noise_options *options, hs_vec3 *wrist, hs_quat *rotation,
                    uint8_t sensors[HS_GLOVE_SENSORS]) {
-	if (options->wrist > 0.0) {
-		double d[3];
-		for (int i = 0; i < 3; ++i) // uniform in [-wrist, wrist)
-			d[i] = (2.0 * gsl_rng_uniform(noise->rng) - 1.0) * options->wrist;
-		*wrist = hs_add(*wrist, hs_v3(d[0], d[1], d[2]));
+	if (options->wrist > 0.0)
+		*wrist = hs_add(*wrist, uniform3(noise, options->wrist));
+	if (options->wrist_rotation > 0.0) { // drawn only when asked: older noisy runs keep their sequence
+		hs_vec3 rv = uniform3(noise, options->wrist_rotation);
+		double angle = hs_length(rv);
+		if (angle > 0.0)
+			*rotation = hs_quat_normalize(hs_quat_mul(hs_quat_from_axis_angle(hs_scale(rv, 1.0 / angle), angle), *rotation));
 	}
 	if (options->glove_units > 0) {
 		unsigned long span = 2ul * (unsigned long)options->glove_units + 1ul;

@@ -19,6 +19,7 @@ typedef struct hs_noise_options {
 	bool stylus;     // Gaussian tracker noise on the stylus pose, every frame
 	int glove_units; // hands: each sensor ± this many units, uniform, every frame (0: none)
 	double wrist;    // m, hands: each wrist coordinate ± this, uniform, every frame (0: none)
+	double wrist_rotation; // rad, hands: each component of a rotation vector ± this, uniform (0: none)
 } hs_noise_options;
 
 typedef struct hs_noise hs_noise;
@@ -31,9 +32,10 @@ void hs_noise_destroy(hs_noise *noise);
 // rotation vector is N(0, σr²) per axis, applied before the reading (world frame). Six draws in a
 // fixed order: x, y, z, then the rotation vector's x, y, z.
 void hs_noise_stylus(hs_noise *noise, hs_vec3 *position, hs_quat *orientation);
-// Adds uniform noise to a hand reading: the wrist (x, y, z) ± options->wrist, then each sensor in
-// order ± options->glove_units, clamped to 0..255. Nothing is drawn for a zero amplitude.
-void hs_noise_hand(hs_noise *noise, const hs_noise_options *options, hs_vec3 *wrist,
+// Adds uniform noise to a hand reading: the wrist (x, y, z) ± options->wrist, then a rotation whose
+// rotation vector is ± options->wrist_rotation per axis (world frame, before the reading), then each
+// sensor in order ± options->glove_units, clamped to 0..255. Nothing is drawn for a zero amplitude.
+void hs_noise_hand(hs_noise *noise, const hs_noise_options *options, hs_vec3 *wrist, hs_quat *rotation,
                    uint8_t sensors[HS_GLOVE_SENSORS]);
 
 // The generator's state as bytes (gsl_rng_state: a memcpy, so a state file resumes on the same

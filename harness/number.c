@@ -4,6 +4,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "hs_harness.h"
 #include "number.h"
 
 static bool is_digit(char c) { return c >= '0' && c <= '9'; }
@@ -96,5 +97,23 @@ bool hs_unit_quat(const double q[4], double *norm, hs_quat *out) {
 	if (!(fabs(*norm - 1.0) <= HS_QUAT_NORM_TOLERANCE))
 		return false;
 	*out = hs_quat_normalize(hs_q(q[0], q[1], q[2], q[3]));
+	return true;
+}
+
+// The tool's --dt: "a/b" or a number, like the YAML `dt:` (a fraction is exact where 0.0166… is not).
+bool hs_scenario_parse_dt(const char *text, double *dt) {
+	if (!text)
+		return false;
+	const char *slash = strchr(text, '/');
+	double a, b = 1.0;
+	size_t n = slash ? (size_t)(slash - text) : strlen(text);
+	if (hs_parse_number(text, n, &a) != HS_NUMBER_OK)
+		return false;
+	if (slash && (hs_parse_number(slash + 1, strlen(slash + 1), &b) != HS_NUMBER_OK || b == 0.0))
+		return false;
+	double v = a / b;
+	if (!(v >= HS_SCENARIO_MIN_DT && v <= HS_SCENARIO_MAX_DT))
+		return false;
+	*dt = v;
 	return true;
 }

@@ -33,9 +33,10 @@ static const char *base_name(const char *path, size_t *length) {
 	return base;
 }
 
-enum { S_NAME, S_DESCRIPTION, S_DT, S_DURATION, S_GRAVITY, S_MODEL, S_OBJECTS, S_EXPECT, S_HANDS, S_STYLUS, S_COUNT };
-static const char *const scenario_keys[S_COUNT] = {"name",  "description", "dt",     "duration", "gravity",
-                                                   "model", "objects",     "expect", "hands",    "stylus"};
+enum { S_NAME, S_DESCRIPTION, S_DT, S_DURATION, S_GRAVITY, S_MODEL, S_OBJECTS, S_EXPECT, S_HANDS, S_STYLUS,
+       S_ROBUST, S_COUNT };
+static const char *const scenario_keys[S_COUNT] = {"name",  "description", "dt",     "duration", "gravity", "model",
+                                                   "objects", "expect",    "hands", "stylus",   "robust"};
 
 // The name is the file's; a `name` key must agree with it.
 static bool read_name(hs_scenario_parser *p, const yaml_node_t *root, const yaml_node_t *node) {
@@ -72,6 +73,23 @@ static bool read_header(hs_scenario_parser *p, const yaml_node_t *root, const hs
 	       hs_read_dt(p, f->value[S_DT]) && hs_read_duration(p, f->value[S_DURATION]);
 }
 
+// The noise a load option turns on: a real glove's and tracker's on hands (the robust block's levels,
+// else model.input_noise's, else the paper's: glove ±4 units, the Fastrak's 0.03 inch and 0.15°), the
+// tracker's on a stylus.
+static void realistic_noise(hs_scenario_parser *p, bool hands) {
+	p->seeded = true;
+	p->seed = p->options->noise_seed;
+	if (!hands) {
+		p->noise.stylus = true;
+	} else if (p->s->robust.has_levels) {
+		p->noise = p->s->robust.levels;
+	} else if (!p->input_noise_key) {
+		p->noise.glove_units = 4;
+		p->noise.wrist = HS_STYLUS_NOISE_POSITION;
+		p->noise.wrist_rotation = HS_STYLUS_NOISE_ROTATION;
+	}
+}
+
 static bool read_scenario(hs_scenario_parser *p, const yaml_node_t *root) {
 	hs_scenario *s = p->s;
 	if (root->type != YAML_MAPPING_NODE)
@@ -96,6 +114,10 @@ static bool read_scenario(hs_scenario_parser *p, const yaml_node_t *root) {
 		return hs_yaml_fail(&p->y, p->spring_key, "'spring' options need a 'stylus': only spring worlds use them");
 	if (p->input_noise_key && !f.value[S_HANDS])
 		return hs_yaml_fail(&p->y, p->input_noise_key, "'input_noise' needs 'hands': only hand worlds use it");
+	if (f.value[S_ROBUST] && !hs_read_robust(p, f.value[S_ROBUST], f.value[S_HANDS] != NULL))
+		return false;
+	if (p->options && p->options->noise)
+		realistic_noise(p, f.value[S_HANDS] != NULL);
 	if (p->seeded && !(s->noise = hs_noise_create(p->seed)))
 		return hs_yaml_fail(&p->y, root, "out of memory");
 	s->noise_options = p->noise;
@@ -146,7 +168,9 @@ static bool start(hs_scenario *s, const char *path, hs_error *err) {
 	return true;
 }
 
-hs_scenario *hs_scenario_load(const char *path, hs_error *err) {
+hs_scenario *hs_scenario_load(const char *path, hs_error *err) { return hs_scenario_load_with(path, NULL, err); }
+
+hs_scenario *hs_scenario_load_with(const char *path, const hs_scenario_options *options, hs_error *err) {
 	hs_error scratch;
 	if (!err)
 		err = &scratch;
@@ -159,14 +183,16 @@ hs_scenario *hs_scenario_load(const char *path, hs_error *err) {
 	size_t size = 0;
 	if (!read_text_file(path, &text, &size, err))
 		return NULL;
-	hs_scenario_parser p = {.y = {.path = path, .err = err}};
+	hs_scenario_parser p = {.y = {.path = path, .err = err}, .options = options};
 	bool ok = hs_yaml_load(&p.y, text, size, "empty file: a scenario needs description, dt, duration and objects");
 	if (ok) {
 		p.s = calloc(1, sizeof *p.s);
 		ok = p.s ? read_scenario(&p, hs_yaml_root(&p.y)) : hs_set_error(err, path, 1, "out of memory");
 	}
-	if (ok)
+	if (ok) {
 		p.s->source_hash = fnv1a(text, size);
+		p.s->overridden = options && (options->dt > 0.0 || options->noise);
+	}
 	free(p.sorted);
 	hs_yaml_free(&p.y);
 	free(text);

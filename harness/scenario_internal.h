@@ -12,6 +12,18 @@
 #include "stylus_script.h"
 
 enum { HS_MAX_NAME = 64 }; // characters of an object name
+enum { HS_ROBUST_MAX_DTS = 16, HS_ROBUST_MAX_SEEDS = 100 };
+
+// The `robust` block: the sweep's matrix and the noise levels of its cells.
+typedef struct hs_robust {
+	bool given;
+	int dt_count;
+	double dts[HS_ROBUST_MAX_DTS]; // s
+	char dt_text[HS_ROBUST_MAX_DTS][16]; // as written, for the table
+	int seeds;                     // cells use seeds 1..seeds
+	bool has_levels;               // any of the three below was given (the others are then 0)
+	hs_noise_options levels;
+} hs_robust;
 
 struct hs_scenario {
 	char *name, *description;
@@ -30,6 +42,8 @@ struct hs_scenario {
 	hs_noise *noise;          // the input noise's generator (NULL: no noise)
 	hs_noise_options noise_options;
 	hs_expectations expect;
+	hs_robust robust;
+	bool overridden;          // loaded with a dt or noise option: a state file could not name the run
 	hs_status step_status;    // the first failed step (HS_OK: none)
 	long failed_frame;
 	uint64_t source_hash;     // FNV-1a of the scenario file's bytes: a state file names the file it continues

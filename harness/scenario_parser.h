@@ -24,10 +24,15 @@ typedef struct hs_scenario_parser {
 	bool seeded;                   // a noise seed was given: the scenario draws noise
 	unsigned long seed;
 	const yaml_node_t *input_noise_key; // where model.input_noise was given (NULL: not given)
+	const hs_scenario_options *options; // what the caller overrides (NULL: nothing)
 } hs_scenario_parser;
 
 // scenario_world.c
 bool hs_read_dt(hs_scenario_parser *p, const yaml_node_t *node);
+// A frame time (a number or a fraction "1/60") within the scenario range; `key` names it in messages.
+bool hs_read_dt_value(hs_scenario_parser *p, const yaml_node_t *node, const char *key, double *out);
+// wrist_deg (model.input_noise, robust): degrees within [0, 180], into radians
+bool hs_read_wrist_deg(hs_scenario_parser *p, const yaml_node_t *node, double *rad);
 bool hs_read_duration(hs_scenario_parser *p, const yaml_node_t *node);
 bool hs_read_gravity(hs_scenario_parser *p, const yaml_node_t *node, hs_world_def *def);
 bool hs_read_model(hs_scenario_parser *p, const yaml_node_t *node, hs_world_def *def);
@@ -44,5 +49,7 @@ bool hs_read_stylus(hs_scenario_parser *p, const yaml_node_t *node);
 // expect.c: the clauses, then everything the run records (so stepping never allocates)
 bool hs_read_expect(hs_scenario_parser *p, const yaml_node_t *node);
 bool hs_prepare_checks(hs_scenario_parser *p, const yaml_node_t *root);
+// robust.c: the `robust` block (the sweep's matrix and noise levels)
+bool hs_read_robust(hs_scenario_parser *p, const yaml_node_t *node, bool hands);
 
 #endif

@@ -75,6 +75,8 @@ static void put_harness(hs_state_io *io, const hs_scenario *s, const void *noise
 hs_status hs_scenario_save(const hs_scenario *s, FILE *out, hs_error *err) {
 	if (!s || !out)
 		return state_error(err, HS_ERR_INVALID_ARGUMENT, "no scenario or no file");
+	if (s->overridden) // the header names the file's bytes, not the options: a resume could not redo them
+		return state_error(err, HS_ERR_INVALID_ARGUMENT, "a run loaded with a dt or noise seed option cannot be saved");
 	size_t world_size = hs_world_state_size(s->world), noise_size = hs_noise_state_size(s->noise);
 	void *world = malloc(world_size ? world_size : 1), *noise = malloc(noise_size ? noise_size : 1);
 	hs_state_io io = {out, true, HS_STATE_HASH_START};
@@ -208,6 +210,8 @@ static hs_status restore(hs_scenario *s, const saved *v, hs_error *err) {
 hs_status hs_scenario_resume(hs_scenario *s, FILE *in, hs_error *err) {
 	if (!s || !in)
 		return state_error(err, HS_ERR_INVALID_ARGUMENT, "no scenario or no file");
+	if (s->overridden) // a state is saved from the file as written only (hs_scenario_save)
+		return state_error(err, HS_ERR_INVALID_ARGUMENT, "a run loaded with a dt or noise seed option cannot be resumed");
 	saved v;
 	memset(&v, 0, sizeof v);
 	hs_state_io io = {in, true, HS_STATE_HASH_START};

@@ -20,7 +20,7 @@ static const long MAX_FRAMES = 10000000L;
 #define MAX_DT HS_SCENARIO_MAX_DT
 static const double MAX_LENGTH = 1000.0;                        // m: largest size and coordinate accepted
 
-bool hs_read_dt(hs_scenario_parser *p, const yaml_node_t *node) {
+bool hs_read_dt_value(hs_scenario_parser *p, const yaml_node_t *node, const char *key, double *out) {
 	double dt = 0.0;
 	const char *s = hs_yaml_is_scalar(node) ? hs_yaml_scalar(node) : "";
 	const char *slash = hs_yaml_is_scalar(node) ? memchr(s, '/', node->data.scalar.length) : NULL;
@@ -37,18 +37,27 @@ bool hs_read_dt(hs_scenario_parser *p, const yaml_node_t *node) {
 		double a, b;
 		hs_number_kind ka = hs_parse_number(s + a0, a1 - a0, &a), kb = hs_parse_number(s + b0, b1 - b0, &b);
 		if (ka == HS_NUMBER_NOT_FINITE || kb == HS_NUMBER_NOT_FINITE)
-			return hs_yaml_fail(&p->y, node, "'dt' must be finite, got %s", hs_yaml_show(node).text);
+			return hs_yaml_fail(&p->y, node, "'%s' must be finite, got %s", key, hs_yaml_show(node).text);
 		if (ka != HS_NUMBER_OK || kb != HS_NUMBER_OK)
-			return hs_yaml_fail(&p->y, node, "'dt' must be a number, got %s", hs_yaml_got(node).text);
+			return hs_yaml_fail(&p->y, node, "'%s' must be a number, got %s", key, hs_yaml_got(node).text);
 		if (b == 0.0)
-			return hs_yaml_fail(&p->y, node, "'dt' divides by zero: %s", hs_yaml_show(node).text);
+			return hs_yaml_fail(&p->y, node, "'%s' divides by zero: %s", key, hs_yaml_show(node).text);
 		dt = a / b;
-	} else if (!hs_yaml_number(&p->y, node, "dt", &dt)) {
+	} else if (!hs_yaml_number(&p->y, node, key, &dt)) {
 		return false;
 	}
 	if (!(dt >= MIN_DT && dt <= MAX_DT))
-		return hs_yaml_fail(&p->y, node, "'dt' must be within [1/2000, 1/12] s, got %s", hs_yaml_show(node).text);
-	p->s->dt = dt;
+		return hs_yaml_fail(&p->y, node, "'%s' must be within [1/2000, 1/12] s, got %s", key, hs_yaml_show(node).text);
+	*out = dt;
+	return true;
+}
+
+// dt: the file's, or the one the load options give instead (already checked by hs_scenario_parse_dt)
+bool hs_read_dt(hs_scenario_parser *p, const yaml_node_t *node) {
+	if (!hs_read_dt_value(p, node, "dt", &p->s->dt))
+		return false;
+	if (p->options && p->options->dt > 0.0)
+		p->s->dt = p->options->dt;
 	return true;
 }
 
@@ -169,8 +178,8 @@ bool hs_read_gravity(hs_scenario_parser *p, const yaml_node_t *node, hs_world_de
 	return hs_yaml_bounded_vec3(&p->y, node, "gravity", HS_MAX_GRAVITY, "m/s^2", &def->gravity);
 }
 
-enum { IN_GLOVE, IN_WRIST, IN_SEED, IN_COUNT };
-static const char *const input_noise_keys[IN_COUNT] = {"glove_units", "wrist_mm", "seed"};
+enum { IN_GLOVE, IN_WRIST, IN_SEED, IN_WRIST_DEG, IN_COUNT };
+static const char *const input_noise_keys[IN_COUNT] = {"glove_units", "wrist_mm", "seed", "wrist_deg"};
 
 // model.input_noise: a glove's and a tracker's noise on hand input, from a seeded generator.
 static bool read_input_noise(hs_scenario_parser *p, const yaml_node_t *node) {
@@ -200,6 +209,16 @@ static bool read_input_noise(hs_scenario_parser *p, const yaml_node_t *node) {
 			                    hs_yaml_show(f.value[IN_WRIST]).text);
 		p->noise.wrist = mm * 1e-3;
 	}
+	return !f.value[IN_WRIST_DEG] || hs_read_wrist_deg(p, f.value[IN_WRIST_DEG], &p->noise.wrist_rotation);
+}
+
+bool hs_read_wrist_deg(hs_scenario_parser *p, const yaml_node_t *node, double *rad) {
+	double deg;
+	if (!hs_yaml_number(&p->y, node, "wrist_deg", &deg))
+		return false;
+	if (!(deg >= 0.0 && deg <= 180.0))
+		return hs_yaml_fail(&p->y, node, "'wrist_deg' must be within [0, 180] deg, got %s", hs_yaml_show(node).text);
+	*rad = deg * (HS_PI / 180.0);
 	return true;
 }
 

@@ -439,6 +439,14 @@ static void test_usage(void **state) {
 	    {"all", "extra", NULL},
 	    {"run", "a.yaml", "--save-at", "3", NULL},
 	    {"run", "a.yaml", "--save-at", "x", "--state-out", "s", NULL},
+	    {"run", "a.yaml", "--dt", "1/7", NULL},
+	    {"run", "a.yaml", "--dt", NULL},
+	    {"run", "a.yaml", "--noise-seed", "-1", NULL},
+	    {"run", "a.yaml", "--noise-seed", "4294967296", NULL},
+	    {"run", "a.yaml", "--dt", "1/60", "--resume", "s", NULL},
+	    {"sweep", NULL},
+	    {"sweep", "a.yaml", "--bogus", NULL},
+	    {"sweep", "a.yaml", "b.yaml", NULL},
 	};
 	for (size_t i = 0; i < sizeof cases / sizeof cases[0]; ++i) {
 		tool_result r = run_tool(cases[i]);
@@ -448,7 +456,7 @@ static void test_usage(void **state) {
 		free_result(&r);
 	}
 	static const char *const helps[][3] = {{"--help", NULL}, {"run", "--help", NULL}, {"list", "--help", NULL},
-	                                       {"all", "--help", NULL}};
+	                                       {"all", "--help", NULL}, {"sweep", "--help", NULL}};
 	for (size_t i = 0; i < sizeof helps / sizeof helps[0]; ++i) {
 		tool_result r = run_tool(helps[i]);
 		assert_int_equal(r.status, 0);

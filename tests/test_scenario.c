@@ -236,9 +236,9 @@ static void test_load_errors(void **state) {
 	load_error("e.yaml", text, "7: 'tolerance' must be > 0, got 0");
 	snprintf(text, sizeof text, "%s" ONE_CUBE "expect:\n  - { object: a, at: end }\n", head);
 	load_error("e.yaml", text,
-	           "7: expect clause needs a predicate: near, resting, floor_contacts, on_face, below, above, moved, turned_deg, speed_below, "
-	           "velocity, attached, candidate, extension_ratio, lands_at, still, contact_sequence, released, rest_length, stiffness, "
-	           "conserved or swing_below");
+	           "7: expect clause needs a predicate: near, resting, floor_contacts, on_face, below, above, moved, turned_deg, "
+	           "moved_at_most, turned_at_most_deg, speed_below, velocity, attached, candidate, extension_ratio, lands_at, still, "
+	           "contact_sequence, never_contact, grasped, released, rest_length, stiffness, conserved or swing_below");
 	snprintf(text, sizeof text, "%s" ONE_CUBE "expect:\n  - { object: a, still: true, at: end }\n", head);
 	load_error("e.yaml", text, "7: 'at' is not used by 'still'");
 	snprintf(text, sizeof text, "%s" ONE_CUBE "expect:\n  - { object: a, still: true, from: 2 }\n", head);
@@ -842,7 +842,7 @@ static void test_spring_load_errors(void **state) {
 	         "%s" ONE_CUBE "stylus: { keys: [{ t: 0, position: [0, 0, 1] }] }\n"
 	         "expect:\n  - { object: a, at: end, resting: true, to: 0.5 }\n",
 	         head);
-	load_error("e.yaml", text, "8: 'to' is only for 'still', 'conserved' and 'swing_below'");
+	load_error("e.yaml", text, "8: 'to' is only for 'still', 'never_contact', 'grasped', 'conserved' and 'swing_below'");
 	snprintf(text, sizeof text,
 	         "%s" ONE_CUBE "stylus: { keys: [{ t: 0, position: [0, 0, 1] }] }\n"
 	         "expect:\n  - { object: a, still: true, from: 0.5, to: 0.5 }\n",
@@ -883,10 +883,12 @@ static void test_noise_draws(void **state) {
 	int lowest = 0, highest = 0;
 	for (int i = 0; i < 2000; ++i) {
 		hs_vec3 w = hs_v3(0, 0, 0);
+		hs_quat r = hs_quat_identity();
 		uint8_t sensors[HS_GLOVE_SENSORS];
 		memset(sensors, 100, sizeof sensors);
 		sensors[0] = 2; // clamped at 0
-		hs_noise_hand(noise, &options, &w, sensors);
+		hs_noise_hand(noise, &options, &w, &r, sensors);
+		assert_true(r.w == 1.0); // no wrist_rotation: no rotation drawn
 		assert_true(fabs(w.x) <= 1.3e-3 && fabs(w.y) <= 1.3e-3 && fabs(w.z) <= 1.3e-3);
 		assert_true(sensors[0] <= 6);
 		for (int k = 1; k < HS_GLOVE_SENSORS; ++k) {
@@ -1171,6 +1173,173 @@ static void test_still_window(void **state) {
 	spring_fail("{ object: crate, still: true, from: 0, to: 0.5 }", "moved at frame ");
 }
 
+// ---------------------------------------------------------------------------------------------
+// issue 10: upper bounds, contact watches, load options and the robust sweep
+
+// a cube dropped tilted 30 deg about x: it lands on an edge and falls onto a face
+static const char tilt_scenario[] = "description: a tilted cube dropped\n"
+                                    "dt: 1/60\n"
+                                    "duration: 1.5\n"
+                                    "objects:\n"
+                                    "  - { name: tilt, shape: cube, size: 0.1, position: [0, 0, 0.5], rpy_deg: [30, 0, 0] }\n"
+                                    "expect:\n";
+
+static void test_upper_bounds(void **state) {
+	(void)state;
+	expect_pass("{ object: block, at: end, moved_at_most: 0.5 }", "block moved at most 0.5 m at end (t = 1.5 s): moved 0.45 m");
+	expect_fail("{ object: block, at: end, moved_at_most: 0.1 }", "block moved at most 0.1 m at end (t = 1.5 s): moved 0.45 m");
+	expect_pass("{ object: block, at: end, turned_at_most_deg: 0 }", "block turned at most 0 deg at end (t = 1.5 s): turned 0 deg");
+	expect_pass("{ object: block, at: end, moved: 0.4 }", "moved at least 0.4 m"); // the lower bound unchanged
+	char report[4096];
+	assert_int_equal(check_in(tilt_scenario, "tilt.yaml", "{ object: tilt, at: end, turned_at_most_deg: 1 }", report,
+	                          sizeof report),
+	                 1);
+	assert_string_equal(report, "FAIL  line 7: tilt turned at most 1 deg at end (t = 1.5 s): turned 30 deg\n");
+	assert_int_equal(check_in(tilt_scenario, "tilt.yaml", "{ object: tilt, at: end, turned_at_most_deg: 31 }", report,
+	                          sizeof report),
+	                 0);
+}
+
+static void test_contact_watch(void **state) {
+	(void)state;
+	expect_pass("{ object: block, never_contact: 2 }", "block never_contact 2 from t = 0 s to t = 1.5 s: never in state 2");
+	expect_fail("{ object: block, never_contact: 0 }", "never_contact 0 from t = 0 s to t = 1.5 s: contact state 0 at frame 0 (t = 0 s)");
+	expect_fail("{ object: block, never_contact: 0, from: 1, to: 1.2 }", "contact state 0 at frame 60 (t = 1 s)");
+	expect_fail("{ object: block, grasped: true, from: 0.5, to: 1 }",
+	            "block grasped (contact state 2) from t = 0.5 s to t = 1 s: contact state 0 at frame 30 (t = 0.5 s)");
+	// a hand that holds a cube from t = 0.61 s to 1.9 s (the catalog scenario, with one more clause)
+	FILE *f = fopen("scenarios/hand/grasp_adjoining_faces.yaml", "r");
+	assert_non_null(f);
+	static char text[16384];
+	size_t n = fread(text, 1, sizeof text - 1, f);
+	fclose(f);
+	text[n] = '\0';
+	char report[4096];
+	assert_int_equal(check_in(text, "grasp_adjoining_faces.yaml", "{ object: cube, grasped: true, from: 1, to: 1.5 }",
+	                          report, sizeof report),
+	                 0);
+	assert_non_null(strstr(report, "cube grasped (contact state 2) from t = 1 s to t = 1.5 s: grasped on every frame"));
+	assert_int_equal(check_in(text, "grasp_adjoining_faces.yaml", "{ object: cube, grasped: true, from: 0.5, to: 1.5 }",
+	                          report, sizeof report),
+	                 1);
+	assert_non_null(strstr(report, "contact state 0 at frame 30 (t = 0.5 s)"));
+	assert_int_equal(check_in(text, "grasp_adjoining_faces.yaml", "{ object: cube, never_contact: 3 }", report,
+	                          sizeof report),
+	                 0);
+}
+
+// hs_scenario_load_with: --dt replaces the file's, the frames follow; a noise seed changes the run.
+static void test_load_options(void **state) {
+	(void)state;
+	char text[4096];
+	snprintf(text, sizeof text, "%s  - { object: block, at: 1.0, below: 1 }\n", drop_scenario);
+	const char *path = write_file("drop.yaml", text);
+	hs_error err;
+	hs_scenario_options o = {.dt = 1.0 / 30.0};
+	hs_scenario *s = hs_scenario_load_with(path, &o, &err);
+	assert_non_null(s);
+	assert_true(hs_scenario_dt(s) == 1.0 / 30.0);
+	assert_int_equal(hs_scenario_frame_count(s), 45);
+	FILE *f = tmpfile();
+	assert_non_null(f);
+	assert_int_equal(hs_scenario_save(s, f, &err), HS_ERR_INVALID_ARGUMENT); // the file alone cannot name this run
+	assert_string_equal(err.message, "state file: a run loaded with a dt or noise seed option cannot be saved");
+	assert_int_equal(hs_scenario_resume(s, f, &err), HS_ERR_INVALID_ARGUMENT);
+	fclose(f);
+	hs_scenario_destroy(s);
+	double dt = 0.0;
+	assert_true(hs_scenario_parse_dt("1/12", &dt) && dt == 1.0 / 12.0);
+	assert_true(hs_scenario_parse_dt("0.01", &dt) && dt == 0.01);
+	assert_false(hs_scenario_parse_dt("1/7", &dt));
+	assert_false(hs_scenario_parse_dt("1/0", &dt));
+	assert_false(hs_scenario_parse_dt("x", &dt));
+	// hand input: the same seed twice gives the same run, another seed or none another
+	snprintf(text, sizeof text, "description: noisy hand\ndt: 1/60\nduration: 0.5\n" ONE_CUBE ONE_HAND);
+	path = write_file("hand.yaml", text);
+	uint64_t hash[4];
+	for (int i = 0; i < 4; ++i) {
+		hs_scenario_options n = {.noise = i > 0, .noise_seed = i == 3 ? 2u : 1u};
+		s = hs_scenario_load_with(path, &n, &err);
+		assert_non_null(s);
+		run_all(s);
+		hash[i] = hs_world_hash(hs_scenario_world(s));
+		hs_scenario_destroy(s);
+	}
+	assert_true(hash[1] == hash[2]);
+	assert_true(hash[0] != hash[1] && hash[1] != hash[3]);
+	// the stylus: tracker noise on
+	snprintf(text, sizeof text, "%s  - { object: crate, at: end, above: 0 }\n", spring_scenario);
+	path = write_file("spring.yaml", text);
+	for (int i = 0; i < 2; ++i) {
+		hs_scenario_options n = {.noise = i > 0, .noise_seed = 5};
+		s = hs_scenario_load_with(path, &n, &err);
+		assert_non_null(s);
+		run_all(s);
+		hash[i] = hs_world_hash(hs_scenario_world(s));
+		hs_scenario_destroy(s);
+	}
+	assert_true(hash[0] != hash[1]);
+}
+
+// The sweep's table: `robust` clauses in every cell, the others at the nominal run only.
+static char *sweep_of(const char *clauses, int *status) {
+	char text[4096];
+	snprintf(text, sizeof text,
+	         "description: a dropped cube\ndt: 1/60\nduration: 1.5\nrobust: { dt: [1/12, 1/60], seeds: 2 }\n"
+	         "objects:\n  - { name: block, shape: cube, size: 0.1, position: [0, 0, 0.5] }\nexpect:\n%s",
+	         clauses);
+	const char *path = write_file("sweep.yaml", text);
+	char *buf = NULL;
+	size_t size = 0;
+	FILE *out = open_memstream(&buf, &size);
+	assert_non_null(out);
+	hs_error err;
+	*status = hs_scenario_sweep(path, out, &err);
+	fclose(out);
+	return buf;
+}
+
+static void test_sweep(void **state) {
+	(void)state;
+	int status;
+	char *table = sweep_of("  - { object: block, at: end, near: [0, 0, 0.05], tolerance: 1e-9 }\n"
+	                       "  - { object: block, at: end, resting: true, robust: true }\n"
+	                       "  - { object: block, lands_at: 0.3, tolerance: 0.05, robust: true }\n",
+	                       &status);
+	assert_string_equal(table, "sweep sweep: 2 dt x 2 seeds, no hand or stylus input to add noise to\n"
+	                           "dt              1      2\n"
+	                           "1/12           ok     ok\n"
+	                           "1/60           ok     ok\n"
+	                           "nominal (the file's dt, every clause): ok\n"
+	                           "sweep: 4 of 4 cells pass\n");
+	assert_int_equal(status, 0);
+	free(table);
+	// landing within 0.02 s of 0.3 s: frame 19 of 1/60 (0.3167 s) is, frame 4 of 1/12 (0.3333 s) is not
+	table = sweep_of("  - { object: block, at: end, resting: true, robust: true }\n"
+	                 "  - { object: block, lands_at: 0.3, tolerance: 0.02, robust: true }\n",
+	                 &status);
+	assert_string_equal(table, "sweep sweep: 2 dt x 2 seeds, no hand or stylus input to add noise to\n"
+	                           "dt              1      2\n"
+	                           "1/12           L9     L9\n"
+	                           "1/60           ok     ok\n"
+	                           "nominal (the file's dt, every clause): ok\n"
+	                           "sweep: 2 of 4 cells pass\n");
+	assert_int_equal(status, 1);
+	free(table);
+	// a clause without `robust` that fails only in cells does not count there
+	table = sweep_of("  - { object: block, lands_at: 0.3, tolerance: 0.02 }\n", &status);
+	assert_non_null(strstr(table, "sweep: 4 of 4 cells pass\n"));
+	assert_int_equal(status, 0);
+	free(table);
+	// no robust block: bad input
+	const char *path = write_file("plain.yaml", "description: plain\ndt: 1/60\nduration: 0.1\n" ONE_CUBE);
+	hs_error err;
+	assert_int_equal(hs_scenario_sweep(path, stdout, &err), 2);
+	char want[600];
+	snprintf(want, sizeof want, "%s: no 'robust' block: nothing to sweep", path);
+	assert_string_equal(err.message, want);
+}
+
 int main(void) {
 	const struct CMUnitTest tests[] = {
 	    cmocka_unit_test(test_dt_fraction),
@@ -1205,6 +1374,10 @@ int main(void) {
 	    cmocka_unit_test(test_dt_ranges_nest),
 	    cmocka_unit_test(test_save_and_resume),
 	    cmocka_unit_test(test_resume_refusals),
+	    cmocka_unit_test(test_upper_bounds),
+	    cmocka_unit_test(test_contact_watch),
+	    cmocka_unit_test(test_load_options),
+	    cmocka_unit_test(test_sweep),
 	};
 	return cmocka_run_group_tests_name("scenario", tests, make_temp_dir, remove_temp_dir);
 }

@@ -2,9 +2,11 @@
 //
 //   handspring list [--dir DIR]                         the catalog, one scenario per line
 //   handspring run FILE [--out TRAJ.csv] [--save-at FRAME --state-out PATH] [--resume PATH]
+//                  [--dt DT] [--noise-seed N]
 //                                                        one scenario: summary, expectations, hash
 //   handspring all [--dir DIR] [--out-dir DIR] [--golden-dir DIR]
 //                                                        the whole catalog and a summary table
+//   handspring sweep FILE                                the scenario's robust matrix (dt x noise seeds)
 //
 // Exit status: 0 all expectations pass, 1 an expectation failed, 2 bad input or usage.
 #include <errno.h>
@@ -26,6 +28,7 @@ static const char *const usage_main =
     "  run FILE [--out TRAJ.csv] [--save-at FRAME --state-out PATH] [--resume PATH]\n"
     "                                                     run one scenario and check its expectations\n"
     "  all [--dir DIR] [--out-dir DIR] [--golden-dir DIR] run every scenario of a catalog\n"
+    "  sweep FILE                                         run a scenario's robust matrix (dt x noise seeds)\n"
     "Run 'handspring <command> --help' for the options of a command.\n";
 
 static const char *const usage_list =
@@ -34,6 +37,7 @@ static const char *const usage_list =
 
 static const char *const usage_run =
     "usage: handspring run FILE [--out TRAJ.csv] [--save-at FRAME --state-out PATH] [--resume PATH]\n"
+    "                           [--dt DT] [--noise-seed N]\n"
     "Runs the scenario FILE and prints its name, frames, objects, one PASS/FAIL line per expectation\n"
     "with the measured value, and the final state hash.\n"
     "  --out TRAJ.csv     also write the trajectory (one row per object per frame, frame 0 included);\n"
@@ -45,7 +49,22 @@ static const char *const usage_run =
     "                     run the remaining frames; --out then holds the header and those frames only:\n"
     "                     the same bytes as the full run's rows after the saved frame. The report is\n"
     "                     the full run's.\n"
+    "  --dt DT            replace the file's dt: a number or a fraction like 1/12, within [1/2000, 1/12] s;\n"
+    "                     the frames are round(duration / DT), clause times are converted with it\n"
+    "  --noise-seed N     draw realistic input noise with seed N (0 to 4294967295): hands a glove's\n"
+    "                     +-4 units per sensor and the tracker's 0.762 mm, 0.15 deg on the wrist (or the\n"
+    "                     levels of the file's robust block or model.input_noise), a stylus the tracker's\n"
+    "                     noise. Neither goes with --save-at or --resume (a state file names the file only).\n"
     "Exit status: 0 every expectation passed, 1 one failed, 2 bad input (one error line on stderr).\n";
+
+static const char *const usage_sweep =
+    "usage: handspring sweep FILE\n"
+    "Runs the matrix of the scenario's 'robust' block in-process: the nominal run (the file's dt and noise,\n"
+    "every clause must pass), then every dt of robust.dt x every seed 1..robust.seeds with the input noise on\n"
+    "(the clauses marked 'robust: true' must pass). Prints one row per dt, one column per seed; a cell is\n"
+    "'ok', 'L<line>' (the first failing robust clause) or 'fault' (the world failed to step or caught a\n"
+    "non-finite value); then 'sweep: N of M cells pass'.\n"
+    "Exit status: 0 every cell and the nominal run pass, 1 any fails, 2 bad input (no robust block too).\n";
 
 static const char *const usage_all =
     "usage: handspring all [--dir DIR] [--out-dir DIR] [--golden-dir DIR]\n"
@@ -171,7 +190,37 @@ static void run_scenario(hs_scenario *s, FILE **outs, int out_count) {
 typedef struct run_options {
 	const char *file, *out, *state_out, *resume;
 	long save_at; // -1: no state saved
+	hs_scenario_options load; // --dt, --noise-seed
 } run_options;
+
+// A noise seed: decimal digits, at most 4294967295 (unsigned long is 32 bits on i386).
+static bool parse_seed(const char *text, unsigned long *seed) {
+	unsigned long long v = 0;
+	for (const char *c = text; *c; ++c) {
+		if (*c < '0' || *c > '9' || (v = v * 10 + (unsigned long long)(*c - '0')) > 4294967295ull)
+			return false;
+	}
+	*seed = (unsigned long)v;
+	return *text != '\0';
+}
+
+// --dt and --noise-seed at argv[*i]: true when it was one of them (*status set on a usage error).
+static bool parse_load_option(int argc, char **argv, int *i, hs_scenario_options *o, int *status) {
+	bool missing = false;
+	const char *v = NULL;
+	if (option_value(argc, argv, i, "--dt", &v, &missing)) {
+		if (missing || !hs_scenario_parse_dt(v, &o->dt))
+			*status = usage_error("run", usage_run, "%s needs a frame time within [1/2000, 1/12] s (e.g. 1/60)", "--dt");
+		return true;
+	}
+	if (option_value(argc, argv, i, "--noise-seed", &v, &missing)) {
+		o->noise = true;
+		if (missing || !parse_seed(v, &o->noise_seed))
+			*status = usage_error("run", usage_run, "%s needs a seed within [0, 4294967295]", "--noise-seed");
+		return true;
+	}
+	return false;
+}
 
 // A frame number: decimal digits only.
 static bool parse_frame(const char *text, long *frame) {
@@ -186,6 +235,7 @@ static bool parse_frame(const char *text, long *frame) {
 
 // The options of `run`: -1 to go on, else the exit status (usage errors, --help).
 static int parse_run(int argc, char **argv, run_options *o) {
+	int status = -1;
 	memset(o, 0, sizeof *o);
 	o->save_at = -1;
 	for (int i = 0; i < argc; ++i) {
@@ -202,6 +252,9 @@ static int parse_run(int argc, char **argv, run_options *o) {
 		} else if (option_value(argc, argv, &i, "--save-at", &frame, &missing)) {
 			if (missing || !parse_frame(frame, &o->save_at))
 				return usage_error("run", usage_run, "%s needs a frame number (0, 1, 2, ...)", "--save-at");
+		} else if (parse_load_option(argc, argv, &i, &o->load, &status)) {
+			if (status >= 0)
+				return status;
 		} else if (argv[i][0] == '-' && argv[i][1] != '\0') {
 			return usage_error("run", usage_run, "unknown option '%s'", argv[i]);
 		} else if (o->file) {
@@ -214,6 +267,8 @@ static int parse_run(int argc, char **argv, run_options *o) {
 		return usage_error("run", usage_run, "%s", "missing the scenario FILE");
 	if ((o->save_at >= 0) != (o->state_out != NULL))
 		return usage_error("run", usage_run, "%s", "--save-at and --state-out go together");
+	if ((o->load.dt > 0.0 || o->load.noise) && (o->state_out || o->resume))
+		return usage_error("run", usage_run, "%s", "--dt and --noise-seed do not go with --save-at or --resume");
 	return -1;
 }
 
@@ -302,7 +357,7 @@ static int cmd_run(int argc, char **argv) {
 	if (status >= 0)
 		return status;
 	hs_error err;
-	hs_scenario *s = hs_scenario_load(o.file, &err);
+	hs_scenario *s = hs_scenario_load_with(o.file, &o.load, &err);
 	if (!s) {
 		fprintf(stderr, "%s\n", err.message);
 		return EXIT_BAD_INPUT;
@@ -518,6 +573,28 @@ static int cmd_all(int argc, char **argv) {
 	return bad ? EXIT_BAD_INPUT : failed ? EXIT_FAILED : EXIT_PASS;
 }
 
+static int cmd_sweep(int argc, char **argv) {
+	const char *file = NULL;
+	for (int i = 0; i < argc; ++i) {
+		if (is_help(argv[i])) {
+			fputs(usage_sweep, stdout);
+			return EXIT_PASS;
+		}
+		if (argv[i][0] == '-' && argv[i][1] != '\0')
+			return usage_error("sweep", usage_sweep, "unknown option '%s'", argv[i]);
+		if (file)
+			return usage_error("sweep", usage_sweep, "one scenario file only, got also '%s'", argv[i]);
+		file = argv[i];
+	}
+	if (!file)
+		return usage_error("sweep", usage_sweep, "%s", "missing the scenario FILE");
+	hs_error err;
+	int status = hs_scenario_sweep(file, stdout, &err);
+	if (status == EXIT_BAD_INPUT)
+		fprintf(stderr, "%s\n", err.message);
+	return status;
+}
+
 int main(int argc, char **argv) {
 	if (argc < 2)
 		return usage_error(NULL, usage_main, "%s", "missing a command");
@@ -536,5 +613,7 @@ int main(int argc, char **argv) {
 		return cmd_run(argc - 2, argv + 2);
 	if (strcmp(command, "all") == 0)
 		return cmd_all(argc - 2, argv + 2);
+	if (strcmp(command, "sweep") == 0)
+		return cmd_sweep(argc - 2, argv + 2);
 	return usage_error(NULL, usage_main, "unknown command '%s'", command);
 }

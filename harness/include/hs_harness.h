@@ -37,6 +37,28 @@ typedef struct hs_error {
 
 /// Loads and validates a scenario file. NULL and `err` filled on any problem.
 hs_scenario *hs_scenario_load(const char *path, hs_error *err);
+
+/// What a load may change in the file (zero-initialised: nothing).
+typedef struct hs_scenario_options {
+	double dt;                // s: replaces the file's dt (0: the file's); the frames are round(duration / dt)
+	bool noise;               // draw realistic input noise from `noise_seed`: hand worlds the robust block's
+	unsigned long noise_seed; // levels, else model.input_noise's, else glove ±4 units, wrist ±0.762 mm and
+	                          // ±0.15° (the tracker's static accuracy, paper §5.1); spring worlds the stylus's
+} hs_scenario_options;
+
+/// hs_scenario_load with overrides (`options` NULL: none). A run loaded with a dt or a noise seed
+/// cannot be saved or resumed (HS_ERR_INVALID_ARGUMENT): a state file names the file's bytes only.
+hs_scenario *hs_scenario_load_with(const char *path, const hs_scenario_options *options, hs_error *err);
+/// A frame time as the YAML `dt:` takes it ("1/60" or "0.0125") within [HS_SCENARIO_MIN_DT,
+/// HS_SCENARIO_MAX_DT]; false when it is not one.
+bool hs_scenario_parse_dt(const char *text, double *dt);
+/// Runs the scenario's `robust` matrix in-process: the nominal run (every clause), then every dt
+/// of the block × seeds 1..seeds with the noise on (the clauses marked `robust: true`). Prints a
+/// table to `out`: one row per dt, one column per seed, a cell `ok`, `L<line>` (the first failing
+/// robust clause) or `fault` (the world failed to step or caught a numeric fault), then
+/// `sweep: N of M cells pass`. Returns 0 when every cell and the nominal run pass, 1 when any
+/// fails, 2 with `err` set on bad input (the file or any cell fails to load, no `robust` block).
+int hs_scenario_sweep(const char *path, FILE *out, hs_error *err);
 void hs_scenario_destroy(hs_scenario *scenario);
 
 const char *hs_scenario_name(const hs_scenario *scenario);
