@@ -3,6 +3,8 @@
 #ifndef HS_PLOT_RUN_H
 #define HS_PLOT_RUN_H
 
+#include <math.h>
+#include <stdbool.h>
 #include <stdio.h>
 
 #include "hs_harness.h"
@@ -39,6 +41,42 @@ static inline int plot_run_close(hs_scenario *scenario, FILE *out) {
 	fclose(out);
 	hs_scenario_destroy(scenario);
 	return failed ? 1 : 0;
+}
+
+// For generators that run one scenario several times (other frame times, input noise): loads
+// `path` with dt (0: the file's) and, when `noise`, realistic input noise drawn from `seed`
+// (hs_scenario_load_with). NULL after saying what went wrong.
+static inline hs_scenario *plot_run_load(const char *path, double dt, bool noise, unsigned long seed) {
+	hs_scenario_options opts = {.dt = dt, .noise = noise, .noise_seed = seed};
+	hs_error err;
+	hs_scenario *s = hs_scenario_load_with(path, &opts, &err);
+	if (!s)
+		fprintf(stderr, "%s\n", err.message);
+	return s;
+}
+
+// Opens OUTDIR/NAME.EXT for writing; NULL after saying what went wrong.
+static inline FILE *plot_run_file(const char *dir, const char *name, const char *ext) {
+	char path[4096];
+	snprintf(path, sizeof path, "%s/%s.%s", dir, name, ext);
+	FILE *f = fopen(path, "w");
+	if (!f)
+		perror(path);
+	return f;
+}
+
+// Degrees an orientation has turned from q0 (the angle of the relative rotation, 0 to 180).
+static inline double plot_run_turned_deg(hs_quat q0, hs_quat q) {
+	double c = fabs(hs_quat_dot(q0, q));
+	return 2.0 * acos(c < 1.0 ? c : 1.0) * 180.0 / 3.14159265358979323846;
+}
+
+// Writes `NAME<i> = VALUE; ` to a gnuplot .vars file (NaN when not a number: gnuplot's NaN).
+static inline void plot_run_var(FILE *vars, const char *name, int i, double value) {
+	if (isnan(value))
+		fprintf(vars, "%s%d = NaN; ", name, i);
+	else
+		fprintf(vars, "%s%d = %.9g; ", name, i, value);
 }
 
 #endif
