@@ -313,8 +313,10 @@ static void step_object(hs_world *world, int i) {
 			body->asleep = 1;
 		}
 	}
-	if (world->def.stacking == HS_STACKING_SUPPORT && !body->asleep)
+	if (world->def.stacking == HS_STACKING_SUPPORT && !body->asleep) {
 		hs_support_step(world, i);
+		hs_stack_rectify(world, i); // a turn about a support's edge stops at the floor only (eq. 7)
+	}
 }
 
 hs_status hs_world_step(hs_world *world) {
