@@ -92,6 +92,25 @@ static void test_paper_mode_stops_at_interference(void **state) {
 	hs_world_destroy(w);
 }
 
+// Both modes: a cube placed 2 cm deep in another (faces flush: no vertex strictly inside) is
+// lifted along +z onto its top face in the first step (Fig. 11: rectified as against the floor),
+// G at 0.1 + 0.05 within the floor tolerance; in paper mode it then interferes (touches) and stays.
+static void test_placed_inside_is_rectified(void **state) {
+	(void)state;
+	for (int m = 0; m < 2; ++m) {
+		hs_world *w = world_with(m ? HS_STACKING_SUPPORT : HS_STACKING_PAPER);
+		add_box(w, hs_v3(0.1, 0.1, 0.1), hs_v3(0, 0, 0.05));
+		hs_object_id upper = add_box(w, hs_v3(0.1, 0.1, 0.1), hs_v3(0, 0, 0.13));
+		hs_object_state s = run(w, upper, 1);
+		assert_near(s.position.z, 0.15, 1e-6);
+		assert_true(s.position.z >= 0.15);
+		s = run(w, upper, 60);
+		assert_near(s.position.z, 0.15, 1e-6);
+		assert_true(s.resting);
+		hs_world_destroy(w);
+	}
+}
+
 // Depth of b's penetration into a (0 when they only touch or are apart).
 static double penetration(const hs_shape *sa, hs_object_state a, const hs_shape *sb, hs_object_state b) {
 	double depth = 0.0;
@@ -158,6 +177,7 @@ int main(void) {
 	    cmocka_unit_test(test_support_overhang_short_of_edge),
 	    cmocka_unit_test(test_support_overhang_past_edge_tips),
 	    cmocka_unit_test(test_paper_mode_stops_at_interference),
+	    cmocka_unit_test(test_placed_inside_is_rectified),
 	    cmocka_unit_test(test_drops_land_on_top_face),
 	};
 	return cmocka_run_group_tests_name("support", tests, NULL, NULL);
