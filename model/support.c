@@ -2,52 +2,15 @@
 // an object that sinks into objects under it is rectified upward exactly as on the floor (§4.2),
 // and its stability is judged with the hull of its contacts on their faces and G' (eq. 4-5).
 //
-// The lift is vertical and exact for vertex-face interpenetration of convex parts: a vertex of
-// the falling body inside a support leaves through the support's upper faces; a vertex of the
-// support inside the falling body leaves through the body's lower faces. Edge-edge crossings
-// with no vertex inside are not lifted (they are shallow when a body lands from a frame's fall).
+// The lift is vertical (stacking.c: exact for vertex-face interpenetration of convex parts; the
+// world step has already swept the fall and rectified faces flush with each other).
 #include "broadphase.h"
 #include "clip.h"
 #include "motion.h"
+#include "stacking.h"
 #include "support.h"
 
 static hs_vec3 to_local(const hs_body *b, hs_vec3 p) { return hs_quat_inv_rotate(b->rot, hs_sub(p, b->pos)); }
-
-// Distance along `dir` (unit, local) from q, inside the part, to the part's boundary; -1 if q is outside.
-static double exit_distance(const hs_shape *shape, const hs_part *part, hs_vec3 q, hs_vec3 dir, double slop) {
-	double best = INFINITY;
-	for (int f = part->first_face; f < part->first_face + part->face_count; ++f) {
-		const hs_face *face = &shape->faces[f];
-		double gap = face->offset - hs_dot(face->normal, q);
-		if (gap <= slop)
-			return -1.0; // outside or on this face's plane
-		double along = hs_dot(face->normal, dir);
-		if (along > 0.0 && gap / along < best)
-			best = gap / along;
-	}
-	return best;
-}
-
-// How far body a must rise to leave body b.
-static double lift_out(const hs_world *world, const hs_body *a, const hs_body *b) {
-	const hs_shape *sa = &world->shapes[a->shape], *sb = &world->shapes[b->shape];
-	double lift = 0.0, slop = 1e-12;
-	hs_vec3 up_in_b = hs_quat_inv_rotate(b->rot, hs_v3(0, 0, 1));
-	hs_vec3 down_in_a = hs_quat_inv_rotate(a->rot, hs_v3(0, 0, -1));
-	for (int p = 0; p < sb->part_count; ++p)
-		for (int i = 0; i < sa->vertex_count; ++i) {
-			hs_vec3 q = to_local(b, hs_add(a->pos, hs_quat_rotate(a->rot, sa->vertices[i])));
-			double t = exit_distance(sb, &sb->parts[p], q, up_in_b, slop);
-			lift = t > lift && isfinite(t) ? t : lift;
-		}
-	for (int p = 0; p < sa->part_count; ++p)
-		for (int i = 0; i < sb->vertex_count; ++i) {
-			hs_vec3 q = to_local(a, hs_add(b->pos, hs_quat_rotate(b->rot, sb->vertices[i])));
-			double t = exit_distance(sa, &sa->parts[p], q, down_in_a, slop);
-			lift = t > lift && isfinite(t) ? t : lift;
-		}
-	return lift;
-}
 
 static bool near_spheres(const hs_world *world, int i, int j, double margin) {
 	const hs_body *a = &world->bodies[i], *b = &world->bodies[j];
@@ -101,7 +64,7 @@ void hs_support_step(hs_world *world, int object) {
 		const hs_body *other = &world->bodies[j];
 		if (other->pos.z > body->pos.z)
 			continue; // a support is under the body's G
-		double t = lift_out(world, body, other);
+		double t = hs_stack_lift_out(world, body, other);
 		lift = t > lift ? t : lift;
 		touching = true;
 	}
@@ -136,7 +99,8 @@ void hs_support_step(hs_world *world, int object) {
 
 void hs_support_wake_neighbours(hs_world *world, int object) {
 	const hs_body *body = &world->bodies[object];
-	double tol = world->def.floor_tolerance;
+	// what rested on it where it was at the frame's start: its motion this frame is the margin
+	double tol = world->def.floor_tolerance + hs_length(hs_sub(body->pos, body->prev));
 	int n = hs_grid_query(world, body->pos, world->shapes[body->shape].radius + tol, world->near);
 	for (int k = 0; k < n; ++k) {
 		int j = world->near[k];

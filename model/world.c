@@ -8,6 +8,7 @@
 #include "contact.h"
 #include "manipulate.h"
 #include "motion.h"
+#include "stacking.h"
 #include "support.h"
 #include "world_internal.h"
 
@@ -286,6 +287,38 @@ static bool body_is_finite(const hs_body *body) {
 	       hs_quat_is_finite(body->spin);
 }
 
+// One unheld object's frame: §4.3 in paper mode (interfering and untouched: no gravity, no
+// inertia, but rectified out of the objects under it as out of the floor, Fig. 11), else eq. 3 and
+// the floor (§4.2), the fall swept over the objects under it, and in support mode its supports.
+static void step_object(hs_world *world, int i) {
+	hs_body *body = &world->bodies[i];
+	hs_vec3 from = body->pos;
+	if (!body->asleep && world->def.stacking == HS_STACKING_PAPER && hs_object_interferes(world, i)) {
+		hs_stack_rectify(world, i);
+		hs_motion_keep_above_floor(world, body);
+		body->prev = body->pos;
+		body->spin = hs_quat_identity();
+		body->asleep = 1;
+		return;
+	}
+	body->rot_prev = body->rot;
+	hs_motion_step(world, body);
+	if (hs_stack_sweep(world, i, from)) {
+		hs_motion_keep_above_floor(world, body); // its floor contacts where it landed
+		// Gm of eq. 4-5 as on the floor (motion.c): the rectified motion and this frame's gravity
+		double dt = world->def.dt;
+		body->prev = hs_mul_add(from, -dt * dt, world->def.gravity);
+		if (world->def.stacking == HS_STACKING_PAPER) { // §4.1: stops at the interference, no rebound
+			body->prev = body->pos;
+			body->asleep = 1;
+		}
+	}
+	if (world->def.stacking == HS_STACKING_SUPPORT && !body->asleep) {
+		hs_support_step(world, i);
+		hs_stack_rectify(world, i); // a turn about a support's edge stops at the floor only (eq. 7)
+	}
+}
+
 hs_status hs_world_step(hs_world *world) {
 	if (!world)
 		return HS_ERR_INVALID_ARGUMENT;
@@ -307,6 +340,7 @@ hs_status hs_world_step(hs_world *world) {
 	int visits = skip ? world->awake_count : world->object_count;
 	if (skip) // the sleeping objects cost nothing (the awake list holds the others, in index order)
 		world->counters.sleeping_skips += world->object_count - world->awake_count;
+	int moved = 0; // support mode: objects that moved, to wake what rested on them (after the loop)
 	for (int k = 0; k < visits; ++k) {
 		int i = skip ? world->awake[k] : k;
 		hs_body *body = &world->bodies[i];
@@ -315,25 +349,17 @@ hs_status hs_world_step(hs_world *world) {
 		if (body->asleep && skip)
 			continue; // fell asleep this frame: leaves the awake list below
 		hs_body saved = *body;
-		if (!body->asleep && world->def.stacking == HS_STACKING_PAPER && hs_object_interferes(world, i)) {
-			// §4.3: interfering objects not touched by the hand are not affected by gravity and inertia;
-			// the floor still holds them up (§4.2)
-			hs_motion_keep_above_floor(world, body);
-			body->prev = body->pos;
-			body->spin = hs_quat_identity();
-			body->asleep = 1;
-			continue;
-		}
-		body->rot_prev = body->rot;
-		hs_motion_step(world, body);
-		if (world->def.stacking == HS_STACKING_SUPPORT && !body->asleep)
-			hs_support_step(world, i);
+		step_object(world, i);
 		if (!body_is_finite(body)) { // never let a NaN spread: freeze the object and count it
 			*body = saved;
 			hs_world_note_fault(world, i);
 		}
+		if (world->def.stacking == HS_STACKING_SUPPORT && (body->pos.x != saved.pos.x || body->pos.y != saved.pos.y || body->pos.z != saved.pos.z))
+			world->queue[moved++] = i;
 		hs_grid_update(world, i);
 	}
+	for (int k = 0; k < moved; ++k) // the awake list may grow only once the loop is over
+		hs_support_wake_neighbours(world, world->queue[k]);
 	hs_awake_compact(world);
 	for (int h = 0; h < world->hand_count; ++h) // a hand not set again stays where it is
 		hs_hand_keep_previous(&world->hands[h]);
