@@ -101,7 +101,7 @@ static int header_of(const hs_world *w, uint64_t out[HS_STATE_HEADER_WORDS], con
 	return HS_STATE_HEADER_WORDS;
 }
 
-// One object: 38 words. The model fields (shape, mass) are in the definition checksum instead.
+// One object: 39 words. The model fields (shape, mass) are in the definition checksum instead.
 static void body_io(hs_state_io *io, const hs_world *w, hs_body *b) {
 	hs_state_vec3(io, &b->pos);
 	hs_state_vec3(io, &b->prev);
@@ -119,6 +119,7 @@ static void body_io(hs_state_io *io, const hs_world *w, hs_body *b) {
 	hs_state_vec3(io, &b->grip_pos);
 	hs_state_quat(io, &b->grip_rot); // zero until a grasp begins
 	hs_state_f64(io, &b->grip_spread);
+	hs_state_f64(io, &b->grip_reach);
 	hs_state_u8_range(io, &b->grip_fingers, 31);
 	hs_state_int_range(io, &b->released_by, 0, w->hand_count);
 }
