@@ -29,8 +29,8 @@ hs_vec3 hs_part_displacement(const hs_hand *hand, const hs_contact *c) {
 // The finger of a check point (i / 4) or check line (j / 12), §3.1.
 static int finger_of(int part) { return part < HS_HAND_POINTS ? part / 4 : (part - HS_HAND_POINTS) / 12; }
 
-// How open the fingers in `fingers` are (m): the spread of their tips (check point 4f + 3; the
-// mean distance from their centroid, 0 for one finger) into *spread, and the mean reach of each
+// How open the fingers in `fingers` are (m): the spread of their tips (check point 4f + 3; twice
+// their mean distance from their centroid: for two tips, their distance apart; 0 for one) into *spread, and the mean reach of each
 // tip from its finger's base (check point 4f) into *reach. A grasp posture opens by the spread
 // (the thumb moves away from the fingers; its MCP even straightens as it closes), a hand laid flat
 // by the reach (curled fingers extend). No rigid motion of the hand changes either.
@@ -49,7 +49,7 @@ static void hand_opening(const hs_hand *hand, unsigned fingers, double *spread, 
 	c = hs_scale(c, 1.0 / m);
 	for (int k = 0; k < m; ++k)
 		*spread += hs_length(hs_sub(tips[k], c));
-	*spread /= m;
+	*spread *= 2.0 / m; // for two tips: their distance
 	*reach /= m;
 }
 
