@@ -139,7 +139,8 @@ static void release(const hs_world *world, hs_body *body) {
 	body->asleep = 0;
 }
 
-// The objects a hand may touch, and those held last frame (they may be let go), in index order.
+// The objects a hand may touch, those held last frame (they may be let go) and those under a
+// release rule, in index order.
 static void collect_candidates(hs_world *world) {
 	bool skip = world->def.skip_work;
 	// carried or held last frame means awake: only the awake list needs looking at
@@ -151,8 +152,8 @@ static void collect_candidates(hs_world *world) {
 		for (int k = 0; k < n; ++k)
 			add_candidate(world, world->near[k]);
 	}
-	for (int k = 0; k < world->awake_count; ++k)
-		if (world->bodies[world->awake[k]].held)
+	for (int k = 0; k < world->awake_count; ++k) // a release rule lapses once its hand is clear (grasp.c)
+		if (world->bodies[world->awake[k]].held || world->bodies[world->awake[k]].released_by)
 			add_candidate(world, world->awake[k]);
 }
 
