@@ -26,6 +26,10 @@ typedef struct hs_body {
 	int grasped_by;   // hand index + 1 holding it (0: none)
 	hs_vec3 grip_pos; // pose in the grasping wrist frame, fixed when the grasp began (§3.2 (2))
 	hs_quat grip_rot;
+	double grip_spread;   // m: the holding fingertips' spread when the grasp began; after it ended, the whole hand's most open since (grasp.c)
+	double grip_reach;    // m: the holding fingertips' mean reach from their bases when the grasp began (grasp.c)
+	uint8_t grip_fingers; // bit f: finger f touched the object when the grasp began
+	int released_by;      // hand index + 1 whose grasp ended on opening: its parts moving away do not act
 	uint8_t carried;  // moved along with a hand-moved object this frame (§4.3)
 } hs_body;
 

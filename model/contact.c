@@ -27,9 +27,10 @@ static frame frame_of(const hs_body *body) {
 static hs_vec3 to_body(const frame *f, hs_vec3 p) { return hs_mat3_tmul(f->rot, hs_sub(p, f->pos)); }
 static hs_vec3 to_world(const frame *f, hs_vec3 p) { return hs_add(f->pos, hs_mat3_mul(f->rot, p)); }
 
-static bool inside_part(const hs_shape *shape, const hs_part *part, hs_vec3 p) {
+// Inside the part grown by `grow` (m; 0: the part itself).
+static bool inside_part(const hs_shape *shape, const hs_part *part, hs_vec3 p, double grow) {
 	for (int f = part->first_face; f < part->first_face + part->face_count; ++f)
-		if (hs_dot(shape->faces[f].normal, p) >= shape->faces[f].offset)
+		if (hs_dot(shape->faces[f].normal, p) >= shape->faces[f].offset + grow)
 			return false;
 	return true;
 }
@@ -89,22 +90,23 @@ static double segment_distance_sq(hs_vec3 c, hs_vec3 p0, hs_vec3 p1) {
 
 // `before` is the object's pose when the fingers were at their previous points: a point's
 // motion is judged relative to the object.
+// `grow` > 0: against the part grown by that much (the grasp's release margin, docs/model.md §3).
 static void detect_part(hs_world *world, int object, int h, const hs_part *part, const frame *body,
-                        const frame *before, bool cull) {
+                        const frame *before, bool cull, double grow) {
 	const hs_shape *shape = &world->shapes[world->bodies[object].shape];
 	const hs_hand *hand = &world->hands[h];
 	// a finger part outside the part's bounding sphere cannot touch it: skip before the transform
 	hs_vec3 center = to_world(body, part->center);
-	double r_sq = part->radius * part->radius;
+	double r_sq = (part->radius + grow) * (part->radius + grow);
 	// (A) check points against faces
 	for (int i = 0; i < HS_HAND_POINTS; ++i) {
 		if (cull && hs_length_sq(hs_sub(hand->points[i], center)) > r_sq)
 			continue;
 		hs_vec3 b = to_body(body, hand->points[i]);
-		if (!inside_part(shape, part, b))
+		if (!inside_part(shape, part, b, grow))
 			continue;
 		hs_vec3 a = to_body(before, hand->prev_points[i]);
-		hs_clip c = hs_clip_segment(shape, part, a, b, 0.0);
+		hs_clip c = hs_clip_segment(shape, part, a, b, grow);
 		int face;
 		hs_vec3 point;
 		if (c.face_in >= 0) { // entered this frame: the face crossed along the motion
@@ -123,7 +125,7 @@ static void detect_part(hs_world *world, int object, int h, const hs_part *part,
 		if (cull && segment_distance_sq(center, hand->lines[j][0], hand->lines[j][1]) > r_sq)
 			continue;
 		hs_vec3 p0 = to_body(body, hand->lines[j][0]), p1 = to_body(body, hand->lines[j][1]);
-		hs_clip c = hs_clip_segment(shape, part, p0, p1, 0.0);
+		hs_clip c = hs_clip_segment(shape, part, p0, p1, grow);
 		if (!c.hit || c.face_in < 0 || c.face_out < 0)
 			continue; // misses, or an end is inside: that is the check points' business
 		int e = edge_between(shape, part, c.face_in, c.face_out);
@@ -152,24 +154,30 @@ bool hs_hand_near(const hs_world *world, const hs_hand *hand, int object) {
 }
 
 int hs_contact_detect(hs_world *world, int object, const hs_body *before) {
+	return hs_contact_detect_grown(world, object, before, 0.0);
+}
+
+int hs_contact_detect_grown(hs_world *world, int object, const hs_body *before, double grow) {
 	int first = world->contact_count;
 	const hs_body *body = &world->bodies[object];
 	const hs_shape *shape = &world->shapes[body->shape];
 	frame now = frame_of(body), then = before ? frame_of(before) : now;
 	for (int h = 0; h < world->hand_count; ++h) {
 		const hs_hand *hand = &world->hands[h];
-		if (world->def.skip_work && !hs_hand_near(world, hand, object))
+		double reach = world->shapes[body->shape].radius + grow + hand->radius;
+		if (world->def.skip_work && hs_length_sq(hs_sub(body->pos, hand->center)) > reach * reach)
 			continue; // bounding-volume rejection before the narrow tests (Fig. 2)
-		world->counters.hand_tests++;
+		if (grow == 0.0) // the grown test repeats a held object's: counted once
+			world->counters.hand_tests++;
 		for (int p = 0; p < shape->part_count; ++p) {
 			const hs_part *part = &shape->parts[p];
 			if (world->def.skip_work) {
 				hs_vec3 c = to_world(&now, part->center);
-				double r = part->radius + hand->radius;
+				double r = part->radius + grow + hand->radius;
 				if (hs_length_sq(hs_sub(c, hand->center)) > r * r)
 					continue;
 			}
-			detect_part(world, object, h, part, &now, &then, world->def.skip_work);
+			detect_part(world, object, h, part, &now, &then, world->def.skip_work, grow);
 		}
 	}
 	return world->contact_count - first;

@@ -13,6 +13,10 @@ bool hs_hand_near(const hs_world *world, const hs_hand *hand, int object);
 // Appends the contacts of every hand with the object to world->contacts; returns how many.
 // `before` is the object's pose one frame ago when it has moved since (NULL: it has not).
 int hs_contact_detect(hs_world *world, int object, const hs_body *before);
+// The same against the object's parts grown by `grow` (m): a finger part within `grow` of the
+// surface touches it (the grasp's release margin, docs/model.md §3). Contact points are
+// projected on the faces themselves.
+int hs_contact_detect_grown(hs_world *world, int object, const hs_body *before, double grow);
 // The largest n_i · n_j of a grasp: cos(threshold) plus a tolerance (DESIGN.md), once per world.
 double hs_grasp_limit(double grasp_threshold_deg);
 // Fig. 2: the contact state of a set of contacts (grasp when two normals are >= threshold apart,

@@ -2,6 +2,7 @@
 // interfering with a moved object follow it (§4.3, paper mode).
 #include "broadphase.h"
 #include "contact.h"
+#include "grasp.h"
 #include "manipulate.h"
 #include "motion.h"
 #include "support.h"
@@ -52,15 +53,6 @@ static hs_vec3 part_position(const hs_hand *hand, const hs_contact *c) {
 		return hand->points[c->part];
 	const hs_vec3 *line = hand->lines[c->part - HS_HAND_POINTS];
 	return hs_segment_closest(line[0], line[1], c->point);
-}
-
-static hs_vec3 part_displacement(const hs_hand *hand, const hs_contact *c) {
-	if (c->part < HS_HAND_POINTS)
-		return hs_sub(hand->points[c->part], hand->prev_points[c->part]);
-	int j = c->part - HS_HAND_POINTS;
-	hs_vec3 d0 = hs_sub(hand->lines[j][0], hand->prev_lines[j][0]);
-	hs_vec3 d1 = hs_sub(hand->lines[j][1], hand->prev_lines[j][1]);
-	return hs_scale(hs_add(d0, d1), 0.5);
 }
 
 // The hand that holds a grasped object: the one already holding it while its own contacts still
@@ -125,11 +117,6 @@ static void carry_along(hs_world *world, int moved, int current, hs_vec3 d) {
 	}
 }
 
-static void follow_wrist(hs_body *body, const hs_hand *hand) {
-	body->pos = hs_add(hand->wrist_pos, hs_quat_rotate(hand->wrist_rot, body->grip_pos));
-	body->rot = hs_quat_normalize(hs_quat_mul(hand->wrist_rot, body->grip_rot));
-}
-
 // Eq. 3 on release. A grasp that ends starts eq. 3 on the exact parabola of the release velocity
 // v (DESIGN.md "Release"), as hs_world_add_object does for an initial velocity: P(t - dt) =
 // P(t) - v dt + g dt²/2, so the flight does not depend on the frame rate. v is the held object's
@@ -152,7 +139,8 @@ static void release(const hs_world *world, hs_body *body) {
 	body->asleep = 0;
 }
 
-// The objects a hand may touch, and those held last frame (they may be let go), in index order.
+// The objects a hand may touch, those held last frame (they may be let go) and those under a
+// release rule, in index order.
 static void collect_candidates(hs_world *world) {
 	bool skip = world->def.skip_work;
 	// carried or held last frame means awake: only the awake list needs looking at
@@ -164,43 +152,22 @@ static void collect_candidates(hs_world *world) {
 		for (int k = 0; k < n; ++k)
 			add_candidate(world, world->near[k]);
 	}
-	for (int k = 0; k < world->awake_count; ++k)
-		if (world->bodies[world->awake[k]].held)
+	for (int k = 0; k < world->awake_count; ++k) // a release rule lapses once its hand is clear (grasp.c)
+		if (world->bodies[world->awake[k]].held || world->bodies[world->awake[k]].released_by)
 			add_candidate(world, world->awake[k]);
-}
-
-// Fig. 2: the contacts of object i (appended from world->contacts[first]) and their state. A held
-// object first moves with its wrist (§3.2 (2)); the grasp continues while the fingers, seen from
-// the object so moved, still grasp it, else it is looked at again from where it was.
-static hs_contact_state detect_and_classify(hs_world *world, int i, int first, int *n) {
-	hs_body *body = &world->bodies[i];
-	if (body->grasped_by > 0) {
-		hs_body before = *body;
-		follow_wrist(body, &world->hands[body->grasped_by - 1]);
-		*n = hs_contact_detect(world, i, &before);
-		if (hs_contact_grasps(&world->contacts[first], *n, (uint32_t)body->grasped_by, world->grasp_limit,
-		                      world->def.grasp_any_contacts))
-			return HS_CONTACT_GRASP;
-		body->pos = before.pos; // the holder let go
-		body->rot = before.rot;
-		world->contact_count = first;
-	}
-	*n = hs_contact_detect(world, i, NULL);
-	return hs_contact_classify(&world->contacts[first], *n, world->grasp_limit, world->def.grasp_any_contacts);
 }
 
 // §3.2: a grasped object follows the grasping wrist, one contact pushes by eq. 1-2, several
 // contacts translate it by the parts' mean displacement (3).
-static void move_by_contacts(hs_world *world, hs_body *body, hs_contact_state state, const hs_contact *cs, int n) {
+// A grasp that continues (grasp.c) has already moved the object with its wrist.
+static void move_by_contacts(hs_world *world, hs_body *body, hs_contact_state state, const hs_contact *cs, int n,
+                             bool continues) {
 	if (state == HS_CONTACT_GRASP) {
+		if (continues)
+			return;
 		int h = grasping_hand(world, body, cs, n);
-		const hs_hand *hand = &world->hands[h];
-		if (body->grasped_by != h + 1) { // the grasp begins: fix the pose in the wrist frame
-			body->grasped_by = h + 1;
-			body->grip_pos = hs_quat_inv_rotate(hand->wrist_rot, hs_sub(body->pos, hand->wrist_pos));
-			body->grip_rot = hs_quat_normalize(hs_quat_mul(hs_quat_conj(hand->wrist_rot), body->rot));
-		}
-		follow_wrist(body, hand);
+		hs_grasp_begin(world, body, h, cs, n); // fix the pose in the wrist frame (§3.2 (2))
+		hs_grasp_follow_wrist(body, &world->hands[h]);
 	} else if (state == HS_CONTACT_PUSH_ONE) {
 		body->grasped_by = 0;
 		const hs_hand *hand = &world->hands[cs[0].hand.index1 - 1];
@@ -209,7 +176,7 @@ static void move_by_contacts(hs_world *world, hs_body *body, hs_contact_state st
 		body->grasped_by = 0;
 		hs_vec3 sum = hs_v3(0, 0, 0);
 		for (int k = 0; k < n; ++k)
-			sum = hs_add(sum, part_displacement(&world->hands[cs[k].hand.index1 - 1], &cs[k]));
+			sum = hs_add(sum, hs_part_displacement(&world->hands[cs[k].hand.index1 - 1], &cs[k]));
 		body->pos = hs_add(body->pos, hs_scale(sum, 1.0 / n));
 	}
 }
@@ -224,7 +191,8 @@ void hs_manipulate(hs_world *world) {
 		int first = world->contact_count, n = 0;
 		hs_vec3 old_pos = body->pos;
 		hs_quat old_rot = body->rot;
-		hs_contact_state state = detect_and_classify(world, i, first, &n);
+		bool continues = false;
+		hs_contact_state state = hs_grasp_detect(world, i, first, &n, &continues);
 		bool was_held = body->held != 0;
 		body->contact = (uint8_t)state;
 		body->held = 0;
@@ -233,7 +201,7 @@ void hs_manipulate(hs_world *world) {
 				release(world, body);
 			continue;
 		}
-		move_by_contacts(world, body, state, &world->contacts[first], n);
+		move_by_contacts(world, body, state, &world->contacts[first], n, continues);
 		hs_motion_keep_above_floor(world, body); // §4.2 for a pushed object; the trajectory shows its floor contacts
 		body->prev = old_pos;
 		body->rot_prev = old_rot;

@@ -65,6 +65,8 @@ static uint64_t definition_checksum(const hs_world *w) {
 	h = hs_state_mix(h, (uint64_t)d->stacking);
 	h = hs_state_mix_f64(h, d->grasp_threshold_deg);
 	h = hs_state_mix(h, d->grasp_any_contacts ? 1u : 0u);
+	h = hs_state_mix_f64(h, d->grasp_release_mm);
+	h = hs_state_mix_f64(h, d->grasp_open_mm);
 	for (int i = 0; i < w->shape_count; ++i)
 		h = shape_checksum(h, &w->shapes[i]);
 	for (int i = 0; i < w->object_count; ++i) {
@@ -99,7 +101,7 @@ static int header_of(const hs_world *w, uint64_t out[HS_STATE_HEADER_WORDS], con
 	return HS_STATE_HEADER_WORDS;
 }
 
-// One object: 35 words. The model fields (shape, mass) are in the definition checksum instead.
+// One object: 39 words. The model fields (shape, mass) are in the definition checksum instead.
 static void body_io(hs_state_io *io, const hs_world *w, hs_body *b) {
 	hs_state_vec3(io, &b->pos);
 	hs_state_vec3(io, &b->prev);
@@ -116,6 +118,10 @@ static void body_io(hs_state_io *io, const hs_world *w, hs_body *b) {
 	hs_state_int_range(io, &b->grasped_by, 0, w->hand_count);
 	hs_state_vec3(io, &b->grip_pos);
 	hs_state_quat(io, &b->grip_rot); // zero until a grasp begins
+	hs_state_f64(io, &b->grip_spread);
+	hs_state_f64(io, &b->grip_reach);
+	hs_state_u8_range(io, &b->grip_fingers, 31);
+	hs_state_int_range(io, &b->released_by, 0, w->hand_count);
 }
 
 // One hand: 51 words, the two readings its check points now and a frame ago come from (the points

@@ -31,6 +31,8 @@ hs_world_def hs_default_world_def(void) {
 	def.max_hands = 2;
 	def.stacking = HS_STACKING_PAPER;
 	def.grasp_threshold_deg = 90.0;
+	def.grasp_release_mm = 5.0;
+	def.grasp_open_mm = 8.0;
 	def.skip_work = true;
 	return def;
 }
@@ -59,7 +61,9 @@ static bool valid_def(const hs_world_def *def) {
 	       def->max_objects <= 10000000 && def->max_shapes >= 1 && def->max_shapes <= 100000 &&
 	       def->max_hands >= 0 && def->max_hands <= 64 &&
 	       isfinite(def->grasp_threshold_deg) && def->grasp_threshold_deg > 0.0 &&
-	       def->grasp_threshold_deg <= 180.0 &&
+	       def->grasp_threshold_deg <= 180.0 && isfinite(def->grasp_release_mm) && def->grasp_release_mm >= 0.0 &&
+	       def->grasp_release_mm <= 1000.0 && isfinite(def->grasp_open_mm) && def->grasp_open_mm >= 0.0 &&
+	       def->grasp_open_mm <= 1000.0 &&
 	       (def->stacking == HS_STACKING_PAPER || def->stacking == HS_STACKING_SUPPORT);
 }
 

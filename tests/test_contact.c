@@ -401,6 +401,36 @@ static void test_grasp_continues_on_two_fingers_only(void **state) {
 	hs_world_destroy(w);
 }
 
+// Hysteresis on the grasp's end (docs/model.md §3): the thumb tip (3) and index tip (7) 1 mm into
+// the cube's -x and +x faces grasp it. The index tip 3 mm outside the +x face (the tips 4 mm
+// further apart than at the grasp, within grasp_open_mm = 8; the thumb still touches): the grasp
+// goes on, though only one contact is left. 11 mm apart: the hand has opened, the grasp ends,
+// and the thumb that still touches does not push the cube (the release rule): state 0.
+static void test_grasp_survives_a_contact_leaving(void **state) {
+	(void)state;
+	hs_world *w = cube_world();
+	move_point(w, 3, hs_v3(-0.6, 0, 2), hs_v3(-0.499, 0, 2));
+	move_point(w, 7, hs_v3(0.6, 0, 2), hs_v3(0.499, 0, 2));
+	hs_world_step(w);
+	assert_int_equal(w->bodies[0].contact, HS_CONTACT_GRASP);
+	move_point(w, 7, hs_v3(0.499, 0, 2), hs_v3(0.503, 0, 2));
+	hs_world_step(w);
+	assert_int_equal(w->contact_count, 1); // the thumb's
+	assert_int_equal(w->bodies[0].contact, HS_CONTACT_GRASP);
+	assert_int_equal(w->bodies[0].grasped_by, 1);
+	move_point(w, 7, hs_v3(0.503, 0, 2), hs_v3(0.510, 0, 2));
+	hs_world_step(w);
+	assert_int_equal(w->bodies[0].contact, HS_CONTACT_NONE);
+	assert_int_equal(w->bodies[0].grasped_by, 0);
+	assert_int_equal(w->bodies[0].released_by, 1);
+	for (int k = 0; k < 3; ++k) { // the thumb stays in the face: set aside, nothing pushes
+		move_point(w, 7, hs_v3(0.510, 0, 2), hs_v3(0.510, 0, 2));
+		hs_world_step(w);
+		assert_int_equal(w->bodies[0].contact, HS_CONTACT_NONE);
+	}
+	hs_world_destroy(w);
+}
+
 // A fast hand keeps its grasp: the fingers' motion is judged relative to the held object, which
 // moves with the wrist. Sideways by 0.1 m a frame (6 m/s) — twice the cube's size — for 5 frames.
 static void test_grasp_holds_fast_hand(void **state) {
@@ -458,6 +488,7 @@ int main(void) {
 	    cmocka_unit_test(test_release_on_exact_parabola),
 	    cmocka_unit_test(test_one_finger_does_not_grasp),
 	    cmocka_unit_test(test_grasp_continues_on_two_fingers_only),
+	    cmocka_unit_test(test_grasp_survives_a_contact_leaving),
 	    cmocka_unit_test(test_paper_mode_carries_interfering),
 	};
 	return cmocka_run_group_tests_name("contact", tests, NULL, NULL);

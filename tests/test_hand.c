@@ -714,6 +714,206 @@ static void test_throw_lands_at_any_rate(void **state) {
 		assert_true(throw_distance(rates[r]) < 0.15);
 }
 
+// ---------------------------------------------------------------------------------------------
+// A grasp under real input (issue 10; docs/model.md §3 "Grasp continuation and release"): a glove
+// and tracker pick up a 5 cm cube, lift it 0.25 m and hold it 2 s, with seeded uniform noise on
+// every sensor (±L units a frame) and optionally ±1.3 mm on each wrist axis.
+
+typedef struct grasp_rig {
+	hs_world *world;
+	hs_hand_id hand;
+	hs_object_id cube;
+	uint8_t wide[HS_GLOVE_SENSORS], grasp[HS_GLOVE_SENSORS];
+	hs_vec3 grip; // the grasp posture's grip centre in the wrist frame
+	uint64_t rng;
+} grasp_rig;
+
+// xorshift64*: the test's own deterministic noise
+static uint64_t rng_next(uint64_t *x) {
+	*x ^= *x >> 12;
+	*x ^= *x << 25;
+	*x ^= *x >> 27;
+	return *x * 0x2545F4914F6CDD1DULL;
+}
+
+// a uniform integer within [-l, l]
+static int rng_units(uint64_t *x, int l) { return (int)(rng_next(x) % (uint64_t)(2 * l + 1)) - l; }
+
+// a uniform double within [-a, a]
+static double rng_within(uint64_t *x, double a) { return a * (2.0 * (double)(rng_next(x) >> 11) / 9007199254740992.0 - 1.0); }
+
+static grasp_rig grasp_world(double dt, double cube_size, double wide, uint64_t seed) {
+	grasp_rig r;
+	hs_world_def def = hs_default_world_def();
+	def.dt = dt;
+	r.world = hs_world_create(&def, NULL);
+	assert_non_null(r.world);
+	hs_object_def od = hs_default_object_def();
+	hs_shape *box = hs_shape_box(hs_v3(cube_size, cube_size, cube_size), NULL);
+	od.shape = hs_world_add_shape(r.world, box, NULL);
+	hs_shape_destroy(box);
+	od.position = hs_v3(0, 0, cube_size / 2);
+	r.cube = hs_world_add_object(r.world, &od, NULL);
+	hs_hand_def hd = hs_default_hand_def();
+	r.hand = hs_world_add_hand(r.world, &hd, NULL);
+	assert_int_equal(hs_hand_posture(&hd, HS_POSTURE_GRASP, wide, r.wide), HS_OK);
+	assert_int_equal(hs_hand_posture(&hd, HS_POSTURE_GRASP, 0.05, r.grasp), HS_OK);
+	hs_vec3 axis;
+	hs_hand_grip(&hd, r.grasp, &r.grip, &axis);
+	r.rng = seed * 0x9E3779B97F4A7C15ULL + 1;
+	return r;
+}
+
+// Sets the hand: grip centre at `at`, the posture `close` of the way from wide to `to`, with
+// ±units on each sensor and ±wrist_m on each wrist axis.
+static void set_grasp_hand(grasp_rig *r, hs_vec3 at, double close, const uint8_t to[HS_GLOVE_SENSORS], int units,
+                           double wrist_m) {
+	uint8_t s[HS_GLOVE_SENSORS];
+	for (int i = 0; i < HS_GLOVE_SENSORS; ++i) {
+		int v = (int)(r->wide[i] + close * (to[i] - r->wide[i]) + 0.5) + (units ? rng_units(&r->rng, units) : 0);
+		s[i] = (uint8_t)(v < 0 ? 0 : (v > 255 ? 255 : v));
+	}
+	hs_vec3 wrist = hs_sub(at, r->grip);
+	if (wrist_m > 0.0)
+		wrist = hs_add(wrist, hs_v3(rng_within(&r->rng, wrist_m), rng_within(&r->rng, wrist_m),
+		                            rng_within(&r->rng, wrist_m)));
+	assert_int_equal(hs_world_set_hand(r->world, r->hand, wrist, hs_quat_identity(), s), HS_OK);
+}
+
+static hs_object_state cube_state(const grasp_rig *r) {
+	hs_object_state st;
+	assert_int_equal(hs_world_object_state(r->world, r->cube, &st), HS_OK);
+	return st;
+}
+
+// The pick-up script at time t: down over the cube (0-0.5 s), close from a 7 cm to a 5 cm grasp
+// (0.5-1.0 s), lift 0.25 m (1.0-1.5 s), hold (1.5-3.5 s).
+static void pick_up_frame(grasp_rig *r, double t, int units, double wrist_m) {
+	double down = t < 0.5 ? 0.15 * (1.0 - t / 0.5) : 0.0;
+	double close = t < 0.5 ? 0.0 : (t < 1.0 ? (t - 0.5) / 0.5 : 1.0);
+	double lift = t < 1.0 ? 0.0 : (t < 1.5 ? 0.25 * (t - 1.0) / 0.5 : 0.25);
+	set_grasp_hand(r, hs_v3(0, 0, 0.025 + down + lift), close, r->grasp, units, wrist_m);
+}
+
+// True when the cube is grasped (2) on every frame from the lift's start to the end of the hold
+// and ends 0.25 m up.
+static bool hold_survives(double dt, int units, double wrist_m, uint64_t seed) {
+	grasp_rig r = grasp_world(dt, 0.05, 0.07, seed);
+	int frames = (int)(3.5 / dt + 0.5);
+	bool held = true;
+	for (int f = 0; f < frames; ++f) {
+		double t = (f + 1) * dt;
+		pick_up_frame(&r, t, units, wrist_m);
+		assert_int_equal(hs_world_step(r.world), HS_OK);
+		if (t >= 1.05 && cube_state(&r).contact != HS_CONTACT_GRASP)
+			held = false;
+	}
+	held = held && cube_state(&r).position.z > 0.2;
+	hs_world_destroy(r.world);
+	return held;
+}
+
+// The hold rate over 20 seeds for each noise level, with and without wrist noise, at 1/60 and
+// 1/17 s (the table of issue 10). ±4 units (±2°) holds 20 of 20 in every column.
+static void test_grasp_holds_under_noise(void **state) {
+	(void)state;
+	const int levels[] = {0, 1, 2, 4, 8};
+	const double dts[] = {1.0 / 60, 1.0 / 17};
+	printf("grasp hold (5 cm cube, lift 0.25 m, hold 2 s), holds of 20 seeds\n");
+	printf("  glove units   wrist mm   dt 1/60   dt 1/17\n");
+	for (int l = 0; l < 5; ++l)
+		for (int w = 0; w < 2; ++w) {
+			int holds[2] = {0, 0};
+			for (int d = 0; d < 2; ++d)
+				for (uint64_t seed = 1; seed <= 20; ++seed)
+					holds[d] += hold_survives(dts[d], levels[l], w ? 1.3e-3 : 0.0, seed);
+			printf("  %11d   %8.1f   %7d   %7d\n", levels[l], w ? 1.3 : 0.0, holds[0], holds[1]);
+			if (levels[l] <= 4) {
+				assert_int_equal(holds[0], 20);
+				assert_int_equal(holds[1], 20);
+			}
+		}
+}
+
+// Closed past the cube (a grasp of 0.04 m on a 0.05 m cube, from 0.09 m) on the floor, then
+// opened: the grasp ends within a few frames once the posture is back where the grasp began, no
+// grasp (2) follows, and the opening fingers drag the cube less than 1 mm across the floor (on
+// main: states 2, 3, 2, 3, 2 and 9 mm). Held 2 mm up and tilted by the pushes before the grasp,
+// the released cube falls and settles on its own (1.4 mm at 1/17 s, with no contact).
+static void test_grasp_release_on_opening(void **state) {
+	(void)state;
+	const double dts[] = {1.0 / 60, 1.0 / 17};
+	for (int d = 0; d < 2; ++d) {
+		double dt = dts[d];
+		grasp_rig r = grasp_world(dt, 0.05, 0.09, 1);
+		hs_hand_def hd = hs_default_hand_def();
+		uint8_t squeeze[HS_GLOVE_SENSORS];
+		assert_int_equal(hs_hand_posture(&hd, HS_POSTURE_GRASP, 0.04, squeeze), HS_OK);
+		int frames = (int)(2.0 / dt + 0.5), back_at = -1, ended_at = -1, grasps_after = 0;
+		double close_at_grasp = -1.0, dragged = 0.0;
+		hs_vec3 put = hs_v3(0, 0, 0), last = put;
+		for (int f = 0; f < frames; ++f) {
+			double t = (f + 1) * dt;
+			// down (0-0.5 s), close past the cube (0.5-0.8 s), rest (to 1.0 s), open (1.0-1.3 s)
+			double close = t < 0.5 ? 0.0 : (t < 0.8 ? (t - 0.5) / 0.3 : (t < 1.0 ? 1.0 : (t < 1.3 ? (1.3 - t) / 0.3 : 0.0)));
+			double down = t < 0.5 ? 0.15 * (1.0 - t / 0.5) : 0.0;
+			set_grasp_hand(&r, hs_v3(0, 0, 0.025 + down), close, squeeze, 0, 0.0);
+			assert_int_equal(hs_world_step(r.world), HS_OK);
+			hs_object_state st = cube_state(&r);
+			if (close_at_grasp < 0.0 && st.contact == HS_CONTACT_GRASP)
+				close_at_grasp = close;
+			if (t < 1.0 + 1e-9)
+				put = st.position;
+			else if (back_at < 0 && close < close_at_grasp)
+				back_at = f;
+			if (back_at >= 0 && ended_at < 0 && st.contact != HS_CONTACT_GRASP)
+				ended_at = f;
+			if (ended_at >= 0 && st.contact == HS_CONTACT_GRASP)
+				++grasps_after;
+			if (ended_at >= 0 && ended_at < f && st.contact != HS_CONTACT_NONE) // moved by the fingers
+				dragged += hypot(st.position.x - last.x, st.position.y - last.y);
+			last = st.position;
+			if (t > 0.9 && t < 1.0)
+				assert_int_equal(st.contact, HS_CONTACT_GRASP);
+		}
+		hs_object_state st = cube_state(&r);
+		printf("release at dt 1/%.0f: the grasp ends %d frames after the posture is back where it began, "
+		       "cube dragged %.3g mm by the fingers, %.3g mm from where it was put in all (it settles)\n",
+		       1.0 / dt, ended_at - back_at + 1, 1e3 * dragged, 1e3 * hypot(st.position.x - put.x, st.position.y - put.y));
+		assert_true(back_at >= 0 && ended_at >= 0 && (ended_at - back_at) * dt <= 0.2);
+		assert_int_equal(grasps_after, 0);
+		assert_true(dragged < 1e-3);
+		hs_world_destroy(r.world);
+	}
+}
+
+// A hand that starts inside a 12 cm cube (grasp posture of 5 cm, grip at the cube's centre)
+// grasps it; opened flat, it lets go: the cube is not grasped at the end and stays on the floor
+// when the hand then rises 0.3 m (on main: held for ever).
+static void test_hand_inside_cube_opens(void **state) {
+	(void)state;
+	grasp_rig r = grasp_world(1.0 / 60, 0.12, 0.07, 1);
+	hs_hand_def hd = hs_default_hand_def();
+	uint8_t flat[HS_GLOVE_SENSORS];
+	assert_int_equal(hs_hand_posture(&hd, HS_POSTURE_OPEN, 0.0, flat), HS_OK);
+	memcpy(r.wide, r.grasp, sizeof r.wide); // close = 0: the grasp posture, 1: flat
+	bool grasped = false;
+	for (int f = 0; f < 150; ++f) {
+		double t = (f + 1) / 60.0;
+		double open = t < 0.3 ? 0.0 : (t < 0.8 ? (t - 0.3) / 0.5 : 1.0);
+		double rise = t < 1.5 ? 0.0 : 0.3 * (t - 1.5) / 1.0;
+		set_grasp_hand(&r, hs_v3(0, 0, 0.06 + rise), open, flat, 0, 0.0);
+		assert_int_equal(hs_world_step(r.world), HS_OK);
+		if (t < 0.3 && cube_state(&r).contact == HS_CONTACT_GRASP)
+			grasped = true;
+	}
+	hs_object_state st = cube_state(&r);
+	assert_true(grasped);
+	assert_int_not_equal(st.contact, HS_CONTACT_GRASP);
+	assert_near(st.position.z, 0.06, 1e-3);
+	hs_world_destroy(r.world);
+}
+
 int main(void) {
 	const struct CMUnitTest tests[] = {
 	    cmocka_unit_test(test_sensor_mapping),
@@ -736,6 +936,9 @@ int main(void) {
 	    cmocka_unit_test(test_invalid_arguments),
 	    cmocka_unit_test(test_null_sensors_write_nothing),
 	    cmocka_unit_test(test_throw_lands_at_any_rate),
+	    cmocka_unit_test(test_grasp_holds_under_noise),
+	    cmocka_unit_test(test_grasp_release_on_opening),
+	    cmocka_unit_test(test_hand_inside_cube_opens),
 	};
 	return cmocka_run_group_tests_name("hand", tests, NULL, NULL);
 }

@@ -530,7 +530,7 @@ static void test_seed_scene_size(void **state) {
 	size_t size = hs_world_state_size(hs_scenario_world(s));
 	printf("seed scene: %d objects, state %zu bytes (%zu words)\n", hs_world_object_count(hs_scenario_world(s)),
 	       size, size / WORD);
-	assert_int_equal(size, WORD * (HEADER_WORDS + 4 + 35 * (size_t)hs_world_object_count(hs_scenario_world(s))));
+	assert_int_equal(size, WORD * (HEADER_WORDS + 4 + 39 * (size_t)hs_world_object_count(hs_scenario_world(s))));
 	hs_scenario_destroy(s);
 }
 

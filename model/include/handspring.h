@@ -178,6 +178,8 @@ typedef struct hs_world_def {
 	hs_stacking stacking;       ///< default HS_STACKING_PAPER
 	double grasp_threshold_deg; ///< deg: two contact normals this far apart make a grasp (default 90)
 	bool grasp_any_contacts;    ///< false (default): a grasp's two contacts lie on different fingers or hands; true: any two (the 1999 paper's rule)
+	double grasp_release_mm;    ///< mm: a held object stays grasped while its holder's fingers grasp it grown by this much (default 5; docs/model.md §3)
+	double grasp_open_mm;       ///< mm: the grasp ends when the holding fingertips spread or reach out this much more than when it began (default 8)
 	bool skip_work;             ///< bounding-volume rejection and sleeping on (default true); off only to measure what they save
 } hs_world_def;
 
@@ -263,12 +265,12 @@ uint64_t hs_world_hash(const hs_world *world);
 // and a checksum of the definitions (dt, gravity, floor tolerance, stacking, grasp threshold and rule,
 // every shape's counts, vertices and volume, every object's shape and mass, every hand
 // definition; not max_objects, max_shapes or skip_work, which change no result). Then the
-// world: frame, numeric faults, first fault frame and object; per object 35 words (pose, previous
+// world: frame, numeric faults, first fault frame and object; per object 39 words (pose, previous
 // pose, rot_prev, spin, velocity, contact state, floor contacts, grounded / asleep / held /
-// carried, grasped_by, grip pose); per hand 51 words (wrist pose and 18 sensors as last set and as
+// carried, grasped_by, grip pose, grip spread and reach, grip fingers, released_by); per hand 51 words (wrist pose and 18 sensors as last set and as
 // at the end of the last step, placed: the check points and lines now and a frame ago are their
 // kinematics, rebuilt bit for bit after a load); then the spring system and its tracker when on.
-// The seed scene (10 cubes, no hand) saves 363 words, 2904 bytes.
+// The seed scene (10 cubes, no hand) saves 403 words, 3224 bytes.
 // Not in it: caches rebuilt after a load (check points and lines, the hand's shape in its wrist
 // frame, bounding spheres, the broad-phase grid, the awake list), the last step's contact list
 // (hs_world_contacts is empty after a load until the next step) and the work counters.

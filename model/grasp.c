@@ -1,0 +1,168 @@
+// grasp.c — a grasp under real input (1999 paper §3.2 (2), Fig. 2, Fig. 12; docs/model.md §3).
+//
+// [H] holds an object while two contacts' normals are >= the threshold apart and lets it go the
+// first frame they are not. Under glove noise (±2° a sensor) a fingertip that rests on a face
+// leaves it and comes back, and the grasp ends at random. Here the end has hysteresis:
+//  - the grasp continues while the fingers that touched the object when it began have not opened
+//    (their tips' spread or their reach) more than grasp_open_mm from then, and a part of the
+//    holder is still within grasp_release_mm of the object;
+//  - once it has ended, the releasing hand's contacts do not act on the object (no push, no new
+//    grasp) until that hand is clear of it by grasp_release_mm, another finger touches it, or its
+//    five fingers close again by grasp_open_mm: no 2 <-> 3 flicker, no drag while opening.
+#include "contact.h"
+#include "grasp.h"
+
+void hs_grasp_follow_wrist(hs_body *body, const hs_hand *hand) {
+	body->pos = hs_add(hand->wrist_pos, hs_quat_rotate(hand->wrist_rot, body->grip_pos));
+	body->rot = hs_quat_normalize(hs_quat_mul(hand->wrist_rot, body->grip_rot));
+}
+
+hs_vec3 hs_part_displacement(const hs_hand *hand, const hs_contact *c) {
+	if (c->part < HS_HAND_POINTS)
+		return hs_sub(hand->points[c->part], hand->prev_points[c->part]);
+	int j = c->part - HS_HAND_POINTS;
+	hs_vec3 d0 = hs_sub(hand->lines[j][0], hand->prev_lines[j][0]);
+	hs_vec3 d1 = hs_sub(hand->lines[j][1], hand->prev_lines[j][1]);
+	return hs_scale(hs_add(d0, d1), 0.5);
+}
+
+// The finger of a check point (i / 4) or check line (j / 12), §3.1.
+static int finger_of(int part) { return part < HS_HAND_POINTS ? part / 4 : (part - HS_HAND_POINTS) / 12; }
+
+// How open the fingers in `fingers` are (m): the spread of their tips (check point 4f + 3; twice
+// their mean distance from their centroid: for two tips, their distance apart; 0 for one) into *spread, and the mean reach of each
+// tip from its finger's base (check point 4f) into *reach. A grasp posture opens by the spread
+// (the thumb moves away from the fingers; its MCP even straightens as it closes), a hand laid flat
+// by the reach (curled fingers extend). No rigid motion of the hand changes either.
+static void hand_opening(const hs_hand *hand, unsigned fingers, double *spread, double *reach) {
+	hs_vec3 tips[5], c = hs_v3(0, 0, 0);
+	int m = 0;
+	*spread = *reach = 0.0;
+	for (int f = 0; f < 5; ++f)
+		if (fingers >> f & 1u) {
+			tips[m] = hand->points[4 * f + 3];
+			*reach += hs_length(hs_sub(tips[m], hand->points[4 * f]));
+			c = hs_add(c, tips[m++]);
+		}
+	if (m == 0)
+		return;
+	c = hs_scale(c, 1.0 / m);
+	for (int k = 0; k < m; ++k)
+		*spread += hs_length(hs_sub(tips[k], c));
+	*spread *= 2.0 / m; // for two tips: their distance
+	*reach /= m;
+}
+
+// Spread plus reach of all five fingers: how open the whole hand is (m).
+static double whole_hand_opening(const hs_hand *hand) {
+	double spread, reach;
+	hand_opening(hand, 31u, &spread, &reach);
+	return spread + reach;
+}
+
+void hs_grasp_begin(hs_world *world, hs_body *body, int h, const hs_contact *cs, int n) {
+	const hs_hand *hand = &world->hands[h];
+	body->grasped_by = h + 1;
+	body->grip_pos = hs_quat_inv_rotate(hand->wrist_rot, hs_sub(body->pos, hand->wrist_pos));
+	body->grip_rot = hs_quat_normalize(hs_quat_mul(hs_quat_conj(hand->wrist_rot), body->rot));
+	body->grip_fingers = 0;
+	for (int k = 0; k < n; ++k)
+		if (cs[k].hand.index1 == (uint32_t)h + 1)
+			body->grip_fingers |= (uint8_t)(1u << finger_of(cs[k].part));
+	hand_opening(hand, body->grip_fingers, &body->grip_spread, &body->grip_reach);
+	body->released_by = 0;
+}
+
+// The grasp goes on (the object has followed the wrist) while the holding fingers have neither
+// spread nor reached out (hand_opening) more than grasp_open_mm from when the grasp began, and one
+// of the holder's parts lies within grasp_release_mm of the object: the object is rigid in the
+// wrist frame, so fingers that do not open still clamp it, though one has come off the surface.
+// Held by one finger (grasp_rule: any), the holder's contacts with the object grown by
+// grasp_release_mm must still grasp (§3.2 (2) with the margin). Contacts found here are not kept.
+static bool grasp_continues(hs_world *world, int i, const hs_body *before, int first) {
+	hs_body *body = &world->bodies[i];
+	uint32_t holder = (uint32_t)body->grasped_by;
+	const hs_hand *hand = &world->hands[holder - 1];
+	unsigned fingers = body->grip_fingers;
+	double spread, reach, margin = world->def.grasp_open_mm * 1e-3;
+	hand_opening(hand, fingers, &spread, &reach);
+	if (spread - body->grip_spread > margin || reach - body->grip_reach > margin)
+		return false;
+	int n = hs_contact_detect_grown(world, i, before, world->def.grasp_release_mm * 1e-3);
+	const hs_contact *cs = &world->contacts[first];
+	bool holds = false;
+	if ((fingers & (fingers - 1u)) != 0) {
+		for (int k = 0; k < n && !holds; ++k)
+			holds = cs[k].hand.index1 == holder;
+	} else {
+		holds = hs_contact_grasps(cs, n, holder, world->grasp_limit, world->def.grasp_any_contacts);
+	}
+	world->contact_count = first;
+	return holds;
+}
+
+// True when a finger part of hand index + 1 `r` lies within grasp_release_mm of object i (the
+// contacts found for this are not kept; they are appended from `at`).
+static bool hand_within_margin(hs_world *world, int i, uint32_t r, int at) {
+	int n = hs_contact_detect_grown(world, i, NULL, world->def.grasp_release_mm * 1e-3);
+	bool near = false;
+	for (int k = 0; k < n && !near; ++k)
+		near = world->contacts[at + k].hand.index1 == r;
+	world->contact_count = at;
+	return near;
+}
+
+// After a grasp ended, the releasing hand's contacts are set aside (§3.2 with a release rule,
+// docs/model.md §3) until no part of that hand is within grasp_release_mm of the object, another of its fingers than
+// those that held it touches it, or its five fingers close (whole_hand_opening) by grasp_open_mm
+// from the most open since the release (kept in grip_spread): it closes on the object again. Returns the
+// count of contacts left.
+static int set_aside_released(hs_world *world, int i, int first, int n) {
+	hs_body *body = &world->bodies[i];
+	if (!body->released_by)
+		return n;
+	uint32_t r = (uint32_t)body->released_by;
+	const hs_hand *hand = &world->hands[r - 1];
+	double spread = whole_hand_opening(hand);
+	if (spread > body->grip_spread)
+		body->grip_spread = spread;
+	hs_contact *cs = &world->contacts[first];
+	int kept = 0;
+	bool other_finger = false;
+	for (int k = 0; k < n; ++k) {
+		if (cs[k].hand.index1 != r)
+			cs[kept++] = cs[k];
+		else if (!(((unsigned)body->grip_fingers >> finger_of(cs[k].part)) & 1u))
+			other_finger = true;
+	}
+	bool closes = other_finger || body->grip_spread - spread > world->def.grasp_open_mm * 1e-3;
+	if (kept == n && !closes && hand_within_margin(world, i, r, first + n))
+		return n; // the object falls clear of a finger it rested on: still that hand's release
+	if (kept == n || closes) { // the rule lapses
+		body->released_by = 0;
+		return n;
+	}
+	world->contact_count = first + kept;
+	return kept;
+}
+
+hs_contact_state hs_grasp_detect(hs_world *world, int i, int first, int *n, bool *continues) {
+	hs_body *body = &world->bodies[i];
+	*continues = false;
+	if (body->grasped_by > 0 && !body->released_by) {
+		hs_body before = *body;
+		hs_grasp_follow_wrist(body, &world->hands[body->grasped_by - 1]);
+		if (grasp_continues(world, i, &before, first)) {
+			*continues = true;
+			*n = hs_contact_detect(world, i, &before);
+			return HS_CONTACT_GRASP;
+		}
+		body->pos = before.pos; // the holder let go: the release rule starts
+		body->rot = before.rot;
+		body->released_by = body->grasped_by;
+		body->grip_spread = whole_hand_opening(&world->hands[body->grasped_by - 1]);
+	}
+	*n = hs_contact_detect(world, i, NULL);
+	*n = set_aside_released(world, i, first, *n);
+	return hs_contact_classify(&world->contacts[first], *n, world->grasp_limit, world->def.grasp_any_contacts);
+}
