@@ -73,13 +73,27 @@ void hs_grasp_begin(hs_world *world, hs_body *body, int h, const hs_contact *cs,
 	body->released_by = 0;
 }
 
+// True when the holder's contacts among cs[0..n) still hold: any of them when the grasp was made
+// by several fingers, else a grasping pair (§3.2 (2)).
+static bool holder_holds(const hs_world *world, const hs_contact *cs, int n, uint32_t holder, unsigned fingers) {
+	if ((fingers & (fingers - 1u)) == 0)
+		return hs_contact_grasps(cs, n, holder, world->grasp_limit, world->def.grasp_any_contacts);
+	for (int k = 0; k < n; ++k)
+		if (cs[k].hand.index1 == holder)
+			return true;
+	return false;
+}
+
 // The grasp goes on (the object has followed the wrist) while the holding fingers have neither
 // spread nor reached out (hand_opening) more than grasp_open_mm from when the grasp began, and one
 // of the holder's parts lies within grasp_release_mm of the object: the object is rigid in the
 // wrist frame, so fingers that do not open still clamp it, though one has come off the surface.
 // Held by one finger (grasp_rule: any), the holder's contacts with the object grown by
-// grasp_release_mm must still grasp (§3.2 (2) with the margin). Contacts found here are not kept.
-static bool grasp_continues(hs_world *world, int i, const hs_body *before, int first) {
+// grasp_release_mm must still grasp (§3.2 (2) with the margin). On true, the frame's contacts
+// (ungrown) are in world->contacts from `first` and *n says how many. The ungrown contacts are a
+// subset of the grown ones, so they are tried first: the grown test runs only when they do not
+// hold (a finger lifted off within the margin), which keeps a held object at one detection a frame.
+static bool grasp_continues(hs_world *world, int i, const hs_body *before, int first, int *n) {
 	hs_body *body = &world->bodies[i];
 	uint32_t holder = (uint32_t)body->grasped_by;
 	const hs_hand *hand = &world->hands[holder - 1];
@@ -88,16 +102,15 @@ static bool grasp_continues(hs_world *world, int i, const hs_body *before, int f
 	hand_opening(hand, fingers, &spread, &reach);
 	if (spread - body->grip_spread > margin || reach - body->grip_reach > margin)
 		return false;
-	int n = hs_contact_detect_grown(world, i, before, world->def.grasp_release_mm * 1e-3);
-	const hs_contact *cs = &world->contacts[first];
-	bool holds = false;
-	if ((fingers & (fingers - 1u)) != 0) {
-		for (int k = 0; k < n && !holds; ++k)
-			holds = cs[k].hand.index1 == holder;
-	} else {
-		holds = hs_contact_grasps(cs, n, holder, world->grasp_limit, world->def.grasp_any_contacts);
-	}
+	*n = hs_contact_detect(world, i, before);
+	if (holder_holds(world, &world->contacts[first], *n, holder, fingers))
+		return true;
 	world->contact_count = first;
+	int grown = hs_contact_detect_grown(world, i, before, world->def.grasp_release_mm * 1e-3);
+	bool holds = holder_holds(world, &world->contacts[first], grown, holder, fingers);
+	world->contact_count = first;
+	if (holds)
+		*n = hs_contact_detect(world, i, before);
 	return holds;
 }
 
@@ -152,9 +165,8 @@ hs_contact_state hs_grasp_detect(hs_world *world, int i, int first, int *n, bool
 	if (body->grasped_by > 0 && !body->released_by) {
 		hs_body before = *body;
 		hs_grasp_follow_wrist(body, &world->hands[body->grasped_by - 1]);
-		if (grasp_continues(world, i, &before, first)) {
+		if (grasp_continues(world, i, &before, first, n)) {
 			*continues = true;
-			*n = hs_contact_detect(world, i, &before);
 			return HS_CONTACT_GRASP;
 		}
 		body->pos = before.pos; // the holder let go: the release rule starts
