@@ -5,6 +5,7 @@
 #include "grasp.h"
 #include "manipulate.h"
 #include "motion.h"
+#include "push.h"
 #include "support.h"
 
 static bool bodies_overlap(const hs_world *world, int i, int j) {
@@ -157,7 +158,8 @@ static void collect_candidates(hs_world *world) {
 			add_candidate(world, world->awake[k]);
 }
 
-// §3.2: a grasped object follows the grasping wrist, one contact pushes by eq. 1-2, several
+// §3.2: a grasped object follows the grasping wrist, one contact pushes by eq. 1-2 (on the floor
+// without lifting or sinking it, push.c), several
 // contacts translate it by the parts' mean displacement (3).
 // A grasp that continues (grasp.c) has already moved the object with its wrist.
 static void move_by_contacts(hs_world *world, hs_body *body, hs_contact_state state, const hs_contact *cs, int n,
@@ -171,7 +173,9 @@ static void move_by_contacts(hs_world *world, hs_body *body, hs_contact_state st
 	} else if (state == HS_CONTACT_PUSH_ONE) {
 		body->grasped_by = 0;
 		const hs_hand *hand = &world->hands[cs[0].hand.index1 - 1];
-		hs_push_at_one_point(body, cs[0].point, part_position(hand, &cs[0]));
+		hs_vec3 b = part_position(hand, &cs[0]);
+		if (!hs_push_on_floor(world, body, cs[0].point, b)) // on the floor: model.md §4
+			hs_push_at_one_point(body, cs[0].point, b);
 	} else {
 		body->grasped_by = 0;
 		hs_vec3 sum = hs_v3(0, 0, 0);

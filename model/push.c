@@ -1,0 +1,104 @@
+// push.c — a push at one point on an object lying on the floor (1999 paper eq. 1-2 under §4.2).
+//
+// Eq. 1-2 are written for a free object: CB = T + R, T ∥ CG translates, R turns about G along
+// R × CG. On the floor that turn sinks one side into the floor and §4.2's rectification lifts it
+// out again: a still fingertip 1 mm into the top of a box turned it by degrees every frame and
+// stood it up on an edge. Reading fixed here (docs/model.md §4, "Pushing an object on the floor"):
+//  - the floor supplies whatever points into it or out of it: the object translates along the
+//    floor only (the vertical part of the push is dropped, never lifted, never sunk); T's
+//    horizontal part slides it;
+//  - eq. 2's turn splits into its part about the vertical through G (a yaw, harmless on the
+//    floor, kept) and its part about a horizontal axis n_h (the swing, which tilts the object);
+//    R = |R| (CG/|CG| × n) splits the same way into R_yaw + R_swing;
+//  - the swing is replaced by a turn about the floor edge (or vertex) on the side it sinks, as
+//    §4.2's rules (1)-(3) turn an unstable object about its floor edge, when the finger's push
+//    lifts the object about that edge ((PC × CB) · a > 0, a = n_h / |n_h|, PC from the edge to C,
+//    normal to it): θ = atan(|R'| / |PC|), eq. 2's form about the edge, = atan(((PC × R_swing) · a)
+//    / |PC|²); the edge holds (T' along PC is dropped, as eq. 6 drops it);
+//  - otherwise the swing is dropped and what it would have moved C horizontally slides the
+//    object along the floor: it translates by CB's horizontal part less R_yaw's. A push below G's
+//    height slides the object by the finger's horizontal motion, a push down on its top leaves
+//    it where it is.
+#include "push.h"
+#include "motion.h"
+
+// The object lies on the floor: an edge or a face on it, or it rests there (grounded).
+static bool lies_on_floor(hs_world *world, const hs_body *body, int *count) {
+	hs_motion_pose_vertices(world, body);
+	*count = hs_motion_floor_points(world, body);
+	return *count >= 2 || (body->grounded && *count >= 1);
+}
+
+// The floor point furthest along the horizontal u: the side a turn along u sinks into the floor.
+static hs_vec3 floor_point_along(const hs_world *world, int count, hs_vec3 u) {
+	const hs_vec2 *p = world->scratch_points;
+	int best = 0;
+	for (int i = 1; i < count; ++i)
+		if (p[i].x * u.x + p[i].y * u.y > p[best].x * u.x + p[best].y * u.y)
+			best = i;
+	return hs_v3(p[best].x, p[best].y, 0.0);
+}
+
+// §4.2-style tipping in place of eq. 2's swing about the horizontal n_h, which moves C by r_swing:
+// the turn about the line through the floor point on the side the swing sinks, along n_h, by eq. 2's
+// form about that line, θ = atan(|R'| / |PC|) = atan(((PC × r_swing) · a) / |PC|²), when the
+// push's torque about that line, (PC × CB) · a, lifts the object. False (nothing done) otherwise.
+static bool tip_about_floor_edge(hs_world *world, hs_body *body, int count, hs_vec3 c, hs_vec3 cb,
+                                 hs_vec3 n_h, hs_vec3 r_swing, hs_vec3 slid) {
+	hs_vec3 a = hs_normalize(n_h);
+	hs_vec3 p = floor_point_along(world, count, hs_cross(a, hs_v3(0, 0, 1)));
+	hs_vec3 pc = hs_sub(c, p);
+	p = hs_add(p, slid); // the floor points are those of the pose before T slid it
+	pc = hs_mul_add(pc, -hs_dot(pc, a), a); // from the edge to C, normal to the edge
+	double lever_sq = hs_length_sq(pc);
+	double torque = hs_dot(hs_cross(pc, cb), a);        // > 0: the finger turns the free side up
+	double swing = hs_dot(hs_cross(pc, r_swing), a);    // = |PC| |R'|
+	if (!(torque > 0.0) || !(swing > 0.0) || !(lever_sq > 0.0))
+		return false;
+	hs_quat q = hs_quat_from_axis_angle(a, hs_atan(swing / lever_sq));
+	body->pos = hs_add(p, hs_quat_rotate(q, hs_sub(body->pos, p)));
+	body->rot = hs_quat_normalize(hs_quat_mul(q, body->rot));
+	return true;
+}
+
+// The yaw of eq. 2's turn q about its unit axis n: q itself when n is vertical, else the twist
+// about z of q's swing-twist split.
+static hs_quat yaw_part(hs_quat q, hs_vec3 n) {
+	if (n.x == 0.0 && n.y == 0.0)
+		return q;
+	return hs_quat_normalize(hs_q(q.w, 0.0, 0.0, q.z));
+}
+
+bool hs_push_on_floor(hs_world *world, hs_body *body, hs_vec3 c, hs_vec3 b) {
+	int count = 0;
+	if (!lies_on_floor(world, body, &count))
+		return false;
+	hs_vec3 cb = hs_sub(b, c), cg = hs_sub(body->pos, c);
+	double cg_len = hs_length(cg);
+	if (!(cg_len > 0.0)) { // C at G: nothing to turn about, slide
+		body->pos = hs_add(body->pos, hs_v3(cb.x, cb.y, 0.0));
+		return true;
+	}
+	hs_vec3 cg_unit = hs_scale(cg, 1.0 / cg_len);
+	hs_vec3 t = hs_scale(cg_unit, hs_dot(cb, cg_unit)); // eq. 1
+	hs_vec3 r = hs_sub(cb, t);
+	double r_len = hs_length(r);
+	hs_vec3 n = r_len > 0.0 ? hs_normalize(hs_cross(r, cg)) : hs_v3(0, 0, 0);
+	if (r_len > 0.0 && n.z != 0.0) { // the yaw of eq. 2 about the vertical through G
+		hs_quat q = hs_quat_from_axis_angle(n, hs_atan(r_len / cg_len));
+		body->rot = hs_quat_normalize(hs_quat_mul(yaw_part(q, n), body->rot));
+	}
+	// T slides along the floor; R = |R| (CG/|CG| × n) = the yaw's share |R| n_z (CG/|CG| × z) + the swing's
+	hs_vec3 pos = body->pos, slid = hs_v3(t.x, t.y, 0.0);
+	body->pos = hs_add(pos, slid);
+	if (n.x == 0.0 && n.y == 0.0)
+		return true; // no swing
+	hs_vec3 n_h = hs_v3(n.x, n.y, 0.0);
+	hs_vec3 r_swing = hs_scale(hs_cross(cg_unit, n_h), r_len);
+	if (tip_about_floor_edge(world, body, count, c, cb, n_h, r_swing, slid))
+		return true;
+	// no tip: the swing slides instead, and T + R's swing share is CB less R's yaw share
+	hs_vec3 r_yaw = hs_scale(hs_cross(cg_unit, hs_v3(0, 0, 1)), r_len * n.z);
+	body->pos = hs_add(pos, hs_v3(cb.x - r_yaw.x, cb.y - r_yaw.y, 0.0));
+	return true;
+}

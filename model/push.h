@@ -1,0 +1,15 @@
+// push.h — a push at one point on an object lying on the floor (1999 paper eq. 1-2 under §4.2).
+#ifndef HS_PUSH_H
+#define HS_PUSH_H
+
+#include <stdbool.h>
+
+#include "world_internal.h"
+
+// Eq. 1-2 for an object on the floor (two or more floor vertices, or grounded): moves the surface
+// point c toward b without lifting the object off the floor or turning it into it (docs/model.md
+// §4 "Pushing an object on the floor"). Returns false, leaving the body alone, when the object is
+// not on the floor: the caller then applies eq. 1-2 as for a free object.
+bool hs_push_on_floor(hs_world *world, hs_body *body, hs_vec3 c, hs_vec3 b);
+
+#endif

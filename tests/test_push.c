@@ -1,0 +1,155 @@
+// test_push.c — a push at one point on an object lying on the floor (issue 10; 1999 paper eq. 1-2
+// under §4.2, docs/model.md §4 "Pushing an object on the floor"), against closed forms.
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <string.h>
+
+#include <cmocka.h>
+
+#include "manipulate.h"
+#include "motion.h"
+#include "push.h"
+#include "world_internal.h"
+#include "test_util.h"
+
+#define FAR hs_v3(100, 100, 100)
+
+// A box of the given size flat on the floor (G at half its height) and one hand whose parts are
+// all far away until a test puts one of them somewhere.
+static hs_world *box_world(hs_vec3 size) {
+	hs_world_def def = hs_default_world_def();
+	def.dt = 1.0 / 60;
+	hs_world *w = hs_world_create(&def, NULL);
+	hs_shape *box = hs_shape_box(size, NULL);
+	hs_object_def od = hs_default_object_def();
+	od.shape = hs_world_add_shape(w, box, NULL);
+	hs_shape_destroy(box);
+	od.position = hs_v3(0, 0, 0.5 * size.z);
+	assert_int_equal(hs_world_add_object(w, &od, NULL).index1, 1);
+	hs_hand_def hd = hs_default_hand_def();
+	assert_int_equal(hs_world_add_hand(w, &hd, NULL).index1, 1);
+	hs_hand *hand = &w->hands[0];
+	for (int i = 0; i < HS_HAND_POINTS; ++i)
+		hand->points[i] = hand->prev_points[i] = FAR;
+	for (int j = 0; j < HS_HAND_LINES; ++j)
+		hand->lines[j][0] = hand->lines[j][1] = hand->prev_lines[j][0] = hand->prev_lines[j][1] = FAR;
+	hand->center = hs_v3(0, 0, 0);
+	hand->radius = 1000; // the bounding test is not what these tests are about
+	hand->placed = true;
+	hs_motion_keep_above_floor(w, &w->bodies[0]); // floor contacts of the initial pose
+	return w;
+}
+
+static double lowest_z(hs_world *w) { return hs_motion_pose_vertices(w, &w->bodies[0]); }
+
+// (a) A still fingertip 1 mm into the top of a 10 cm box on the floor, at several offsets from
+// the centre, for 30 frames through the whole hand pass (detection, classification, push, §4.2
+// rectification): the pose keeps its bits (off both axes, eq. 2's yaw about the vertical is
+// rounding, 1e-16 rad, and G moves by 1e-20 m). Eq. 1-2 alone would turn the box about G (checked).
+static void test_press_down_leaves_box(void **state) {
+	(void)state;
+	const double offsets[][2] = {{0, 0}, {0.04, 0}, {0, -0.03}, {0.04, 0.03}, {-0.049, 0.02}};
+	for (size_t k = 0; k < sizeof offsets / sizeof offsets[0]; ++k) {
+		hs_world *w = box_world(hs_v3(0.1, 0.1, 0.1));
+		hs_body *b = &w->bodies[0];
+		hs_vec3 tip = hs_v3(offsets[k][0], offsets[k][1], 0.099);
+		for (int frame = 0; frame < 30; ++frame) {
+			w->hands[0].prev_points[7] = w->hands[0].points[7] = tip;
+			hs_manipulate(w);
+			assert_int_equal(b->contact, HS_CONTACT_PUSH_ONE);
+			assert_vec3_near(b->pos, hs_v3(0, 0, 0.05), 1e-18); // off both axes: rounding of the yaw
+			assert_near(hs_quat_angle(b->rot), 0.0, 1e-15);
+			assert_true(b->pos.z == 0.05);                      // never lifted, never sunk
+			if (offsets[k][0] == 0.0 || offsets[k][1] == 0.0) { // on an axis: the bits stay
+				assert_true(b->pos.x == 0.0 && b->pos.y == 0.0);
+				assert_true(b->rot.w == 1.0 && b->rot.x == 0.0 && b->rot.y == 0.0 && b->rot.z == 0.0);
+			}
+			assert_int_equal(b->floor_contacts, 4);
+		}
+		hs_world_destroy(w);
+	}
+	hs_body free_box = {.pos = hs_v3(0, 0, 0.05), .rot = hs_quat_identity()};
+	hs_push_at_one_point(&free_box, hs_v3(0.04, 0, 0.1), hs_v3(0.04, 0, 0.099));
+	assert_true(hs_quat_angle(free_box.rot) > 1e-3); // what the floor rule prevents
+}
+
+// (b) A horizontal push at the side below G: eq. 2's turn would sink the near bottom edge (the
+// push's torque about it does not lift the box), so the box slides by the finger's horizontal
+// motion: G + (d, 0, 0), z and orientation unchanged to the bit.
+static void test_push_low_slides(void **state) {
+	(void)state;
+	const double heights[] = {0.001, 0.01, 0.02, 0.035, 0.049};
+	for (size_t k = 0; k < sizeof heights / sizeof heights[0]; ++k) {
+		hs_world *w = box_world(hs_v3(0.1, 0.1, 0.1));
+		hs_body *b = &w->bodies[0];
+		double d = 0.002;
+		for (int frame = 1; frame <= 10; ++frame) {
+			hs_vec3 c = hs_v3(b->pos.x - 0.05, 0, heights[k]);
+			assert_true(hs_push_on_floor(w, b, c, hs_add(c, hs_v3(d, 0, 0))));
+			assert_near(b->pos.x, frame * d, 1e-15);
+			assert_true(b->pos.y == 0.0 && b->pos.z == 0.05);
+			assert_true(b->rot.w == 1.0 && b->rot.x == 0.0 && b->rot.y == 0.0 && b->rot.z == 0.0);
+		}
+		hs_world_destroy(w);
+	}
+}
+
+// (c) A horizontal push high on the side of a tall box (0.1 x 0.1 x 0.3, G = (0, 0, 0.15)) at
+// C = (-0.05, 0, 0.25), CB = (d, 0, 0). Eq. 1: CG = (0.05, 0, -0.1), T = (CB·CG/|CG|²) CG,
+// R = CB - T; eq. 2's turn about R x CG ∥ +y would sink the far (+x) bottom edge; the push's
+// torque about that edge, (PC x CB)·y = 0.25 d > 0, lifts the box, so it tips about that edge
+// (after T's horizontal part slid it) by θ = atan(((PC x R)·y) / |PC|²), PC = (-0.1, 0, 0.25)
+// from the edge to C: eq. 2's form atan(|R'| / |PC|) about the edge.
+static void test_push_high_tips(void **state) {
+	(void)state;
+	hs_world *w = box_world(hs_v3(0.1, 0.1, 0.3));
+	hs_body *b = &w->bodies[0];
+	double d = 0.002;
+	hs_vec3 c = hs_v3(-0.05, 0, 0.25), cg = hs_v3(0.05, 0, -0.1);
+	hs_vec3 t = hs_scale(cg, d * 0.05 / 0.0125);
+	hs_vec3 r = hs_sub(hs_v3(d, 0, 0), t);
+	double theta = atan((0.25 * r.x + 0.1 * r.z) / 0.0725);
+	assert_true(hs_push_on_floor(w, b, c, hs_add(c, hs_v3(d, 0, 0))));
+	hs_vec3 pivot = hs_v3(0.05 + t.x, 0, 0);
+	hs_vec3 g = hs_add(pivot, hs_v3(-0.05 * cos(theta) + 0.15 * sin(theta), 0,
+	                                0.05 * sin(theta) + 0.15 * cos(theta)));
+	assert_vec3_near(b->pos, g, 1e-15);
+	assert_near(hs_quat_angle(b->rot), theta, 1e-14);
+	assert_true(b->rot.y > 0.0 && b->rot.x == 0.0 && b->rot.z == 0.0); // about +y: the top goes forward
+	assert_true(lowest_z(w) >= -1e-15);                                 // the far edge stays on the floor
+	assert_near(lowest_z(w), 0.0, 1e-15);
+	// keep pushing: it goes on tipping about the same edge, never below the floor
+	double last = hs_quat_angle(b->rot);
+	for (int frame = 0; frame < 20; ++frame) {
+		hs_vec3 top = hs_add(b->pos, hs_quat_rotate(b->rot, hs_v3(-0.05, 0, 0.1)));
+		assert_true(hs_push_on_floor(w, b, top, hs_add(top, hs_v3(d, 0, 0))));
+		hs_motion_keep_above_floor(w, b);
+		assert_true(lowest_z(w) >= -1e-12);
+		assert_true(hs_quat_angle(b->rot) > last);
+		last = hs_quat_angle(b->rot);
+	}
+	hs_world_destroy(w);
+}
+
+// Off the floor the rule does not apply: eq. 1-2 for a free object.
+static void test_free_object_untouched(void **state) {
+	(void)state;
+	hs_world *w = box_world(hs_v3(0.1, 0.1, 0.1));
+	w->bodies[0].pos.z = 1.0;
+	hs_body before = w->bodies[0];
+	assert_false(hs_push_on_floor(w, &w->bodies[0], hs_v3(0.04, 0, 1.05), hs_v3(0.04, 0, 1.049)));
+	assert_memory_equal(&before, &w->bodies[0], sizeof before);
+	hs_world_destroy(w);
+}
+
+int main(void) {
+	const struct CMUnitTest tests[] = {
+	    cmocka_unit_test(test_press_down_leaves_box),
+	    cmocka_unit_test(test_push_low_slides),
+	    cmocka_unit_test(test_push_high_tips),
+	    cmocka_unit_test(test_free_object_untouched),
+	};
+	return cmocka_run_group_tests(tests, NULL, NULL);
+}
