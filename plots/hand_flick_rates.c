@@ -16,26 +16,15 @@
 #include "hs_harness.h"
 #include "plot_run.h"
 
-static const int fps[] = {12, 17, 30, 60, 120};
-enum { RATES = sizeof fps / sizeof fps[0] };
 
 int main(int argc, char **argv) {
-	if (argc < 2 || argc > 3) {
-		fprintf(stderr, "usage: hand_flick_rates OUTDIR [SCENARIO]\n");
-		return 2;
-	}
-	const char *path = argc == 3 ? argv[2] : "scenarios/hand/flick_pyramid.yaml";
-	FILE *out = plot_run_file(argv[1], "hand_flick_rates", "csv");
-	if (!out)
-		return 1;
-	FILE *vars = plot_run_file(argv[1], "hand_flick_rates", "vars");
-	if (!vars) {
-		fclose(out);
-		return 1;
-	}
-	int status = 0;
-	for (int i = 0; i < RATES && status == 0; ++i) {
-		hs_scenario *s = plot_run_load(path, 1.0 / fps[i], false, 0);
+	const char *path;
+	FILE *out, *vars;
+	int status = plot_run_outputs(argc, argv, "hand_flick_rates", "scenarios/hand/flick_pyramid.yaml", &path, &out, &vars);
+	if (status)
+		return status;
+	for (int i = 0; i < PLOT_RUN_RATES && status == 0; ++i) {
+		hs_scenario *s = plot_run_load(path, 1.0 / plot_run_fps[i], false, 0);
 		if (!s) {
 			status = 2;
 			break;
@@ -45,7 +34,7 @@ int main(int argc, char **argv) {
 		if (i > 0)
 			fprintf(out, "\n\n");
 		fprintf(out, "# %s at dt = 1/%d s\n# fps,frame,t,x,z,contact,turned_deg,floor_contacts\n", hs_scenario_name(s),
-		        fps[i]);
+		        plot_run_fps[i]);
 		hs_object_state st;
 		hs_world_object_state(w, id, &st);
 		hs_quat q0 = st.orientation;
@@ -58,13 +47,13 @@ int main(int argc, char **argv) {
 				max_turn = turned;
 			if (isnan(push_t) && st.contact != HS_CONTACT_NONE)
 				push_t = hs_world_time(w);
-			fprintf(out, "%d,%ld,%.9g,%.9g,%.9g,%d,%.9g,%d\n", fps[i], frame, hs_world_time(w), st.position.x,
+			fprintf(out, "%d,%ld,%.9g,%.9g,%.9g,%d,%.9g,%d\n", plot_run_fps[i], frame, hs_world_time(w), st.position.x,
 			        st.position.z, (int)st.contact, turned, st.floor_contacts);
 			++frame;
 		} while (hs_scenario_step(s));
 		hs_world_object_state(w, id, &st);
 		int n = i + 1;
-		plot_run_var(vars, "fps", n, fps[i]);
+		plot_run_var(vars, "fps", n, plot_run_fps[i]);
 		plot_run_var(vars, "push_t", n, push_t);
 		plot_run_var(vars, "max_turn", n, max_turn);
 		plot_run_var(vars, "end_turn", n, plot_run_turned_deg(q0, st.orientation));

@@ -17,26 +17,15 @@
 #include "hs_harness.h"
 #include "plot_run.h"
 
-static const int fps[] = {12, 17, 30, 60, 120};
-enum { RATES = sizeof fps / sizeof fps[0] };
 
 int main(int argc, char **argv) {
-	if (argc < 2 || argc > 3) {
-		fprintf(stderr, "usage: hand_throw_rates OUTDIR [SCENARIO]\n");
-		return 2;
-	}
-	const char *path = argc == 3 ? argv[2] : "scenarios/hand/throw_at_target.yaml";
-	FILE *out = plot_run_file(argv[1], "hand_throw_rates", "csv");
-	if (!out)
-		return 1;
-	FILE *vars = plot_run_file(argv[1], "hand_throw_rates", "vars");
-	if (!vars) {
-		fclose(out);
-		return 1;
-	}
-	int status = 0;
-	for (int i = 0; i < RATES && status == 0; ++i) {
-		hs_scenario *s = plot_run_load(path, 1.0 / fps[i], false, 0);
+	const char *path;
+	FILE *out, *vars;
+	int status = plot_run_outputs(argc, argv, "hand_throw_rates", "scenarios/hand/throw_at_target.yaml", &path, &out, &vars);
+	if (status)
+		return status;
+	for (int i = 0; i < PLOT_RUN_RATES && status == 0; ++i) {
+		hs_scenario *s = plot_run_load(path, 1.0 / plot_run_fps[i], false, 0);
 		if (!s) {
 			status = 2;
 			break;
@@ -45,14 +34,14 @@ int main(int argc, char **argv) {
 		hs_object_id id = hs_world_object_at(w, 0);
 		if (i > 0)
 			fprintf(out, "\n\n");
-		fprintf(out, "# %s at dt = 1/%d s\n# fps,frame,t,x,y,z,contact,floor_contacts\n", hs_scenario_name(s), fps[i]);
+		fprintf(out, "# %s at dt = 1/%d s\n# fps,frame,t,x,y,z,contact,floor_contacts\n", hs_scenario_name(s), plot_run_fps[i]);
 		long frame = 0;
 		double release_t = NAN, release_x = NAN, release_z = NAN, land_t = NAN, land_x = NAN;
 		hs_object_state prev = {0};
 		do {
 			hs_object_state st;
 			hs_world_object_state(w, id, &st);
-			fprintf(out, "%d,%ld,%.9g,%.9g,%.9g,%.9g,%d,%d\n", fps[i], frame, hs_world_time(w), st.position.x,
+			fprintf(out, "%d,%ld,%.9g,%.9g,%.9g,%.9g,%d,%d\n", plot_run_fps[i], frame, hs_world_time(w), st.position.x,
 			        st.position.y, st.position.z, (int)st.contact, st.floor_contacts);
 			if (frame > 0) {
 				// the release: the last held frame (2) before a frame without contact
@@ -75,7 +64,7 @@ int main(int argc, char **argv) {
 		double miss = hypot(end.position.x - 2.0, end.position.y);
 		int fails = hs_scenario_check(s, NULL);
 		int n = i + 1;
-		plot_run_var(vars, "fps", n, fps[i]);
+		plot_run_var(vars, "fps", n, plot_run_fps[i]);
 		plot_run_var(vars, "release_t", n, release_t);
 		plot_run_var(vars, "release_x", n, release_x);
 		plot_run_var(vars, "release_z", n, release_z);

@@ -23,20 +23,11 @@
 enum { RUNS = 6 }; // noise-free, then seeds 1..5
 
 int main(int argc, char **argv) {
-	if (argc < 2 || argc > 3) {
-		fprintf(stderr, "usage: hand_timeline_noisy OUTDIR [SCENARIO]\n");
-		return 2;
-	}
-	const char *path = argc == 3 ? argv[2] : "scenarios/hand/grasp_adjoining_faces.yaml";
-	FILE *out = plot_run_file(argv[1], "hand_timeline_noisy", "csv");
-	if (!out)
-		return 1;
-	FILE *vars = plot_run_file(argv[1], "hand_timeline_noisy", "vars");
-	if (!vars) {
-		fclose(out);
-		return 1;
-	}
-	int status = 0;
+	const char *path;
+	FILE *out, *vars;
+	int status = plot_run_outputs(argc, argv, "hand_timeline_noisy", "scenarios/hand/grasp_adjoining_faces.yaml", &path, &out, &vars);
+	if (status)
+		return status;
 	double lost_t0 = NAN; // the noise-free run's
 	for (int i = 0; i < RUNS && status == 0; ++i) {
 		unsigned long seed = (unsigned long)i;

@@ -65,6 +65,31 @@ static inline FILE *plot_run_file(const char *dir, const char *name, const char 
 	return f;
 }
 
+// The frame rates the papers' figures are redrawn at (1/s): the hand paper's 12–17, today's 30–120.
+static const int plot_run_fps[] = {12, 17, 30, 60, 120};
+enum { PLOT_RUN_RATES = sizeof plot_run_fps / sizeof plot_run_fps[0] };
+
+// For generators that run one scenario several times: `NAME OUTDIR [SCENARIO]`, *path the scenario
+// (default_scenario when not given), OUTDIR/NAME.csv and OUTDIR/NAME.vars (gnuplot variables) open
+// for writing. Returns 0, or the exit status after saying what went wrong (nothing left open).
+static inline int plot_run_outputs(int argc, char **argv, const char *name, const char *default_scenario,
+                                   const char **path, FILE **out, FILE **vars) {
+	if (argc < 2 || argc > 3) {
+		fprintf(stderr, "usage: %s OUTDIR [SCENARIO]\n", name);
+		return 2;
+	}
+	*path = argc == 3 ? argv[2] : default_scenario;
+	*out = plot_run_file(argv[1], name, "csv");
+	if (!*out)
+		return 1;
+	*vars = plot_run_file(argv[1], name, "vars");
+	if (!*vars) {
+		fclose(*out);
+		return 1;
+	}
+	return 0;
+}
+
 // Degrees an orientation has turned from q0 (the angle of the relative rotation, 0 to 180).
 static inline double plot_run_turned_deg(hs_quat q0, hs_quat q) {
 	double c = fabs(hs_quat_dot(q0, q));

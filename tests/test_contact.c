@@ -12,33 +12,16 @@
 #include "contact.h"
 #include "manipulate.h"
 #include "world_internal.h"
-#include "test_util.h"
+#include "test_rig.h"
 
-#define FAR hs_v3(100, 100, 100)
+#define FAR RIG_FAR
 
 // A unit cube (faces at ±0.5 about G) with G at (0, 0, 2), out of the floor's reach, and one hand
 // whose parts are all far away until a test puts some of them somewhere.
 static hs_world *cube_world_dt(double dt) {
 	hs_world_def def = hs_default_world_def();
 	def.dt = dt;
-	hs_world *w = hs_world_create(&def, NULL);
-	hs_shape *cube = hs_shape_box(hs_v3(1, 1, 1), NULL);
-	hs_object_def od = hs_default_object_def();
-	od.shape = hs_world_add_shape(w, cube, NULL);
-	hs_shape_destroy(cube);
-	od.position = hs_v3(0, 0, 2);
-	assert_int_equal(hs_world_add_object(w, &od, NULL).index1, 1);
-	hs_hand_def hd = hs_default_hand_def();
-	assert_int_equal(hs_world_add_hand(w, &hd, NULL).index1, 1);
-	hs_hand *hand = &w->hands[0];
-	for (int i = 0; i < HS_HAND_POINTS; ++i)
-		hand->points[i] = hand->prev_points[i] = FAR;
-	for (int j = 0; j < HS_HAND_LINES; ++j)
-		hand->lines[j][0] = hand->lines[j][1] = hand->prev_lines[j][0] = hand->prev_lines[j][1] = FAR;
-	hand->center = hs_v3(0, 0, 2);
-	hand->radius = 1000; // the bounding test is not what these tests are about
-	hand->placed = true;
-	return w;
+	return rig_world(&def, hs_shape_box(hs_v3(1, 1, 1), NULL), hs_v3(0, 0, 2), hs_v3(0, 0, 2));
 }
 
 static hs_world *cube_world(void) { return cube_world_dt(1.0 / 60); }
@@ -321,24 +304,7 @@ static void test_release_on_exact_parabola(void **state) {
 static hs_world *pyramid_world(bool any_contacts) {
 	hs_world_def def = hs_default_world_def();
 	def.grasp_any_contacts = any_contacts;
-	hs_world *w = hs_world_create(&def, NULL);
-	hs_shape *pyramid = hs_shape_pyramid(0.08, 0.08, NULL);
-	hs_object_def od = hs_default_object_def();
-	od.shape = hs_world_add_shape(w, pyramid, NULL);
-	hs_shape_destroy(pyramid);
-	od.position = hs_v3(0, 0, 2);
-	assert_int_equal(hs_world_add_object(w, &od, NULL).index1, 1);
-	hs_hand_def hd = hs_default_hand_def();
-	assert_int_equal(hs_world_add_hand(w, &hd, NULL).index1, 1);
-	hs_hand *hand = &w->hands[0];
-	for (int i = 0; i < HS_HAND_POINTS; ++i)
-		hand->points[i] = hand->prev_points[i] = FAR;
-	for (int j = 0; j < HS_HAND_LINES; ++j)
-		hand->lines[j][0] = hand->lines[j][1] = hand->prev_lines[j][0] = hand->prev_lines[j][1] = FAR;
-	hand->center = hs_v3(0, 0, 2);
-	hand->radius = 1000;
-	hand->placed = true;
-	return w;
+	return rig_world(&def, hs_shape_pyramid(0.08, 0.08, NULL), hs_v3(0, 0, 2), hs_v3(0, 0, 2));
 }
 
 // DESIGN.md "Real input": the DIP (6) and the tip (7) of one index finger sunk into the pyramid's

@@ -12,32 +12,16 @@
 #include "motion.h"
 #include "push.h"
 #include "world_internal.h"
-#include "test_util.h"
+#include "test_rig.h"
 
-#define FAR hs_v3(100, 100, 100)
+#define FAR RIG_FAR
 
 // A box of the given size flat on the floor (G at half its height) and one hand whose parts are
 // all far away until a test puts one of them somewhere.
 static hs_world *box_world(hs_vec3 size) {
 	hs_world_def def = hs_default_world_def();
 	def.dt = 1.0 / 60;
-	hs_world *w = hs_world_create(&def, NULL);
-	hs_shape *box = hs_shape_box(size, NULL);
-	hs_object_def od = hs_default_object_def();
-	od.shape = hs_world_add_shape(w, box, NULL);
-	hs_shape_destroy(box);
-	od.position = hs_v3(0, 0, 0.5 * size.z);
-	assert_int_equal(hs_world_add_object(w, &od, NULL).index1, 1);
-	hs_hand_def hd = hs_default_hand_def();
-	assert_int_equal(hs_world_add_hand(w, &hd, NULL).index1, 1);
-	hs_hand *hand = &w->hands[0];
-	for (int i = 0; i < HS_HAND_POINTS; ++i)
-		hand->points[i] = hand->prev_points[i] = FAR;
-	for (int j = 0; j < HS_HAND_LINES; ++j)
-		hand->lines[j][0] = hand->lines[j][1] = hand->prev_lines[j][0] = hand->prev_lines[j][1] = FAR;
-	hand->center = hs_v3(0, 0, 0);
-	hand->radius = 1000; // the bounding test is not what these tests are about
-	hand->placed = true;
+	hs_world *w = rig_world(&def, hs_shape_box(size, NULL), hs_v3(0, 0, 0.5 * size.z), hs_v3(0, 0, 0));
 	hs_motion_keep_above_floor(w, &w->bodies[0]); // floor contacts of the initial pose
 	return w;
 }

@@ -1,0 +1,36 @@
+// test_rig.h — a world of one object and one hand whose check points and lines are parked far
+// away, for the tests that place single finger parts themselves (test_contact, test_push).
+// Reaches into the world's insides (world_internal.h): model tests only.
+#ifndef HS_TEST_RIG_H
+#define HS_TEST_RIG_H
+
+#include "test_util.h"
+#include "world_internal.h"
+
+#define RIG_FAR hs_v3(100, 100, 100)
+
+// The world of `def` with one object of `shape` (destroyed here) at `position` and one hand,
+// placed, its parts at RIG_FAR, its bounding sphere about `hand_center` so large that the
+// bounding test never decides (it is not what these tests are about).
+static inline hs_world *rig_world(const hs_world_def *def, hs_shape *shape, hs_vec3 position, hs_vec3 hand_center) {
+	hs_world *w = hs_world_create(def, NULL);
+	assert_non_null(w);
+	hs_object_def od = hs_default_object_def();
+	od.shape = hs_world_add_shape(w, shape, NULL);
+	hs_shape_destroy(shape);
+	od.position = position;
+	assert_int_equal(hs_world_add_object(w, &od, NULL).index1, 1);
+	hs_hand_def hd = hs_default_hand_def();
+	assert_int_equal(hs_world_add_hand(w, &hd, NULL).index1, 1);
+	hs_hand *hand = &w->hands[0];
+	for (int i = 0; i < HS_HAND_POINTS; ++i)
+		hand->points[i] = hand->prev_points[i] = RIG_FAR;
+	for (int j = 0; j < HS_HAND_LINES; ++j)
+		hand->lines[j][0] = hand->lines[j][1] = hand->prev_lines[j][0] = hand->prev_lines[j][1] = RIG_FAR;
+	hand->center = hand_center;
+	hand->radius = 1000;
+	hand->placed = true;
+	return w;
+}
+
+#endif
