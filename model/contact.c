@@ -67,8 +67,10 @@ static hs_vec3 closest_on_first(hs_vec3 a, hs_vec3 b, hs_vec3 c, hs_vec3 d) {
 	return hs_mul_add(a, s, u);
 }
 
-static void push_contact(hs_world *world, int object, int hand, int part, bool edge, int feature, hs_vec3 point,
-                         hs_vec3 normal) {
+// A contact found in the body frame `f`: C = `point` on the surface, B = `finger` where the part
+// drives it (eq. 1-2), `normal` the face normal or the edge's pseudo-normal.
+static void push_contact(hs_world *world, int object, int hand, int part, bool edge, int feature, const frame *f,
+                         hs_vec3 point, hs_vec3 normal, hs_vec3 finger) {
 	if (world->contact_count >= world->contact_capacity) {
 		world->counters.dropped_contacts++;
 		return;
@@ -79,8 +81,9 @@ static void push_contact(hs_world *world, int object, int hand, int part, bool e
 	c->part = part;
 	c->edge = edge;
 	c->feature = feature;
-	c->point = point;
-	c->normal = normal;
+	c->point = to_world(f, point);
+	c->normal = hs_mat3_mul(f->rot, normal);
+	c->finger = to_world(f, finger);
 }
 
 // Squared distance from c to the segment p0-p1.
@@ -88,69 +91,353 @@ static double segment_distance_sq(hs_vec3 c, hs_vec3 p0, hs_vec3 p1) {
 	return hs_length_sq(hs_sub(hs_segment_closest(p0, p1, c), c));
 }
 
-// `before` is the object's pose when the fingers were at their previous points: a point's
-// motion is judged relative to the object.
-// `grow` > 0: against the part grown by that much (the grasp's release margin, docs/model.md §3).
-static void detect_part(hs_world *world, int object, int h, const hs_part *part, const frame *body,
-                        const frame *before, bool cull, double grow) {
+// The pseudo-normal of edge e: the unit vector from G (the body origin) to the foot of the
+// perpendicular from G onto the edge line.
+static hs_vec3 edge_normal(const hs_shape *shape, int e) {
+	hs_vec3 ea = shape->vertices[shape->edges[e].a], eb = shape->vertices[shape->edges[e].b];
+	hs_vec3 dir = hs_normalize(hs_sub(eb, ea));
+	return hs_normalize(hs_mul_add(ea, -hs_dot(ea, dir), dir));
+}
+
+// A part that touched last frame and has sunk in is drawn back to the surface (§3.2
+// rectification): it drives C by its motion d relative to the object since then, less any part of
+// d leaving along the normal (a finger coming out does not pull the object).
+static hs_vec3 sunk_finger(hs_vec3 c, hs_vec3 d, hs_vec3 normal) {
+	double out = hs_dot(d, normal);
+	return hs_add(c, out > 0.0 ? hs_mul_add(d, -out, normal) : d);
+}
+
+// Where a part that lies in, or passed through, a convex part of the object now got there
+// (docs/model.md §3, "Rectification and swept detection"):
+//  - entered this frame (its path relative to the object crosses the surface): C where it
+//    crossed, B where it is now - also when it has come out again (swept detection: a fast
+//    fingertip at 12 frames/s does not pass through an object);
+//  - already inside a frame ago and touching then: sunk in, drawn back (sunk_finger);
+//  - already inside and not touching: it started inside (or the object came onto it) and
+//    touches nothing: no flinging, no grabbing.
+// `grow` > 0: against the part grown by that much (the grasp's release margin, docs/model.md §3);
+// swept detection runs for the part itself only. `moved`: the object moved since the last frame
+// (a held object): points are culled where they end (their motion relative to it is small).
+// The object's pose a frame ago (before the last step moved it).
+static frame frame_before_last_step(const hs_body *body) {
+	frame f = {body->prev, hs_mat3_from_quat(body->rot_prev)};
+	return f;
+}
+
+// A part inside the object now and a frame ago, that touched nothing then, lay outside it before
+// the object's last move: the object came onto the finger (pushed by another, or falling). It
+// touches, drawn back to the surface like a finger that sank in. Else the part started inside
+// (a hand placed inside an object): it touches nothing until it has come out.
+static bool came_onto(const hs_world *world, int object, const hs_part *part, hs_vec3 prev_point, double grow) {
+	if (world->frame == 0)
+		return false; // nothing has moved yet (an object's pose a frame ago is its initial parabola's)
+	const hs_body *body = &world->bodies[object];
+	frame last = frame_before_last_step(body);
+	return !inside_part(&world->shapes[body->shape], part, to_body(&last, prev_point), grow);
+}
+
+static bool line_came_onto(const hs_world *world, int object, const hs_part *part, const hs_vec3 prev[2], double grow) {
+	if (world->frame == 0)
+		return false;
+	const hs_body *body = &world->bodies[object];
+	frame last = frame_before_last_step(body);
+	return !hs_clip_segment(&world->shapes[body->shape], part, to_body(&last, prev[0]), to_body(&last, prev[1]), grow).hit;
+}
+
+// Where check point i is at piece boundary k of its path (0: a frame ago, steps: now).
+static hs_vec3 path_point(const hs_hand *hand, int i, int k, int steps) {
+	return k == 0 ? hand->prev_points[i] : k == steps ? hand->points[i] : hand->path_points[k - 1][i];
+}
+
+// True when check point i's path through the frame comes within sqrt(r_sq) of c.
+static bool path_near(const hs_hand *hand, int i, int steps, hs_vec3 c, double r_sq) {
+	for (int k = 0; k < steps; ++k)
+		if (segment_distance_sq(c, path_point(hand, i, k, steps), path_point(hand, i, k + 1, steps)) <= r_sq)
+			return true;
+	return false;
+}
+
+// The first piece of check point i's path (relative to the object: body frame) that crosses into
+// the part; false when none does. `inside`: the point ends inside (the last piece may end there).
+static bool path_enters(const hs_shape *shape, const hs_part *part, const hs_hand *hand, int i, int steps,
+                        const frame *body, hs_vec3 a, bool inside, hs_clip *hit, hs_vec3 *from, hs_vec3 *to) {
+	for (int k = 1; k <= steps; ++k) {
+		hs_vec3 b = k == steps ? to_body(body, hand->points[i]) : to_body(body, hand->path_points[k - 1][i]);
+		hs_clip c = hs_clip_segment(shape, part, a, b, 0.0);
+		if (c.face_in >= 0 && c.hit && (c.t_in < c.t_out || (k == steps && inside))) {
+			*hit = c;
+			*from = a;
+			*to = b;
+			return true;
+		}
+		a = b;
+	}
+	return false;
+}
+
+static void detect_points(hs_world *world, int object, int h, const hs_part *part, const frame *body,
+                          const frame *before, bool moved, bool cull, double grow) {
 	const hs_shape *shape = &world->shapes[world->bodies[object].shape];
 	const hs_hand *hand = &world->hands[h];
-	// a finger part outside the part's bounding sphere cannot touch it: skip before the transform
-	hs_vec3 center = to_world(body, part->center);
+	hs_vec3 center = to_world(body, part->center); // cull before the transform
 	double r_sq = (part->radius + grow) * (part->radius + grow);
-	// (A) check points against faces
+	bool swept = grow == 0.0;
+	int steps = moved ? 1 : hand->path_steps; // a held object moves with the hand: chords suffice
 	for (int i = 0; i < HS_HAND_POINTS; ++i) {
-		if (cull && hs_length_sq(hs_sub(hand->points[i], center)) > r_sq)
+		if (cull && hs_length_sq(hs_sub(hand->points[i], center)) > r_sq &&
+		    (!swept || moved || !path_near(hand, i, steps, center, r_sq)))
 			continue;
-		hs_vec3 b = to_body(body, hand->points[i]);
-		if (!inside_part(shape, part, b, grow))
+		hs_vec3 b = to_body(body, hand->points[i]), a = to_body(before, hand->prev_points[i]);
+		bool inside = inside_part(shape, part, b, grow);
+		if (!inside && !swept)
 			continue;
-		hs_vec3 a = to_body(before, hand->prev_points[i]);
-		hs_clip c = hs_clip_segment(shape, part, a, b, grow);
-		int face;
-		hs_vec3 point;
-		if (c.face_in >= 0) { // entered this frame: the face crossed along the motion
-			face = c.face_in;
-			point = hs_lerp(a, b, c.t_in);
+		hs_clip c;
+		hs_vec3 from, to;
+		bool entered;
+		if (grow > 0.0 || steps == 1) {
+			c = hs_clip_segment(shape, part, a, b, grow);
+			from = a;
+			to = b;
+			entered = c.face_in >= 0 && c.hit && (inside || c.t_in < c.t_out);
 		} else {
-			face = nearest_face(shape, part, b);
-			const hs_face *f = &shape->faces[face];
-			point = hs_mul_add(b, f->offset - hs_dot(f->normal, b), f->normal);
+			entered = path_enters(shape, part, hand, i, steps, body, a, inside, &c, &from, &to);
 		}
-		push_contact(world, object, h, i, false, face, to_world(body, point),
-		             hs_mat3_mul(body->rot, shape->faces[face].normal));
-	}
-	// (B) check lines against edges
-	for (int j = 0; j < HS_HAND_LINES; ++j) {
-		if (cull && segment_distance_sq(center, hand->lines[j][0], hand->lines[j][1]) > r_sq)
-			continue;
-		hs_vec3 p0 = to_body(body, hand->lines[j][0]), p1 = to_body(body, hand->lines[j][1]);
-		hs_clip c = hs_clip_segment(shape, part, p0, p1, grow);
-		if (!c.hit || c.face_in < 0 || c.face_out < 0)
-			continue; // misses, or an end is inside: that is the check points' business
-		int e = edge_between(shape, part, c.face_in, c.face_out);
-		if (e >= 0) {
-			hs_vec3 ea = shape->vertices[shape->edges[e].a], eb = shape->vertices[shape->edges[e].b];
-			hs_vec3 point = closest_on_first(ea, eb, p0, p1);
-			hs_vec3 dir = hs_normalize(hs_sub(eb, ea));
-			hs_vec3 foot = hs_mul_add(ea, -hs_dot(ea, dir), dir); // foot of the perpendicular from G = 0
-			push_contact(world, object, h, HS_HAND_POINTS + j, true, e, to_world(body, point),
-			             hs_mat3_mul(body->rot, hs_normalize(foot)));
-		} else {
-			hs_vec3 mid = hs_lerp(p0, p1, 0.5 * (c.t_in + c.t_out));
-			int face = nearest_face(shape, part, mid);
+		if (entered) { // reached the surface this frame
+			push_contact(world, object, h, i, false, c.face_in, body, hs_lerp(from, to, c.t_in),
+			             shape->faces[c.face_in].normal, b);
+		} else if (inside && !inside_part(shape, part, a, grow)) { // from on the surface (the clip's t = 0)
+			int face = nearest_face(shape, part, a);
+			push_contact(world, object, h, i, false, face, body, a, shape->faces[face].normal, b);
+		} else if (inside && (!swept || (hand->touch_points >> i & 1u) ||
+		                      came_onto(world, object, part, hand->prev_points[i], grow))) {
+			// sunk in, or the object came onto it; or within the grown part (the margin counts every part)
+			int face = nearest_face(shape, part, a);
 			const hs_face *f = &shape->faces[face];
-			hs_vec3 point = hs_mul_add(mid, f->offset - hs_dot(f->normal, mid), f->normal);
-			push_contact(world, object, h, HS_HAND_POINTS + j, false, face, to_world(body, point),
-			             hs_mat3_mul(body->rot, f->normal));
+			hs_vec3 point = hs_mul_add(a, f->offset - hs_dot(f->normal, a), f->normal);
+			push_contact(world, object, h, i, false, face, body, point, f->normal,
+			             sunk_finger(point, hs_sub(b, a), f->normal));
 		}
 	}
 }
 
+// A check line across the part now (entering and leaving through two faces): an edge contact
+// when the faces meet at an edge (§3.2 (B)), else the face nearest its middle. `d`: NULL when
+// the line reached the object this frame (B = the line's point nearest C), else its motion
+// relative to the object since it touched last frame (sunk in: sunk_finger).
+static void line_across(hs_world *world, int object, int h, int j, const hs_part *part, const frame *body,
+                        hs_vec3 p0, hs_vec3 p1, hs_clip c, const hs_vec3 *d) {
+	const hs_shape *shape = &world->shapes[world->bodies[object].shape];
+	int feature = edge_between(shape, part, c.face_in, c.face_out);
+	bool edge = feature >= 0;
+	hs_vec3 point, normal;
+	if (edge) {
+		point = closest_on_first(shape->vertices[shape->edges[feature].a], shape->vertices[shape->edges[feature].b],
+		                         p0, p1);
+		normal = edge_normal(shape, feature);
+	} else {
+		hs_vec3 mid = hs_lerp(p0, p1, 0.5 * (c.t_in + c.t_out));
+		feature = nearest_face(shape, part, mid);
+		const hs_face *f = &shape->faces[feature];
+		point = hs_mul_add(mid, f->offset - hs_dot(f->normal, mid), f->normal);
+		normal = f->normal;
+	}
+	hs_vec3 finger = d ? sunk_finger(point, *d, normal) : hs_segment_closest(p0, p1, point);
+	push_contact(world, object, h, HS_HAND_POINTS + j, edge, feature, body, point, normal, finger);
+}
+
+static bool across(hs_clip c) { return c.hit && c.face_in >= 0 && c.face_out >= 0; }
+
+// Where the segment a-b meets the triangle v0 v1 v2 (Möller-Trumbore): the segment's parameter
+// *t and the barycentric weights *beta (of v1) and *gamma (of v2). False when it misses or lies in
+// the triangle's plane (a line that did not move sweeps no area).
+static bool segment_triangle(hs_vec3 a, hs_vec3 b, hs_vec3 v0, hs_vec3 v1, hs_vec3 v2, double *t, double *beta,
+                             double *gamma) {
+	hs_vec3 e1 = hs_sub(v1, v0), e2 = hs_sub(v2, v0), d = hs_sub(b, a);
+	hs_vec3 pv = hs_cross(d, e2);
+	double det = hs_dot(e1, pv);
+	if (det == 0.0)
+		return false;
+	hs_vec3 tv = hs_sub(a, v0), qv = hs_cross(tv, e1);
+	double u = hs_dot(tv, pv) / det, v = hs_dot(d, qv) / det, s = hs_dot(e2, qv) / det;
+	if (!(u >= 0.0 && v >= 0.0 && u + v <= 1.0 && s >= 0.0 && s <= 1.0))
+		return false;
+	*t = s;
+	*beta = u;
+	*gamma = v;
+	return true;
+}
+
+// Where an edge of the part meets the surface a line sweeps from q0-q1 to p0-p1 (the triangles
+// q0 q1 p1 and q0 p1 p0): the earliest, as *u (0 at q, 1 at p), *s along the line, *t along the
+// edge. False when none does.
+static bool edge_through_sweep(hs_vec3 ea, hs_vec3 eb, const hs_vec3 q[2], const hs_vec3 p[2], double *u, double *s,
+                               double *t) {
+	double t1, b1, g1, t2, b2, g2;
+	bool first = segment_triangle(ea, eb, q[0], q[1], p[1], &t1, &b1, &g1);
+	bool second = segment_triangle(ea, eb, q[0], p[1], p[0], &t2, &b2, &g2);
+	if (first && (!second || g1 <= b2 + g2)) {
+		*u = g1;
+		*s = b1 + g1;
+		*t = t1;
+		return true;
+	}
+	if (second) {
+		*u = b2 + g2;
+		*s = b2;
+		*t = t2;
+	}
+	return second;
+}
+
+// True when all four ends lie beyond one face plane of the part: the swept surface misses it.
+static bool sweep_beyond_a_face(const hs_shape *shape, const hs_part *part, const hs_vec3 q[2], const hs_vec3 p[2]) {
+	for (int f = part->first_face; f < part->first_face + part->face_count; ++f) {
+		hs_vec3 n = shape->faces[f].normal;
+		double o = shape->faces[f].offset;
+		if (hs_dot(n, q[0]) > o && hs_dot(n, q[1]) > o && hs_dot(n, p[0]) > o && hs_dot(n, p[1]) > o)
+			return true;
+	}
+	return false;
+}
+
+// The first contact of a check line that misses the part at both ends of a piece of its path but
+// swept across it (from q0-q1 to n0-n1): an end of the line passing through a face, or an edge of
+// the part through the swept surface. A convex part meets that surface in one of these two ways
+// only. C where they met, B the line's point at the same place along it at the end of the frame
+// (p). False when it did not meet the part.
+static bool swept_line(hs_world *world, int object, int h, int j, const hs_part *part, const frame *body,
+                       const hs_vec3 q[2], const hs_vec3 n[2], const hs_vec3 p[2]) {
+	const hs_shape *shape = &world->shapes[world->bodies[object].shape];
+	if (sweep_beyond_a_face(shape, part, q, n))
+		return false;
+	double best = INFINITY;
+	int feature = -1;
+	bool edge = false;
+	hs_vec3 point = q[0], finger = p[0];
+	for (int k = 0; k < 2; ++k) {
+		hs_clip c = hs_clip_segment(shape, part, q[k], n[k], 0.0);
+		if (c.hit && c.face_in >= 0 && c.t_in < c.t_out && c.t_in < best) {
+			best = c.t_in;
+			feature = c.face_in;
+			point = hs_lerp(q[k], n[k], c.t_in);
+			finger = p[k];
+		}
+	}
+	for (int e = part->first_edge; e < part->first_edge + part->edge_count; ++e) {
+		hs_vec3 ea = shape->vertices[shape->edges[e].a], eb = shape->vertices[shape->edges[e].b];
+		double u, s, t;
+		if (edge_through_sweep(ea, eb, q, n, &u, &s, &t) && u < best) {
+			best = u;
+			feature = e;
+			edge = true;
+			point = hs_lerp(ea, eb, t);
+			finger = hs_lerp(p[0], p[1], s);
+		}
+	}
+	if (feature < 0)
+		return false;
+	push_contact(world, object, h, HS_HAND_POINTS + j, edge, feature, body, point,
+	             edge ? edge_normal(shape, feature) : shape->faces[feature].normal, finger);
+	return true;
+}
+
+// A check line that misses the part now (p, body frame): the first piece of its path through the
+// frame that swept across the part makes the contact. Touching it at the start of a piece, it
+// had reached it before and left again: nothing.
+static void swept_path(hs_world *world, int object, int h, int j, const hs_part *part, const frame *body,
+                       const frame *before, int steps, const hs_vec3 p[2]) {
+	const hs_shape *shape = &world->shapes[world->bodies[object].shape];
+	const hs_hand *hand = &world->hands[h];
+	hs_vec3 q[2] = {to_body(before, hand->prev_lines[j][0]), to_body(before, hand->prev_lines[j][1])};
+	for (int k = 1; k <= steps; ++k) {
+		if (hs_clip_segment(shape, part, q[0], q[1], 0.0).hit)
+			return;
+		hs_vec3 n[2] = {p[0], p[1]};
+		if (k < steps) {
+			n[0] = to_body(body, hand->path_lines[k - 1][j][0]);
+			n[1] = to_body(body, hand->path_lines[k - 1][j][1]);
+		}
+		if (swept_line(world, object, h, j, part, body, q, n, p))
+			return;
+		q[0] = n[0];
+		q[1] = n[1];
+	}
+}
+
+// True when check line j's path through the frame may come within r of c: the bounding sphere of
+// each piece's quad.
+static bool line_path_near(const hs_hand *hand, int j, int steps, hs_vec3 c, double r) {
+	for (int k = 0; k < steps; ++k) {
+		const hs_vec3 *m = k == 0 ? hand->prev_lines[j] : hand->path_lines[k - 1][j];
+		const hs_vec3 *l = k + 1 == steps ? hand->lines[j] : hand->path_lines[k][j];
+		hs_vec3 mid = hs_scale(hs_add(hs_add(m[0], m[1]), hs_add(l[0], l[1])), 0.25);
+		double rad = sqrt(fmax(fmax(hs_length_sq(hs_sub(m[0], mid)), hs_length_sq(hs_sub(m[1], mid))),
+		                       fmax(hs_length_sq(hs_sub(l[0], mid)), hs_length_sq(hs_sub(l[1], mid)))));
+		if (hs_length_sq(hs_sub(c, mid)) <= (r + rad) * (r + rad))
+			return true;
+	}
+	return false;
+}
+
+// (B) check lines against the part: across it now (reached it this frame, sunk in, or across it
+// since before it touched anything, as the check points in detect_points), or swept across it
+// during the frame. A line with an end inside is the check points' business.
+static void detect_lines(hs_world *world, int object, int h, const hs_part *part, const frame *body,
+                         const frame *before, bool moved, bool cull, double grow) {
+	const hs_shape *shape = &world->shapes[world->bodies[object].shape];
+	const hs_hand *hand = &world->hands[h];
+	hs_vec3 center = to_world(body, part->center);
+	double r = part->radius + grow;
+	bool swept = grow == 0.0;
+	int steps = moved ? 1 : hand->path_steps; // a held object moves with the hand: chords suffice
+	for (int j = 0; j < HS_HAND_LINES; ++j) {
+		const hs_vec3 *l = hand->lines[j], *m = hand->prev_lines[j];
+		if (cull && segment_distance_sq(center, l[0], l[1]) > r * r &&
+		    (!swept || moved || !line_path_near(hand, j, steps, center, r)))
+			continue;
+		hs_vec3 p[2] = {to_body(body, l[0]), to_body(body, l[1])};
+		hs_clip c = hs_clip_segment(shape, part, p[0], p[1], grow);
+		if (!c.hit) {
+			if (swept)
+				swept_path(world, object, h, j, part, body, before, steps, p);
+			continue;
+		}
+		if (!across(c))
+			continue; // an end is inside
+		hs_vec3 q[2] = {to_body(before, m[0]), to_body(before, m[1])};
+		if (!hs_clip_segment(shape, part, q[0], q[1], grow).hit) { // reached it this frame
+			line_across(world, object, h, j, part, body, p[0], p[1], c, NULL);
+		} else if (!swept || (hand->touch_lines >> j & 1u) || line_came_onto(world, object, part, m, grow)) {
+			// in it a frame ago too: sunk in (touching), or the object came onto it
+			hs_vec3 d = hs_scale(hs_add(hs_sub(p[0], q[0]), hs_sub(p[1], q[1])), 0.5);
+			line_across(world, object, h, j, part, body, p[0], p[1], c, &d);
+		} // else in it since before it touched anything: touches nothing
+	}
+}
+
+hs_vec3 hs_contact_rectify(const hs_world *world, hs_vec3 p) {
+	for (int i = 0; i < world->object_count; ++i) {
+		const hs_body *body = &world->bodies[i];
+		const hs_shape *shape = &world->shapes[body->shape];
+		if (hs_length_sq(hs_sub(p, body->pos)) > shape->radius * shape->radius)
+			continue;
+		frame f = frame_of(body);
+		hs_vec3 b = to_body(&f, p);
+		for (int k = 0; k < shape->part_count; ++k) {
+			const hs_part *part = &shape->parts[k];
+			if (!inside_part(shape, part, b, 0.0))
+				continue;
+			const hs_face *face = &shape->faces[nearest_face(shape, part, b)];
+			return to_world(&f, hs_mul_add(b, face->offset - hs_dot(face->normal, b), face->normal));
+		}
+	}
+	return p;
+}
+
 bool hs_hand_near(const hs_world *world, const hs_hand *hand, int object) {
 	const hs_body *body = &world->bodies[object];
-	double r = world->shapes[body->shape].radius + hand->radius;
-	return hs_length_sq(hs_sub(body->pos, hand->center)) <= r * r;
+	double r = world->shapes[body->shape].radius + hand->sweep_radius;
+	return hs_length_sq(hs_sub(body->pos, hand->sweep_center)) <= r * r;
 }
 
 int hs_contact_detect(hs_world *world, int object, const hs_body *before) {
@@ -164,8 +451,8 @@ int hs_contact_detect_grown(hs_world *world, int object, const hs_body *before, 
 	frame now = frame_of(body), then = before ? frame_of(before) : now;
 	for (int h = 0; h < world->hand_count; ++h) {
 		const hs_hand *hand = &world->hands[h];
-		double reach = world->shapes[body->shape].radius + grow + hand->radius;
-		if (world->def.skip_work && hs_length_sq(hs_sub(body->pos, hand->center)) > reach * reach)
+		double reach = world->shapes[body->shape].radius + grow + hand->sweep_radius;
+		if (world->def.skip_work && hs_length_sq(hs_sub(body->pos, hand->sweep_center)) > reach * reach)
 			continue; // bounding-volume rejection before the narrow tests (Fig. 2)
 		if (grow == 0.0) // the grown test repeats a held object's: counted once
 			world->counters.hand_tests++;
@@ -173,11 +460,12 @@ int hs_contact_detect_grown(hs_world *world, int object, const hs_body *before, 
 			const hs_part *part = &shape->parts[p];
 			if (world->def.skip_work) {
 				hs_vec3 c = to_world(&now, part->center);
-				double r = part->radius + grow + hand->radius;
-				if (hs_length_sq(hs_sub(c, hand->center)) > r * r)
+				double r = part->radius + grow + hand->sweep_radius;
+				if (hs_length_sq(hs_sub(c, hand->sweep_center)) > r * r)
 					continue;
 			}
-			detect_part(world, object, h, part, &now, &then, world->def.skip_work, grow);
+			detect_points(world, object, h, part, &now, &then, before != NULL, world->def.skip_work, grow);
+			detect_lines(world, object, h, part, &now, &then, before != NULL, world->def.skip_work, grow);
 		}
 	}
 	return world->contact_count - first;

@@ -17,6 +17,9 @@ int hs_contact_detect(hs_world *world, int object, const hs_body *before);
 // surface touches it (the grasp's release margin, docs/model.md §3). Contact points are
 // projected on the faces themselves.
 int hs_contact_detect_grown(hs_world *world, int object, const hs_body *before, double grow);
+// §3.2 rectification of a check point: p moved to the nearest face of the convex part of the
+// first object (in index order) it lies in, or p itself (hs_world_hand_rectified_points).
+hs_vec3 hs_contact_rectify(const hs_world *world, hs_vec3 p);
 // The largest n_i · n_j of a grasp: cos(threshold) plus a tolerance (DESIGN.md), once per world.
 double hs_grasp_limit(double grasp_threshold_deg);
 // Fig. 2: the contact state of a set of contacts (grasp when two normals are >= threshold apart,

@@ -169,10 +169,20 @@ hs_contact_state hs_grasp_detect(hs_world *world, int i, int first, int *n, bool
 			*continues = true;
 			return HS_CONTACT_GRASP;
 		}
-		body->pos = before.pos; // the holder let go: the release rule starts
-		body->rot = before.rot;
+		// the holder let go: the release rule starts. The fingers are judged against the object
+		// where the hand carried it this frame (they open around it, in the hand's frame); left
+		// where it was, a hand that lets go while moving fast would sweep through it.
 		body->released_by = body->grasped_by;
 		body->grip_spread = whole_hand_opening(&world->hands[body->grasped_by - 1]);
+		*n = hs_contact_detect(world, i, &before);
+		*n = set_aside_released(world, i, first, *n);
+		hs_contact_state state =
+		    hs_contact_classify(&world->contacts[first], *n, world->grasp_limit, world->def.grasp_any_contacts);
+		if (state == HS_CONTACT_NONE) { // it flies from its last held pose (manipulate.c, release)
+			body->pos = before.pos;
+			body->rot = before.rot;
+		}
+		return state;
 	}
 	*n = hs_contact_detect(world, i, NULL);
 	*n = set_aside_released(world, i, first, *n);

@@ -278,25 +278,31 @@ void hs_hand_kinematics(const hs_hand_def *def, hs_vec3 wrist_position, hs_quat 
 // ---------------------------------------------------------------------------------------------
 // A hand in a world: the caches derived from its sensors and wrist pose (hand_internal.h)
 
-void hs_hand_update_shape(hs_hand *hand) {
-	hs_hand_local_shape(&hand->def, hand->sensors, hand->local_points, hand->local_lines);
-	// bounding sphere about the mean check point, over points and line ends
+// The bounding sphere of a shape in the wrist frame: about the mean check point, over the points
+// and the line ends.
+static void local_bounds(const hs_vec3 points[HS_HAND_POINTS], const hs_vec3 lines[HS_HAND_LINES][2], hs_vec3 *center,
+                         double *radius) {
 	hs_vec3 c = hs_v3(0, 0, 0);
 	for (int i = 0; i < HS_HAND_POINTS; ++i)
-		c = hs_add(c, hand->local_points[i]);
+		c = hs_add(c, points[i]);
 	c = hs_scale(c, 1.0 / HS_HAND_POINTS);
 	double r_sq = 0.0;
 	for (int j = 0; j < HS_HAND_LINES; ++j)
 		for (int k = 0; k < 2; ++k) {
-			double d = hs_length_sq(hs_sub(hand->local_lines[j][k], c));
+			double d = hs_length_sq(hs_sub(lines[j][k], c));
 			r_sq = d > r_sq ? d : r_sq;
 		}
 	for (int i = 0; i < HS_HAND_POINTS; ++i) {
-		double d = hs_length_sq(hs_sub(hand->local_points[i], c));
+		double d = hs_length_sq(hs_sub(points[i], c));
 		r_sq = d > r_sq ? d : r_sq;
 	}
-	hand->local_center = c;
-	hand->local_radius = sqrt(r_sq);
+	*center = c;
+	*radius = sqrt(r_sq);
+}
+
+void hs_hand_update_shape(hs_hand *hand) {
+	hs_hand_local_shape(&hand->def, hand->sensors, hand->local_points, hand->local_lines);
+	local_bounds(hand->local_points, (const hs_vec3(*)[2])hand->local_lines, &hand->local_center, &hand->local_radius);
 }
 
 void hs_hand_update_bounds(hs_hand *hand) {
@@ -312,6 +318,8 @@ void hs_hand_update_bounds(hs_hand *hand) {
 }
 
 void hs_hand_keep_previous(hs_hand *hand) {
+	hand->prev_center = hand->center;
+	hand->prev_radius = hand->radius;
 	memcpy(hand->prev_points, hand->points, sizeof hand->points);
 	memcpy(hand->prev_lines, hand->lines, sizeof hand->lines);
 	hand->prev_wrist_pos = hand->wrist_pos;
@@ -330,12 +338,19 @@ void hs_hand_refresh(hs_hand *hand) {
 		hand->local_center = hs_v3(0, 0, 0);
 		hand->local_radius = 0.0;
 		hs_hand_update_bounds(hand);
+		hand->prev_center = hand->center;
+		hand->prev_radius = hand->radius;
 		return;
 	}
-	// the previous points: the same two calls that placed them, on the previous reading
+	// the previous points and bounds: the same calls that placed them, on the previous reading
 	hs_hand_local_shape(&hand->def, hand->prev_sensors, hand->local_points, hand->local_lines);
 	hs_hand_place(hand->local_points, (const hs_vec3(*)[2])hand->local_lines, hand->prev_wrist_pos,
 	              hand->prev_wrist_rot, hand->prev_points, hand->prev_lines);
+	local_bounds(hand->local_points, (const hs_vec3(*)[2])hand->local_lines, &hand->local_center, &hand->local_radius);
+	hand->center = hs_add(hand->prev_wrist_pos, hs_quat_rotate(hand->prev_wrist_rot, hand->local_center));
+	hand->radius = hand->local_radius + 1e-6;
+	hand->prev_center = hand->center;
+	hand->prev_radius = hand->radius;
 	hs_hand_update_shape(hand);
 	hs_hand_place(hand->local_points, (const hs_vec3(*)[2])hand->local_lines, hand->wrist_pos, hand->wrist_rot,
 	              hand->points, hand->lines);

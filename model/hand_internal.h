@@ -8,11 +8,16 @@
 
 #include "handspring.h"
 
+// The hand's path through a step (hand_sweep.c): a piece per this many degrees a finger chain or
+// the wrist turns, at most HS_HAND_PATH_MAX pieces.
+#define HS_HAND_PATH_DEG 10.0
+#define HS_HAND_PATH_MAX 8
+
 // A hand of a world. MODEL: `def`. STATE (state.c's hand_io lists them): the wrist pose and
-// sensors now and at the end of the last step, `placed`. CACHES, rebuilt from the state after a
+// sensors now and at the end of the last step, `placed`, the touch masks. CACHES, rebuilt from the state after a
 // load (hs_hand_refresh): the check points and lines now and one frame ago (the kinematics of
 // those two readings, §3.1: bit for bit what hs_world_set_hand computed), the shape in the wrist
-// frame and the bounding spheres. 51 words of state instead of the 866 of the points and lines.
+// frame and the bounding spheres. 53 words of state instead of the 866 of the points and lines.
 typedef struct hs_hand {
 	hs_hand_def def;
 	hs_vec3 wrist_pos;
@@ -22,6 +27,11 @@ typedef struct hs_hand {
 	hs_quat prev_wrist_rot;
 	uint8_t prev_sensors[HS_GLOVE_SENSORS];
 	bool placed; // set at least once: before that its previous points are its current ones
+	// which check points (bit i) and check lines (bit j) touched an object at the end of the last
+	// step: a part found inside an object it did not reach this frame is in contact only if it
+	// touched before (rectification, contact.c); else it started inside and touches nothing
+	uint32_t touch_points;
+	uint64_t touch_lines;
 	// cache: points and lines of (sensors, wrist) and of (prev_sensors, prev_wrist); zero until placed
 	hs_vec3 points[HS_HAND_POINTS], prev_points[HS_HAND_POINTS];
 	hs_vec3 lines[HS_HAND_LINES][2], prev_lines[HS_HAND_LINES][2];
@@ -32,6 +42,17 @@ typedef struct hs_hand {
 	hs_vec3 local_points[HS_HAND_POINTS], local_lines[HS_HAND_LINES][2];
 	hs_vec3 local_center; // its bounding sphere in the wrist frame
 	double local_radius;
+	// cache: the bounding sphere at the end of the last step (of prev_points and prev_lines)
+	hs_vec3 prev_center;
+	double prev_radius;
+	// cache, filled by hs_hand_sweep at the start of each step's hand pass: the pieces of the
+	// parts' path through the frame (path_steps; for > 1, the parts at k / path_steps of the way
+	// in path_points[k - 1], path_lines[k - 1]) and the bounding sphere of the whole path
+	int path_steps;
+	hs_vec3 path_points[HS_HAND_PATH_MAX - 1][HS_HAND_POINTS];
+	hs_vec3 path_lines[HS_HAND_PATH_MAX - 1][HS_HAND_LINES][2];
+	hs_vec3 sweep_center;
+	double sweep_radius;
 } hs_hand;
 
 // The hand's shape in its wrist frame (depends on the sensors only) and its placement.

@@ -3,6 +3,7 @@
 #include "broadphase.h"
 #include "contact.h"
 #include "grasp.h"
+#include "hand_sweep.h"
 #include "manipulate.h"
 #include "motion.h"
 #include "push.h"
@@ -45,15 +46,6 @@ void hs_push_at_one_point(hs_body *body, hs_vec3 c, hs_vec3 b) {
 		hs_quat q = hs_quat_from_axis_angle(axis, hs_atan(r_len / cg_len));
 		body->rot = hs_quat_normalize(hs_quat_mul(q, body->rot));
 	}
-}
-
-// Where the finger part of a contact is now: the check point, or for an edge contact the point
-// of the check line nearest the contact point.
-static hs_vec3 part_position(const hs_hand *hand, const hs_contact *c) {
-	if (c->part < HS_HAND_POINTS)
-		return hand->points[c->part];
-	const hs_vec3 *line = hand->lines[c->part - HS_HAND_POINTS];
-	return hs_segment_closest(line[0], line[1], c->point);
 }
 
 // The hand that holds a grasped object: the one already holding it while its own contacts still
@@ -120,21 +112,25 @@ static void carry_along(hs_world *world, int moved, int current, hs_vec3 d) {
 
 // Eq. 3 on release. A grasp that ends starts eq. 3 on the exact parabola of the release velocity
 // v (DESIGN.md "Release"), as hs_world_add_object does for an initial velocity: P(t - dt) =
-// P(t) - v dt + g dt²/2, so the flight does not depend on the frame rate. v is the held object's
-// motion over its last frame, (P(t) - P(t - dt)) / dt, taken as the velocity at the release
-// instant: exact for a hand at constant velocity. Continuing eq. 3 from the last two positions
-// (the paper's letter) starts the flight at v - g dt / 2 instead: a throw at (2, 0, 1) m/s
-// peaked 8 mm low at 60 frames/s. A fit over three held frames would also be exact under
-// constant acceleration, but it overshoots a swing that starts within two frames of the release
-// (+0.75 m on hand/throw_at_target at 17 frames/s). Any other release (a push ends) flies on with
-// the motion of its last frame. Either keeps the last turn rot * rot_prev⁻¹ (§4.1).
+// P(t) - v dt + g dt²/2, so the flight does not depend on the frame rate. v is the hand's motion
+// over the frame in which it let go: where its wrist would have carried the object this frame,
+// less where it was, over dt (the object is in the hand when the frame starts and leaves it
+// during the frame). The object's own last frame (the paper's letter: eq. 3 continued from its
+// last two positions) lags the hand by a frame: at 12 frames/s, with the hand opened 10 ms
+// after the end of a 0.1 s swing, its last held frame is mid-swing and a throw aimed 2 m away
+// landed 1.11 m short. The spin is the wrist's turn over that frame. Any other release (a push
+// ends) flies on with the motion and turn of its last frame (§4.1).
 static void release(const hs_world *world, hs_body *body) {
 	if (body->grasped_by > 0) {
+		const hs_hand *hand = &world->hands[body->grasped_by - 1];
 		double dt = world->def.dt;
-		hs_vec3 v_dt = hs_sub(body->pos, body->prev);
+		hs_vec3 carried = hs_add(hand->wrist_pos, hs_quat_rotate(hand->wrist_rot, body->grip_pos));
+		hs_vec3 v_dt = hs_sub(carried, body->pos);
 		body->prev = hs_add(hs_sub(body->pos, v_dt), hs_scale(world->def.gravity, 0.5 * dt * dt));
+		body->spin = hs_quat_normalize(hs_quat_mul(hand->wrist_rot, hs_quat_conj(hand->prev_wrist_rot)));
+	} else {
+		body->spin = hs_quat_normalize(hs_quat_mul(body->rot, hs_quat_conj(body->rot_prev)));
 	}
-	body->spin = hs_quat_normalize(hs_quat_mul(body->rot, hs_quat_conj(body->rot_prev)));
 	body->grasped_by = 0;
 	body->grounded = 0;
 	body->asleep = 0;
@@ -149,7 +145,7 @@ static void collect_candidates(hs_world *world) {
 		world->bodies[skip ? world->awake[k] : k].carried = 0;
 	world->candidate_count = 0;
 	for (int h = 0; h < world->hand_count; ++h) {
-		int n = hs_grid_query(world, world->hands[h].center, world->hands[h].radius, world->near);
+		int n = hs_grid_query(world, world->hands[h].sweep_center, world->hands[h].sweep_radius, world->near);
 		for (int k = 0; k < n; ++k)
 			add_candidate(world, world->near[k]);
 	}
@@ -159,8 +155,9 @@ static void collect_candidates(hs_world *world) {
 }
 
 // §3.2: a grasped object follows the grasping wrist, one contact pushes by eq. 1-2 (on the floor
-// without lifting or sinking it, push.c), several
-// contacts translate it by the parts' mean displacement (3).
+// without lifting or sinking it, push.c), several contacts translate it by the mean of the parts'
+// motions while touching (3; the paper: their mean displacement over the frame, which also counts
+// the motion before a part reached the surface and shoves the object off the fingers).
 // A grasp that continues (grasp.c) has already moved the object with its wrist.
 static void move_by_contacts(hs_world *world, hs_body *body, hs_contact_state state, const hs_contact *cs, int n,
                              bool continues) {
@@ -172,21 +169,38 @@ static void move_by_contacts(hs_world *world, hs_body *body, hs_contact_state st
 		hs_grasp_follow_wrist(body, &world->hands[h]);
 	} else if (state == HS_CONTACT_PUSH_ONE) {
 		body->grasped_by = 0;
-		const hs_hand *hand = &world->hands[cs[0].hand.index1 - 1];
-		hs_vec3 b = part_position(hand, &cs[0]);
-		if (!hs_push_on_floor(world, body, cs[0].point, b)) // on the floor: model.md §4
-			hs_push_at_one_point(body, cs[0].point, b);
+		if (!hs_push_on_floor(world, body, cs[0].point, cs[0].finger)) // on the floor: model.md §4
+			hs_push_at_one_point(body, cs[0].point, cs[0].finger);
 	} else {
 		body->grasped_by = 0;
 		hs_vec3 sum = hs_v3(0, 0, 0);
-		for (int k = 0; k < n; ++k)
-			sum = hs_add(sum, hs_part_displacement(&world->hands[cs[k].hand.index1 - 1], &cs[k]));
-		body->pos = hs_add(body->pos, hs_scale(sum, 1.0 / n));
+		for (int k = 0; k < n; ++k) // each part's motion while touching (B - C: rectified, contact.c)
+			sum = hs_add(sum, hs_sub(cs[k].finger, cs[k].point));
+		hs_push_many(world, body, hs_scale(sum, 1.0 / n));
+	}
+}
+
+// Which finger parts of each hand touch an object at the end of the frame: next frame a part found
+// inside an object it did not reach then is in contact only if it touches now (contact.c).
+static void note_touching(hs_world *world) {
+	for (int h = 0; h < world->hand_count; ++h) {
+		world->hands[h].touch_points = 0;
+		world->hands[h].touch_lines = 0;
+	}
+	for (int k = 0; k < world->contact_count; ++k) {
+		const hs_contact *c = &world->contacts[k];
+		hs_hand *hand = &world->hands[c->hand.index1 - 1];
+		if (c->part < HS_HAND_POINTS)
+			hand->touch_points |= 1u << c->part;
+		else
+			hand->touch_lines |= (uint64_t)1 << (c->part - HS_HAND_POINTS);
 	}
 }
 
 void hs_manipulate(hs_world *world) {
 	world->contact_count = 0;
+	for (int h = 0; h < world->hand_count; ++h) // the parts' paths through the frame (swept detection)
+		hs_hand_sweep(&world->hands[h]);
 	collect_candidates(world);
 	// candidate_count may grow in the loop: carry_along adds objects it moved within reach
 	for (int c = 0; c < world->candidate_count; ++c) {
@@ -218,4 +232,5 @@ void hs_manipulate(hs_world *world) {
 		else
 			carry_along(world, i, i, hs_sub(body->pos, old_pos));
 	}
+	note_touching(world);
 }

@@ -102,3 +102,11 @@ bool hs_push_on_floor(hs_world *world, hs_body *body, hs_vec3 c, hs_vec3 b) {
 	body->pos = hs_add(pos, hs_v3(cb.x - r_yaw.x, cb.y - r_yaw.y, 0.0));
 	return true;
 }
+
+void hs_push_many(hs_world *world, hs_body *body, hs_vec3 d) {
+	int count = 0;
+	if (lies_on_floor(world, body, &count))
+		d.z = 0.0; // the floor supplies whatever points into it or out of it, as for one point
+	body->pos = hs_add(body->pos, d);
+}
+

@@ -11,5 +11,8 @@
 // §4 "Pushing an object on the floor"). Returns false, leaving the body alone, when the object is
 // not on the floor: the caller then applies eq. 1-2 as for a free object.
 bool hs_push_on_floor(hs_world *world, hs_body *body, hs_vec3 c, hs_vec3 b);
+// §3.2 (3), push at several points: translates the object by d (the mean of the parts' pushes),
+// along the floor only when it lies on the floor.
+void hs_push_many(hs_world *world, hs_body *body, hs_vec3 d);
 
 #endif

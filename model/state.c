@@ -124,8 +124,9 @@ static void body_io(hs_state_io *io, const hs_world *w, hs_body *b) {
 	hs_state_int_range(io, &b->released_by, 0, w->hand_count);
 }
 
-// One hand: 51 words, the two readings its check points now and a frame ago come from (the points
-// and lines are rebuilt from them after a load). Its definition is in the checksum.
+// One hand: 53 words, the two readings its check points now and a frame ago come from (the points
+// and lines are rebuilt from them after a load) and its two touch masks. Its definition is in the
+// checksum.
 static void hand_io(hs_state_io *io, hs_hand *h) {
 	hs_state_vec3(io, &h->wrist_pos);
 	hs_state_rotation(io, &h->wrist_rot);
@@ -136,6 +137,10 @@ static void hand_io(hs_state_io *io, hs_hand *h) {
 	for (int i = 0; i < HS_GLOVE_SENSORS; ++i)
 		hs_state_u8(io, &h->prev_sensors[i]);
 	hs_state_bool(io, &h->placed);
+	uint64_t points = h->touch_points;
+	hs_state_mask(io, &points, HS_HAND_POINTS);
+	h->touch_points = (uint32_t)points;
+	hs_state_mask(io, &h->touch_lines, HS_HAND_LINES);
 }
 
 // The whole state after the header: the single list of what a step reads from the last one.

@@ -73,6 +73,7 @@ void hs_state_long_range_io(hs_state_io *io, long *v, long lo, long hi);
 void hs_state_int_range_io(hs_state_io *io, int *v, int lo, int hi);
 void hs_state_u8_range_io(hs_state_io *io, uint8_t *v, uint8_t hi);
 void hs_state_bool_io(hs_state_io *io, bool *v);
+void hs_state_mask_io(hs_state_io *io, uint64_t *v, int bits);
 void hs_state_rotation_io(hs_state_io *io, hs_quat *v);
 
 static inline void hs_state_u64(hs_state_io *io, uint64_t *v) {
@@ -123,6 +124,13 @@ static inline void hs_state_bool(hs_state_io *io, bool *v) {
 		hs_state_hash_word(io, *v ? 1u : 0u);
 	else
 		hs_state_bool_io(io, v);
+}
+// CHECK: no bit at or above `bits`
+static inline void hs_state_mask(hs_state_io *io, uint64_t *v, int bits) {
+	if (io->mode == HS_STATE_HASH)
+		hs_state_hash_word(io, *v);
+	else
+		hs_state_mask_io(io, v, bits);
 }
 // 3 words
 static inline void hs_state_vec3(hs_state_io *io, hs_vec3 *v) {

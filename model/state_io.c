@@ -108,6 +108,14 @@ void hs_state_u8_range_io(hs_state_io *io, uint8_t *v, uint8_t hi) {
 		*v = (uint8_t)w;
 }
 
+void hs_state_mask_io(hs_state_io *io, uint64_t *v, int bits) {
+	uint64_t w = word(io, *v);
+	if (bits < 64 && w >> bits)
+		hs_state_refuse(io, "a bit mask with bits out of range");
+	if (loading(io))
+		*v = w;
+}
+
 void hs_state_bool_io(hs_state_io *io, bool *v) {
 	uint64_t w = word(io, *v ? 1u : 0u);
 	if (w > 1)

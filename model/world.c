@@ -454,11 +454,11 @@ hs_status hs_world_set_hand(hs_world *world, hs_hand_id id, hs_vec3 wrist_positi
 	}
 	hs_hand_place(hand->local_points, (const hs_vec3(*)[2])hand->local_lines, hand->wrist_pos, hand->wrist_rot,
 	              hand->points, hand->lines);
-	if (!hand->placed) { // no motion before the first pose
-		hs_hand_keep_previous(hand);
-		hand->placed = true;
-	}
+	bool first = !hand->placed;
+	hand->placed = true;
 	hs_hand_update_bounds(hand);
+	if (first) // no motion before the first pose
+		hs_hand_keep_previous(hand);
 	return HS_OK;
 }
 
@@ -467,6 +467,18 @@ hs_status hs_world_hand_points(const hs_world *world, hs_hand_id id, hs_vec3 poi
 	if (!hand || !points)
 		return HS_ERR_INVALID_ARGUMENT;
 	memcpy(points, hand->points, sizeof hand->points);
+	return HS_OK;
+}
+
+hs_status hs_world_hand_rectified_points(const hs_world *world, hs_hand_id id, hs_vec3 points[HS_HAND_POINTS],
+                                         uint32_t *touching) {
+	const hs_hand *hand = hand_of(world, id);
+	if (!hand || !points)
+		return HS_ERR_INVALID_ARGUMENT;
+	for (int i = 0; i < HS_HAND_POINTS; ++i)
+		points[i] = hand->touch_points >> i & 1u ? hs_contact_rectify(world, hand->points[i]) : hand->points[i];
+	if (touching)
+		*touching = hand->touch_points;
 	return HS_OK;
 }
 

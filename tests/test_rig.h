@@ -27,8 +27,9 @@ static inline hs_world *rig_world(const hs_world_def *def, hs_shape *shape, hs_v
 		hand->points[i] = hand->prev_points[i] = RIG_FAR;
 	for (int j = 0; j < HS_HAND_LINES; ++j)
 		hand->lines[j][0] = hand->lines[j][1] = hand->prev_lines[j][0] = hand->prev_lines[j][1] = RIG_FAR;
-	hand->center = hand_center;
-	hand->radius = 1000;
+	hand->center = hand->prev_center = hand->sweep_center = hand_center;
+	hand->radius = hand->prev_radius = hand->sweep_radius = 1000;
+	hand->path_steps = 1; // straight paths: hs_hand_sweep (run by hs_manipulate) keeps it so
 	hand->placed = true;
 	return w;
 }

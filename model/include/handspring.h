@@ -267,9 +267,9 @@ uint64_t hs_world_hash(const hs_world *world);
 // definition; not max_objects, max_shapes or skip_work, which change no result). Then the
 // world: frame, numeric faults, first fault frame and object; per object 39 words (pose, previous
 // pose, rot_prev, spin, velocity, contact state, floor contacts, grounded / asleep / held /
-// carried, grasped_by, grip pose, grip spread and reach, grip fingers, released_by); per hand 51 words (wrist pose and 18 sensors as last set and as
+// carried, grasped_by, grip pose, grip spread and reach, grip fingers, released_by); per hand 53 words (wrist pose and 18 sensors as last set and as
 // at the end of the last step, placed: the check points and lines now and a frame ago are their
-// kinematics, rebuilt bit for bit after a load); then the spring system and its tracker when on.
+// kinematics, rebuilt bit for bit after a load; which check points and lines touch); then the spring system and its tracker when on.
 // The seed scene (10 cubes, no hand) saves 403 words, 3224 bytes.
 // Not in it: caches rebuilt after a load (check points and lines, the hand's shape in its wrist
 // frame, bounding spheres, the broad-phase grid, the awake list), the last step's contact list
@@ -405,6 +405,15 @@ hs_status hs_world_set_hand(hs_world *world, hs_hand_id hand, hs_vec3 wrist_posi
                             hs_quat wrist_orientation, const uint8_t sensors[HS_GLOVE_SENSORS]);
 /// The hand's check points after the last step.
 hs_status hs_world_hand_points(const hs_world *world, hs_hand_id hand, hs_vec3 points[HS_HAND_POINTS]);
+/// The hand's check points after the last step, rectified (1999 paper §3.2: "the joint angles of
+/// the finger are rectified so that the contacting point is moved to the object surface"): a check
+/// point that touched an object in the last step and lies inside it is moved to the nearest face
+/// of the convex part it is in (the object's pose after the step); every other point is as
+/// hs_world_hand_points gives it. `touching` (may be NULL) gets bit i set for check point i in
+/// contact in the last step. The glove reading itself is never changed: the model keeps only
+/// which parts touch, and judges a touching part by its motion since the last frame.
+hs_status hs_world_hand_rectified_points(const hs_world *world, hs_hand_id hand, hs_vec3 points[HS_HAND_POINTS],
+                                         uint32_t *touching);
 
 /// One contact between a finger part and an object, found in the last step.
 typedef struct hs_contact {
@@ -415,6 +424,12 @@ typedef struct hs_contact {
 	int feature;    ///< the face or edge index of the object's shape
 	hs_vec3 point;  ///< m: the contact point C on the object's surface
 	hs_vec3 normal; ///< face normal, or the edge's pseudo-normal (from G to the edge), world frame
+	/// m: where the finger part drives C this frame (B of eq. 1-2), world frame: the part itself
+	/// when it reached the surface this frame (or passed through it: swept detection); for a part
+	/// already in contact last frame that has sunk in, C plus the part's motion relative to the
+	/// object since then (§3.2 rectification: the finger is drawn back to the surface, so how deep
+	/// it sank never moves the object). docs/model.md §3.
+	hs_vec3 finger;
 } hs_contact;
 
 /// Copies up to `max` contacts of the last step into `out`; returns how many there were.

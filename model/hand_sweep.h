@@ -1,0 +1,14 @@
+// hand_sweep.h — the hand's path through a step (DESIGN.md "Hand model": check points and lines
+// are tested along their path through the frame, not only where they end).
+#ifndef HS_HAND_SWEEP_H
+#define HS_HAND_SWEEP_H
+
+#include "hand_internal.h"
+
+// Fills the hand's path cache for the coming step from its two readings: path_steps S (1: the
+// parts move along straight chords; > 1: the fingers or the wrist turn by more than
+// HS_HAND_PATH_DEG in the frame, and the path runs through the kinematics of S - 1 readings
+// interpolated between them), and the bounding sphere of every part over the whole path.
+void hs_hand_sweep(hs_hand *hand);
+
+#endif
