@@ -5,7 +5,8 @@
 # A guard first, so that no hand scenario can skip it: its robust block must exist, name at least
 # the five frame times 1/12, 1/17, 1/30, 1/60 and 1/120 s, at least 10 seeds and at least the
 # realistic noise (glove +-4 units, wrist +-0.762 mm and +-0.15 deg: the tracker of the workbench
-# paper's §5.1), read from the sweep's own header and row labels, so any YAML style is checked.
+# paper's §5.1), read from the sweep's own header and row labels, so any YAML style is checked;
+# and at least one of its clauses must be `robust: true`.
 # Prints each failing sweep in full, then the table of scripts/sweep_table.sh.
 #   sweep_catalog.sh TOOL [DIR]
 set -eu
@@ -54,6 +55,9 @@ for f in "$dir"/*.yaml; do
 	/^nominal / { rows = 0; next }
 	rows && NF > 1 { v = value($1); for (k in want) if (v > 0 && (v - want[k]) ^ 2 <= 1e-12 * want[k] ^ 2) got[k] = 1 }
 	END { for (k in want) if (!(k in got)) print "robust.dt lacks " k " s" }' "$out")
+	# a robust block without a robust clause would sweep nothing but faults
+	grep -q 'robust: *true' "$f" || why="${why:+$why
+}no clause is 'robust: true': the cells would check nothing"
 	if [ -n "$why" ]; then
 		echo "$why" | sed "s|^|check-sweep: $f: |"
 		fail=1
