@@ -175,8 +175,8 @@ check: deps
 	@$(MAKE) --no-print-directory check-reliability
 	@$(MAKE) --no-print-directory check-readme
 	@$(MAKE) --no-print-directory check-resume
-	@$(MAKE) --no-print-directory check-sweep
 	@sh scripts/layout_check.sh
+	@$(MAKE) --no-print-directory check-sweep
 	@echo "check: all suites passed (plain and ASan+UBSan, reliability, README examples, resume, sweep, layout)"
 
 # Save half-way and resume every catalog scenario: the rest of the run must be byte-identical.
