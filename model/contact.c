@@ -101,7 +101,8 @@ static hs_vec3 edge_normal(const hs_shape *shape, int e) {
 
 // A part that touched last frame and has sunk in is drawn back to the surface (§3.2
 // rectification): it drives C by its motion d relative to the object since then, less any part of
-// d leaving along the normal (a finger coming out does not pull the object).
+// d leaving along the normal (a finger coming out does not pull the object). How deep it sank never
+// moves the object.
 static hs_vec3 sunk_finger(hs_vec3 c, hs_vec3 d, hs_vec3 normal) {
 	double out = hs_dot(d, normal);
 	return hs_add(c, out > 0.0 ? hs_mul_add(d, -out, normal) : d);
@@ -189,6 +190,9 @@ static void detect_points(hs_world *world, int object, int h, const hs_part *par
 			continue;
 		hs_vec3 b = to_body(body, hand->points[i]), a = to_body(before, hand->prev_points[i]);
 		bool inside = inside_part(shape, part, b, grow);
+		bool touched = swept && (hand->touch_points >> i & 1u);
+		if (!inside && touched && inside_part(shape, part, b, world->def.grasp_release_mm * 1e-3))
+			world->hands[h].near_points |= 1u << i; // off the surface, within the margin: still touching
 		if (!inside && !swept)
 			continue;
 		hs_clip c;
@@ -202,20 +206,21 @@ static void detect_points(hs_world *world, int object, int h, const hs_part *par
 		} else {
 			entered = path_enters(shape, part, hand, i, steps, body, a, inside, &c, &from, &to);
 		}
-		if (entered) { // reached the surface this frame
+		if (entered && !touched) { // reached the surface this frame
 			push_contact(world, object, h, i, false, c.face_in, body, hs_lerp(from, to, c.t_in),
 			             shape->faces[c.face_in].normal, b);
-		} else if (inside && !inside_part(shape, part, a, grow)) { // from on the surface (the clip's t = 0)
+		} else if (inside && !touched && !inside_part(shape, part, a, grow)) { // from on the surface (the clip's t = 0)
 			int face = nearest_face(shape, part, a);
 			push_contact(world, object, h, i, false, face, body, a, shape->faces[face].normal, b);
-		} else if (inside && (!swept || (hand->touch_points >> i & 1u) ||
-		                      came_onto(world, object, part, hand->prev_points[i], grow))) {
-			// sunk in, or the object came onto it; or within the grown part (the margin counts every part)
+		} else if (inside && (!swept || touched || came_onto(world, object, part, hand->prev_points[i], grow))) {
+			// sunk in (or back in, within the margin), or the object came onto it; or within the grown
+			// part (the margin counts every part)
 			int face = nearest_face(shape, part, a);
 			const hs_face *f = &shape->faces[face];
 			hs_vec3 point = hs_mul_add(a, f->offset - hs_dot(f->normal, a), f->normal);
+			hs_vec3 start = inside_part(shape, part, a, grow) ? a : point; // back in: from the surface
 			push_contact(world, object, h, i, false, face, body, point, f->normal,
-			             sunk_finger(point, hs_sub(b, a), f->normal));
+			             sunk_finger(point, hs_sub(b, start), f->normal));
 		}
 	}
 }

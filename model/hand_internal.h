@@ -32,6 +32,9 @@ typedef struct hs_hand {
 	// touched before (rectification, contact.c); else it started inside and touches nothing
 	uint32_t touch_points;
 	uint64_t touch_lines;
+	// scratch of a step's hand pass: check points that touched and have come off the surface by
+	// less than grasp_release_mm (the contact's hysteresis, contact.c): they stay touching
+	uint32_t near_points;
 	// cache: points and lines of (sensors, wrist) and of (prev_sensors, prev_wrist); zero until placed
 	hs_vec3 points[HS_HAND_POINTS], prev_points[HS_HAND_POINTS];
 	hs_vec3 lines[HS_HAND_LINES][2], prev_lines[HS_HAND_LINES][2];

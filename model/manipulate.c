@@ -181,10 +181,11 @@ static void move_by_contacts(hs_world *world, hs_body *body, hs_contact_state st
 }
 
 // Which finger parts of each hand touch an object at the end of the frame: next frame a part found
-// inside an object it did not reach then is in contact only if it touches now (contact.c).
+// inside an object it did not reach then is in contact only if it touches now (contact.c). A check
+// point that touched and has come off by less than grasp_release_mm still touches (near_points).
 static void note_touching(hs_world *world) {
 	for (int h = 0; h < world->hand_count; ++h) {
-		world->hands[h].touch_points = 0;
+		world->hands[h].touch_points = world->hands[h].near_points;
 		world->hands[h].touch_lines = 0;
 	}
 	for (int k = 0; k < world->contact_count; ++k) {
@@ -199,8 +200,10 @@ static void note_touching(hs_world *world) {
 
 void hs_manipulate(hs_world *world) {
 	world->contact_count = 0;
-	for (int h = 0; h < world->hand_count; ++h) // the parts' paths through the frame (swept detection)
+	for (int h = 0; h < world->hand_count; ++h) { // the parts' paths through the frame (swept detection)
 		hs_hand_sweep(&world->hands[h]);
+		world->hands[h].near_points = 0;
+	}
 	collect_candidates(world);
 	// candidate_count may grow in the loop: carry_along adds objects it moved within reach
 	for (int c = 0; c < world->candidate_count; ++c) {
