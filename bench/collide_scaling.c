@@ -90,8 +90,9 @@ static hs_world *spring_box(int n) {
 	return w;
 }
 
-// 4000 falling cubes, with or without the 400 m box, in the hand or the spring model.
-static hs_world *mixed_sizes(bool spring, bool big_box) {
+// 4000 falling cubes, with or without the 400 m box, in the hand or the spring model; `pile`:
+// all of them in one place (the same centre) instead of on the grid.
+static hs_world *mixed_sizes(bool spring, bool big_box, bool pile) {
 	hs_world_def wd = hs_default_world_def();
 	wd.dt = BENCH_DT;
 	wd.max_objects = CS_CUBES + 1;
@@ -105,7 +106,8 @@ static hs_world *mixed_sizes(bool spring, bool big_box) {
 	hs_shape_id cube = add_shape(w, hs_shape_box(hs_v3(BENCH_CUBE, BENCH_CUBE, BENCH_CUBE), &st), st);
 	int side = side_of(CS_CUBES);
 	for (int k = 0; k < CS_CUBES; ++k)
-		add_object(w, cube, hs_v3((k % side) * CS_CUBE_GAP, (k / side) * CS_CUBE_GAP, 0.5), hs_v3(0, 0, 0));
+		add_object(w, cube, pile ? hs_v3(0, 0, 0.5) : hs_v3((k % side) * CS_CUBE_GAP, (k / side) * CS_CUBE_GAP, 0.5),
+		           hs_v3(0, 0, 0));
 	if (big_box) { // beside the cubes, resting on the floor
 		hs_shape_id slab = add_shape(w, hs_shape_box(hs_v3(400.0, 400.0, 1.0), &st), st);
 		add_object(w, slab, hs_v3(-210.0, 0.0, 0.5), hs_v3(0, 0, 0));
@@ -154,7 +156,7 @@ static double time_mixed(bool spring, bool big_box, int reps, bench_shared *shar
 	double times[64];
 	reps = reps < 1 ? 1 : (reps > 64 ? 64 : reps);
 	for (int r = 0; r < reps; ++r) {
-		hs_world *w = mixed_sizes(spring, big_box);
+		hs_world *w = mixed_sizes(spring, big_box, false);
 		double t0 = bench_now();
 		shared->checksum ^= step_world(w, CS_FALL_FRAMES, 14695981039346656037ull);
 		times[r] = (bench_now() - t0) / CS_FALL_FRAMES;
@@ -202,7 +204,8 @@ void bench_collide(const bench_opts *opts, bench_shared *shared) {
 }
 
 // `hs_bench --profile-collide KIND,FRAMES[,N]`: for callgrind. KIND box (walled box of N spheres,
-// after 30 frames of warm-up), hand, hand+box, spring, spring+box (the mixed-size worlds).
+// after 30 frames of warm-up), hand, hand+box, spring, spring+box (the mixed-size worlds),
+// hand-pile (the 4000 cubes of `hand` all in one place).
 void bench_profile_collide(const char *spec) {
 	char kind[16] = {0};
 	long frames = 1;
@@ -222,7 +225,7 @@ void bench_profile_collide(const char *spec) {
 		step_world(w, 30, 0);
 	} else {
 		bool spring = strncmp(kind, "spring", 6) == 0;
-		w = mixed_sizes(spring, strchr(kind, '+') != NULL);
+		w = mixed_sizes(spring, strchr(kind, '+') != NULL, strstr(kind, "pile") != NULL);
 	}
 	double t0 = bench_now();
 	uint64_t h = cs_profiled_frames(w, frames, 14695981039346656037ull);

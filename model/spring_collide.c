@@ -165,29 +165,91 @@ bool hs_spring_contact(const hs_world *world, const hs_spring_geom *ga, hs_vec3 
 	return box_box(ga, pa, gb, pb, n, depth);
 }
 
-void hs_spring_collide(hs_world *world, const hs_spring_geom *geom, double restitution, uint8_t *separated) {
-	double e = restitution;
+// The impulse of restitution e along n (from a to b) when approaching, then the separation by
+// depth in inverse-mass shares (velocities untouched by it: momentum stays exact).
+static void respond(hs_body *a, hs_body *b, hs_vec3 n, double depth, double e) {
+	double wa = 1.0 / a->mass, wb = 1.0 / b->mass, wsum = wa + wb;
+	double vn = hs_dot(hs_sub(b->vel, a->vel), n);
+	if (vn < 0.0) { // approaching: impulse along the normal
+		double impulse = -(1.0 + e) * vn / wsum;
+		a->vel = hs_mul_add(a->vel, -impulse * wa, n);
+		b->vel = hs_mul_add(b->vel, impulse * wb, n);
+	}
+	a->pos = hs_mul_add(a->pos, -depth * wa / wsum, n);
+	b->pos = hs_mul_add(b->pos, depth * wb / wsum, n);
+}
+
+// m added around each bounding box in the broad phase: far above rounding and libccd's touch
+// margins, so it only ever lets through pairs the exact test then rejects.
+static double margin_of(const hs_spring_geom *g, hs_vec3 p) {
+	return 1e-6 + 1e-9 * (fabs(p.x) + fabs(p.y) + fabs(p.z) + g->hi.x - g->lo.x + g->hi.y - g->lo.y + g->hi.z - g->lo.z);
+}
+
+static bool boxes_meet(const hs_spring_geom *ga, hs_vec3 pa, const hs_spring_geom *gb, hs_vec3 pb, double m) {
+	return pa.x + ga->lo.x - m <= pb.x + gb->hi.x && pb.x + gb->lo.x <= pa.x + ga->hi.x + m &&
+	       pa.y + ga->lo.y - m <= pb.y + gb->hi.y && pb.y + gb->lo.y <= pa.y + ga->hi.y + m &&
+	       pa.z + ga->lo.z - m <= pb.z + gb->hi.z && pb.z + gb->lo.z <= pa.z + ga->hi.z + m;
+}
+
+static hs_vec3 box_centre(const hs_spring_geom *g, hs_vec3 p) {
+	return hs_add(p, hs_scale(hs_add(g->lo, g->hi), 0.5));
+}
+
+// Files every object in the broad phase by its bounding box's centre; levels from the boxes'
+// half-extents, assigned again when objects were added (or the geometry was rebuilt).
+static void file_all(hs_world *world, hs_spring_system *sys) {
+	int n = world->object_count;
+	if (sys->grid_count != n) {
+		for (int i = 0; i < n; ++i) {
+			hs_vec3 w = hs_sub(sys->geom[i].hi, sys->geom[i].lo);
+			sys->grid.half[i] = 0.5 * fmax(w.x, fmax(w.y, w.z));
+		}
+		hs_hgrid_build(&sys->grid, n);
+		sys->grid_count = n;
+	}
+	for (int i = 0; i < n; ++i)
+		hs_hgrid_file(&sys->grid, i, box_centre(&sys->geom[i], world->bodies[i].pos));
+}
+
+// Objects whose bounds may meet object i's box (its margin included), in index order.
+static int near_of(const hs_world *world, hs_spring_system *sys, int i) {
+	const hs_spring_geom *g = &sys->geom[i];
+	hs_vec3 p = world->bodies[i].pos;
+	double m = margin_of(g, p);
+	hs_vec3 lo = hs_add(p, hs_sub(g->lo, hs_v3(m, m, m))), hi = hs_add(p, hs_add(g->hi, hs_v3(m, m, m)));
+	return hs_hgrid_query(&sys->grid, lo, hi, sys->near);
+}
+
+void hs_spring_collide(hs_world *world, hs_spring_system *sys) {
+	// Pairs in ascending (i, j), as the full double loop met them, so the bits are the same: for
+	// each i the broad phase lists the j near it now; when a pair moved i, the list is taken again
+	// from where i is now and resumes after j (only i and j move within i's turn).
+	const hs_spring_geom *geom = sys->geom;
+	double e = sys->def.restitution;
+	file_all(world, sys);
 	for (int i = 0; i < world->object_count; ++i) {
 		hs_body *a = &world->bodies[i];
 		const hs_spring_geom *ga = &geom[i];
-		for (int j = i + 1; j < world->object_count; ++j) {
+		int count = near_of(world, sys, i);
+		for (int k = 0; k < count; ++k) {
+			int j = sys->near[k];
+			if (j <= i)
+				continue;
 			hs_body *b = &world->bodies[j];
 			const hs_spring_geom *gb = &geom[j];
 			hs_vec3 n;
 			double depth;
-			if (!hs_spring_contact(world, ga, a->pos, gb, b->pos, &n, &depth))
+			if (!boxes_meet(ga, a->pos, gb, b->pos, margin_of(ga, a->pos) + margin_of(gb, b->pos)) ||
+			    !hs_spring_contact(world, ga, a->pos, gb, b->pos, &n, &depth))
 				continue;
-			double wa = 1.0 / a->mass, wb = 1.0 / b->mass, wsum = wa + wb;
-			double vn = hs_dot(hs_sub(b->vel, a->vel), n);
-			if (vn < 0.0) { // approaching: impulse along the normal
-				double impulse = -(1.0 + e) * vn / wsum;
-				a->vel = hs_mul_add(a->vel, -impulse * wa, n);
-				b->vel = hs_mul_add(b->vel, impulse * wb, n);
-			}
-			// separate in inverse-mass shares (velocities untouched: momentum stays exact)
-			a->pos = hs_mul_add(a->pos, -depth * wa / wsum, n);
-			b->pos = hs_mul_add(b->pos, depth * wb / wsum, n);
-			separated[i] = separated[j] = 1;
+			respond(a, b, n, depth, e);
+			sys->separated[i] = sys->separated[j] = 1;
+			hs_hgrid_file(&sys->grid, i, box_centre(ga, a->pos));
+			hs_hgrid_file(&sys->grid, j, box_centre(gb, b->pos));
+			count = near_of(world, sys, i);
+			for (k = 0; k < count && sys->near[k] <= j; ++k)
+				;
+			--k; // the loop's ++k lands on the first object after j
 		}
 	}
 }

@@ -175,12 +175,59 @@ static void test_ball_passes_rotated_rod(void **state) {
 	hs_world_destroy(w);
 }
 
+static double lcg_unit(uint64_t *s) { // bench/collide_scaling.c's generator, in [-1, 1]
+	*s = *s * 6364136223846793005ull + 1442695040888963407ull;
+	return (double)(*s >> 11) / (double)(1ull << 52) - 1.0;
+}
+
+// The broad phase changes no bit: 300 spheres sliding in a frictionless walled box (make bench's
+// scene, 30 frames, then 60 frames' hashes folded) give the checksum the all-pairs double loop
+// gave before the broad phase existed (hs_bench --profile-collide box,60,300 at commit a418600).
+static void test_broad_phase_same_bits(void **state) {
+	(void)state;
+	enum { BALLS = 300, SIDE = 18 };
+	hs_world_def def = hs_default_world_def();
+	def.dt = 1.0 / 60.0;
+	def.max_objects = BALLS;
+	hs_status st;
+	hs_world *w = hs_world_create(&def, &st);
+	hs_spring_def sd = hs_default_spring_def();
+	sd.friction_static = sd.friction_sliding = 0.0;
+	sd.walls.enabled = true;
+	sd.walls.x_min = sd.walls.y_min = 0.0;
+	sd.walls.x_max = sd.walls.y_max = SIDE * 0.15;
+	assert_int_equal(hs_world_enable_springs(w, &sd), HS_OK);
+	hs_shape *ball = hs_shape_sphere(0.05, &st);
+	hs_object_def od = hs_default_object_def();
+	od.shape = hs_world_add_shape(w, ball, &st);
+	hs_shape_destroy(ball);
+	uint64_t seed = 12345;
+	for (int k = 0; k < BALLS; ++k) {
+		double vx = lcg_unit(&seed), vy = lcg_unit(&seed);
+		od.position = hs_v3((k % SIDE + 0.5) * 0.15, (k / SIDE + 0.5) * 0.15, 0.05);
+		od.velocity = hs_v3(vx, vy, 0.0);
+		hs_world_add_object(w, &od, &st);
+		assert_int_equal(st, HS_OK);
+	}
+	for (int f = 0; f < 30; ++f)
+		assert_int_equal(hs_world_step(w), HS_OK);
+	uint64_t h = 14695981039346656037ull;
+	for (int f = 0; f < 60; ++f) {
+		assert_int_equal(hs_world_step(w), HS_OK);
+		h ^= hs_world_hash(w);
+		h *= 1099511628211ull;
+	}
+	assert_true(h == 0xe0143b315aafdc7cull);
+	hs_world_destroy(w);
+}
+
 int main(void) {
 	const struct CMUnitTest tests[] = {
 	    cmocka_unit_test(test_sphere_rotated_rod),
 	    cmocka_unit_test(test_box_box_separating_axes),
 	    cmocka_unit_test(test_pyramid_sphere_libccd),
 	    cmocka_unit_test(test_ball_passes_rotated_rod),
+	    cmocka_unit_test(test_broad_phase_same_bits),
 	};
 	return cmocka_run_group_tests(tests, NULL, NULL);
 }
