@@ -72,6 +72,9 @@ void bench_frame_rate(const bench_opts *opts, bench_shared *shared); // items 1 
 void bench_accuracy(const bench_opts *opts, bench_shared *shared);   // item 3
 void bench_throw(const bench_opts *opts, bench_shared *shared);      // item 4
 void bench_peers(const bench_opts *opts, bench_shared *shared);      // item 5
+void bench_collide(const bench_opts *opts, bench_shared *shared);    // item 6 (issue 11)
+/// `--profile-collide KIND,FRAMES[,N]` (collide_scaling.c): one collision scene alone, for callgrind.
+void bench_profile_collide(const char *spec);
 /// The seed scene of item 1 timed alone (the peers' comparison when item 1 did not run).
 bench_stats bench_seed_measure(const bench_opts *opts, bool skip);
 /// N frames of the seed scene alone (for a profiler): 10 objects (or `objects`), 2 grasped.

@@ -4,6 +4,7 @@
 //   hs_bench [--quick] [--out DIR] [--only SECTION]
 //   hs_bench --profile-seed N[,OBJECTS] | --profile-seed-noskip N[,OBJECTS]
 //                                 (N frames of the seed scene alone, 2 grasped, for perf)
+//   hs_bench --profile-collide KIND,FRAMES[,N]   (box, hand, hand+box, spring, spring+box)
 //
 // Progress goes to stderr, the tables and the closing summary to stdout, CSV files to DIR
 // (default build/bench), from which bench/*.gp draw the plots. Benchmarks report: the exit status
@@ -28,6 +29,7 @@ static const bench_section sections[] = {
     {"accuracy", "item 3: speed against error", bench_accuracy},
     {"throw", "item 4: throw fidelity across frame rates", bench_throw},
     {"peers", "item 5: ODE and MuJoCo on the seed scene", bench_peers},
+    {"collide", "item 6: collisions that scale (issue 11)", bench_collide},
 };
 #define N_SECTIONS ((int)(sizeof sections / sizeof sections[0]))
 
@@ -59,8 +61,10 @@ int main(int argc, char **argv) {
 			const char *comma = strchr(argv[i + 1], ',');
 			bench_profile_seed(atol(argv[i + 1]), comma ? atoi(comma + 1) : 10, false);
 			return 0;
-		}
-		else
+		} else if (strcmp(argv[i], "--profile-collide") == 0 && i + 1 < argc) {
+			bench_profile_collide(argv[i + 1]);
+			return 0;
+		} else
 			return usage();
 	}
 	if (mkdir(opts.out_dir, 0777) != 0 && errno != EEXIST) {

@@ -1,5 +1,5 @@
-// broadphase.c — what keeps untouched objects free: a uniform grid over the floor plane that
-// finds the objects near a hand or a moved object, and the list of awake objects the step visits.
+// broadphase.c — what keeps untouched objects free: a grid over the floor plane (hgrid.c, one
+// level per size class) that finds the objects near a hand or a moved object, and the list of awake objects the step visits.
 // (1999 paper, Experiment 3: frame time nearly flat in the number of objects not touched.)
 //
 // Results never depend on it: every query returns its objects in index order, the order in
@@ -8,55 +8,31 @@
 
 #include "broadphase.h"
 
-static long cell_coord(double v, double cell) { return (long)floor(v / cell); }
-
-static int bucket_of(const hs_world *world, long ix, long iy) {
-	// a multiplicative hash of the cell; any fixed mix is deterministic
-	unsigned long h = (unsigned long)ix * 73856093ul ^ (unsigned long)iy * 19349663ul;
-	return (int)(h & (unsigned long)(world->grid_buckets - 1));
-}
-
-static void unlink_object(hs_world *world, int i) {
-	int b = world->grid_bucket[i];
-	if (b < 0)
-		return;
-	int *link = &world->grid_head[b];
-	while (*link != i)
-		link = &world->grid_next[*link];
-	*link = world->grid_next[i];
-	world->grid_bucket[i] = -1;
-}
-
 void hs_grid_update(hs_world *world, int i) {
-	if (world->grid_cell <= 0.0)
+	if (!world->grid_built)
 		return; // not built yet: the first step builds it
-	const hs_body *body = &world->bodies[i];
-	long ix = cell_coord(body->pos.x, world->grid_cell), iy = cell_coord(body->pos.y, world->grid_cell);
-	if (world->grid_bucket[i] >= 0 && world->grid_ix[i] == ix && world->grid_iy[i] == iy)
-		return;
-	unlink_object(world, i);
-	int b = bucket_of(world, ix, iy);
-	world->grid_next[i] = world->grid_head[b];
-	world->grid_head[b] = i;
-	world->grid_bucket[i] = b;
-	world->grid_ix[i] = ix;
-	world->grid_iy[i] = iy;
+	hs_hgrid_file(&world->grid, i, world->bodies[i].pos);
 }
 
 void hs_grid_build(hs_world *world) {
-	double largest = 0.0;
-	for (int i = 0; i < world->object_count; ++i) {
-		double r = world->shapes[world->bodies[i].shape].radius;
-		largest = r > largest ? r : largest;
-	}
-	world->grid_radius = largest;
-	world->grid_cell = largest > 0.0 ? 2.0 * largest : 1.0;
-	for (int b = 0; b < world->grid_buckets; ++b)
-		world->grid_head[b] = -1;
-	for (int i = 0; i < world->object_count; ++i) {
-		world->grid_bucket[i] = -1;
+	// each object at the level of its bounding radius (hgrid.c): one huge object no longer makes
+	// the cell of all (the cell was twice the largest radius)
+	for (int i = 0; i < world->object_count; ++i)
+		world->grid.half[i] = world->shapes[world->bodies[i].shape].radius;
+	hs_hgrid_build(&world->grid, world->object_count);
+	world->grid_built = true;
+	for (int i = 0; i < world->object_count; ++i)
 		hs_grid_update(world, i);
+}
+
+int hs_grid_query(const hs_world *world, hs_vec3 center, double radius, int *out) {
+	if (!world->def.skip_work || !world->grid_built) { // the full scan, in index order
+		for (int i = 0; i < world->object_count; ++i)
+			out[i] = i;
+		return world->object_count;
 	}
+	hs_vec3 r = hs_v3(radius, radius, radius); // objects are filed by their centres (x, y)
+	return hs_hgrid_query(&world->grid, hs_sub(center, r), hs_add(center, r), out);
 }
 
 static void insert_sorted(int *list, int *count, int value) {
@@ -67,30 +43,6 @@ static void insert_sorted(int *list, int *count, int value) {
 	}
 	list[k] = value;
 	++*count;
-}
-
-int hs_grid_query(const hs_world *world, hs_vec3 center, double radius, int *out) {
-	int n = 0;
-	if (!world->def.skip_work || world->grid_cell <= 0.0) { // the full scan, in index order
-		for (int i = 0; i < world->object_count; ++i)
-			out[n++] = i;
-		return n;
-	}
-	double reach = radius + world->grid_radius; // objects are filed by their centres
-	double cell = world->grid_cell;
-	long x0 = cell_coord(center.x - reach, cell), x1 = cell_coord(center.x + reach, cell);
-	long y0 = cell_coord(center.y - reach, cell), y1 = cell_coord(center.y + reach, cell);
-	if ((x1 - x0 + 1) * (y1 - y0 + 1) > world->grid_buckets) { // larger than the grid: scan
-		for (int i = 0; i < world->object_count; ++i)
-			out[n++] = i;
-		return n;
-	}
-	for (long ix = x0; ix <= x1; ++ix)
-		for (long iy = y0; iy <= y1; ++iy)
-			for (int i = world->grid_head[bucket_of(world, ix, iy)]; i >= 0; i = world->grid_next[i])
-				if (world->grid_ix[i] == ix && world->grid_iy[i] == iy) // not a hash neighbour
-					insert_sorted(out, &n, i);
-	return n;
 }
 
 void hs_wake(hs_world *world, int i) {

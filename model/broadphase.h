@@ -10,8 +10,8 @@
 void hs_grid_build(hs_world *world);
 // Files object i again after it moved.
 void hs_grid_update(hs_world *world, int i);
-// Objects whose centre may lie within radius + the largest object radius of center, in index
-// order (every object when skip_work is off). Returns how many were written to out.
+// Objects whose centre may lie within radius + their own bounding radius of center (in x, y), in
+// index order (every object when skip_work is off). Returns how many were written to out.
 int hs_grid_query(const hs_world *world, hs_vec3 center, double radius, int *out);
 // Marks object i awake and puts it on the awake list.
 void hs_wake(hs_world *world, int i);

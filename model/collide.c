@@ -121,6 +121,41 @@ static void normalise_pair(posed_part *a, posed_part *b) {
 	a->inv_scale = b->inv_scale = inv;
 }
 
+// World-axis box around a posed part: its body-frame box turned (|R| times the half extents).
+static void part_box(const posed_part *p, hs_vec3 *centre, hs_vec3 *half) {
+	if (p->sphere_radius > 0.0) {
+		*centre = p->center;
+		*half = hs_v3(p->sphere_radius, p->sphere_radius, p->sphere_radius);
+		return;
+	}
+	hs_vec3 lo = p->vertices[0], hi = p->vertices[0];
+	for (int i = 1; i < p->vertex_count; i++) {
+		hs_vec3 v = p->vertices[i]; // (comparisons, not fmin: vertices are finite, and no libm call)
+		lo = hs_v3(v.x < lo.x ? v.x : lo.x, v.y < lo.y ? v.y : lo.y, v.z < lo.z ? v.z : lo.z);
+		hi = hs_v3(v.x > hi.x ? v.x : hi.x, v.y > hi.y ? v.y : hi.y, v.z > hi.z ? v.z : hi.z);
+	}
+	hs_vec3 c = hs_scale(hs_add(lo, hi), 0.5), h = hs_scale(hs_sub(hi, lo), 0.5);
+	hs_vec3 ux = hs_quat_rotate(p->rot, hs_v3(1, 0, 0)), uy = hs_quat_rotate(p->rot, hs_v3(0, 1, 0)),
+	        uz = hs_quat_rotate(p->rot, hs_v3(0, 0, 1));
+	*centre = hs_add(p->pos, hs_quat_rotate(p->rot, c));
+	*half = hs_v3(fabs(ux.x) * h.x + fabs(uy.x) * h.y + fabs(uz.x) * h.z,
+	              fabs(ux.y) * h.x + fabs(uy.y) * h.y + fabs(uz.y) * h.z,
+	              fabs(ux.z) * h.x + fabs(uy.z) * h.y + fabs(uz.z) * h.z);
+}
+
+// Cheap rejection before libccd: the parts' world boxes are apart by more than 1e-8 of the pair's
+// size (far beyond libccd's 1e-10 and the touch margins), so GJK and MPR would find no contact
+// either and no result changes. A small part beside a huge one (a 5 cm cube within the bounding
+// sphere of a 400 m box) no longer costs a GJK run.
+static bool boxes_apart(const posed_part *a, const posed_part *b) {
+	hs_vec3 ca, ha, cb, hb;
+	part_box(a, &ca, &ha);
+	part_box(b, &cb, &hb);
+	double m = 1e-8 * (a->radius + b->radius) + 4.0 * HS_TOUCH_MARGIN;
+	return fabs(cb.x - ca.x) > ha.x + hb.x + m || fabs(cb.y - ca.y) > ha.y + hb.y + m ||
+	       fabs(cb.z - ca.z) > ha.z + hb.z + m;
+}
+
 static bool valid_shape(const hs_shape *s) { return s && s->part_count > 0 && s->parts && s->vertices; }
 
 bool hs_shapes_overlap(const hs_shape *a, hs_vec3 pos_a, hs_quat rot_a, const hs_shape *b, hs_vec3 pos_b,
@@ -136,7 +171,7 @@ bool hs_shapes_overlap(const hs_shape *a, hs_vec3 pos_a, hs_quat rot_a, const hs
 		posed_part pa = pose_part(a, i, pos_a, rot_a);
 		for (int j = 0; j < b->part_count; j++) {
 			posed_part pb = pose_part(b, j, pos_b, rot_b);
-			if (!spheres_meet(pa.center, pa.radius, pb.center, pb.radius))
+			if (!spheres_meet(pa.center, pa.radius, pb.center, pb.radius) || boxes_apart(&pa, &pb))
 				continue;
 			normalise_pair(&pa, &pb);
 			if (ccdGJKIntersect(&pa, &pb, &ccd))
@@ -167,7 +202,7 @@ bool hs_shapes_penetration(const hs_shape *a, hs_vec3 pos_a, hs_quat rot_a, cons
 			posed_part pa = pose_part(a, i, pos_a, rot_a);
 			for (int j = 0; j < b->part_count; j++) {
 				posed_part pb = pose_part(b, j, pos_b, rot_b);
-				if (!spheres_meet(pa.center, pa.radius, pb.center, pb.radius))
+				if (!spheres_meet(pa.center, pa.radius, pb.center, pb.radius) || boxes_apart(&pa, &pb))
 					continue;
 				normalise_pair(&pa, &pb);
 				ccd_real_t d = 0.0;

@@ -2,11 +2,16 @@
 #ifndef HS_SPRING_COLLIDE_H
 #define HS_SPRING_COLLIDE_H
 
-#include "spring_geom.h"
+#include "spring_system.h"
 
-// Every overlapping pair of the world's objects (array order, reaches in `geom`) exchanges an
-// impulse of restitution e along the contact normal and is pushed apart; each object pushed gets
-// separated[i] = 1 (the caller clears the flags).
-void hs_spring_collide(hs_world *world, const hs_spring_geom *geom, double restitution, uint8_t *separated);
+// Contact of object a (geometry ga, G at pa) with object b: the unit normal from a to b and the
+// depth (m) of the true shapes' overlap; false when they do not meet.
+bool hs_spring_contact(const hs_world *world, const hs_spring_geom *ga, hs_vec3 pa, const hs_spring_geom *gb,
+                       hs_vec3 pb, hs_vec3 *n, double *depth);
+// Every overlapping pair of the world's objects (array order, shapes in sys->geom, found through
+// the broad phase sys->grid) exchanges an impulse of restitution sys->def.restitution along the
+// contact normal and is pushed apart; each object pushed gets sys->separated[i] = 1 (the caller
+// clears the flags).
+void hs_spring_collide(hs_world *world, hs_spring_system *sys);
 
 #endif

@@ -1,20 +1,34 @@
 // spring_geom.c — the reach of an object in the spring model and point / ray queries on it.
 //
 // Reading fixed here: forces act at G only and objects keep their orientation (§4.2), so each
-// object's reach relative to G is fixed: spheres are exact spheres, every other shape is its
-// world-axis bounding box. Collisions (spring_collide.c), the floor and walls (spring_contact.c)
-// and picking (spring_grab.c) all use this one reach.
+// object's reach relative to G is fixed. The floor and walls (spring_contact.c) and picking
+// (spring_grab.c) use its world-axis bounding box (exact for the floor and the axis-aligned walls:
+// the lowest / outermost vertex); collisions (spring_collide.c) use the true shape.
 #include <string.h>
 
 #include "spring_geom.h"
+
+// A box whose every turned vertex is a corner of its world-axis bounding box IS that box: it
+// collides through the bounding-box formulas (bit for bit as before turned boxes existed).
+static bool axis_aligned(const hs_shape *shape, hs_quat rot, hs_vec3 lo, hs_vec3 hi) {
+	for (int i = 0; i < shape->vertex_count; ++i) {
+		hs_vec3 v = hs_quat_rotate(rot, shape->vertices[i]);
+		if ((v.x != lo.x && v.x != hi.x) || (v.y != lo.y && v.y != hi.y) || (v.z != lo.z && v.z != hi.z))
+			return false;
+	}
+	return true;
+}
 
 hs_spring_geom hs_spring_geom_of(const hs_world *world, const hs_body *body) {
 	const hs_shape *shape = &world->shapes[body->shape];
 	hs_spring_geom g;
 	memset(&g, 0, sizeof g);
+	g.shape = body->shape;
+	g.rot = body->rot;
 	if (shape->kind == HS_SHAPE_SPHERE) {
 		double r = shape->sphere_radius;
 		g.sphere = true;
+		g.form = HS_FORM_SPHERE;
 		g.radius = r;
 		g.lo = hs_v3(-r, -r, -r);
 		g.hi = hs_v3(r, r, r);
@@ -26,7 +40,10 @@ hs_spring_geom hs_spring_geom_of(const hs_world *world, const hs_body *body) {
 		hs_vec3 v = hs_quat_rotate(body->rot, shape->vertices[i]);
 		g.lo = hs_v3(fmin(g.lo.x, v.x), fmin(g.lo.y, v.y), fmin(g.lo.z, v.z));
 		g.hi = hs_v3(fmax(g.hi.x, v.x), fmax(g.hi.y, v.y), fmax(g.hi.z, v.z));
+		g.half = hs_v3(fmax(g.half.x, fabs(shape->vertices[i].x)), fmax(g.half.y, fabs(shape->vertices[i].y)),
+		               fmax(g.half.z, fabs(shape->vertices[i].z)));
 	}
+	g.form = shape->kind != HS_SHAPE_BOX ? HS_FORM_CONVEX : axis_aligned(shape, body->rot, g.lo, g.hi) ? HS_FORM_AXIS_BOX : HS_FORM_BOX;
 	return g;
 }
 

@@ -4,12 +4,21 @@
 
 #include "world_internal.h"
 
-// Where an object reaches, relative to G in world axes: its world-axis bounding box, or a sphere.
-// Objects keep their orientation in the spring model (no torque, §4.2), so it is fixed per object.
+// How object–object collisions see a shape (spring_collide.c): exact sphere, a box whose faces
+// lie on its world-axis bounding box, a turned (oriented) box, or any other convex part set (libccd).
+typedef enum hs_spring_form { HS_FORM_SPHERE, HS_FORM_AXIS_BOX, HS_FORM_BOX, HS_FORM_CONVEX } hs_spring_form;
+
+// Where an object reaches, relative to G: its world-axis bounding box (floor, walls, picking, the
+// broad phase) and its true shape (collisions). Objects keep their orientation in the spring
+// model (no torque, §4.2), so both are fixed per object.
 typedef struct hs_spring_geom {
-	hs_vec3 lo, hi; // m: offsets of the box corners from G
+	hs_vec3 lo, hi; // m: offsets of the bounding box's corners from G
 	double radius;  // m, spheres only
 	bool sphere;
+	hs_spring_form form;
+	int shape;      // index into world->shapes
+	hs_quat rot;    // body → world
+	hs_vec3 half;   // m: half extents of a box in its body frame
 } hs_spring_geom;
 
 // The reach of `body` in its present orientation.

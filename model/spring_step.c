@@ -108,6 +108,8 @@ static void finish_bodies(hs_world *world, hs_spring_system *sys) {
 void hs_spring_step(hs_world *world) {
 	hs_spring_system *sys = world->spring;
 	int n = world->object_count;
+	if (sys->geom_count < n) // the broad phase's levels follow the geometry
+		sys->grid_count = -1;
 	for (int i = sys->geom_count; i < n; ++i) // objects added since the last frame
 		sys->geom[i] = hs_spring_geom_of(world, &world->bodies[i]);
 	sys->geom_count = n;
@@ -124,7 +126,7 @@ void hs_spring_step(hs_world *world) {
 		step_body(&fx, i);
 	if (n > 0) // (n is never negative; the test keeps gcc's size analysis quiet)
 		memset(sys->separated, 0, (size_t)n);
-	hs_spring_collide(world, sys->geom, sys->def.restitution, sys->separated);
+	hs_spring_collide(world, sys);
 	for (int i = 0; i < n; ++i) { // separation may have pushed an object through the floor or a wall
 		hs_body *body = &world->bodies[i];
 		if (body->pos.z < -sys->geom[i].lo.z)

@@ -19,6 +19,11 @@ struct hs_spring_system {
 	uint8_t *separated; // pushed apart from a neighbour this frame: moved without a velocity
 	hs_vec3 *saved_pos; // frame-start state for the numeric guard
 	hs_vec3 *saved_vel;
+	// CACHE: the collisions' broad phase (spring_collide.c), 3D, built for grid_count objects
+	// (-1: to build), refiled every frame; near holds a query's result
+	hs_hgrid grid;
+	int grid_count;
+	int *near;
 	// the stylus: pose at the end of the coming frame and at its start
 	bool has_stylus;
 	hs_vec3 stylus, stylus_prev;

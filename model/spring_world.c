@@ -18,6 +18,8 @@ void hs_spring_system_destroy(hs_spring_system *system) {
 	free(system->separated);
 	free(system->saved_pos);
 	free(system->saved_vel);
+	hs_hgrid_free(&system->grid);
+	free(system->near);
 	free(system);
 }
 
@@ -34,7 +36,11 @@ hs_status hs_world_enable_springs(hs_world *world, const hs_spring_def *def) {
 	sys->separated = calloc(cap, sizeof *sys->separated);
 	sys->saved_pos = calloc(cap, sizeof *sys->saved_pos);
 	sys->saved_vel = calloc(cap, sizeof *sys->saved_vel);
-	if (!sys->geom || !sys->on_floor || !sys->sliding || !sys->separated || !sys->saved_pos || !sys->saved_vel) {
+	sys->near = calloc(cap, sizeof *sys->near);
+	bool grid = hs_hgrid_alloc(&sys->grid, (int)cap, 3);
+	sys->grid_count = -1;
+	if (!sys->geom || !sys->on_floor || !sys->sliding || !sys->separated || !sys->saved_pos || !sys->saved_vel ||
+	    !sys->near || !grid) {
 		hs_spring_system_destroy(sys);
 		return HS_ERR_NO_MEMORY;
 	}

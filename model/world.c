@@ -90,21 +90,13 @@ hs_world *hs_world_create(const hs_world_def *def, hs_status *status) {
 	// every check point and line of every hand in up to 4 objects' parts at once
 	world->contact_capacity = (def->max_hands > 0 ? def->max_hands : 1) * (HS_HAND_POINTS + HS_HAND_LINES) * 4;
 	world->contacts = calloc((size_t)world->contact_capacity, sizeof *world->contacts);
-	world->grid_buckets = 16;
-	while ((size_t)world->grid_buckets < 2 * objects)
-		world->grid_buckets *= 2;
-	world->grid_head = calloc((size_t)world->grid_buckets, sizeof *world->grid_head);
-	world->grid_next = calloc(objects, sizeof *world->grid_next);
-	world->grid_bucket = calloc(objects, sizeof *world->grid_bucket);
-	world->grid_ix = calloc(objects, sizeof *world->grid_ix);
-	world->grid_iy = calloc(objects, sizeof *world->grid_iy);
+	bool grid = hs_hgrid_alloc(&world->grid, (int)objects, 2);
 	world->candidates = calloc(objects, sizeof *world->candidates);
 	world->near = calloc(objects, sizeof *world->near);
 	world->awake = calloc(objects, sizeof *world->awake);
 	world->awake_flag = calloc(objects, sizeof *world->awake_flag);
-	if (!world->shapes || !world->bodies || !world->queue || !world->hands || !world->contacts || !world->grid_head ||
-	    !world->grid_next || !world->grid_bucket || !world->grid_ix || !world->grid_iy || !world->candidates ||
-	    !world->near || !world->awake || !world->awake_flag) {
+	if (!world->shapes || !world->bodies || !world->queue || !world->hands || !world->contacts || !grid ||
+	    !world->candidates || !world->near || !world->awake || !world->awake_flag) {
 		hs_world_destroy(world);
 		set_status(status, HS_ERR_NO_MEMORY);
 		return NULL;
@@ -132,11 +124,7 @@ void hs_world_destroy(hs_world *world) {
 	free(world->queue);
 	free(world->hands);
 	free(world->contacts);
-	free(world->grid_head);
-	free(world->grid_next);
-	free(world->grid_bucket);
-	free(world->grid_ix);
-	free(world->grid_iy);
+	hs_hgrid_free(&world->grid);
 	free(world->candidates);
 	free(world->near);
 	free(world->awake);
@@ -334,7 +322,7 @@ hs_status hs_world_step(hs_world *world) {
 		world->frame++;
 		return HS_OK;
 	}
-	if (world->grid_dirty || world->grid_cell <= 0.0) { // objects were added: file them again
+	if (world->grid_dirty || !world->grid_built) { // objects were added: file them again
 		hs_grid_build(world);
 		world->grid_dirty = false;
 	}

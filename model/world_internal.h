@@ -9,6 +9,7 @@
 #include "body.h"
 #include "hand_internal.h"
 #include "handspring.h"
+#include "hgrid.h"
 #include "hull.h"
 #include "spring_world.h"
 
@@ -48,14 +49,11 @@ struct hs_world {
 	int *candidates;     // objects a hand may touch this frame, in index order
 	int candidate_count;
 	int *near;           // grid query results, max_objects long
-	// CACHE: broad phase (broadphase.c), objects filed by the floor cell of their centre
-	double grid_cell;   // m; 0 until built at the first step
-	double grid_radius; // m: the largest object's bounding radius
+	// CACHE: broad phase (broadphase.c), objects filed by the floor cell of their centre, each at
+	// the level of its bounding radius (hgrid.c)
+	hs_hgrid grid;
+	bool grid_built;    // false until built at the first step
 	bool grid_dirty;    // objects were added (or a state loaded) since it was built
-	int grid_buckets;   // a power of two, at least twice max_objects
-	int *grid_head;     // bucket → first object (-1: none)
-	int *grid_next, *grid_bucket;
-	long *grid_ix, *grid_iy;
 	// CACHE: the awake objects in index order, the only ones the step visits when skip_work is on;
 	// between steps exactly the objects with !asleep || held || carried (hs_awake_rebuild)
 	int awake_count;

@@ -1,0 +1,276 @@
+// hgrid.c — the hierarchical hashed grid of hgrid.h (issue 11, item 6: collisions that scale,
+// with objects of very different sizes and many objects in one place).
+//
+// Why levels: one cell size for all (twice the largest radius, as before) files 4000 cubes of
+// 5 cm in one cell when a 400 m box is among them, and every query returns all of them. Filing
+// each object at the level its size fits keeps every cell's share of objects O(1) for any mix.
+// Results are sorted by index, so callers iterate in the order a full scan would: no result
+// depends on the grid (DESIGN.md: determinism; array order).
+#include <stdlib.h>
+#include <string.h>
+
+#include "hgrid.h"
+
+// in cells: beyond this a coordinate is clamped (never a conversion out of range, NaN included)
+#define HS_HGRID_CLAMP 1e9
+
+bool hs_hgrid_alloc(hs_hgrid *g, int capacity, int dims) {
+	memset(g, 0, sizeof *g);
+	size_t cap = capacity > 0 ? (size_t)capacity : 1;
+	g->capacity = (int)cap;
+	g->dims = dims;
+	g->buckets = 16;
+	while ((size_t)g->buckets < 2 * cap)
+		g->buckets *= 2;
+	g->head = malloc((size_t)g->buckets * sizeof *g->head);
+	g->next = calloc(cap, sizeof *g->next);
+	g->bucket = calloc(cap, sizeof *g->bucket);
+	g->level = calloc(cap, sizeof *g->level);
+	g->by_level = calloc(cap, sizeof *g->by_level);
+	g->cell = calloc(cap * (size_t)dims, sizeof *g->cell);
+	g->half = calloc(cap, sizeof *g->half);
+	g->scratch = calloc(cap, sizeof *g->scratch);
+	g->merge = calloc(cap, sizeof *g->merge);
+	return g->head && g->next && g->bucket && g->level && g->by_level && g->cell && g->half && g->scratch && g->merge;
+}
+
+void hs_hgrid_free(hs_hgrid *g) {
+	free(g->head);
+	free(g->next);
+	free(g->bucket);
+	free(g->level);
+	free(g->by_level);
+	free(g->cell);
+	free(g->half);
+	free(g->scratch);
+	free(g->merge);
+	memset(g, 0, sizeof *g);
+}
+
+static void sift_double(double *v, int root, int n) {
+	for (int child; (child = 2 * root + 1) < n; root = child) {
+		if (child + 1 < n && v[child + 1] > v[child])
+			++child;
+		if (!(v[child] > v[root]))
+			return;
+		double t = v[root];
+		v[root] = v[child];
+		v[child] = t;
+	}
+}
+
+// The median of v[0 .. n-1] (n ≥ 1), sorting v in place (heapsort: no allocation).
+static double median_of(double *v, int n) {
+	for (int k = n / 2 - 1; k >= 0; --k)
+		sift_double(v, k, n);
+	for (int end = n - 1; end > 0; --end) {
+		double t = v[0];
+		v[0] = v[end];
+		v[end] = t;
+		sift_double(v, 0, end);
+	}
+	return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+static double cell_of_level(const hs_hgrid *g, int level) { return g->size[level]; }
+
+void hs_hgrid_build(hs_hgrid *g, int n) {
+	g->count = n;
+	for (int i = 0; i < n; ++i)
+		g->scratch[i] = g->half[i];
+	double median = n > 0 ? median_of(g->scratch, n) : 0.0;
+	g->cell0 = median > 0.0 && isfinite(median) ? 2.0 * median : 1.0;
+	g->size[0] = g->cell0;
+	for (int l = 1; l < HS_HGRID_LEVELS; ++l) // doubling is exact
+		g->size[l] = 2.0 * g->size[l - 1];
+	for (int l = 0; l < HS_HGRID_LEVELS; ++l)
+		g->inv[l] = 1.0 / g->size[l];
+	int per_level[HS_HGRID_LEVELS] = {0};
+	g->levels = 1;
+	memset(g->reach, 0, sizeof g->reach);
+	for (int i = 0; i < n; ++i) { // the lowest level whose cell holds the object's whole width
+		int level = 0;
+		while (level < HS_HGRID_LEVELS - 1 && !(2.0 * g->half[i] <= cell_of_level(g, level)))
+			++level;
+		g->level[i] = level;
+		g->reach[level] = g->half[i] > g->reach[level] ? g->half[i] : g->reach[level];
+		per_level[level]++;
+		g->levels = level + 1 > g->levels ? level + 1 : g->levels;
+		g->bucket[i] = -1;
+	}
+	g->first[0] = 0;
+	for (int l = 0; l < HS_HGRID_LEVELS; ++l)
+		g->first[l + 1] = g->first[l] + per_level[l];
+	int fill[HS_HGRID_LEVELS];
+	memcpy(fill, g->first, sizeof fill);
+	for (int i = 0; i < n; ++i) // index order within each level
+		g->by_level[fill[g->level[i]]++] = i;
+	for (int b = 0; b < g->buckets; ++b)
+		g->head[b] = -1;
+}
+
+// The cell of coordinate v at a level of inverse cell size inv: x ↦ floor(x · inv) is monotonic,
+// all filing and queries need (a centre within a query's range lies in one of its cells).
+static long cell_coord(double v, double inv) {
+	double q = floor(v * inv);
+	if (!(q > -HS_HGRID_CLAMP))
+		q = -HS_HGRID_CLAMP;
+	if (q > HS_HGRID_CLAMP)
+		q = HS_HGRID_CLAMP;
+	return (long)q;
+}
+
+static int bucket_of(const hs_hgrid *g, int level, const long *c) {
+	// a multiplicative mix of the level and the cell; any fixed mix is deterministic
+	unsigned long h = (unsigned long)level * 2654435761ul ^ (unsigned long)c[0] * 73856093ul ^
+	                  (unsigned long)c[1] * 19349663ul;
+	if (g->dims == 3)
+		h ^= (unsigned long)c[2] * 83492791ul;
+	return (int)(h & (unsigned long)(g->buckets - 1));
+}
+
+static void unlink_object(hs_hgrid *g, int i) {
+	int b = g->bucket[i];
+	if (b < 0)
+		return;
+	int *link = &g->head[b];
+	while (*link != i)
+		link = &g->next[*link];
+	*link = g->next[i];
+	g->bucket[i] = -1;
+}
+
+void hs_hgrid_file(hs_hgrid *g, int i, hs_vec3 centre) {
+	double inv = g->inv[g->level[i]], x[3] = {centre.x, centre.y, centre.z};
+	long c[3];
+	bool same = g->bucket[i] >= 0;
+	for (int d = 0; d < g->dims; ++d) {
+		c[d] = cell_coord(x[d], inv);
+		same = same && g->cell[(size_t)i * (size_t)g->dims + (size_t)d] == c[d];
+	}
+	if (same)
+		return;
+	unlink_object(g, i);
+	int b = bucket_of(g, g->level[i], c);
+	g->next[i] = g->head[b];
+	g->head[b] = i;
+	g->bucket[i] = b;
+	for (int d = 0; d < g->dims; ++d)
+		g->cell[(size_t)i * (size_t)g->dims + (size_t)d] = c[d];
+}
+
+// Objects of one level filed in the cells lo[] .. hi[] (dims of them, inclusive).
+static int visit_cells(const hs_hgrid *g, int level, const long *lo, const long *hi, int *out, int n) {
+	int dims = g->dims;
+	long c[3] = {0, 0, 0};
+	for (c[2] = dims == 3 ? lo[2] : 0; c[2] <= (dims == 3 ? hi[2] : 0); ++c[2])
+		for (c[1] = lo[1]; c[1] <= hi[1]; ++c[1])
+			for (c[0] = lo[0]; c[0] <= hi[0]; ++c[0])
+				for (int i = g->head[bucket_of(g, level, c)]; i >= 0; i = g->next[i]) {
+					const long *ci = &g->cell[(size_t)i * (size_t)dims];
+					if (ci[0] == c[0] && ci[1] == c[1] && (dims == 2 || ci[2] == c[2]) && g->level[i] == level)
+						out[n++] = i; // not a hash neighbour
+				}
+	return n;
+}
+
+// Merges the sorted runs v[run[k] .. run[k + 1]) (runs of them) into one, through buf.
+static void merge_runs(int *v, int *buf, int *run, int runs) {
+	while (runs > 1) {
+		int kept = 0;
+		for (int k = 0; k < runs; k += 2) {
+			if (k + 1 == runs) {
+				run[kept++] = run[k];
+				continue;
+			}
+			int a = run[k], mid = run[k + 1], b = run[k + 2], i = a, j = mid, o = a;
+			while (i < mid && j < b)
+				buf[o++] = v[i] <= v[j] ? v[i++] : v[j++];
+			while (i < mid)
+				buf[o++] = v[i++];
+			while (j < b)
+				buf[o++] = v[j++];
+			memcpy(v + a, buf + a, (size_t)(b - a) * sizeof *v);
+			run[kept++] = a;
+		}
+		run[kept] = run[runs];
+		runs = kept;
+	}
+}
+
+int hs_hgrid_query(const hs_hgrid *g, hs_vec3 lo, hs_vec3 hi, int *out) {
+	int n = 0, runs = 0, run[HS_HGRID_LEVELS + 1];
+	double a[3] = {lo.x, lo.y, lo.z}, b[3] = {hi.x, hi.y, hi.z};
+	for (int level = 0; level < g->levels; ++level) {
+		int count = g->first[level + 1] - g->first[level];
+		if (count == 0)
+			continue;
+		double inv = g->inv[level], r = g->reach[level], cells = 1.0;
+		long c0[3], c1[3];
+		for (int d = 0; d < g->dims; ++d) {
+			c0[d] = cell_coord(a[d] - r, inv);
+			c1[d] = cell_coord(b[d] + r, inv);
+			cells *= (double)(c1[d] - c0[d] + 1);
+		}
+		int start = n;
+		if (cells > (double)count) { // more cells than objects: the level's list (sorted) is cheaper
+			memcpy(out + n, g->by_level + g->first[level], (size_t)count * sizeof *out);
+			n += count;
+		} else {
+			n = visit_cells(g, level, c0, c1, out, n);
+			hs_sort_indices(out + start, n - start);
+		}
+		if (n > start)
+			run[runs++] = start;
+	}
+	run[runs] = n;
+	merge_runs(out, g->merge, run, runs);
+	return n;
+}
+
+static void sift_int(int *v, int root, int n) {
+	for (int child; (child = 2 * root + 1) < n; root = child) {
+		if (child + 1 < n && v[child + 1] > v[child])
+			++child;
+		if (v[child] <= v[root])
+			return;
+		int t = v[root];
+		v[root] = v[child];
+		v[child] = t;
+	}
+}
+
+void hs_sort_indices(int *v, int n) {
+	if (n <= 16) { // insertion sort: fastest for the few a query usually finds
+		for (int k = 1; k < n; ++k) {
+			int x = v[k], j = k;
+			for (; j > 0 && v[j - 1] > x; --j)
+				v[j] = v[j - 1];
+			v[j] = x;
+		}
+		return;
+	}
+	bool up = true, down = true;
+	for (int k = 1; k < n && (up || down); ++k) {
+		up = up && v[k - 1] <= v[k];
+		down = down && v[k - 1] >= v[k];
+	}
+	if (up)
+		return;
+	if (down) { // one cell's chain comes newest first
+		for (int k = 0; k < n / 2; ++k) {
+			int t = v[k];
+			v[k] = v[n - 1 - k];
+			v[n - 1 - k] = t;
+		}
+		return;
+	}
+	for (int k = n / 2 - 1; k >= 0; --k)
+		sift_int(v, k, n);
+	for (int end = n - 1; end > 0; --end) {
+		int t = v[0];
+		v[0] = v[end];
+		v[end] = t;
+		sift_int(v, 0, end);
+	}
+}

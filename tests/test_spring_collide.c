@@ -1,0 +1,233 @@
+// test_spring_collide.c — object–object contact of the spring model on the true shapes (§4.5:
+// "physical contact of objects is intuitively equivalent with geometric intersection"): turned
+// boxes by closest point and separating axes, other shapes through libccd, against closed forms.
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+
+#include <cmocka.h>
+
+#include "spring_collide.h"
+#include "test_util.h"
+
+#define SQRT1_2 0.70710678118654752440
+
+typedef struct pair {
+	hs_world *world;
+	hs_spring_geom ga, gb;
+} pair;
+
+// A spring world with shapes a and b (taken over) at the origin in the given orientations.
+static pair make_pair(hs_shape *a, hs_quat ra, hs_shape *b, hs_quat rb) {
+	hs_world_def def = hs_default_world_def();
+	hs_status st;
+	pair p;
+	p.world = hs_world_create(&def, &st);
+	assert_non_null(p.world);
+	hs_spring_def sd = hs_default_spring_def();
+	assert_int_equal(hs_world_enable_springs(p.world, &sd), HS_OK);
+	hs_shape *shapes[2] = {a, b};
+	hs_quat rots[2] = {ra, rb};
+	for (int k = 0; k < 2; ++k) {
+		assert_non_null(shapes[k]);
+		hs_object_def od = hs_default_object_def();
+		od.shape = hs_world_add_shape(p.world, shapes[k], &st);
+		od.orientation = rots[k];
+		hs_shape_destroy(shapes[k]);
+		hs_world_add_object(p.world, &od, &st);
+		assert_int_equal(st, HS_OK);
+	}
+	p.ga = hs_spring_geom_of(p.world, &p.world->bodies[0]);
+	p.gb = hs_spring_geom_of(p.world, &p.world->bodies[1]);
+	return p;
+}
+
+static bool touch(const pair *p, hs_vec3 pa, hs_vec3 pb, hs_vec3 *n, double *depth) {
+	return hs_spring_contact(p->world, &p->ga, pa, &p->gb, pb, n, depth);
+}
+
+static hs_quat about_z(double angle) { return hs_quat_from_axis_angle(hs_v3(0, 0, 1), angle); }
+
+// A ball beside a 1 m rod turned 45° about z: contact exactly when its centre is nearer than r to
+// the rod's side face; none in the empty corner of the rod's bounding box.
+static void test_sphere_rotated_rod(void **state) {
+	(void)state;
+	hs_status st;
+	double r = 0.05, w = 0.025; // ball radius, rod half-width
+	pair p = make_pair(hs_shape_sphere(r, &st), hs_quat_identity(), hs_shape_box(hs_v3(1.0, 2 * w, 2 * w), &st),
+	                   about_z(0.25 * HS_PI));
+	assert_int_equal(p.ga.form, HS_FORM_SPHERE);
+	assert_int_equal(p.gb.form, HS_FORM_BOX);
+	hs_vec3 side = hs_v3(-SQRT1_2, SQRT1_2, 0.0), rod = hs_v3(0, 0, 0), n;
+	double depth;
+	assert_false(touch(&p, hs_scale(side, w + r + 1e-9), rod, &n, &depth));
+	assert_true(touch(&p, hs_scale(side, w + r - 1e-6), rod, &n, &depth));
+	assert_near(depth, 1e-6, 1e-15);
+	assert_vec3_near(n, hs_neg(side), 1e-12);
+	// 0.3 m along x and −y from the centre: inside the bounding box, 0.42 m from the rod
+	assert_true(0.3 + r < p.gb.hi.x && -0.3 - r > p.gb.lo.y);
+	assert_false(touch(&p, hs_v3(0.3, -0.3, 0.0), rod, &n, &depth));
+	// centre inside the rod: out through the nearest face
+	assert_true(touch(&p, hs_scale(side, 0.01), rod, &n, &depth));
+	assert_near(depth, w - 0.01 + r, 1e-15);
+	assert_vec3_near(n, hs_neg(side), 1e-15);
+	hs_world_destroy(p.world);
+}
+
+// Separating axes: a unit cube and one turned 45° about z, d apart along x, overlap by
+// 1/2 + √2/2 − d along x (the turned cube's edge in the other's face); apart beyond that.
+static void test_box_box_separating_axes(void **state) {
+	(void)state;
+	hs_status st;
+	pair p = make_pair(hs_shape_box(hs_v3(1, 1, 1), &st), hs_quat_identity(), hs_shape_box(hs_v3(1, 1, 1), &st),
+	                   about_z(0.25 * HS_PI));
+	assert_int_equal(p.ga.form, HS_FORM_AXIS_BOX);
+	hs_vec3 n, o = hs_v3(0, 0, 0);
+	double depth;
+	assert_true(touch(&p, o, hs_v3(1.1, 0, 0), &n, &depth));
+	assert_near(depth, 0.5 + SQRT1_2 - 1.1, 1e-12);
+	assert_vec3_near(n, hs_v3(1, 0, 0), 1e-12);
+	assert_true(touch(&p, hs_v3(1.1, 0, 0), o, &n, &depth)); // the other way round
+	assert_vec3_near(n, hs_v3(-1, 0, 0), 1e-12);
+	assert_false(touch(&p, o, hs_v3(0.5 + SQRT1_2 + 1e-9, 0, 0), &n, &depth));
+	// along the diagonal u = (1, 1)/√2 the cubes reach √2/2 (a corner) and 1/2 (the turned one's
+	// face): apart beyond d = 1/2 + √2/2, where the bounding boxes still overlap (up to d = 1 + √2/2)
+	hs_vec3 u = hs_v3(SQRT1_2, SQRT1_2, 0);
+	assert_false(touch(&p, o, hs_scale(u, 0.5 + SQRT1_2 + 1e-9), &n, &depth));
+	assert_true(touch(&p, o, hs_scale(u, 0.5 + SQRT1_2 - 0.01), &n, &depth));
+	assert_near(depth, 0.01, 1e-12);
+	assert_vec3_near(n, u, 1e-12);
+	hs_world_destroy(p.world);
+	// both turned 30°: the overlap along their common x axis is 1 − d
+	hs_quat q = about_z(HS_PI / 6.0);
+	p = make_pair(hs_shape_box(hs_v3(1, 1, 1), &st), q, hs_shape_box(hs_v3(1, 1, 1), &st), q);
+	hs_vec3 ux = hs_quat_rotate(q, hs_v3(1, 0, 0));
+	assert_true(touch(&p, o, hs_scale(ux, 0.9), &n, &depth));
+	assert_near(depth, 0.1, 1e-12);
+	assert_vec3_near(n, ux, 1e-12);
+	hs_world_destroy(p.world);
+}
+
+// libccd for a square pyramid (base 0.2 m, height 0.2 m: base plane z = −0.05, apex z = 0.15) and
+// a ball of r = 0.05: under the base, on the apex, on a slanted face 2x + z = 0.15.
+static void test_pyramid_sphere_libccd(void **state) {
+	(void)state;
+	hs_status st;
+	double r = 0.05, delta = 0.01;
+	pair p = make_pair(hs_shape_sphere(r, &st), hs_quat_identity(), hs_shape_pyramid(0.2, 0.2, &st),
+	                   hs_quat_identity());
+	assert_int_equal(p.gb.form, HS_FORM_CONVEX);
+	hs_vec3 n, o = hs_v3(0, 0, 0);
+	double depth;
+	assert_true(touch(&p, hs_v3(0, 0, -0.05 - r + delta), o, &n, &depth));
+	assert_near(depth, delta, 1e-9);
+	assert_vec3_near(n, hs_v3(0, 0, 1), 1e-9);
+	assert_true(touch(&p, hs_v3(0, 0, 0.15 + r - delta), o, &n, &depth));
+	assert_near(depth, delta, 1e-9);
+	assert_vec3_near(n, hs_v3(0, 0, -1), 1e-9);
+	hs_vec3 face = hs_scale(hs_v3(2, 0, 1), 1.0 / sqrt(5.0)), q = hs_v3(0.05, 0, 0.05); // q on the face
+	assert_true(touch(&p, hs_mul_add(q, r - delta, face), o, &n, &depth));
+	assert_near(depth, delta, 1e-9);
+	assert_vec3_near(n, hs_neg(face), 1e-9);
+	assert_false(touch(&p, hs_mul_add(q, r + delta, face), o, &n, &depth));
+	// beside the apex: inside the bounding box, 0.067 m from the face
+	assert_false(touch(&p, hs_v3(0.09, 0, 0.12), o, &n, &depth));
+	hs_world_destroy(p.world);
+}
+
+// A ball rolling past a 1 m rod turned 45° in a world, along the rod 0.1 m from its axis (0.025 m
+// clear of its side): it passes untouched, velocity unchanged, where the rod's bounding box (0.37 m
+// around the centre in x and y) would have turned it back.
+static void test_ball_passes_rotated_rod(void **state) {
+	(void)state;
+	hs_world_def def = hs_default_world_def();
+	hs_status st;
+	hs_world *w = hs_world_create(&def, &st);
+	hs_spring_def sd = hs_default_spring_def();
+	sd.friction_static = sd.friction_sliding = 0.0;
+	assert_int_equal(hs_world_enable_springs(w, &sd), HS_OK);
+	hs_object_def od = hs_default_object_def();
+	hs_shape *rod = hs_shape_box(hs_v3(1.0, 0.05, 0.05), &st);
+	od.shape = hs_world_add_shape(w, rod, &st);
+	hs_shape_destroy(rod);
+	od.orientation = about_z(0.25 * HS_PI);
+	od.position = hs_v3(0, 0, 0.025);
+	hs_object_id rod_id = hs_world_add_object(w, &od, &st);
+	hs_shape *ball = hs_shape_sphere(0.05, &st);
+	od.shape = hs_world_add_shape(w, ball, &st);
+	hs_shape_destroy(ball);
+	od.orientation = hs_quat_identity();
+	hs_vec3 along = hs_v3(SQRT1_2, SQRT1_2, 0), across = hs_v3(SQRT1_2, -SQRT1_2, 0);
+	od.position = hs_add(hs_add(hs_scale(along, -0.7), hs_scale(across, 0.1)), hs_v3(0, 0, 0.05));
+	od.velocity = along;
+	hs_object_id ball_id = hs_world_add_object(w, &od, &st);
+	hs_object_state s;
+	for (int f = 0; f < 84; ++f) { // 1.4 m along the rod
+		assert_int_equal(hs_world_step(w), HS_OK);
+		assert_int_equal(hs_world_object_state(w, ball_id, &s), HS_OK);
+		assert_near(hs_dot(s.position, across), 0.1, 1e-12);
+		assert_vec3_near(s.velocity, along, 1e-12);
+	}
+	assert_true(hs_dot(s.position, along) > 0.69);
+	assert_int_equal(hs_world_object_state(w, rod_id, &s), HS_OK);
+	assert_vec3_near(s.position, hs_v3(0, 0, 0.025), 0.0);
+	hs_world_destroy(w);
+}
+
+static double lcg_unit(uint64_t *s) { // bench/collide_scaling.c's generator, in [-1, 1]
+	*s = *s * 6364136223846793005ull + 1442695040888963407ull;
+	return (double)(*s >> 11) / (double)(1ull << 52) - 1.0;
+}
+
+// The broad phase changes no bit: 300 spheres sliding in a frictionless walled box (make bench's
+// scene, 30 frames, then 60 frames' hashes folded) give the checksum the all-pairs double loop
+// gave before the broad phase existed (hs_bench --profile-collide box,60,300 at commit a418600).
+static void test_broad_phase_same_bits(void **state) {
+	(void)state;
+	enum { BALLS = 300, SIDE = 18 };
+	hs_world_def def = hs_default_world_def();
+	def.dt = 1.0 / 60.0;
+	def.max_objects = BALLS;
+	hs_status st;
+	hs_world *w = hs_world_create(&def, &st);
+	hs_spring_def sd = hs_default_spring_def();
+	sd.friction_static = sd.friction_sliding = 0.0;
+	sd.walls.enabled = true;
+	sd.walls.x_min = sd.walls.y_min = 0.0;
+	sd.walls.x_max = sd.walls.y_max = SIDE * 0.15;
+	assert_int_equal(hs_world_enable_springs(w, &sd), HS_OK);
+	hs_shape *ball = hs_shape_sphere(0.05, &st);
+	hs_object_def od = hs_default_object_def();
+	od.shape = hs_world_add_shape(w, ball, &st);
+	hs_shape_destroy(ball);
+	uint64_t seed = 12345;
+	for (int k = 0; k < BALLS; ++k) {
+		double vx = lcg_unit(&seed), vy = lcg_unit(&seed);
+		od.position = hs_v3((k % SIDE + 0.5) * 0.15, (k / SIDE + 0.5) * 0.15, 0.05);
+		od.velocity = hs_v3(vx, vy, 0.0);
+		hs_world_add_object(w, &od, &st);
+		assert_int_equal(st, HS_OK);
+	}
+	for (int f = 0; f < 30; ++f)
+		assert_int_equal(hs_world_step(w), HS_OK);
+	uint64_t h = 14695981039346656037ull;
+	for (int f = 0; f < 60; ++f) {
+		assert_int_equal(hs_world_step(w), HS_OK);
+		h ^= hs_world_hash(w);
+		h *= 1099511628211ull;
+	}
+	assert_true(h == 0xe0143b315aafdc7cull);
+	hs_world_destroy(w);
+}
+
+int main(void) {
+	const struct CMUnitTest tests[] = {
+	    cmocka_unit_test(test_sphere_rotated_rod),
+	    cmocka_unit_test(test_box_box_separating_axes),
+	    cmocka_unit_test(test_pyramid_sphere_libccd),
+	    cmocka_unit_test(test_ball_passes_rotated_rod),
+	    cmocka_unit_test(test_broad_phase_same_bits),
+	};
+	return cmocka_run_group_tests(tests, NULL, NULL);
+}
