@@ -70,7 +70,7 @@ static hs_vec3 closest_on_first(hs_vec3 a, hs_vec3 b, hs_vec3 c, hs_vec3 d) {
 // A contact found in the body frame `f`: C = `point` on the surface, B = `finger` where the part
 // drives it (eq. 1-2), `normal` the face normal or the edge's pseudo-normal.
 static void push_contact(hs_world *world, int object, int hand, int part, bool edge, int feature, const frame *f,
-                         hs_vec3 point, hs_vec3 normal, hs_vec3 finger) {
+                         hs_vec3 point, hs_vec3 normal, hs_vec3 finger, double t) {
 	if (world->contact_count >= world->contact_capacity) {
 		world->counters.dropped_contacts++;
 		return;
@@ -84,6 +84,7 @@ static void push_contact(hs_world *world, int object, int hand, int part, bool e
 	c->point = to_world(f, point);
 	c->normal = hs_mat3_mul(f->rot, normal);
 	c->finger = to_world(f, finger);
+	c->t = t;
 }
 
 // Squared distance from c to the segment p0-p1.
@@ -161,7 +162,8 @@ static bool path_near(const hs_hand *hand, int i, int steps, hs_vec3 c, double r
 // The first piece of check point i's path (relative to the object: body frame) that crosses into
 // the part; false when none does. `inside`: the point ends inside (the last piece may end there).
 static bool path_enters(const hs_shape *shape, const hs_part *part, const hs_hand *hand, int i, int steps,
-                        const frame *body, hs_vec3 a, bool inside, hs_clip *hit, hs_vec3 *from, hs_vec3 *to) {
+                        const frame *body, hs_vec3 a, bool inside, hs_clip *hit, hs_vec3 *from, hs_vec3 *to,
+                        double *when) {
 	for (int k = 1; k <= steps; ++k) {
 		hs_vec3 b = k == steps ? to_body(body, hand->points[i]) : to_body(body, hand->path_points[k - 1][i]);
 		hs_clip c = hs_clip_segment(shape, part, a, b, 0.0);
@@ -169,6 +171,7 @@ static bool path_enters(const hs_shape *shape, const hs_part *part, const hs_han
 			*hit = c;
 			*from = a;
 			*to = b;
+			*when = (k - 1 + c.t_in) / steps;
 			return true;
 		}
 		a = b;
@@ -198,20 +201,22 @@ static void detect_points(hs_world *world, int object, int h, const hs_part *par
 		hs_clip c;
 		hs_vec3 from, to;
 		bool entered;
+		double when = 0.0;
 		if (grow > 0.0 || steps == 1) {
 			c = hs_clip_segment(shape, part, a, b, grow);
 			from = a;
 			to = b;
 			entered = c.face_in >= 0 && c.hit && (inside || c.t_in < c.t_out);
+			when = c.t_in;
 		} else {
-			entered = path_enters(shape, part, hand, i, steps, body, a, inside, &c, &from, &to);
+			entered = path_enters(shape, part, hand, i, steps, body, a, inside, &c, &from, &to, &when);
 		}
 		if (entered && !touched) { // reached the surface this frame
 			push_contact(world, object, h, i, false, c.face_in, body, hs_lerp(from, to, c.t_in),
-			             shape->faces[c.face_in].normal, b);
+			             shape->faces[c.face_in].normal, b, when);
 		} else if (inside && !touched && !inside_part(shape, part, a, grow)) { // from on the surface (the clip's t = 0)
 			int face = nearest_face(shape, part, a);
-			push_contact(world, object, h, i, false, face, body, a, shape->faces[face].normal, b);
+			push_contact(world, object, h, i, false, face, body, a, shape->faces[face].normal, b, 0.0);
 		} else if (inside && (!swept || touched || came_onto(world, object, part, hand->prev_points[i], grow))) {
 			// sunk in (or back in, within the margin), or the object came onto it; or within the grown
 			// part (the margin counts every part)
@@ -220,7 +225,7 @@ static void detect_points(hs_world *world, int object, int h, const hs_part *par
 			hs_vec3 point = hs_mul_add(a, f->offset - hs_dot(f->normal, a), f->normal);
 			hs_vec3 start = inside_part(shape, part, a, grow) ? a : point; // back in: from the surface
 			push_contact(world, object, h, i, false, face, body, point, f->normal,
-			             sunk_finger(point, hs_sub(b, start), f->normal));
+			             sunk_finger(point, hs_sub(b, start), f->normal), 0.0);
 		}
 	}
 }
@@ -247,7 +252,7 @@ static void line_across(hs_world *world, int object, int h, int j, const hs_part
 		normal = f->normal;
 	}
 	hs_vec3 finger = d ? sunk_finger(point, *d, normal) : hs_segment_closest(p0, p1, point);
-	push_contact(world, object, h, HS_HAND_POINTS + j, edge, feature, body, point, normal, finger);
+	push_contact(world, object, h, HS_HAND_POINTS + j, edge, feature, body, point, normal, finger, 0.0);
 }
 
 static bool across(hs_clip c) { return c.hit && c.face_in >= 0 && c.face_out >= 0; }
@@ -309,9 +314,9 @@ static bool sweep_beyond_a_face(const hs_shape *shape, const hs_part *part, cons
 // swept across it (from q0-q1 to n0-n1): an end of the line passing through a face, or an edge of
 // the part through the swept surface. A convex part meets that surface in one of these two ways
 // only. C where they met, B the line's point at the same place along it at the end of the frame
-// (p). False when it did not meet the part.
+// (p); the piece spans [t0, t0 + span] of the frame. False when it did not meet the part.
 static bool swept_line(hs_world *world, int object, int h, int j, const hs_part *part, const frame *body,
-                       const hs_vec3 q[2], const hs_vec3 n[2], const hs_vec3 p[2]) {
+                       const hs_vec3 q[2], const hs_vec3 n[2], const hs_vec3 p[2], double t0, double span) {
 	const hs_shape *shape = &world->shapes[world->bodies[object].shape];
 	if (sweep_beyond_a_face(shape, part, q, n))
 		return false;
@@ -342,7 +347,7 @@ static bool swept_line(hs_world *world, int object, int h, int j, const hs_part 
 	if (feature < 0)
 		return false;
 	push_contact(world, object, h, HS_HAND_POINTS + j, edge, feature, body, point,
-	             edge ? edge_normal(shape, feature) : shape->faces[feature].normal, finger);
+	             edge ? edge_normal(shape, feature) : shape->faces[feature].normal, finger, t0 + best * span);
 	return true;
 }
 
@@ -362,7 +367,7 @@ static void swept_path(hs_world *world, int object, int h, int j, const hs_part 
 			n[0] = to_body(body, hand->path_lines[k - 1][j][0]);
 			n[1] = to_body(body, hand->path_lines[k - 1][j][1]);
 		}
-		if (swept_line(world, object, h, j, part, body, q, n, p))
+		if (swept_line(world, object, h, j, part, body, q, n, p, (double)(k - 1) / steps, 1.0 / steps))
 			return;
 		q[0] = n[0];
 		q[1] = n[1];

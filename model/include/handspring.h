@@ -430,6 +430,9 @@ typedef struct hs_contact {
 	/// object since then (§3.2 rectification: the finger is drawn back to the surface, so how deep
 	/// it sank never moves the object). docs/model.md §3.
 	hs_vec3 finger;
+	/// When in the frame the part reached the surface (0..1 along its path through the frame, swept
+	/// detection; 0 for a part that touched already and for a check line found across the object).
+	double t;
 } hs_contact;
 
 /// Copies up to `max` contacts of the last step into `out`; returns how many there were.
