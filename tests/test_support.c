@@ -63,8 +63,10 @@ static void test_support_overhang_short_of_edge(void **state) {
 	hs_world_destroy(w);
 }
 
-// Support mode: G beyond the support's edge: it tips over the edge (rule (2)) and ends leaning on
-// the floor and the edge, lower than the top.
+// Support mode: G beyond the support's edge: it tips over the edge (rule (2)), its turn bounded by
+// the support's top face (eq. 7's first touch), slides off the edge and ends standing on its
+// 0.02 x 0.04 end beside the cube, flush with its side: G at half its length, 0.06 m, turned 90 deg,
+// four floor contacts, never inside the cube.
 static void test_support_overhang_past_edge_tips(void **state) {
 	(void)state;
 	hs_world *w = world_with(HS_STACKING_SUPPORT);
@@ -72,9 +74,10 @@ static void test_support_overhang_past_edge_tips(void **state) {
 	hs_object_id plank = add_box(w, hs_v3(0.12, 0.04, 0.02), hs_v3(0.68, 0, 0.15));
 	hs_object_state s = run(w, plank, 180);
 	assert_true(s.resting);
-	assert_true(s.position.z < 0.1);
-	assert_int_equal(s.floor_contacts, 2);
-	assert_true(hs_quat_angle(s.orientation) > 30 * HS_PI / 180);
+	assert_near(s.position.z, 0.06, 1e-12);
+	assert_int_equal(s.floor_contacts, 4);
+	assert_near(hs_quat_angle(s.orientation), 0.5 * HS_PI, 1e-9);
+	assert_true(s.position.x - 0.01 >= 0.65 - 1e-9); // its face against the cube's side, not in it
 	hs_world_destroy(w);
 }
 
@@ -171,6 +174,58 @@ static void test_drops_land_on_top_face(void **state) {
 					drop_onto_cube(modes[m], sizes[s], heights[h], dts[d]);
 }
 
+// Support mode, issue 10: a 4 cm cube let go turned `tilt` about y (a noisy release) from
+// `height` above a 10 cm cube's top lands on an edge and settles by §4.2's rules against the top
+// face: rule (2) turns it about that edge until the next face reaches the top (eq. 7's first touch
+// against the support, not only the floor), where it rests (Gm gone, G' inside). Invariants at
+// every frame end: never inside the lower cube; at the end: on a face (turned a multiple of 90 deg
+// about y), G at 0.1 + 0.02, over the top face, at rest, and the lower cube never moved.
+static void tilted_landing(double tilt, double height, double dt) {
+	hs_world_def def = hs_default_world_def();
+	def.stacking = HS_STACKING_SUPPORT;
+	def.dt = dt;
+	hs_world *w = hs_world_create(&def, NULL);
+	hs_shape *big = hs_shape_box(hs_v3(0.1, 0.1, 0.1), NULL), *cube = hs_shape_box(hs_v3(0.04, 0.04, 0.04), NULL);
+	hs_object_def od = hs_default_object_def();
+	od.shape = hs_world_add_shape(w, big, NULL);
+	od.position = hs_v3(0.3, 0, 0.05);
+	hs_object_id lower = hs_world_add_object(w, &od, NULL);
+	od.shape = hs_world_add_shape(w, cube, NULL);
+	od.position = hs_v3(0.31, 0.005, 0.1 + height + 0.03);
+	od.orientation = hs_quat_from_axis_angle(hs_v3(0, 1, 0), tilt);
+	hs_object_id upper = hs_world_add_object(w, &od, NULL);
+	hs_object_state a, b;
+	for (int i = 0; i < (int)(2.0 / dt); ++i) {
+		hs_world_step(w);
+		hs_world_object_state(w, lower, &a);
+		hs_world_object_state(w, upper, &b);
+		if (penetration(big, a, cube, b) > 1e-9)
+			fail_msg("tilt %g at dt %g: %.3g m deep at frame %d", tilt, dt, penetration(big, a, cube, b), i);
+	}
+	assert_true(b.resting);
+	assert_near(b.position.z, 0.12, def.floor_tolerance);
+	// on a face: off a multiple of 90 deg by at most the contact tolerance across the 4 cm face
+	double quarter = hs_quat_angle(b.orientation) / (0.5 * HS_PI);
+	double off = fabs(quarter - (double)(long)(quarter + 0.5)) * 0.5 * HS_PI;
+	if (off > 2.0 * def.floor_tolerance / 0.04)
+		fail_msg("tilt %g from %g at dt %g: rests %.3g rad off a face", tilt, height, dt, off);
+	assert_true(fabs(b.position.x - 0.3) < 0.05 && fabs(b.position.y) < 0.05);
+	assert_vec3_near(a.position, hs_v3(0.3, 0, 0.05), 0.0);
+	hs_shape_destroy(big);
+	hs_shape_destroy(cube);
+	hs_world_destroy(w);
+}
+
+static void test_support_tilted_landing_settles(void **state) {
+	(void)state;
+	const double tilts[3] = {0.02, 0.2, -0.5}, dts[3] = {1.0 / 12, 1.0 / 60, 1.0 / 120};
+	for (int t = 0; t < 3; ++t)
+		for (int d = 0; d < 3; ++d) {
+			tilted_landing(tilts[t], 0.002, dts[d]);
+			tilted_landing(tilts[t], 0.2, dts[d]);
+		}
+}
+
 int main(void) {
 	const struct CMUnitTest tests[] = {
 	    cmocka_unit_test(test_support_rests_on_top),
@@ -179,6 +234,7 @@ int main(void) {
 	    cmocka_unit_test(test_paper_mode_stops_at_interference),
 	    cmocka_unit_test(test_placed_inside_is_rectified),
 	    cmocka_unit_test(test_drops_land_on_top_face),
+	    cmocka_unit_test(test_support_tilted_landing_settles),
 	};
 	return cmocka_run_group_tests_name("support", tests, NULL, NULL);
 }
