@@ -174,14 +174,47 @@ void hs_support_step(hs_world *world, int object) {
 	body->grounded = 0; // the floor rules do not apply on a support; the next frame looks again
 }
 
+// j rests on `support` posed as `old`: they touch, the contact is above the support's G and is
+// j's lowest point (on top of it, not beside it).
+static bool rests_on(hs_world *world, int j, const hs_body *old) {
+	const hs_body *b = &world->bodies[j];
+	if (b->held || b->pos.z <= old->pos.z)
+		return false;
+	double height_sum = 0.0;
+	int n = support_points(world, b, old, 0, &height_sum);
+	if (n == 0)
+		return false;
+	double mean = height_sum / n, zmin = hs_motion_pose_vertices(world, b);
+	return mean > old->pos.z && zmin >= mean - HS_SUPPORT_PROBE;
+}
+
+// A hand moved the support (held, from prev / rot_prev to pos / rot): what rests on top of it is
+// carried by the same rigid motion, its contact kept (not rectified out of it a frame later).
+static void carry(hs_world *world, int j, const hs_body *support) {
+	hs_body *b = &world->bodies[j];
+	hs_quat q = hs_quat_normalize(hs_quat_mul(support->rot, hs_quat_conj(support->rot_prev)));
+	hs_vec3 v = hs_sub(b->pos, b->prev);
+	b->pos = hs_add(support->pos, hs_quat_rotate(q, hs_sub(b->pos, support->prev)));
+	b->rot = hs_quat_normalize(hs_quat_mul(q, b->rot));
+	b->prev = hs_sub(b->pos, v); // carried, not thrown: no inertia gained
+	hs_grid_update(world, j);
+}
+
 void hs_support_wake_neighbours(hs_world *world, int object) {
 	const hs_body *body = &world->bodies[object];
+	hs_body old = *body;
+	old.pos = body->prev;
+	old.rot = body->rot_prev;
 	// what rested on it where it was at the frame's start: its motion this frame is the margin
 	double tol = world->def.floor_tolerance + hs_length(hs_sub(body->pos, body->prev));
 	int n = hs_grid_query(world, body->pos, world->shapes[body->shape].radius + tol, world->near);
 	for (int k = 0; k < n; ++k) {
 		int j = world->near[k];
-		if (j != object && world->bodies[j].asleep && near_spheres(world, object, j, tol))
+		if (j == object || !near_spheres(world, object, j, tol))
+			continue;
+		if (body->held && rests_on(world, j, &old))
+			carry(world, j, body);
+		if (world->bodies[j].asleep)
 			hs_wake(world, j);
 	}
 }
