@@ -200,8 +200,21 @@ static void carry(hs_world *world, int j, const hs_body *support) {
 	hs_grid_update(world, j);
 }
 
+// A push does not sink the object into a support (§4.2 rectification, as on the floor); the lift
+// is not motion: a push that ends does not launch it by it (its release keeps the frame's motion).
+static void rectify_pushed(hs_world *world, int object) {
+	hs_body *body = &world->bodies[object];
+	hs_vec3 before = body->pos;
+	if (!hs_stack_rectify(world, object))
+		return;
+	body->prev = hs_add(body->prev, hs_sub(body->pos, before));
+	hs_grid_update(world, object);
+}
+
 void hs_support_wake_neighbours(hs_world *world, int object) {
 	const hs_body *body = &world->bodies[object];
+	if (body->held && body->contact != HS_CONTACT_GRASP)
+		rectify_pushed(world, object);
 	hs_body old = *body;
 	old.pos = body->prev;
 	old.rot = body->rot_prev;

@@ -305,6 +305,30 @@ static void test_support_skip_work_same_bits(void **state) {
 	assert_int_equal(settle_hash(true), settle_hash(false));
 }
 
+// Support mode: an object a hand pushes (not grasps) into a support is rectified onto its top face
+// in the hand pass, as a push on the floor (§4.2), and the lift is not motion: pushed 3 mm down
+// and 2 mm across a cube's top, it ends on the top face (G at 0.12) with the push's own motion.
+static void test_support_push_does_not_sink(void **state) {
+	(void)state;
+	hs_world *w = world_with(HS_STACKING_SUPPORT);
+	add_box(w, hs_v3(0.1, 0.1, 0.1), hs_v3(0.3, 0, 0.05));
+	hs_object_id id = add_box(w, hs_v3(0.04, 0.04, 0.04), hs_v3(0.3, 0, 0.12));
+	run(w, id, 2);
+	int i = (int)id.index1 - 1;
+	hs_body *b = &w->bodies[i];
+	b->prev = b->pos;
+	b->rot_prev = b->rot;
+	b->pos = hs_add(b->pos, hs_v3(0.002, 0, -0.003));
+	b->held = 1;
+	b->contact = HS_CONTACT_PUSH_ONE;
+	hs_wake(w, i);
+	hs_grid_update(w, i);
+	hs_support_wake_neighbours(w, i);
+	assert_near(b->pos.z, 0.12, 1e-12);
+	assert_vec3_near(hs_sub(b->pos, b->prev), hs_v3(0.002, 0, -0.003), 1e-15);
+	hs_world_destroy(w);
+}
+
 int main(void) {
 	const struct CMUnitTest tests[] = {
 	    cmocka_unit_test(test_support_rests_on_top),
@@ -316,6 +340,7 @@ int main(void) {
 	    cmocka_unit_test(test_support_tilted_landing_settles),
 	    cmocka_unit_test(test_support_carried_by_lifted_support),
 	    cmocka_unit_test(test_support_skip_work_same_bits),
+	    cmocka_unit_test(test_support_push_does_not_sink),
 	};
 	return cmocka_run_group_tests_name("support", tests, NULL, NULL);
 }
