@@ -68,26 +68,30 @@ static hs_vec2 project_g(hs_vec3 g, hs_vec3 gm, double height) {
 	return (hs_vec2){g.x, g.y};
 }
 
-// Smallest angle in (0, limit] at which a vertex off the floor reaches z = 0 when the posed
-// vertices turn about the unit `axis` through `c`; `limit` when none does.
-static double first_touch(const hs_world *world, const hs_body *body, hs_vec3 c, hs_vec3 axis,
-                          double limit) {
+// Smallest angle in (0, limit] at which a vertex above the contact plane reaches it when the
+// posed vertices turn about the unit `axis` through `c`; `limit` when none does. The plane is the
+// floor z = 0, or on supports (`sup`) the face they rest on (eq. 7's first touch against the
+// support; a vertex only lands where it is over a support, not past its edge).
+static double first_touch(hs_world *world, const hs_body *body, hs_vec3 c, hs_vec3 axis,
+                          double limit, const hs_settle_supports *sup) {
 	const hs_shape *shape = &world->shapes[body->shape];
+	hs_vec3 n = sup ? sup->normal : hs_v3(0, 0, 1);
+	double off = sup ? sup->offset : 0.0;
 	double best = limit;
 	for (int i = 0; i < shape->vertex_count; ++i) {
 		hs_vec3 p = world->scratch_world[i];
-		if (p.z <= world->def.floor_tolerance)
+		if (hs_dot(n, p) <= off + world->def.floor_tolerance)
 			continue; // pivot vertices stay, other contact vertices lift (rule (3))
-		// z(θ) = h0 + A cos θ + B sin θ = h0 + M cos(θ - φ)
+		// height over the plane h(θ) = h0 + A cos θ + B sin θ = h0 + M cos(θ - φ)
 		hs_vec3 r = hs_sub(p, c);
 		hs_vec3 r_par = hs_scale(axis, hs_dot(r, axis));
 		hs_vec3 r_perp = hs_sub(r, r_par);
-		double h0 = c.z + r_par.z;
-		double a = r_perp.z, b = hs_cross(axis, r_perp).z;
+		double h0 = hs_dot(n, c) + hs_dot(n, r_par);
+		double a = hs_dot(n, r_perp), b = hs_dot(n, hs_cross(axis, r_perp));
 		double m = sqrt(a * a + b * b);
-		if (m <= 0.0 || -h0 / m < -1.0 || -h0 / m > 1.0)
-			continue; // its circle never reaches the floor
-		double phi = hs_atan2(b, a), alpha = hs_acos(-h0 / m);
+		if (m <= 0.0 || (off - h0) / m < -1.0 || (off - h0) / m > 1.0)
+			continue; // its circle never reaches the plane
+		double phi = hs_atan2(b, a), alpha = hs_acos((off - h0) / m);
 		double roots[2] = {phi - alpha, phi + alpha};
 		for (int k = 0; k < 2; ++k) {
 			double t = roots[k];
@@ -95,6 +99,9 @@ static double first_touch(const hs_world *world, const hs_body *body, hs_vec3 c,
 				t += 2.0 * HS_PI;
 			while (t > 2.0 * HS_PI)
 				t -= 2.0 * HS_PI;
+			if (t < best && sup &&
+			    !sup->over(world, sup, hs_add(c, hs_quat_rotate(hs_quat_from_axis_angle(axis, t), r))))
+				continue; // it passes beyond the support's edge
 			best = t < best ? t : best;
 		}
 	}
@@ -103,7 +110,7 @@ static double first_touch(const hs_world *world, const hs_body *body, hs_vec3 c,
 
 // Rules (1)-(3) of §4.2 for an unstable object: pick the contact vertex or edge and turn about it.
 static void tip(hs_world *world, hs_body *body, const hs_vec2 *hull, int hull_count, double height,
-                hs_vec2 g_proj, hs_vec3 gm) {
+                hs_vec2 g_proj, hs_vec3 gm, const hs_settle_supports *sup) {
 	hs_vec3 g = body->pos;
 	hs_vec3 c, line = hs_v3(0, 0, 0);
 	bool about_line = false;
@@ -142,7 +149,7 @@ static void tip(hs_world *world, hs_body *body, const hs_vec2 *hull, int hull_co
 	if (about_line)
 		axis = hs_dot(line, axis) >= 0.0 ? line : hs_neg(line);
 	double theta = hs_atan(r_len / cg_len); // eq. 7
-	double touch = first_touch(world, body, c, axis, theta);
+	double touch = first_touch(world, body, c, axis, theta, sup);
 	bool landed = touch < theta;
 	if (landed)
 		theta = touch;
@@ -155,7 +162,8 @@ static void tip(hs_world *world, hs_body *body, const hs_vec2 *hull, int hull_co
 	world->counters.object_steps++;
 }
 
-bool hs_motion_settle(hs_world *world, hs_body *body, int count, double height, hs_vec3 gm, bool may_tip) {
+bool hs_motion_settle(hs_world *world, hs_body *body, int count, double height, hs_vec3 gm, bool may_tip,
+                      const hs_settle_supports *sup) {
 	int hull_count = hs_hull_build(world->scratch_points, count, world->scratch_hull);
 	hs_vec2 g_proj = project_g(body->pos, gm, height);
 	if (hs_hull_contains(world->scratch_hull, hull_count, g_proj, HS_RECTIFY_SLOP)) {
@@ -164,14 +172,14 @@ bool hs_motion_settle(hs_world *world, hs_body *body, int count, double height, 
 	}
 	body->asleep = 0;
 	if (may_tip)
-		tip(world, body, world->scratch_hull, hull_count, height, g_proj, gm);
+		tip(world, body, world->scratch_hull, hull_count, height, g_proj, gm, sup);
 	return false;
 }
 
 // Stability with the hull of the floor contacts and G' (eq. 4-5, Fig. 5); tip when unstable.
 static void settle_or_tip(hs_world *world, hs_body *body, hs_vec3 gm, bool may_tip) {
 	body->floor_contacts = hs_motion_floor_points(world, body);
-	if (!hs_motion_settle(world, body, body->floor_contacts, 0.0, gm, may_tip) && may_tip)
+	if (!hs_motion_settle(world, body, body->floor_contacts, 0.0, gm, may_tip, NULL) && may_tip)
 		body->floor_contacts = hs_motion_floor_points(world, body);
 }
 
@@ -216,7 +224,15 @@ static void on_floor(hs_world *world, hs_body *body) {
 	settle_or_tip(world, body, gm, true);
 }
 
+// Support mode: an object asleep on a support stays as it is, as the awake list's skip leaves it
+// (a world with skip_work off gives the same bits, broadphase.c); a moved support wakes it.
+static bool asleep_on_support(const hs_world *world, const hs_body *body) {
+	return world->def.stacking == HS_STACKING_SUPPORT && !body->grounded && body->asleep;
+}
+
 void hs_motion_step(hs_world *world, hs_body *body) {
+	if (asleep_on_support(world, body))
+		return;
 	if (body->grounded)
 		on_floor(world, body);
 	else

@@ -51,6 +51,95 @@ static int support_points(hs_world *world, const hs_body *a, const hs_body *b, i
 	return clip_edges(world, b, a, n, height_sum);
 }
 
+// j can hold `object` up: near it, not itself, its G not above the object's.
+static bool is_support(const hs_world *world, int object, int j, double tol) {
+	return j != object && near_spheres(world, object, j, tol) && world->bodies[j].pos.z <= world->bodies[object].pos.z;
+}
+
+// Contact points (scratch_points) of `object` on the supports among world->near[0 .. near_count).
+static int contacts(hs_world *world, int object, int near_count, double *height_sum) {
+	double tol = world->def.floor_tolerance;
+	int n = 0;
+	for (int k = 0; k < near_count; ++k)
+		if (is_support(world, object, world->near[k], tol))
+			n = support_points(world, &world->bodies[object], &world->bodies[world->near[k]], n, height_sum);
+	return n;
+}
+
+// Depth under a support's face at which a point counts as over it: a tilted support's face lies
+// off the contact plane by its tilt times the object's size (a noisy hand's 0.15 deg: 0.1 mm).
+#define HS_SUPPORT_PROBE 1e-3
+
+static bool inside_part(const hs_shape *shape, const hs_part *part, hs_vec3 q) {
+	for (int f = part->first_face; f < part->first_face + part->face_count; ++f)
+		if (hs_dot(shape->faces[f].normal, q) >= shape->faces[f].offset)
+			return false;
+	return true;
+}
+
+// p lies on the top of one of the supports (a point just under it is inside one).
+static bool over_support(const hs_world *world, const hs_settle_supports *sup, hs_vec3 p) {
+	hs_vec3 below = hs_v3(p.x, p.y, p.z - HS_SUPPORT_PROBE);
+	for (int k = 0; k < sup->near_count; ++k) {
+		int j = world->near[k];
+		if (!is_support(world, sup->object, j, world->def.floor_tolerance))
+			continue;
+		const hs_body *b = &world->bodies[j];
+		const hs_shape *sb = &world->shapes[b->shape];
+		for (int part = 0; part < sb->part_count; ++part)
+			if (inside_part(sb, &sb->parts[part], to_local(b, below)))
+				return true;
+	}
+	return false;
+}
+
+static hs_vec3 centre(const hs_vec2 *points, int n, double z) {
+	double x = 0.0, y = 0.0;
+	for (int i = 0; i < n; ++i) {
+		x += points[i].x;
+		y += points[i].y;
+	}
+	return hs_v3(x / n, y / n, z);
+}
+
+// The upward face (within 60 deg of +z, as stacking.c's vertical lift) of a support nearest the
+// contacts' centre `p`: the plane a tipping turn lands on. Horizontal through p when none is.
+static void support_plane(const hs_world *world, hs_settle_supports *sup, hs_vec3 p) {
+	double best = INFINITY;
+	sup->normal = hs_v3(0, 0, 1);
+	sup->offset = p.z;
+	for (int k = 0; k < sup->near_count; ++k) {
+		int j = world->near[k];
+		if (!is_support(world, sup->object, j, world->def.floor_tolerance))
+			continue;
+		const hs_body *b = &world->bodies[j];
+		const hs_shape *sb = &world->shapes[b->shape];
+		for (int f = 0; f < sb->face_count; ++f) {
+			hs_vec3 n = hs_quat_rotate(b->rot, sb->faces[f].normal);
+			double off = sb->faces[f].offset + hs_dot(n, b->pos);
+			double d = fabs(hs_dot(n, p) - off);
+			if (n.z > 0.5 && d < best) {
+				best = d;
+				sup->normal = n;
+				sup->offset = off;
+			}
+		}
+	}
+}
+
+// Vertices of the body on the floor, added to the support contacts (resting on both at once).
+static int floor_points(hs_world *world, const hs_body *body, int n, double *height_sum) {
+	const hs_shape *shape = &world->shapes[body->shape];
+	double tol = world->def.floor_tolerance;
+	int floor_n = 0;
+	if (body->pos.z - shape->radius > tol)
+		return 0;
+	for (int i = 0; i < shape->vertex_count; ++i)
+		if (world->scratch_world[i].z <= tol)
+			floor_n = add_point(world, n + floor_n, world->scratch_world[i], height_sum) - n;
+	return floor_n;
+}
+
 void hs_support_step(hs_world *world, int object) {
 	hs_body *body = &world->bodies[object];
 	double tol = world->def.floor_tolerance;
@@ -59,12 +148,9 @@ void hs_support_step(hs_world *world, int object) {
 	int near_count = hs_grid_query(world, body->pos, world->shapes[body->shape].radius + tol, world->near);
 	for (int k = 0; k < near_count; ++k) {
 		int j = world->near[k];
-		if (j == object || !near_spheres(world, object, j, tol))
-			continue;
-		const hs_body *other = &world->bodies[j];
-		if (other->pos.z > body->pos.z)
+		if (!is_support(world, object, j, tol))
 			continue; // a support is under the body's G
-		double t = hs_stack_lift_out(world, body, other);
+		double t = hs_stack_lift_out(world, body, &world->bodies[j]);
 		lift = t > lift ? t : lift;
 		touching = true;
 	}
@@ -73,38 +159,75 @@ void hs_support_step(hs_world *world, int object) {
 	hs_vec3 gm = hs_sub(body->pos, body->prev);
 	body->pos.z += lift; // §4.2 rectification, against a support instead of the floor
 	double height_sum = 0.0;
-	int n = 0;
-	for (int k = 0; k < near_count; ++k) {
-		int j = world->near[k];
-		if (j != object && near_spheres(world, object, j, tol) && world->bodies[j].pos.z <= body->pos.z)
-			n = support_points(world, body, &world->bodies[j], n, &height_sum);
-	}
+	int n = contacts(world, object, near_count, &height_sum);
 	if (n == 0)
 		return; // near a neighbour but not resting on it
 	body->spin = hs_quat_identity(); // §4.1: no inertia kept after interfering
 	hs_motion_pose_vertices(world, body);
-	int floor_n = 0;
-	if (body->pos.z - world->shapes[body->shape].radius <= tol) { // resting on the floor and a support at once
-		const hs_shape *shape = &world->shapes[body->shape];
-		for (int i = 0; i < shape->vertex_count; ++i)
-			if (world->scratch_world[i].z <= tol)
-				floor_n = add_point(world, n + floor_n, world->scratch_world[i], &height_sum) - n;
-	}
-	n += floor_n;
-	// stability on the support faces, tipping about their hull's edge when unstable
-	hs_motion_pose_vertices(world, body); // first_touch in tipping reads the posed vertices
-	hs_motion_settle(world, body, n, height_sum / n, gm, true);
+	int floor_n = floor_points(world, body, n, &height_sum);
+	// stability on the support faces, tipping about their hull's edge when unstable; a turn stops
+	// where a vertex reaches a support's face (eq. 7), or the floor when it touches the floor too
+	hs_settle_supports sup = {object, near_count, hs_v3(0, 0, 1), 0.0, over_support};
+	if (!floor_n)
+		support_plane(world, &sup, centre(world->scratch_points, n, height_sum / n));
+	hs_motion_settle(world, body, n + floor_n, height_sum / (n + floor_n), gm, true, floor_n ? NULL : &sup);
 	body->grounded = 0; // the floor rules do not apply on a support; the next frame looks again
+}
+
+// j rests on `support` posed as `old`: they touch, the contact is above the support's G and is
+// j's lowest point (on top of it, not beside it).
+static bool rests_on(hs_world *world, int j, const hs_body *old) {
+	const hs_body *b = &world->bodies[j];
+	if (b->held || b->pos.z <= old->pos.z)
+		return false;
+	double height_sum = 0.0;
+	int n = support_points(world, b, old, 0, &height_sum);
+	if (n == 0)
+		return false;
+	double mean = height_sum / n, zmin = hs_motion_pose_vertices(world, b);
+	return mean > old->pos.z && zmin >= mean - HS_SUPPORT_PROBE;
+}
+
+// A hand moved the support (held, from prev / rot_prev to pos / rot): what rests on top of it is
+// carried by the same rigid motion, its contact kept (not rectified out of it a frame later).
+static void carry(hs_world *world, int j, const hs_body *support) {
+	hs_body *b = &world->bodies[j];
+	hs_quat q = hs_quat_normalize(hs_quat_mul(support->rot, hs_quat_conj(support->rot_prev)));
+	hs_vec3 v = hs_sub(b->pos, b->prev);
+	b->pos = hs_add(support->pos, hs_quat_rotate(q, hs_sub(b->pos, support->prev)));
+	b->rot = hs_quat_normalize(hs_quat_mul(q, b->rot));
+	b->prev = hs_sub(b->pos, v); // carried, not thrown: no inertia gained
+	hs_grid_update(world, j);
+}
+
+// A push does not sink the object into a support (§4.2 rectification, as on the floor); the lift
+// is not motion: a push that ends does not launch it by it (its release keeps the frame's motion).
+static void rectify_pushed(hs_world *world, int object) {
+	hs_body *body = &world->bodies[object];
+	hs_vec3 before = body->pos;
+	if (!hs_stack_rectify(world, object))
+		return;
+	body->prev = hs_add(body->prev, hs_sub(body->pos, before));
+	hs_grid_update(world, object);
 }
 
 void hs_support_wake_neighbours(hs_world *world, int object) {
 	const hs_body *body = &world->bodies[object];
+	if (body->held && body->contact != HS_CONTACT_GRASP)
+		rectify_pushed(world, object);
+	hs_body old = *body;
+	old.pos = body->prev;
+	old.rot = body->rot_prev;
 	// what rested on it where it was at the frame's start: its motion this frame is the margin
 	double tol = world->def.floor_tolerance + hs_length(hs_sub(body->pos, body->prev));
 	int n = hs_grid_query(world, body->pos, world->shapes[body->shape].radius + tol, world->near);
 	for (int k = 0; k < n; ++k) {
 		int j = world->near[k];
-		if (j != object && world->bodies[j].asleep && near_spheres(world, object, j, tol))
+		if (j == object || !near_spheres(world, object, j, tol))
+			continue;
+		if (body->held && rests_on(world, j, &old))
+			carry(world, j, body);
+		if (world->bodies[j].asleep)
 			hs_wake(world, j);
 	}
 }
