@@ -78,7 +78,7 @@ void bench_profile_collide(const char *spec);
 /// The seed scene of item 1 timed alone (the peers' comparison when item 1 did not run).
 bench_stats bench_seed_measure(const bench_opts *opts, bool skip);
 /// N frames of the seed scene alone (for a profiler): 10 objects (or `objects`), 2 grasped.
-void bench_profile_seed(long frames, int objects, bool skip);
+void bench_profile_seed(long frames, int objects, bool skip, bool paper);
 
 // ---------------------------------------------------------------------------------------------
 // The seed scene and the projectile, as every engine builds them (the peers use these numbers)

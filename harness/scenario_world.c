@@ -224,12 +224,20 @@ bool hs_read_wrist_deg(hs_scenario_parser *p, const yaml_node_t *node, double *r
 
 bool hs_read_model(hs_scenario_parser *p, const yaml_node_t *node, hs_world_def *def) {
 	static const char *const names[] = {"grasp_threshold_deg", "stacking",     "floor_tolerance",
-	                                    "skip_work",           "spring",       "input_noise", "grasp_rule"};
+	                                    "skip_work",           "spring",       "input_noise", "grasp_rule",
+	                                    "contacts"};
 	if (node->type != YAML_MAPPING_NODE)
 		return hs_yaml_fail(&p->y, node, "'model' must be a mapping, got %s", hs_yaml_got(node).text);
 	hs_fields f;
-	if (!hs_yaml_mapping(&p->y, node, names, 7, "model", &f))
+	if (!hs_yaml_mapping(&p->y, node, names, 8, "model", &f))
 		return false;
+	if (f.value[7]) { // swept detection and rectification (default) or the paper's letter
+		if (hs_yaml_scalar_is(f.value[7], "rectified") || hs_yaml_scalar_is(f.value[7], "paper"))
+			def->paper_contacts = hs_yaml_scalar_is(f.value[7], "paper");
+		else
+			return hs_yaml_fail(&p->y, f.value[7], "'contacts' must be rectified or paper, got %s",
+			                    hs_yaml_got(f.value[7]).text);
+	}
 	if (f.value[6]) { // a grasp's two contacts on different fingers (default) or any two (the paper)
 		if (hs_yaml_scalar_is(f.value[6], "fingers") || hs_yaml_scalar_is(f.value[6], "any"))
 			def->grasp_any_contacts = hs_yaml_scalar_is(f.value[6], "any");

@@ -179,13 +179,31 @@ static bool path_enters(const hs_shape *shape, const hs_part *part, const hs_han
 	return false;
 }
 
+// [H]'s letter (paper_contacts): a check point inside the part where it ends the frame touches the
+// face it entered through along its motion, or the nearest face when it was inside already, and
+// drives C to where it is.
+static void paper_point(hs_world *world, int object, int h, int i, const hs_part *part, const frame *body,
+                        hs_vec3 a, hs_vec3 b, double grow) {
+	const hs_shape *shape = &world->shapes[world->bodies[object].shape];
+	hs_clip c = hs_clip_segment(shape, part, a, b, grow);
+	if (c.face_in >= 0) {
+		push_contact(world, object, h, i, false, c.face_in, body, hs_lerp(a, b, c.t_in), shape->faces[c.face_in].normal,
+		             b, c.t_in);
+		return;
+	}
+	int face = nearest_face(shape, part, b);
+	const hs_face *f = &shape->faces[face];
+	push_contact(world, object, h, i, false, face, body, hs_mul_add(b, f->offset - hs_dot(f->normal, b), f->normal),
+	             f->normal, b, 0.0);
+}
+
 static void detect_points(hs_world *world, int object, int h, const hs_part *part, const frame *body,
                           const frame *before, bool moved, bool cull, double grow) {
 	const hs_shape *shape = &world->shapes[world->bodies[object].shape];
 	const hs_hand *hand = &world->hands[h];
 	hs_vec3 center = to_world(body, part->center); // cull before the transform
 	double r_sq = (part->radius + grow) * (part->radius + grow);
-	bool swept = grow == 0.0;
+	bool paper = world->def.paper_contacts, swept = grow == 0.0 && !paper;
 	int steps = moved ? 1 : hand->path_steps; // a held object moves with the hand: chords suffice
 	for (int i = 0; i < HS_HAND_POINTS; ++i) {
 		if (cull && hs_length_sq(hs_sub(hand->points[i], center)) > r_sq &&
@@ -193,11 +211,22 @@ static void detect_points(hs_world *world, int object, int h, const hs_part *par
 			continue;
 		hs_vec3 b = to_body(body, hand->points[i]), a = to_body(before, hand->prev_points[i]);
 		bool inside = inside_part(shape, part, b, grow);
-		bool touched = swept && (hand->touch_points >> i & 1u);
-		if (!inside && touched && inside_part(shape, part, b, world->def.grasp_release_mm * 1e-3))
-			world->hands[h].near_points |= 1u << i; // off the surface, within the margin: still touching
-		if (!inside && !swept)
+		if (paper) {
+			if (inside)
+				paper_point(world, object, h, i, part, body, a, b, grow);
 			continue;
+		}
+		bool touched = swept && (hand->touch_points >> i & 1u);
+		double margin = world->def.grasp_release_mm * 1e-3;
+		if (swept && (hand->embed_points >> i & 1u)) { // started inside: touches nothing until clear
+			if (inside_part(shape, part, b, 2.0 * margin))
+				world->hands[h].embed_points_next |= 1u << i;
+			continue;
+		}
+		if (!inside && touched && inside_part(shape, part, b, margin))
+			world->hands[h].near_points |= 1u << i; // off the surface, within the margin: still touching
+		if (!inside && (!swept || moved))
+			continue; // a held object moves with the hand: nothing passes through it unseen
 		hs_clip c;
 		hs_vec3 from, to;
 		bool entered;
@@ -217,7 +246,7 @@ static void detect_points(hs_world *world, int object, int h, const hs_part *par
 		} else if (inside && !touched && !inside_part(shape, part, a, grow)) { // from on the surface (the clip's t = 0)
 			int face = nearest_face(shape, part, a);
 			push_contact(world, object, h, i, false, face, body, a, shape->faces[face].normal, b, 0.0);
-		} else if (inside && (!swept || touched || came_onto(world, object, part, hand->prev_points[i], grow))) {
+		} else if (inside && (grow > 0.0 || touched || came_onto(world, object, part, hand->prev_points[i], grow))) {
 			// sunk in (or back in, within the margin), or the object came onto it; or within the grown
 			// part (the margin counts every part)
 			int face = nearest_face(shape, part, a);
@@ -226,6 +255,8 @@ static void detect_points(hs_world *world, int object, int h, const hs_part *par
 			hs_vec3 start = inside_part(shape, part, a, grow) ? a : point; // back in: from the surface
 			push_contact(world, object, h, i, false, face, body, point, f->normal,
 			             sunk_finger(point, hs_sub(b, start), f->normal), 0.0);
+		} else if (inside && swept) { // in it since before it touched anything: started inside
+			world->hands[h].embed_points_next |= 1u << i;
 		}
 	}
 }
@@ -398,7 +429,7 @@ static void detect_lines(hs_world *world, int object, int h, const hs_part *part
 	const hs_hand *hand = &world->hands[h];
 	hs_vec3 center = to_world(body, part->center);
 	double r = part->radius + grow;
-	bool swept = grow == 0.0;
+	bool paper = world->def.paper_contacts, swept = grow == 0.0 && !paper;
 	int steps = moved ? 1 : hand->path_steps; // a held object moves with the hand: chords suffice
 	for (int j = 0; j < HS_HAND_LINES; ++j) {
 		const hs_vec3 *l = hand->lines[j], *m = hand->prev_lines[j];
@@ -406,22 +437,33 @@ static void detect_lines(hs_world *world, int object, int h, const hs_part *part
 		    (!swept || moved || !line_path_near(hand, j, steps, center, r)))
 			continue;
 		hs_vec3 p[2] = {to_body(body, l[0]), to_body(body, l[1])};
+		if (swept && (hand->embed_lines >> j & 1u)) { // started inside: touches nothing until clear
+			if (hs_clip_segment(shape, part, p[0], p[1], 2.0 * world->def.grasp_release_mm * 1e-3).hit)
+				world->hands[h].embed_lines_next |= (uint64_t)1 << j;
+			continue;
+		}
 		hs_clip c = hs_clip_segment(shape, part, p[0], p[1], grow);
 		if (!c.hit) {
-			if (swept)
+			if (swept && !moved) // a held object moves with the hand: nothing passes through it unseen
 				swept_path(world, object, h, j, part, body, before, steps, p);
 			continue;
 		}
 		if (!across(c))
 			continue; // an end is inside
+		if (paper) { // [H]'s letter: across where it ends the frame
+			line_across(world, object, h, j, part, body, p[0], p[1], c, NULL);
+			continue;
+		}
 		hs_vec3 q[2] = {to_body(before, m[0]), to_body(before, m[1])};
 		if (!hs_clip_segment(shape, part, q[0], q[1], grow).hit) { // reached it this frame
 			line_across(world, object, h, j, part, body, p[0], p[1], c, NULL);
-		} else if (!swept || (hand->touch_lines >> j & 1u) || line_came_onto(world, object, part, m, grow)) {
+		} else if (grow > 0.0 || (hand->touch_lines >> j & 1u) || line_came_onto(world, object, part, m, grow)) {
 			// in it a frame ago too: sunk in (touching), or the object came onto it
 			hs_vec3 d = hs_scale(hs_add(hs_sub(p[0], q[0]), hs_sub(p[1], q[1])), 0.5);
 			line_across(world, object, h, j, part, body, p[0], p[1], c, &d);
-		} // else in it since before it touched anything: touches nothing
+		} else if (swept) { // in it since before it touched anything: started inside, touches nothing
+			world->hands[h].embed_lines_next |= (uint64_t)1 << j;
+		}
 	}
 }
 

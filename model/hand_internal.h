@@ -17,7 +17,7 @@
 // sensors now and at the end of the last step, `placed`, the touch masks. CACHES, rebuilt from the state after a
 // load (hs_hand_refresh): the check points and lines now and one frame ago (the kinematics of
 // those two readings, §3.1: bit for bit what hs_world_set_hand computed), the shape in the wrist
-// frame and the bounding spheres. 53 words of state instead of the 866 of the points and lines.
+// frame and the bounding spheres. 55 words of state instead of the 866 of the points and lines.
 typedef struct hs_hand {
 	hs_hand_def def;
 	hs_vec3 wrist_pos;
@@ -32,9 +32,15 @@ typedef struct hs_hand {
 	// touched before (rectification, contact.c); else it started inside and touches nothing
 	uint32_t touch_points;
 	uint64_t touch_lines;
+	// which check points and lines started inside an object (or were in one before they touched
+	// it) and have not come out of it by grasp_release_mm since: they touch nothing (contact.c)
+	uint32_t embed_points;
+	uint64_t embed_lines;
 	// scratch of a step's hand pass: check points that touched and have come off the surface by
-	// less than grasp_release_mm (the contact's hysteresis, contact.c): they stay touching
-	uint32_t near_points;
+	// less than grasp_release_mm (the contact's hysteresis, contact.c): they stay touching; and the
+	// embedded parts of the next frame
+	uint32_t near_points, embed_points_next;
+	uint64_t embed_lines_next;
 	// cache: points and lines of (sensors, wrist) and of (prev_sensors, prev_wrist); zero until placed
 	hs_vec3 points[HS_HAND_POINTS], prev_points[HS_HAND_POINTS];
 	hs_vec3 lines[HS_HAND_LINES][2], prev_lines[HS_HAND_LINES][2];

@@ -83,14 +83,14 @@ static void place_between(hs_hand *hand, int k, int steps) {
 	              hand->path_lines[k - 1]);
 }
 
-void hs_hand_sweep(hs_hand *hand) {
+void hs_hand_sweep(hs_hand *hand, bool chords_only) {
 	hand->path_steps = 1;
 	if (!hand->placed || hand->radius < 0.0) {
 		hand->sweep_center = hand->center;
 		hand->sweep_radius = hand->radius;
 		return;
 	}
-	double turn = chain_turn_deg(hand) + wrist_turn_deg(hand);
+	double turn = chords_only ? 0.0 : chain_turn_deg(hand) + wrist_turn_deg(hand);
 	if (turn > HS_HAND_PATH_DEG)
 		hand->path_steps = turn >= HS_HAND_PATH_DEG * HS_HAND_PATH_MAX ? HS_HAND_PATH_MAX
 		                                                                  : (int)ceil(turn / HS_HAND_PATH_DEG);

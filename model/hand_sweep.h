@@ -9,6 +9,7 @@
 // parts move along straight chords; > 1: the fingers or the wrist turn by more than
 // HS_HAND_PATH_DEG in the frame, and the path runs through the kinematics of S - 1 readings
 // interpolated between them), and the bounding sphere of every part over the whole path.
-void hs_hand_sweep(hs_hand *hand);
+// `chords_only` (the paper's letter, hs_world_def.paper_contacts): S = 1 always.
+void hs_hand_sweep(hs_hand *hand, bool chords_only);
 
 #endif

@@ -187,6 +187,8 @@ static void note_touching(hs_world *world) {
 	for (int h = 0; h < world->hand_count; ++h) {
 		world->hands[h].touch_points = world->hands[h].near_points;
 		world->hands[h].touch_lines = 0;
+		world->hands[h].embed_points = world->hands[h].embed_points_next;
+		world->hands[h].embed_lines = world->hands[h].embed_lines_next;
 	}
 	for (int k = 0; k < world->contact_count; ++k) {
 		const hs_contact *c = &world->contacts[k];
@@ -201,8 +203,9 @@ static void note_touching(hs_world *world) {
 void hs_manipulate(hs_world *world) {
 	world->contact_count = 0;
 	for (int h = 0; h < world->hand_count; ++h) { // the parts' paths through the frame (swept detection)
-		hs_hand_sweep(&world->hands[h]);
-		world->hands[h].near_points = 0;
+		hs_hand_sweep(&world->hands[h], world->def.paper_contacts);
+		world->hands[h].near_points = world->hands[h].embed_points_next = 0;
+		world->hands[h].embed_lines_next = 0;
 	}
 	collect_candidates(world);
 	// candidate_count may grow in the loop: carry_along adds objects it moved within reach

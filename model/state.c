@@ -65,6 +65,7 @@ static uint64_t definition_checksum(const hs_world *w) {
 	h = hs_state_mix(h, (uint64_t)d->stacking);
 	h = hs_state_mix_f64(h, d->grasp_threshold_deg);
 	h = hs_state_mix(h, d->grasp_any_contacts ? 1u : 0u);
+	h = hs_state_mix(h, d->paper_contacts ? 1u : 0u);
 	h = hs_state_mix_f64(h, d->grasp_release_mm);
 	h = hs_state_mix_f64(h, d->grasp_open_mm);
 	for (int i = 0; i < w->shape_count; ++i)
@@ -124,8 +125,8 @@ static void body_io(hs_state_io *io, const hs_world *w, hs_body *b) {
 	hs_state_int_range(io, &b->released_by, 0, w->hand_count);
 }
 
-// One hand: 53 words, the two readings its check points now and a frame ago come from (the points
-// and lines are rebuilt from them after a load) and its two touch masks. Its definition is in the
+// One hand: 55 words, the two readings its check points now and a frame ago come from (the points
+// and lines are rebuilt from them after a load), its two touch masks and its two embedded masks. Its definition is in the
 // checksum.
 static void hand_io(hs_state_io *io, hs_hand *h) {
 	hs_state_vec3(io, &h->wrist_pos);
@@ -141,6 +142,10 @@ static void hand_io(hs_state_io *io, hs_hand *h) {
 	hs_state_mask(io, &points, HS_HAND_POINTS);
 	h->touch_points = (uint32_t)points;
 	hs_state_mask(io, &h->touch_lines, HS_HAND_LINES);
+	uint64_t embedded = h->embed_points;
+	hs_state_mask(io, &embedded, HS_HAND_POINTS);
+	h->embed_points = (uint32_t)embedded;
+	hs_state_mask(io, &h->embed_lines, HS_HAND_LINES);
 }
 
 // The whole state after the header: the single list of what a step reads from the last one.

@@ -745,10 +745,11 @@ static int rng_units(uint64_t *x, int l) { return (int)(rng_next(x) % (uint64_t)
 // a uniform double within [-a, a]
 static double rng_within(uint64_t *x, double a) { return a * (2.0 * (double)(rng_next(x) >> 11) / 9007199254740992.0 - 1.0); }
 
-static grasp_rig grasp_world(double dt, double cube_size, double wide, uint64_t seed) {
+static grasp_rig grasp_world_with(double dt, double cube_size, double wide, uint64_t seed, bool paper_contacts) {
 	grasp_rig r;
 	hs_world_def def = hs_default_world_def();
 	def.dt = dt;
+	def.paper_contacts = paper_contacts;
 	r.world = hs_world_create(&def, NULL);
 	assert_non_null(r.world);
 	hs_object_def od = hs_default_object_def();
@@ -765,6 +766,10 @@ static grasp_rig grasp_world(double dt, double cube_size, double wide, uint64_t 
 	hs_hand_grip(&hd, r.grasp, &r.grip, &axis);
 	r.rng = seed * 0x9E3779B97F4A7C15ULL + 1;
 	return r;
+}
+
+static grasp_rig grasp_world(double dt, double cube_size, double wide, uint64_t seed) {
+	return grasp_world_with(dt, cube_size, wide, seed, false);
 }
 
 // Sets the hand: grip centre at `at`, the posture `close` of the way from wide to `to`, with
@@ -893,7 +898,7 @@ static void test_grasp_release_on_opening(void **state) {
 // A hand that starts inside a 12 cm cube (grasp posture of 5 cm, grip at the cube's centre)
 // neither grabs it nor flings it (§3.2 rectification, docs/model.md §3): parts that start inside
 // touch nothing until they have come out. Opened flat and raised 0.3 m, it leaves the cube where it
-// was (on main before rectification: grasped, and held for ever).
+// was. With the paper's contact rule it grasps the cube at once (and, opened flat, held it for ever).
 static void test_hand_inside_cube_opens(void **state) {
 	(void)state;
 	grasp_rig r = grasp_world(1.0 / 60, 0.12, 0.07, 1);
@@ -911,6 +916,13 @@ static void test_hand_inside_cube_opens(void **state) {
 		assert_int_not_equal(st.contact, HS_CONTACT_GRASP);
 		assert_vec3_near(st.position, hs_v3(0, 0, 0.06), 1e-12);
 	}
+	hs_world_destroy(r.world);
+	// the paper's letter (model: { contacts: paper }): the parts inside touch the nearest faces, on
+	// faces apart: grasped in the first frame
+	r = grasp_world_with(1.0 / 60, 0.12, 0.07, 1, true);
+	set_grasp_hand(&r, hs_v3(0, 0, 0.06), 0.0, flat, 0, 0.0);
+	assert_int_equal(hs_world_step(r.world), HS_OK);
+	assert_int_equal(cube_state(&r).contact, HS_CONTACT_GRASP);
 	hs_world_destroy(r.world);
 }
 

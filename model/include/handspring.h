@@ -178,6 +178,7 @@ typedef struct hs_world_def {
 	hs_stacking stacking;       ///< default HS_STACKING_PAPER
 	double grasp_threshold_deg; ///< deg: two contact normals this far apart make a grasp (default 90)
 	bool grasp_any_contacts;    ///< false (default): a grasp's two contacts lie on different fingers or hands; true: any two (the 1999 paper's rule)
+	bool paper_contacts;        ///< false (default): swept detection, rectification and contact hysteresis (docs/model.md §3); true: the 1999 paper's letter (parts tested where they end the frame; a part inside drives C to where it is)
 	double grasp_release_mm;    ///< mm: a held object stays grasped while its holder's fingers grasp it grown by this much (default 5; docs/model.md §3)
 	double grasp_open_mm;       ///< mm: the grasp ends when the holding fingertips spread or reach out this much more than when it began (default 8)
 	bool skip_work;             ///< bounding-volume rejection and sleeping on (default true); off only to measure what they save
@@ -267,9 +268,9 @@ uint64_t hs_world_hash(const hs_world *world);
 // definition; not max_objects, max_shapes or skip_work, which change no result). Then the
 // world: frame, numeric faults, first fault frame and object; per object 39 words (pose, previous
 // pose, rot_prev, spin, velocity, contact state, floor contacts, grounded / asleep / held /
-// carried, grasped_by, grip pose, grip spread and reach, grip fingers, released_by); per hand 53 words (wrist pose and 18 sensors as last set and as
+// carried, grasped_by, grip pose, grip spread and reach, grip fingers, released_by); per hand 55 words (wrist pose and 18 sensors as last set and as
 // at the end of the last step, placed: the check points and lines now and a frame ago are their
-// kinematics, rebuilt bit for bit after a load; which check points and lines touch); then the spring system and its tracker when on.
+// kinematics, rebuilt bit for bit after a load; which check points and lines touch, which started inside); then the spring system and its tracker when on.
 // The seed scene (10 cubes, no hand) saves 403 words, 3224 bytes.
 // Not in it: caches rebuilt after a load (check points and lines, the hand's shape in its wrist
 // frame, bounding spheres, the broad-phase grid, the awake list), the last step's contact list
