@@ -465,6 +465,48 @@ static void test_trajectory_rows(void **state) {
 	free(csv);
 }
 
+// The hands' check points (handspring run --hands-out): hand/push_press_down holds its index tip
+// (check point 7) 1 mm into the top face of a box (z = 0.1): the row gives the tip where the glove
+// puts it (z 0.099) and rectified onto the face (rz 0.1, §3.2), touching; the thumb's base (0) is
+// in no object and rectified to itself.
+static void test_hand_trace_rows(void **state) {
+	(void)state;
+	hs_error err;
+	hs_scenario *s = hs_scenario_load("scenarios/hand/push_press_down.yaml", &err);
+	assert_non_null(s);
+	for (int f = 0; f < 30; ++f)
+		assert_true(hs_scenario_step(s));
+	char *text = NULL;
+	size_t size = 0;
+	FILE *out = open_memstream(&text, &size);
+	assert_non_null(out);
+	hs_hand_trace_write_header(out);
+	hs_hand_trace_write_frame(out, s);
+	fclose(out);
+	const char *header = "frame,t,hand,point,x,y,z,rx,ry,rz,touching\n";
+	assert_memory_equal(text, header, strlen(header));
+	int rows = 0;
+	for (const char *p = text; (p = strchr(p, '\n')) && p[1]; ++p)
+		rows++;
+	assert_int_equal(rows, HS_HAND_POINTS);
+	const char *tip = strstr(text, "\n30,0.5,0,7,");
+	assert_non_null(tip);
+	double x, y, z, rx, ry, rz;
+	int touching;
+	assert_int_equal(sscanf(tip + 1, "30,0.5,0,7,%lf,%lf,%lf,%lf,%lf,%lf,%d", &x, &y, &z, &rx, &ry, &rz, &touching), 7);
+	assert_near(z, 0.099, 1e-12);
+	assert_near(rz, 0.1, 1e-12);
+	assert_near(rx, x, 1e-12);
+	assert_near(ry, y, 1e-12);
+	assert_int_equal(touching, 1);
+	const char *base = strstr(text, "\n30,0.5,0,0,");
+	assert_non_null(base);
+	assert_int_equal(sscanf(base + 1, "30,0.5,0,0,%lf,%lf,%lf,%lf,%lf,%lf,%d", &x, &y, &z, &rx, &ry, &rz, &touching), 7);
+	assert_true(x == rx && y == ry && z == rz && touching == 0);
+	free(text);
+	hs_scenario_destroy(s);
+}
+
 static bool compare_texts(const char *golden, const char *now, double tolerance, char *why, size_t n) {
 	FILE *g = fmemopen((void *)golden, strlen(golden), "r"), *a = fmemopen((void *)now, strlen(now), "r");
 	assert_non_null(g);
@@ -1379,6 +1421,7 @@ int main(void) {
 	    cmocka_unit_test(test_contact_watch),
 	    cmocka_unit_test(test_load_options),
 	    cmocka_unit_test(test_sweep),
+	    cmocka_unit_test(test_hand_trace_rows),
 	};
 	return cmocka_run_group_tests_name("scenario", tests, make_temp_dir, remove_temp_dir);
 }

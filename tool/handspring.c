@@ -1,8 +1,8 @@
 // handspring — the command-line tool: a thin shell over the library (handspring.h).
 //
 //   handspring list [--dir DIR]                         the catalog, one scenario per line
-//   handspring run FILE [--out TRAJ.csv] [--save-at FRAME --state-out PATH] [--resume PATH]
-//                  [--dt DT] [--noise-seed N]
+//   handspring run FILE [--out TRAJ.csv] [--hands-out HANDS.csv] [--save-at FRAME --state-out PATH]
+//                  [--resume PATH] [--dt DT] [--noise-seed N]
 //                                                        one scenario: summary, expectations, hash
 //   handspring all [--dir DIR] [--out-dir DIR] [--golden-dir DIR]
 //                                                        the whole catalog and a summary table
@@ -36,12 +36,15 @@ static const char *const usage_list =
     "Lists every scenario below DIR (default: scenarios): its name, then its description.\n";
 
 static const char *const usage_run =
-    "usage: handspring run FILE [--out TRAJ.csv] [--save-at FRAME --state-out PATH] [--resume PATH]\n"
-    "                           [--dt DT] [--noise-seed N]\n"
+    "usage: handspring run FILE [--out TRAJ.csv] [--hands-out HANDS.csv] [--save-at FRAME --state-out PATH]\n"
+    "                           [--resume PATH] [--dt DT] [--noise-seed N]\n"
     "Runs the scenario FILE and prints its name, frames, objects, one PASS/FAIL line per expectation\n"
     "with the measured value, and the final state hash.\n"
     "  --out TRAJ.csv     also write the trajectory (one row per object per frame, frame 0 included);\n"
     "                     '-' writes it to stdout (the summary then goes to stderr)\n"
+    "  --hands-out FILE   also write the hands' check points, one row per hand and check point per\n"
+    "                     frame: where the glove and tracker put it (x, y, z), where rectification\n"
+    "                     draws it back to an object's surface (rx, ry, rz), and whether it touches\n"
     "  --save-at FRAME    with --state-out: when frame FRAME (0 to the scenario's frames) has run,\n"
     "  --state-out PATH   write the run's state to PATH (the world, the input noise generator, what\n"
     "                     the expectations captured so far), then run on to the end\n"
@@ -188,7 +191,7 @@ static void run_scenario(hs_scenario *s, FILE **outs, int out_count) {
 }
 
 typedef struct run_options {
-	const char *file, *out, *state_out, *resume;
+	const char *file, *out, *hands_out, *state_out, *resume;
 	long save_at; // -1: no state saved
 	hs_scenario_options load; // --dt, --noise-seed
 } run_options;
@@ -245,6 +248,7 @@ static int parse_run(int argc, char **argv, run_options *o) {
 			fputs(usage_run, stdout);
 			return EXIT_PASS;
 		} else if (option_value(argc, argv, &i, "--out", &o->out, &missing) ||
+		           option_value(argc, argv, &i, "--hands-out", &o->hands_out, &missing) ||
 		           option_value(argc, argv, &i, "--state-out", &o->state_out, &missing) ||
 		           option_value(argc, argv, &i, "--resume", &o->resume, &missing)) {
 			if (missing)
@@ -305,12 +309,17 @@ static bool resume_state(hs_scenario *s, const char *path) {
 
 // Steps to the end, writing the trajectory (a resumed run: only the frames it runs) and the state
 // at the frame asked for. False when the state could not be written or its frame was never reached.
-static bool run_saving(hs_scenario *s, FILE *traj, const run_options *o) {
+static bool run_saving(hs_scenario *s, FILE *traj, FILE *hands, const run_options *o) {
 	hs_world *world = hs_scenario_world(s);
 	if (traj) {
 		hs_trajectory_write_header(traj);
 		if (!o->resume)
 			hs_trajectory_write_frame(traj, s);
+	}
+	if (hands) {
+		hs_hand_trace_write_header(hands);
+		if (!o->resume)
+			hs_hand_trace_write_frame(hands, s);
 	}
 	bool saved = o->save_at < 0;
 	for (;;) { // the state after frame F: before stepping on (F = 0: before any step)
@@ -323,6 +332,8 @@ static bool run_saving(hs_scenario *s, FILE *traj, const run_options *o) {
 			break;
 		if (traj)
 			hs_trajectory_write_frame(traj, s);
+		if (hands)
+			hs_hand_trace_write_frame(hands, s);
 	}
 	if (!saved)
 		fprintf(stderr, "handspring: the run ended at frame %ld, before frame %ld: no state written\n",
@@ -369,17 +380,25 @@ static int cmd_run(int argc, char **argv) {
 		return EXIT_BAD_INPUT;
 	}
 	bool to_stdout = o.out && strcmp(o.out, "-") == 0; // the trajectory on stdout, the summary on stderr
-	output traj;
+	output traj, hands;
 	memset(&traj, 0, sizeof traj);
+	memset(&hands, 0, sizeof hands);
 	bool ok = !o.resume || resume_state(s, o.resume);
 	if (ok && o.out && !to_stdout && !(ok = output_open(&traj, o.out)))
 		fprintf(stderr, "handspring: cannot write %s: %s\n", o.out, strerror(errno));
-	ok = ok && run_saving(s, to_stdout ? stdout : traj.file, &o);
+	if (ok && o.hands_out && !(ok = output_open(&hands, o.hands_out)))
+		fprintf(stderr, "handspring: cannot write %s: %s\n", o.hands_out, strerror(errno));
+	ok = ok && run_saving(s, to_stdout ? stdout : traj.file, hands.file, &o);
 	if (!output_close(&traj, ok) && ok) {
 		fprintf(stderr, "handspring: cannot write %s: %s\n", o.out, strerror(errno));
 		ok = false;
 	}
+	if (!output_close(&hands, ok) && ok) {
+		fprintf(stderr, "handspring: cannot write %s: %s\n", o.hands_out, strerror(errno));
+		ok = false;
+	}
 	output_free(&traj);
+	output_free(&hands);
 	int failed = ok ? print_summary(to_stdout ? stderr : stdout, s, &o) : 0;
 	hs_scenario_destroy(s);
 	return !ok ? EXIT_BAD_INPUT : failed ? EXIT_FAILED : EXIT_PASS;

@@ -118,6 +118,15 @@ void hs_trajectory_write_header(FILE *out);
 /// Writes the rows of the current frame of a scenario's world (numbers with 17 significant digits).
 void hs_trajectory_write_frame(FILE *out, hs_scenario *scenario);
 
+/// The hands' check points, one row per hand per check point per frame: the header line
+/// `frame,t,hand,point,x,y,z,rx,ry,rz,touching` (x, y, z where the glove and tracker put the check
+/// point; rx, ry, rz where rectification draws it back to the surface of the object it is in,
+/// hs_world_hand_rectified_points; touching 1 when it touched an object in the last step).
+void hs_hand_trace_write_header(FILE *out);
+/// Writes the rows of the current frame (hand h = index in the order added, point 0-19 as
+/// hs_world_hand_points; numbers with 17 significant digits).
+void hs_hand_trace_write_frame(FILE *out, hs_scenario *scenario);
+
 /// Compares a trajectory with its golden (both as written above; lines starting with '#' are
 /// comments). Numbers must agree within `tolerance` (absolute), contact states and row keys exactly.
 /// Returns true when they match; otherwise writes the first mismatch into `why`, as
