@@ -9,14 +9,18 @@
 #include "push.h"
 #include "support.h"
 
-static bool bodies_overlap(const hs_world *world, int i, int j) {
+// Object i, moved by `shift` from where it is, overlaps object j.
+static bool bodies_overlap_at(const hs_world *world, int i, hs_vec3 shift, int j) {
 	const hs_body *a = &world->bodies[i], *b = &world->bodies[j];
 	const hs_shape *sa = &world->shapes[a->shape], *sb = &world->shapes[b->shape];
 	double r = sa->radius + sb->radius;
-	if (hs_length_sq(hs_sub(a->pos, b->pos)) > r * r)
+	hs_vec3 pos = hs_add(a->pos, shift);
+	if (hs_length_sq(hs_sub(pos, b->pos)) > r * r)
 		return false; // bounding spheres apart: no narrow test
-	return hs_shapes_overlap(sa, a->pos, a->rot, sb, b->pos, b->rot);
+	return hs_shapes_overlap(sa, pos, a->rot, sb, b->pos, b->rot);
 }
+
+static bool bodies_overlap(const hs_world *world, int i, int j) { return bodies_overlap_at(world, i, hs_v3(0, 0, 0), j); }
 
 bool hs_object_interferes(hs_world *world, int object) {
 	const hs_body *body = &world->bodies[object];
@@ -95,7 +99,10 @@ static void carry_along(hs_world *world, int moved, int current, hs_vec3 d) {
 		for (int k = 0; k < n; ++k) {
 			int j = world->near[k];
 			hs_body *b = &world->bodies[j];
-			if (j == moved || b->held || b->carried || !bodies_overlap(world, i, j))
+			// interfering where i is now, or where it was before this move (an object resting on a
+			// held one that the hand lowers a little: under tracker noise it was left hovering)
+			if (j == moved || b->held || b->carried ||
+			    !(bodies_overlap(world, i, j) || bodies_overlap_at(world, i, hs_scale(d, -1.0), j)))
 				continue;
 			b->pos = hs_add(b->pos, d);
 			b->prev = hs_add(b->prev, d); // carried, not thrown: no inertia is gained
