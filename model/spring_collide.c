@@ -16,11 +16,11 @@
 //  - There is no resting contact between objects.
 #include "spring_collide.h"
 
-// Contact of a (sphere) with b (box): normal from a to b, depth.
-static bool sphere_box(hs_vec3 pa, double r, hs_vec3 pb, const hs_spring_geom *gb, hs_vec3 *n, double *depth) {
-	hs_vec3 lo = hs_add(pb, gb->lo), hi = hs_add(pb, gb->hi);
-	hs_vec3 q = hs_v3(fmin(fmax(pa.x, lo.x), hi.x), fmin(fmax(pa.y, lo.y), hi.y), fmin(fmax(pa.z, lo.z), hi.z));
-	hs_vec3 d = hs_sub(q, pa);
+// A sphere (centre c, radius r) against the box lo..hi in the same frame: normal from the sphere
+// to the box in that frame, depth; false when they do not meet.
+static bool sphere_in_frame(hs_vec3 c, double r, hs_vec3 lo, hs_vec3 hi, hs_vec3 *n, double *depth) {
+	hs_vec3 q = hs_v3(fmin(fmax(c.x, lo.x), hi.x), fmin(fmax(c.y, lo.y), hi.y), fmin(fmax(c.z, lo.z), hi.z));
+	hs_vec3 d = hs_sub(q, c);
 	double dist2 = hs_length_sq(d);
 	if (dist2 > 0.0) { // centre outside the box
 		double dist = sqrt(dist2);
@@ -31,7 +31,7 @@ static bool sphere_box(hs_vec3 pa, double r, hs_vec3 pb, const hs_spring_geom *g
 		return true;
 	}
 	// centre inside: leave through the nearest face
-	double gaps[6] = {pa.x - lo.x, hi.x - pa.x, pa.y - lo.y, hi.y - pa.y, pa.z - lo.z, hi.z - pa.z};
+	double gaps[6] = {c.x - lo.x, hi.x - c.x, c.y - lo.y, hi.y - c.y, c.z - lo.z, hi.z - c.z};
 	hs_vec3 dirs[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
 	int best = 0;
 	for (int k = 1; k < 6; ++k)
@@ -40,6 +40,11 @@ static bool sphere_box(hs_vec3 pa, double r, hs_vec3 pb, const hs_spring_geom *g
 	*n = dirs[best];
 	*depth = gaps[best] + r;
 	return true;
+}
+
+// Contact of a (sphere) with b (box): normal from a to b, depth.
+static bool sphere_box(hs_vec3 pa, double r, hs_vec3 pb, const hs_spring_geom *gb, hs_vec3 *n, double *depth) {
+	return sphere_in_frame(pa, r, hs_add(pb, gb->lo), hs_add(pb, gb->hi), n, depth);
 }
 
 // Contact of two boxes: along the axis of least overlap, normal from a to b.
@@ -64,25 +69,9 @@ static bool box_box(const hs_spring_geom *ga, hs_vec3 pa, const hs_spring_geom *
 // Contact of a (sphere) with b (turned box): as sphere_box in b's body frame, normal from a to b.
 static bool sphere_obox(hs_vec3 pa, double r, hs_vec3 pb, const hs_spring_geom *gb, hs_vec3 *n, double *depth) {
 	hs_vec3 c = hs_quat_inv_rotate(gb->rot, hs_sub(pa, pb)), h = gb->half;
-	hs_vec3 q = hs_v3(fmin(fmax(c.x, -h.x), h.x), fmin(fmax(c.y, -h.y), h.y), fmin(fmax(c.z, -h.z), h.z));
-	hs_vec3 d = hs_sub(q, c);
-	double dist2 = hs_length_sq(d);
-	if (dist2 > 0.0) { // centre outside the box
-		double dist = sqrt(dist2);
-		if (dist >= r)
-			return false;
-		*n = hs_quat_rotate(gb->rot, hs_scale(d, 1.0 / dist));
-		*depth = r - dist;
-		return true;
-	}
-	double gaps[6] = {c.x + h.x, h.x - c.x, c.y + h.y, h.y - c.y, c.z + h.z, h.z - c.z};
-	hs_vec3 dirs[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
-	int best = 0;
-	for (int k = 1; k < 6; ++k)
-		if (gaps[k] < gaps[best])
-			best = k;
-	*n = hs_quat_rotate(gb->rot, dirs[best]);
-	*depth = gaps[best] + r;
+	if (!sphere_in_frame(c, r, hs_scale(h, -1.0), h, n, depth))
+		return false;
+	*n = hs_quat_rotate(gb->rot, *n);
 	return true;
 }
 
