@@ -1,11 +1,15 @@
 // contact.c — contacts between hands and objects (1999 paper §3.1-3.2, Fig. 2, Fig. 4).
 //
 // Everything is computed in the object's body frame, whose origin is G, against each convex part:
-//  (A) a check point inside the part touches the face it entered through along its motion
-//      relative to the object (the face nearest to it when it was already inside);
+//  (A) a check point that reached the part this frame touches the face it crossed along its path
+//      relative to the object (also when it has come out again: swept detection);
 //  (B) a check line crossing the part touches an edge when it enters and leaves through the two
 //      faces that meet at that edge; the contact normal is the pseudo-normal from G to the edge.
-//      A line through two faces that do not meet presses the face nearest to its middle.
+//      A line through two faces that do not meet presses the face nearest to its middle; a line
+//      that swept across the part during the frame touches where it first met it.
+// A part already inside is drawn back to the surface (§3.2 rectification) when it touched last
+// frame or the object came onto it, and touches nothing when it started inside (docs/model.md §3,
+// "Swept detection, rectification and contact hysteresis"). paper_contacts keeps [H]'s letter.
 #include "clip.h"
 #include "contact.h"
 
