@@ -6,7 +6,9 @@
 //    while the tracker says 'at rest' is a drop, otherwise a throw (the object takes the tracker's
 //    velocity estimate, §4.4); a press attaches, in this order, the object the stylus is inside
 //    (direct picking, §3), the nearest flying object within catch_radius (catch), or the selection
-//    candidate within grab_range (a press inside a flying object counts as a catch).
+//    candidate within grab_range (a press inside a flying object counts as a catch). A button held
+//    down with nothing attached catches a flying object that arrives within catch_radius (§4.4
+//    "block its motion path and press": the press may come before the object).
 //  - The candidate ('I want this one', §3) is the object the stylus is inside, else — while the
 //    hand moves — the first object hit by a ray from the stylus along the hand's heading (its path
 //    over the tracker's fit window, up to select_range; none when the ray hits nothing), else — the
@@ -104,6 +106,12 @@ void hs_spring_press(hs_world *world, hs_spring_system *sys) {
 	int c = sys->candidate;
 	if (c >= 0 && hs_spring_geom_distance(&sys->geom[c], world->bodies[c].pos, s) <= sys->def.grab_range)
 		hs_spring_attach(world, sys, c, HS_ATTACH_SELECT);
+}
+
+void hs_spring_hold(hs_world *world, hs_spring_system *sys) {
+	int best = catch_pick(world, sys, sys->stylus);
+	if (best >= 0)
+		hs_spring_attach(world, sys, best, HS_ATTACH_CATCH);
 }
 
 void hs_spring_detach(hs_world *world, hs_spring_system *sys, bool classify, double time) {

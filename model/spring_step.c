@@ -143,6 +143,8 @@ void hs_spring_step(hs_world *world) {
 	hs_spring_update_candidate(world, sys);
 	if (sys->button && !sys->button_prev)
 		hs_spring_press(world, sys);
+	else if (sys->button && sys->attached < 0) // held in the object's path: it is caught on arrival
+		hs_spring_hold(world, sys);
 	else if (!sys->button && sys->button_prev && sys->attached >= 0)
 		hs_spring_detach(world, sys, true, t1);
 

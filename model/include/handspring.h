@@ -489,7 +489,7 @@ typedef struct hs_spring_def {
 	int tracker_window;        ///< samples in the velocity fit, 3..HS_TRACKER_CAPACITY (default 9)
 	double rest_speed;         ///< m/s: a moving hand comes to rest below this speed (default 0.10)
 	double motion_speed;       ///< m/s: a resting hand starts moving above this speed (default 0.20)
-	double catch_radius;       ///< m: a press this close to a flying object's surface catches it (default 0.05)
+	double catch_radius;       ///< m: a press this close to a flying object's surface catches it, and so does a button held down with nothing attached when one arrives this close (default 0.05)
 	double grab_range;         ///< m: a press attaches the candidate only this close to its surface (default 0.5)
 	double select_range;       ///< m: length of the selection ray (default 2.0)
 } hs_spring_def;
