@@ -10,9 +10,11 @@
 //    down with nothing attached catches a flying object that arrives within catch_radius (§4.4
 //    "block its motion path and press": the press may come before the object).
 //  - The candidate ('I want this one', §3) is the object the stylus is inside, else — while the
-//    hand moves — the first object hit by a ray from the stylus along the hand's heading (its path
-//    over the tracker's fit window, up to select_range; none when the ray hits nothing), else — the
-//    hand at rest — the previous candidate.
+//    hand's path over the tracker's fit window goes at least select_speed (0.05 m/s: slow
+//    approaches select too; tracker noise gives about 0.01 m/s at rest) — the first object hit by a
+//    ray from the stylus along that path's heading (up to select_range). A ray that hits nothing
+//    keeps the candidate unless the heading has clearly turned away from it (more than 60 deg);
+//    the hand at rest keeps it too.
 #include "spring_grab.h"
 
 // The object the stylus is inside (nearest centre first), -1 when none.
@@ -63,6 +65,22 @@ static int catch_pick(const hs_world *world, const hs_spring_system *sys, hs_vec
 	return best;
 }
 
+// The hand's speed along its path over the tracker's fit window (the heading's chord over its
+// time), 0 until the window is full.
+static double path_speed(const hs_spring_system *sys) {
+	hs_tracker_sample now, old;
+	if (sys->tracker.count < sys->tracker.window || !hs_tracker_sample_at(&sys->tracker, 0, &now) ||
+	    !hs_tracker_sample_at(&sys->tracker, sys->tracker.window - 1, &old) || !(now.time > old.time))
+		return 0.0;
+	return hs_length(hs_sub(now.position, old.position)) / (now.time - old.time);
+}
+
+// A clear change of direction: the candidate lies more than 60 deg off the heading.
+static bool turned_away(const hs_world *world, const hs_spring_system *sys, hs_vec3 heading) {
+	hs_vec3 to = hs_sub(world->bodies[sys->candidate].pos, sys->stylus);
+	return hs_dot(heading, to) < 0.5 * hs_length(to);
+}
+
 void hs_spring_update_candidate(const hs_world *world, hs_spring_system *sys) {
 	int pick = direct_pick(world, sys, sys->stylus);
 	if (pick >= 0) {
@@ -70,8 +88,13 @@ void hs_spring_update_candidate(const hs_world *world, hs_spring_system *sys) {
 		return;
 	}
 	hs_vec3 heading = sys->tracker.heading;
-	if (!sys->tracker.at_rest && hs_length_sq(heading) > 0.0)
-		sys->candidate = ray_pick(world, sys, sys->stylus, heading);
+	if (hs_length_sq(heading) > 0.0 && path_speed(sys) >= sys->def.select_speed) {
+		int hit = ray_pick(world, sys, sys->stylus, heading);
+		if (hit >= 0)
+			sys->candidate = hit;
+		else if (sys->candidate >= 0 && turned_away(world, sys, heading))
+			sys->candidate = -1;
+	}
 	if (sys->candidate == sys->attached)
 		sys->candidate = -1;
 }

@@ -44,6 +44,7 @@ hs_spring_def hs_default_spring_def(void) {
 	def.catch_radius = 0.05;
 	def.grab_range = 0.5;
 	def.select_range = 2.0;
+	def.select_speed = 0.05;
 	return def;
 }
 
@@ -74,7 +75,8 @@ bool hs_spring_def_valid(const hs_spring_def *d) {
 		return false;
 	if (!finite_nonneg(d->rest_speed) || !isfinite(d->motion_speed) || d->motion_speed <= d->rest_speed)
 		return false;
-	if (!finite_nonneg(d->catch_radius) || !finite_nonneg(d->grab_range) || !finite_pos(d->select_range))
+	if (!finite_nonneg(d->catch_radius) || !finite_nonneg(d->grab_range) || !finite_pos(d->select_range) ||
+	    !finite_nonneg(d->select_speed))
 		return false;
 	return true;
 }

@@ -83,7 +83,7 @@ static uint64_t def_checksum(const hs_spring_def *d) {
 	                          d->walls.x_max,     d->walls.y_min,      d->walls.y_max, d->rest_length_ref,
 	                          d->rest_mass_ref,   d->rest_exponent,    d->rest_length_min, d->rest_length_max,
 	                          d->tracker_rate,    d->rest_speed,       d->motion_speed, d->catch_radius,
-	                          d->grab_range,      d->select_range};
+	                          d->grab_range,      d->select_range,     d->select_speed};
 	uint64_t h = hs_state_mix(0x5350524E47ull, (uint64_t)d->integrator); // "SPRNG"
 	h = hs_state_mix(h, d->walls.enabled ? 1u : 0u);
 	h = hs_state_mix(h, (uint64_t)(int64_t)d->tracker_window);

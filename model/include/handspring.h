@@ -492,6 +492,7 @@ typedef struct hs_spring_def {
 	double catch_radius;       ///< m: a press this close to a flying object's surface catches it, and so does a button held down with nothing attached when one arrives this close (default 0.05)
 	double grab_range;         ///< m: a press attaches the candidate only this close to its surface (default 0.5)
 	double select_range;       ///< m: length of the selection ray (default 2.0)
+	double select_speed;       ///< m/s: the hand's path over the tracker's fit window selects along its heading from this speed (default 0.05)
 } hs_spring_def;
 
 hs_spring_def hs_default_spring_def(void);
