@@ -124,6 +124,27 @@ static void test_push_high_tips(void **state) {
 }
 
 // Off the floor the rule does not apply: eq. 1-2 for a free object.
+// (e) The floor's friction cone: a push that presses a box on the floor down at least 1/μ times as
+// much as it drives it sideways leaves it (pose to the bit), at one point and at several; outside
+// the cone the one point rule above applies and the several points slide it along the floor.
+static void test_press_within_floor_cone_holds(void **state) {
+	(void)state;
+	assert_true(HS_PUSH_FRICTION == 1.0);
+	hs_world *w = box_world(hs_v3(0.1, 0.1, 0.1));
+	hs_body *b = &w->bodies[0];
+	hs_vec3 c = hs_v3(0.04, 0.01, 0.1);
+	assert_true(hs_push_on_floor(w, b, c, hs_add(c, hs_v3(0.0012, -0.0009, -0.0015)))); // |h| = 0.0015
+	assert_true(b->pos.x == 0.0 && b->pos.y == 0.0 && b->pos.z == 0.05);
+	assert_true(b->rot.w == 1.0 && b->rot.x == 0.0 && b->rot.y == 0.0 && b->rot.z == 0.0);
+	hs_push_many(w, b, hs_v3(0.001, 0, -0.002));
+	assert_true(b->pos.x == 0.0 && b->pos.y == 0.0 && b->pos.z == 0.05);
+	hs_push_many(w, b, hs_v3(0.003, 0, -0.002));
+	assert_true(b->pos.x == 0.003 && b->pos.y == 0.0 && b->pos.z == 0.05);
+	assert_true(hs_push_on_floor(w, b, c, hs_add(c, hs_v3(0.002, 0, -0.001))));
+	assert_true(b->pos.x != 0.003 || hs_quat_angle(b->rot) > 0.0); // outside the cone it acts
+	hs_world_destroy(w);
+}
+
 static void test_free_object_untouched(void **state) {
 	(void)state;
 	hs_world *w = box_world(hs_v3(0.1, 0.1, 0.1));
@@ -139,6 +160,7 @@ int main(void) {
 	    cmocka_unit_test(test_press_down_leaves_box),
 	    cmocka_unit_test(test_push_low_slides),
 	    cmocka_unit_test(test_push_high_tips),
+	    cmocka_unit_test(test_press_within_floor_cone_holds),
 	    cmocka_unit_test(test_free_object_untouched),
 	};
 	return cmocka_run_group_tests(tests, NULL, NULL);
