@@ -129,6 +129,27 @@ static void test_touching_point_within_margin(void **state) {
 	hs_world_destroy(w);
 }
 
+// A part reaching a face this frame behind a part of the same finger that touched that face
+// already and drives it further in is set aside (the face, pushed by the leading part, is still
+// ahead of it); going in further, or on another finger, it touches.
+static void test_trailing_part_set_aside(void **state) {
+	(void)state;
+	hs_world *w = cube_world();
+	w->hands[0].touch_points = 1u << 7;                           // finger 1's tip touched the -x face
+	move_point(w, 7, hs_v3(-0.45, 0, 2.1), hs_v3(-0.43, 0, 2.1)); // sunk: drives it in 0.02
+	move_point(w, 6, hs_v3(-0.6, 0, 2.2), hs_v3(-0.49, 0, 2.2));  // its DIP reaches it, 0.01 in
+	assert_int_equal(hs_contact_detect(w, 0, NULL), 1);
+	assert_int_equal(contact(w, 0).part, 7);
+	w->contact_count = 0;
+	move_point(w, 6, hs_v3(-0.6, 0, 2.2), hs_v3(-0.47, 0, 2.2)); // 0.03 in: ahead of the tip
+	assert_int_equal(hs_contact_detect(w, 0, NULL), 2);
+	w->contact_count = 0;
+	move_point(w, 6, hs_v3(-0.6, 0, 2.2), hs_v3(-0.49, 0, 2.2));
+	move_point(w, 11, hs_v3(-0.6, 0.2, 2.2), hs_v3(-0.49, 0.2, 2.2)); // another finger: touches
+	assert_int_equal(hs_contact_detect(w, 0, NULL), 2);
+	hs_world_destroy(w);
+}
+
 // A check line whose end lies within grasp_release_mm of the part at a touching check point is
 // that point's business, as a line with an end inside: the side of a fingertip resting near an
 // edge does not push the edge. Line 8 runs beside check points 2 and 3 (finger 0, segment 2).
@@ -545,6 +566,7 @@ int main(void) {
 	    cmocka_unit_test(test_fingertip_friction_cone),
 	    cmocka_unit_test(test_touching_point_within_margin),
 	    cmocka_unit_test(test_line_beside_touching_point),
+	    cmocka_unit_test(test_trailing_part_set_aside),
 	    cmocka_unit_test(test_point_at_edge_and_surface),
 	    cmocka_unit_test(test_line_crosses_edge),
 	    cmocka_unit_test(test_line_across_and_line_ending_inside),
