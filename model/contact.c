@@ -244,11 +244,12 @@ static void detect_points(hs_world *world, int object, int h, const hs_part *par
 		}
 		if (!inside && touched && inside_part(shape, part, b, margin)) {
 			world->hands[h].near_points |= 1u << i; // off the surface, within the margin: still touching
-			if (!still)
-				continue; // it moved the object, which goes on by eq. 3 without it
+			if (moved)
+				continue;
 			const hs_face *f = &shape->faces[nearest_face(shape, part, b)];
 			hs_vec3 on = hs_mul_add(b, f->offset - hs_dot(f->normal, b), f->normal);
-			push_contact(world, object, h, i, false, (int)(f - shape->faces), body, on, f->normal, on, 0.0);
+			// on an object that moved, only beside a part of its hand that pushes it (keep_hovering)
+			push_contact(world, object, h, i, false, (int)(f - shape->faces), body, on, f->normal, on, still ? 0.0 : -1.0);
 			continue;
 		}
 		if (!inside && (!swept || moved))
@@ -577,6 +578,29 @@ static int drop_trailing(hs_world *world, int first) {
 	return kept - first;
 }
 
+// A touching check point hovering within the margin over an object that moved last frame
+// (marked t < 0 by detect_points) is a contact while another part of its hand drives the object
+// this frame: two fingertips pushing a box, one of them lifted off by glove noise, still push at
+// several points (3) rather than at one (1, which turns the box by eq. 2). Alone, it is none: the
+// object goes on by eq. 3 (a finger drawn back after a push does not stop what it pushed).
+static int keep_hovering(hs_world *world, int first, int n) {
+	int kept = first;
+	for (int k = first; k < first + n; ++k) {
+		hs_contact c = world->contacts[k];
+		bool keep = !(c.t < 0.0);
+		for (int m = first; m < first + n && !keep; ++m) {
+			const hs_contact *l = &world->contacts[m];
+			keep = !(l->t < 0.0) && l->hand.index1 == c.hand.index1 && push_depth(l) > 0.0;
+		}
+		if (keep) {
+			c.t = c.t < 0.0 ? 0.0 : c.t;
+			world->contacts[kept++] = c;
+		}
+	}
+	world->contact_count = kept;
+	return kept - first;
+}
+
 int hs_contact_detect_grown(hs_world *world, int object, const hs_body *before, double grow) {
 	int first = world->contact_count;
 	const hs_body *body = &world->bodies[object];
@@ -606,7 +630,7 @@ int hs_contact_detect_grown(hs_world *world, int object, const hs_body *before, 
 		}
 	}
 	if (grow == 0.0 && !world->def.paper_contacts)
-		return drop_trailing(world, first);
+		return keep_hovering(world, first, drop_trailing(world, first));
 	return world->contact_count - first;
 }
 

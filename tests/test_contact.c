@@ -121,6 +121,13 @@ static void test_touching_point_within_margin(void **state) {
 	b->prev.x -= 0.001; // moved last frame: no contact, still touching
 	assert_int_equal(hs_contact_detect(w, 0, NULL), 0);
 	assert_int_equal(w->hands[0].near_points, 1u << 3);
+	w->contact_count = 0; // ... unless another part of the hand pushes it this frame: 3
+	move_point(w, 7, hs_v3(0.0, 0.2, 2.6), hs_v3(0.0, 0.2, 2.49));
+	assert_int_equal(hs_contact_detect(w, 0, NULL), 2);
+	assert_int_equal(hs_contact_classify(w->contacts, 2, w->grasp_limit, false), HS_CONTACT_PUSH_MANY);
+	assert_true(w->contacts[0].t == 0.0 || w->contacts[1].t == 0.0);
+	w->contact_count = 0;
+	w->hands[0].points[7] = w->hands[0].prev_points[7] = RIG_FAR;
 	b->prev = b->pos;
 	w->hands[0].near_points = 0;
 	move_point(w, 3, hs_v3(0.1, 0.2, 2.499), hs_v3(0.1, 0.2, 2.506)); // beyond the margin: let go
