@@ -181,6 +181,24 @@ static void test_push_remembers_finger_speed(void **state) {
 	hs_world_destroy(w);
 }
 
+// (g) An object touching the floor at one vertex lies on it: a push at several points with an
+// upward part slides it along the floor, never lifts it (it used to fly off on the push's rise).
+static void test_push_on_a_corner_keeps_floor(void **state) {
+	(void)state;
+	hs_world *w = box_world(hs_v3(0.1, 0.1, 0.1));
+	hs_body *b = &w->bodies[0];
+	hs_quat tilt = hs_quat_mul(hs_quat_from_axis_angle(hs_v3(1, 0, 0), 0.1), hs_quat_from_axis_angle(hs_v3(0, 1, 0), 0.1));
+	b->rot = hs_quat_normalize(tilt);
+	b->pos = hs_v3(0, 0, 0.2);
+	b->pos.z -= hs_motion_pose_vertices(w, b); // its lowest vertex on the floor
+	hs_motion_keep_above_floor(w, b);
+	assert_int_equal(b->floor_contacts, 1);
+	hs_vec3 at = b->pos;
+	hs_push_many(w, b, hs_v3(0.002, 0.001, 0.003));
+	assert_true(b->pos.x == at.x + 0.002 && b->pos.y == at.y + 0.001 && b->pos.z == at.z);
+	hs_world_destroy(w);
+}
+
 static void test_free_object_untouched(void **state) {
 	(void)state;
 	hs_world *w = box_world(hs_v3(0.1, 0.1, 0.1));
@@ -198,6 +216,7 @@ int main(void) {
 	    cmocka_unit_test(test_push_high_tips),
 	    cmocka_unit_test(test_press_within_floor_cone_holds),
 	    cmocka_unit_test(test_push_remembers_finger_speed),
+	    cmocka_unit_test(test_push_on_a_corner_keeps_floor),
 	    cmocka_unit_test(test_free_object_untouched),
 	};
 	return cmocka_run_group_tests(tests, NULL, NULL);
