@@ -12,6 +12,7 @@
 // "Swept detection, rectification and contact hysteresis"). paper_contacts keeps [H]'s letter.
 #include "clip.h"
 #include "contact.h"
+#include "push.h"
 
 // Grasp when n_i · n_j <= cos(threshold) + eps: with a bare comparison rounding would decide the
 // 90 deg case (two adjoining cube faces) and two builds could disagree (DESIGN.md).
@@ -71,6 +72,23 @@ static hs_vec3 closest_on_first(hs_vec3 a, hs_vec3 b, hs_vec3 c, hs_vec3 d) {
 	return hs_mul_add(a, s, u);
 }
 
+// Where a part touching the surface at C with normal n drives C (B, eq. 1-2), when its own
+// position, or its motion since it touched (a part drawn back to the surface, §3.2
+// rectification), would take C to C + d. The fingertip holds the surface by Coulomb friction
+// (docs/model.md §3, "Friction at the fingertip"): it pushes by how far it goes in along -n and
+// drags C sideways by at most μ times that, as a finger sliding over the face; a part not going
+// in (leaving, or moving along the face) drives nothing. [H]'s eq. 1-2 take C to the finger
+// wherever it went (a sticky contact): under glove noise a fingertip resting on a face dragged
+// it by its jitter. How deep a part sank never moves the object (d is its motion, not its depth).
+static hs_vec3 friction_finger(hs_vec3 c, hs_vec3 d, hs_vec3 n) {
+	double in = -hs_dot(d, n);
+	if (!(in > 0.0))
+		return c;
+	hs_vec3 tan = hs_mul_add(d, in, n);
+	double t = hs_length(tan), cap = HS_PUSH_FRICTION * in;
+	return hs_add(c, hs_mul_add(t > cap ? hs_scale(tan, cap / t) : tan, -in, n));
+}
+
 // A contact found in the body frame `f`: C = `point` on the surface, B = `finger` where the part
 // drives it (eq. 1-2), `normal` the face normal or the edge's pseudo-normal.
 static void push_contact(hs_world *world, int object, int hand, int part, bool edge, int feature, const frame *f,
@@ -87,6 +105,8 @@ static void push_contact(hs_world *world, int object, int hand, int part, bool e
 	c->feature = feature;
 	c->point = to_world(f, point);
 	c->normal = hs_mat3_mul(f->rot, normal);
+	if (!world->def.paper_contacts)
+		finger = friction_finger(point, hs_sub(finger, point), normal);
 	c->finger = to_world(f, finger);
 	c->t = t;
 }
@@ -104,21 +124,12 @@ static hs_vec3 edge_normal(const hs_shape *shape, int e) {
 	return hs_normalize(hs_mul_add(ea, -hs_dot(ea, dir), dir));
 }
 
-// A part that touched last frame and has sunk in is drawn back to the surface (§3.2
-// rectification): it drives C by its motion d relative to the object since then, less any part of
-// d leaving along the normal (a finger coming out does not pull the object). How deep it sank never
-// moves the object.
-static hs_vec3 sunk_finger(hs_vec3 c, hs_vec3 d, hs_vec3 normal) {
-	double out = hs_dot(d, normal);
-	return hs_add(c, out > 0.0 ? hs_mul_add(d, -out, normal) : d);
-}
-
 // Where a part that lies in, or passed through, a convex part of the object now got there
 // (docs/model.md §3, "Rectification and swept detection"):
 //  - entered this frame (its path relative to the object crosses the surface): C where it
 //    crossed, B where it is now - also when it has come out again (swept detection: a fast
 //    fingertip at 12 frames/s does not pass through an object);
-//  - already inside a frame ago and touching then: sunk in, drawn back (sunk_finger);
+//  - already inside a frame ago and touching then: sunk in, drawn back to the surface;
 //  - already inside and not touching: it started inside (or the object came onto it) and
 //    touches nothing: no flinging, no grabbing.
 // `grow` > 0: against the part grown by that much (the grasp's release margin, docs/model.md §3);
@@ -201,6 +212,12 @@ static void paper_point(hs_world *world, int object, int h, int i, const hs_part
 	             f->normal, b, 0.0);
 }
 
+// The object did not move last frame (its pose equals the one before: asleep, or held still).
+static bool same_pose(const hs_body *b) {
+	return b->pos.x == b->prev.x && b->pos.y == b->prev.y && b->pos.z == b->prev.z && b->rot.w == b->rot_prev.w &&
+	       b->rot.x == b->rot_prev.x && b->rot.y == b->rot_prev.y && b->rot.z == b->rot_prev.z;
+}
+
 static void detect_points(hs_world *world, int object, int h, const hs_part *part, const frame *body,
                           const frame *before, bool moved, bool cull, double grow) {
 	const hs_shape *shape = &world->shapes[world->bodies[object].shape];
@@ -209,6 +226,8 @@ static void detect_points(hs_world *world, int object, int h, const hs_part *par
 	double r_sq = (part->radius + grow) * (part->radius + grow);
 	bool paper = world->def.paper_contacts, swept = grow == 0.0 && !paper;
 	int steps = moved ? 1 : hand->path_steps; // a held object moves with the hand: chords suffice
+	const hs_body *ob = &world->bodies[object];
+	bool still = !moved && same_pose(ob);
 	for (int i = 0; i < HS_HAND_POINTS; ++i) {
 		if (cull && hs_length_sq(hs_sub(hand->points[i], center)) > r_sq &&
 		    (!swept || moved || !path_near(hand, i, steps, center, r_sq)))
@@ -227,8 +246,16 @@ static void detect_points(hs_world *world, int object, int h, const hs_part *par
 				world->hands[h].embed_points_next |= 1u << i;
 			continue;
 		}
-		if (!inside && touched && inside_part(shape, part, b, margin))
+		if (!inside && touched && inside_part(shape, part, b, margin)) {
 			world->hands[h].near_points |= 1u << i; // off the surface, within the margin: still touching
+			if (moved)
+				continue;
+			const hs_face *f = &shape->faces[nearest_face(shape, part, b)];
+			hs_vec3 on = hs_mul_add(b, f->offset - hs_dot(f->normal, b), f->normal);
+			// on an object that moved, only beside a part of its hand that pushes it (keep_hovering)
+			push_contact(world, object, h, i, false, (int)(f - shape->faces), body, on, f->normal, on, still ? 0.0 : -1.0);
+			continue;
+		}
 		if (!inside && (!swept || moved))
 			continue; // a held object moves with the hand: nothing passes through it unseen
 		hs_clip c;
@@ -258,7 +285,7 @@ static void detect_points(hs_world *world, int object, int h, const hs_part *par
 			hs_vec3 point = hs_mul_add(a, f->offset - hs_dot(f->normal, a), f->normal);
 			hs_vec3 start = inside_part(shape, part, a, grow) ? a : point; // back in: from the surface
 			push_contact(world, object, h, i, false, face, body, point, f->normal,
-			             sunk_finger(point, hs_sub(b, start), f->normal), 0.0);
+			             hs_add(point, hs_sub(b, start)), 0.0);
 		} else if (inside && swept) { // in it since before it touched anything: started inside
 			world->hands[h].embed_points_next |= 1u << i;
 		}
@@ -268,7 +295,7 @@ static void detect_points(hs_world *world, int object, int h, const hs_part *par
 // A check line across the part now (entering and leaving through two faces): an edge contact
 // when the faces meet at an edge (§3.2 (B)), else the face nearest its middle. `d`: NULL when
 // the line reached the object this frame (B = the line's point nearest C), else its motion
-// relative to the object since it touched last frame (sunk in: sunk_finger).
+// relative to the object since it touched last frame (sunk in).
 static void line_across(hs_world *world, int object, int h, int j, const hs_part *part, const frame *body,
                         hs_vec3 p0, hs_vec3 p1, hs_clip c, const hs_vec3 *d) {
 	const hs_shape *shape = &world->shapes[world->bodies[object].shape];
@@ -286,7 +313,7 @@ static void line_across(hs_world *world, int object, int h, int j, const hs_part
 		point = hs_mul_add(mid, f->offset - hs_dot(f->normal, mid), f->normal);
 		normal = f->normal;
 	}
-	hs_vec3 finger = d ? sunk_finger(point, *d, normal) : hs_segment_closest(p0, p1, point);
+	hs_vec3 finger = d ? hs_add(point, *d) : hs_segment_closest(p0, p1, point);
 	push_contact(world, object, h, HS_HAND_POINTS + j, edge, feature, body, point, normal, finger, 0.0);
 }
 
@@ -424,11 +451,27 @@ static bool line_path_near(const hs_hand *hand, int j, int steps, hs_vec3 c, dou
 	return false;
 }
 
+// A line with an end inside the part is the check points' business (detect_lines); so is one
+// with an end off the surface by less than grasp_release_mm at a check point that touches (it
+// touched last frame, the hysteresis of detect_points, or touches the part now), at the end of
+// the frame or at its start (a finger lifting off sweeps its side past the face it leaves): a fingertip resting on a top face 1 cm from its edge, its prism's
+// side 2 mm from the edge, swept that side across the edge under glove noise (±6 mm a frame) and
+// pushed the object sideways while the tip itself held still.
+static bool end_touches(const hs_world *world, uint32_t touching, int j, const hs_shape *shape, const hs_part *part,
+                        const hs_vec3 p[2]) {
+	int s = j / 4, point = s / 3 * 4 + s % 3; // line j runs beside check points point and point + 1
+	double margin = world->def.grasp_release_mm * 1e-3;
+	for (int k = 0; k < 2; ++k)
+		if ((touching >> (point + k) & 1u) && inside_part(shape, part, p[k], margin))
+			return true;
+	return false;
+}
+
 // (B) check lines against the part: across it now (reached it this frame, sunk in, or across it
 // since before it touched anything, as the check points in detect_points), or swept across it
 // during the frame. A line with an end inside is the check points' business.
 static void detect_lines(hs_world *world, int object, int h, const hs_part *part, const frame *body,
-                         const frame *before, bool moved, bool cull, double grow) {
+                         const frame *before, bool moved, bool cull, double grow, uint32_t touching) {
 	const hs_shape *shape = &world->shapes[world->bodies[object].shape];
 	const hs_hand *hand = &world->hands[h];
 	hs_vec3 center = to_world(body, part->center);
@@ -441,6 +484,10 @@ static void detect_lines(hs_world *world, int object, int h, const hs_part *part
 		    (!swept || moved || !line_path_near(hand, j, steps, center, r)))
 			continue;
 		hs_vec3 p[2] = {to_body(body, l[0]), to_body(body, l[1])};
+		hs_vec3 q0[2] = {to_body(before, m[0]), to_body(before, m[1])};
+		if (swept && (end_touches(world, touching, j, shape, part, p) ||
+		              end_touches(world, hand->touch_points, j, shape, part, q0)))
+			continue; // beside a touching check point, at the frame's end or its start
 		if (swept && (hand->embed_lines >> j & 1u)) { // started inside: touches nothing until clear
 			if (hs_clip_segment(shape, part, p[0], p[1], 2.0 * world->def.grasp_release_mm * 1e-3).hit)
 				world->hands[h].embed_lines_next |= (uint64_t)1 << j;
@@ -500,6 +547,64 @@ int hs_contact_detect(hs_world *world, int object, const hs_body *before) {
 	return hs_contact_detect_grown(world, object, before, 0.0);
 }
 
+static int finger_of(int part);
+
+// How far contact c drives C in along its normal (friction_finger: the depth it pushes).
+static double push_depth(const hs_contact *c) { return -hs_dot(hs_sub(c->finger, c->point), c->normal); }
+
+static bool touched_before(const hs_world *world, const hs_contact *c) {
+	const hs_hand *hand = &world->hands[c->hand.index1 - 1];
+	return c->part < HS_HAND_POINTS ? (hand->touch_points >> c->part & 1u)
+	                                : (hand->touch_lines >> (c->part - HS_HAND_POINTS) & 1u);
+}
+
+// A part that reached a face this frame behind a part of the same finger that already touched
+// that face and drives it further in is set aside: the face, pushed by the leading part, is still
+// ahead of it. Detection tests the parts against the object's pose at the start of the frame; at
+// 12 frames/s a fingertip pushing at 0.3 m/s moves the face 2.5 cm a frame and its DIP, 1.7 cm
+// behind the tip, "reached" the face the tip was pushing away (`hand/push_off_centre`: state 3,
+// no more turn). A finger that curls or lies down onto the face goes in further than the part
+// already there and still touches.
+static int drop_trailing(hs_world *world, int first) {
+	int kept = first;
+	for (int k = first; k < world->contact_count; ++k) {
+		const hs_contact *c = &world->contacts[k];
+		bool trails = false;
+		for (int m = first; m < world->contact_count && !trails && !c->edge && !touched_before(world, c); ++m) {
+			const hs_contact *l = &world->contacts[m];
+			trails = m != k && !l->edge && l->hand.index1 == c->hand.index1 && finger_of(l->part) == finger_of(c->part) &&
+			         l->feature == c->feature && touched_before(world, l) && push_depth(l) > push_depth(c);
+		}
+		if (!trails)
+			world->contacts[kept++] = *c;
+	}
+	world->contact_count = kept;
+	return kept - first;
+}
+
+// A touching check point hovering within the margin over an object that moved last frame
+// (marked t < 0 by detect_points) is a contact while another part of its hand drives the object
+// this frame: two fingertips pushing a box, one of them lifted off by glove noise, still push at
+// several points (3) rather than at one (1, which turns the box by eq. 2). Alone, it is none: the
+// object goes on by eq. 3 (a finger drawn back after a push does not stop what it pushed).
+static int keep_hovering(hs_world *world, int first, int n) {
+	int kept = first;
+	for (int k = first; k < first + n; ++k) {
+		hs_contact c = world->contacts[k];
+		bool keep = !(c.t < 0.0);
+		for (int m = first; m < first + n && !keep; ++m) {
+			const hs_contact *l = &world->contacts[m];
+			keep = !(l->t < 0.0) && l->hand.index1 == c.hand.index1 && push_depth(l) > 0.0;
+		}
+		if (keep) {
+			c.t = c.t < 0.0 ? 0.0 : c.t;
+			world->contacts[kept++] = c;
+		}
+	}
+	world->contact_count = kept;
+	return kept - first;
+}
+
 int hs_contact_detect_grown(hs_world *world, int object, const hs_body *before, double grow) {
 	int first = world->contact_count;
 	const hs_body *body = &world->bodies[object];
@@ -520,10 +625,16 @@ int hs_contact_detect_grown(hs_world *world, int object, const hs_body *before, 
 				if (hs_length_sq(hs_sub(c, hand->sweep_center)) > r * r)
 					continue;
 			}
+			int from = world->contact_count;
 			detect_points(world, object, h, part, &now, &then, before != NULL, world->def.skip_work, grow);
-			detect_lines(world, object, h, part, &now, &then, before != NULL, world->def.skip_work, grow);
+			uint32_t touching = hand->touch_points; // touched last frame, or touch this part now
+			for (int k = from; k < world->contact_count; ++k)
+				touching |= 1u << world->contacts[k].part;
+			detect_lines(world, object, h, part, &now, &then, before != NULL, world->def.skip_work, grow, touching);
 		}
 	}
+	if (grow == 0.0 && !world->def.paper_contacts)
+		return keep_hovering(world, first, drop_trailing(world, first));
 	return world->contact_count - first;
 }
 

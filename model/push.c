@@ -22,11 +22,21 @@
 #include "push.h"
 #include "motion.h"
 
-// The object lies on the floor: an edge or a face on it, or it rests there (grounded).
+// The object lies on the floor: a vertex, an edge or a face on it. One vertex is enough: a box
+// that a first fingertip tipped onto a corner was lifted off the floor by the next frame's push
+// at several points (its vertical part) and flew on by eq. 3 when the push ended.
 static bool lies_on_floor(hs_world *world, const hs_body *body, int *count) {
 	hs_motion_pose_vertices(world, body);
 	*count = hs_motion_floor_points(world, body);
-	return *count >= 2 || (body->grounded && *count >= 1);
+	return *count >= 1;
+}
+
+// The push lies in the floor's friction cone: it presses the object into the floor at least as
+// much as (1/μ times) it drives it sideways. The friction its press adds at the floor holds what
+// the finger's own friction (the same μ, contact.c) can drive; the object's weight, absent from
+// eq. 1-2, is margin besides. A fingertip on a top face moves nothing however it trembles.
+static bool held_by_floor(hs_vec3 d) {
+	return d.z < 0.0 && sqrt(d.x * d.x + d.y * d.y) <= HS_PUSH_FRICTION * -d.z * (1.0 + 1e-9);
 }
 
 // The floor point furthest along the horizontal u: the side a turn along u sinks into the floor.
@@ -74,6 +84,8 @@ bool hs_push_on_floor(hs_world *world, hs_body *body, hs_vec3 c, hs_vec3 b) {
 	if (!lies_on_floor(world, body, &count))
 		return false;
 	hs_vec3 cb = hs_sub(b, c), cg = hs_sub(body->pos, c);
+	if (held_by_floor(cb))
+		return true;
 	double cg_len = hs_length(cg);
 	if (!(cg_len > 0.0)) { // C at G: nothing to turn about, slide
 		body->pos = hs_add(body->pos, hs_v3(cb.x, cb.y, 0.0));
@@ -105,8 +117,11 @@ bool hs_push_on_floor(hs_world *world, hs_body *body, hs_vec3 c, hs_vec3 b) {
 
 void hs_push_many(hs_world *world, hs_body *body, hs_vec3 d) {
 	int count = 0;
-	if (lies_on_floor(world, body, &count))
-		d.z = 0.0; // the floor supplies whatever points into it or out of it, as for one point
+	if (lies_on_floor(world, body, &count)) {
+		if (held_by_floor(d))
+			return;
+		d.z = 0.0;
+	} // the floor supplies whatever points into it or out of it, as for one point
 	body->pos = hs_add(body->pos, d);
 }
 

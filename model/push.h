@@ -6,6 +6,12 @@
 
 #include "world_internal.h"
 
+// Coulomb friction of a fingertip on an object and of an object on the floor (the same μ for
+// both, docs/model.md §4): a part drags the surface it touches sideways by at most μ times how far
+// it went into it (contact.c), and a push that presses an object on the floor at least as much
+// as it drives it sideways leaves it where it is (push.c).
+#define HS_PUSH_FRICTION 1.0
+
 // Eq. 1-2 for an object on the floor (two or more floor vertices, or grounded): moves the surface
 // point c toward b without lifting the object off the floor or turning it into it (docs/model.md
 // §4 "Pushing an object on the floor"). Returns false, leaving the body alone, when the object is

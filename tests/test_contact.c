@@ -12,6 +12,7 @@
 #include "contact.h"
 #include "manipulate.h"
 #include "world_internal.h"
+#include "push.h"
 #include "test_rig.h"
 
 #define FAR RIG_FAR
@@ -61,9 +62,122 @@ static void test_point_inside_nearest_face(void **state) {
 	assert_vec3_near(contact(w, 0).point, hs_v3(-0.5, 0, 2.1), 1e-15);
 	assert_vec3_near(contact(w, 0).finger, hs_v3(-0.49, 0, 2.1), 1e-15);
 	w->contact_count = 0;
-	move_point(w, 0, hs_v3(-0.45, 0, 2.1), hs_v3(-0.46, 0.01, 2.1)); // coming out: the outward part is dropped
+	move_point(w, 0, hs_v3(-0.45, 0, 2.1), hs_v3(-0.46, 0.01, 2.1)); // coming out: it drives nothing
 	assert_int_equal(hs_contact_detect(w, 0, NULL), 1);
-	assert_vec3_near(contact(w, 0).finger, hs_v3(-0.5, 0.01, 2.1), 1e-15);
+	assert_vec3_near(contact(w, 0).finger, hs_v3(-0.5, 0, 2.1), 1e-15);
+	hs_world_destroy(w);
+}
+
+// Friction at the fingertip (docs/model.md §3): a part drives C in by how far it went in along -n
+// and sideways by at most μ (HS_PUSH_FRICTION, 1) times that; inside that cone B is where it went,
+// as eq. 1-2; a part not going in drives nothing.
+static void test_fingertip_friction_cone(void **state) {
+	(void)state;
+	assert_true(HS_PUSH_FRICTION == 1.0); // the closed forms below
+	hs_world *w = cube_world();
+	// reaching the top: crosses z = 2.5 at 0.8 of its path, C = (0.34, 0.2, 2.5); CB = (0.06, 0, -0.05)
+	// goes in 0.05 and sideways 0.06 > 0.05: B = C + (0.05, 0, -0.05)
+	move_point(w, 3, hs_v3(0.1, 0.2, 2.7), hs_v3(0.4, 0.2, 2.45));
+	assert_int_equal(hs_contact_detect(w, 0, NULL), 1);
+	assert_vec3_near(contact(w, 0).point, hs_v3(0.34, 0.2, 2.5), 1e-12);
+	assert_vec3_near(contact(w, 0).finger, hs_v3(0.39, 0.2, 2.45), 1e-12);
+	// sunk in the -x face (touching): in 0.01 and sideways 0.03 -> 0.01; sideways 0.005 stays whole
+	w->contact_count = 0;
+	w->hands[0].points[3] = w->hands[0].prev_points[3] = RIG_FAR;
+	w->hands[0].touch_points = 1u;
+	move_point(w, 0, hs_v3(-0.45, 0, 2.1), hs_v3(-0.44, 0.03, 2.1));
+	assert_int_equal(hs_contact_detect(w, 0, NULL), 1);
+	assert_vec3_near(contact(w, 0).point, hs_v3(-0.5, 0, 2.1), 1e-15);
+	assert_vec3_near(contact(w, 0).finger, hs_v3(-0.49, 0.01, 2.1), 1e-15);
+	w->contact_count = 0;
+	move_point(w, 0, hs_v3(-0.45, 0, 2.1), hs_v3(-0.44, 0.005, 2.1));
+	assert_int_equal(hs_contact_detect(w, 0, NULL), 1);
+	assert_vec3_near(contact(w, 0).finger, hs_v3(-0.49, 0.005, 2.1), 1e-15);
+	w->contact_count = 0;
+	move_point(w, 0, hs_v3(-0.45, 0, 2.1), hs_v3(-0.45, 0.02, 2.1)); // along the face only
+	assert_int_equal(hs_contact_detect(w, 0, NULL), 1);
+	assert_vec3_near(contact(w, 0).finger, hs_v3(-0.5, 0, 2.1), 1e-15);
+	hs_world_destroy(w);
+}
+
+// Contact hysteresis: a touching check point off the surface by less than grasp_release_mm still
+// touches; on an object that did not move last frame it is a contact that drives nothing (C = B,
+// the point moved onto the nearest face), so a fingertip trembling on a still object stays one
+// push (state 1). On an object it moved it is none: the object goes on by eq. 3.
+static void test_touching_point_within_margin(void **state) {
+	(void)state;
+	hs_world *w = cube_world();
+	hs_body *b = &w->bodies[0];
+	b->prev = b->pos;
+	b->rot_prev = b->rot;
+	w->hands[0].touch_points = 1u << 3;
+	move_point(w, 3, hs_v3(0.1, 0.2, 2.499), hs_v3(0.1, 0.2, 2.503));
+	assert_int_equal(hs_contact_detect(w, 0, NULL), 1);
+	assert_vec3_near(contact(w, 0).point, hs_v3(0.1, 0.2, 2.5), 1e-15);
+	assert_vec3_near(contact(w, 0).finger, contact(w, 0).point, 0.0);
+	assert_int_equal(w->hands[0].near_points, 1u << 3);
+	w->contact_count = 0;
+	w->hands[0].near_points = 0;
+	b->prev.x -= 0.001; // moved last frame: no contact, still touching
+	assert_int_equal(hs_contact_detect(w, 0, NULL), 0);
+	assert_int_equal(w->hands[0].near_points, 1u << 3);
+	w->contact_count = 0; // ... unless another part of the hand pushes it this frame: 3
+	move_point(w, 7, hs_v3(0.0, 0.2, 2.6), hs_v3(0.0, 0.2, 2.49));
+	assert_int_equal(hs_contact_detect(w, 0, NULL), 2);
+	assert_int_equal(hs_contact_classify(w->contacts, 2, w->grasp_limit, false), HS_CONTACT_PUSH_MANY);
+	assert_true(w->contacts[0].t == 0.0 || w->contacts[1].t == 0.0);
+	w->contact_count = 0;
+	w->hands[0].points[7] = w->hands[0].prev_points[7] = RIG_FAR;
+	b->prev = b->pos;
+	w->hands[0].near_points = 0;
+	move_point(w, 3, hs_v3(0.1, 0.2, 2.499), hs_v3(0.1, 0.2, 2.506)); // beyond the margin: let go
+	assert_int_equal(hs_contact_detect(w, 0, NULL), 0);
+	assert_int_equal(w->hands[0].near_points, 0u);
+	hs_world_destroy(w);
+}
+
+// A part reaching a face this frame behind a part of the same finger that touched that face
+// already and drives it further in is set aside (the face, pushed by the leading part, is still
+// ahead of it); going in further, or on another finger, it touches.
+static void test_trailing_part_set_aside(void **state) {
+	(void)state;
+	hs_world *w = cube_world();
+	w->hands[0].touch_points = 1u << 7;                           // finger 1's tip touched the -x face
+	move_point(w, 7, hs_v3(-0.45, 0, 2.1), hs_v3(-0.43, 0, 2.1)); // sunk: drives it in 0.02
+	move_point(w, 6, hs_v3(-0.6, 0, 2.2), hs_v3(-0.49, 0, 2.2));  // its DIP reaches it, 0.01 in
+	assert_int_equal(hs_contact_detect(w, 0, NULL), 1);
+	assert_int_equal(contact(w, 0).part, 7);
+	w->contact_count = 0;
+	move_point(w, 6, hs_v3(-0.6, 0, 2.2), hs_v3(-0.47, 0, 2.2)); // 0.03 in: ahead of the tip
+	assert_int_equal(hs_contact_detect(w, 0, NULL), 2);
+	w->contact_count = 0;
+	move_point(w, 6, hs_v3(-0.6, 0, 2.2), hs_v3(-0.49, 0, 2.2));
+	move_point(w, 11, hs_v3(-0.6, 0.2, 2.2), hs_v3(-0.49, 0.2, 2.2)); // another finger: touches
+	assert_int_equal(hs_contact_detect(w, 0, NULL), 2);
+	hs_world_destroy(w);
+}
+
+// A check line whose end lies within grasp_release_mm of the part at a touching check point is
+// that point's business, as a line with an end inside: the side of a fingertip resting near an
+// edge does not push the edge. Line 8 runs beside check points 2 and 3 (finger 0, segment 2).
+static void test_line_beside_touching_point(void **state) {
+	(void)state;
+	hs_world *w = cube_world();
+	hs_hand *hand = &w->hands[0];
+	hand->lines[8][0] = hs_v3(0.3, 0, 2.7); // enters the top, leaves +x; its end 3 mm off the +x face
+	hand->lines[8][1] = hs_v3(0.503, 0, 2.45);
+	assert_int_equal(hs_contact_detect(w, 0, NULL), 1);
+	assert_true(contact(w, 0).edge);
+	w->contact_count = 0;
+	hand->touch_points = 1u << 3;
+	assert_int_equal(hs_contact_detect(w, 0, NULL), 0);
+	hand->touch_points = 1u << 1; // another point of that finger: the line still touches
+	assert_int_equal(hs_contact_detect(w, 0, NULL), 1);
+	w->contact_count = 0;
+	hand->touch_points = 0; // point 3 reaching the top this frame: the line is its business too
+	move_point(w, 3, hs_v3(0.45, 0, 2.6), hs_v3(0.45, 0, 2.49));
+	assert_int_equal(hs_contact_detect(w, 0, NULL), 1);
+	assert_int_equal(contact(w, 0).part, 3);
 	hs_world_destroy(w);
 }
 
@@ -456,6 +570,10 @@ int main(void) {
 	const struct CMUnitTest tests[] = {
 	    cmocka_unit_test(test_point_enters_face),
 	    cmocka_unit_test(test_point_inside_nearest_face),
+	    cmocka_unit_test(test_fingertip_friction_cone),
+	    cmocka_unit_test(test_touching_point_within_margin),
+	    cmocka_unit_test(test_line_beside_touching_point),
+	    cmocka_unit_test(test_trailing_part_set_aside),
 	    cmocka_unit_test(test_point_at_edge_and_surface),
 	    cmocka_unit_test(test_line_crosses_edge),
 	    cmocka_unit_test(test_line_across_and_line_ending_inside),

@@ -124,6 +124,81 @@ static void test_push_high_tips(void **state) {
 }
 
 // Off the floor the rule does not apply: eq. 1-2 for a free object.
+// (e) The floor's friction cone: a push that presses a box on the floor down at least 1/μ times as
+// much as it drives it sideways leaves it (pose to the bit), at one point and at several; outside
+// the cone the one point rule above applies and the several points slide it along the floor.
+static void test_press_within_floor_cone_holds(void **state) {
+	(void)state;
+	assert_true(HS_PUSH_FRICTION == 1.0);
+	hs_world *w = box_world(hs_v3(0.1, 0.1, 0.1));
+	hs_body *b = &w->bodies[0];
+	hs_vec3 c = hs_v3(0.04, 0.01, 0.1);
+	assert_true(hs_push_on_floor(w, b, c, hs_add(c, hs_v3(0.0012, -0.0009, -0.0015)))); // |h| = 0.0015
+	assert_true(b->pos.x == 0.0 && b->pos.y == 0.0 && b->pos.z == 0.05);
+	assert_true(b->rot.w == 1.0 && b->rot.x == 0.0 && b->rot.y == 0.0 && b->rot.z == 0.0);
+	hs_push_many(w, b, hs_v3(0.001, 0, -0.002));
+	assert_true(b->pos.x == 0.0 && b->pos.y == 0.0 && b->pos.z == 0.05);
+	hs_push_many(w, b, hs_v3(0.003, 0, -0.002));
+	assert_true(b->pos.x == 0.003 && b->pos.y == 0.0 && b->pos.z == 0.05);
+	assert_true(hs_push_on_floor(w, b, c, hs_add(c, hs_v3(0.002, 0, -0.001))));
+	assert_true(b->pos.x != 0.003 || hs_quat_angle(b->rot) > 0.0); // outside the cone it acts
+	hs_world_destroy(w);
+}
+
+// (f) A push at one point that began in the frame moved the object over the part of the frame
+// after the finger reached it (hs_contact.t): the pose a frame ago that eq. 3 continues from makes
+// the velocity that motion over that time, and the spin that turn over it (1 / (1 - t), at most
+// 4), so a flick flies on at the finger's speed at any frame rate. An object already moving is
+// remembered as pushed (pos - prev is the push).
+static void test_push_remembers_finger_speed(void **state) {
+	(void)state;
+	const double from[] = {-0.06, -0.068, -0.06};
+	const double speedup[] = {2.0, 4.0, 2.0}; // reached at t = 0.5, at 0.9 (capped), off centre
+	for (int k = 0; k < 3; ++k) {
+		hs_world *w = box_world(hs_v3(0.1, 0.1, 0.1));
+		hs_body *b = &w->bodies[0];
+		b->prev = b->pos; // at rest
+		double y = k == 2 ? 0.03 : 0.0;
+		w->hands[0].prev_points[7] = hs_v3(from[k], y, 0.05); // at G's height: slides, no swing
+		w->hands[0].points[7] = hs_v3(from[k] + 0.02, y, 0.05);
+		hs_manipulate(w);
+		assert_int_equal(b->contact, HS_CONTACT_PUSH_ONE);
+		hs_vec3 moved = hs_sub(b->pos, hs_v3(0, 0, 0.05));
+		assert_true(moved.x > 0.0);
+		assert_vec3_near(hs_sub(b->pos, b->prev), hs_scale(moved, speedup[k]), 1e-15);
+		double turn = hs_quat_angle(b->rot), spin = hs_quat_angle(hs_quat_mul(b->rot, hs_quat_conj(b->rot_prev)));
+		assert_near(spin, speedup[k] * turn, 1e-12);
+		assert_true(k < 2 ? turn == 0.0 : turn > 0.01);
+		hs_world_destroy(w);
+	}
+	hs_world *w = box_world(hs_v3(0.1, 0.1, 0.1)); // moving already: pos - prev is the push
+	hs_body *b = &w->bodies[0];
+	b->prev = hs_v3(-0.001, 0, 0.05);
+	w->hands[0].prev_points[7] = hs_v3(-0.06, 0, 0.05);
+	w->hands[0].points[7] = hs_v3(-0.04, 0, 0.05);
+	hs_manipulate(w);
+	assert_vec3_near(b->prev, hs_v3(0, 0, 0.05), 0.0);
+	hs_world_destroy(w);
+}
+
+// (g) An object touching the floor at one vertex lies on it: a push at several points with an
+// upward part slides it along the floor, never lifts it (it used to fly off on the push's rise).
+static void test_push_on_a_corner_keeps_floor(void **state) {
+	(void)state;
+	hs_world *w = box_world(hs_v3(0.1, 0.1, 0.1));
+	hs_body *b = &w->bodies[0];
+	hs_quat tilt = hs_quat_mul(hs_quat_from_axis_angle(hs_v3(1, 0, 0), 0.1), hs_quat_from_axis_angle(hs_v3(0, 1, 0), 0.1));
+	b->rot = hs_quat_normalize(tilt);
+	b->pos = hs_v3(0, 0, 0.2);
+	b->pos.z -= hs_motion_pose_vertices(w, b); // its lowest vertex on the floor
+	hs_motion_keep_above_floor(w, b);
+	assert_int_equal(b->floor_contacts, 1);
+	hs_vec3 at = b->pos;
+	hs_push_many(w, b, hs_v3(0.002, 0.001, 0.003));
+	assert_true(b->pos.x == at.x + 0.002 && b->pos.y == at.y + 0.001 && b->pos.z == at.z);
+	hs_world_destroy(w);
+}
+
 static void test_free_object_untouched(void **state) {
 	(void)state;
 	hs_world *w = box_world(hs_v3(0.1, 0.1, 0.1));
@@ -139,6 +214,9 @@ int main(void) {
 	    cmocka_unit_test(test_press_down_leaves_box),
 	    cmocka_unit_test(test_push_low_slides),
 	    cmocka_unit_test(test_push_high_tips),
+	    cmocka_unit_test(test_press_within_floor_cone_holds),
+	    cmocka_unit_test(test_push_remembers_finger_speed),
+	    cmocka_unit_test(test_push_on_a_corner_keeps_floor),
 	    cmocka_unit_test(test_free_object_untouched),
 	};
 	return cmocka_run_group_tests(tests, NULL, NULL);
