@@ -127,7 +127,7 @@ static void carry_along(hs_world *world, int moved, int current, hs_vec3 d) {
 // after the end of a 0.1 s swing, its last held frame is mid-swing and a throw aimed 2 m away
 // landed 1.11 m short. The spin is the wrist's turn over that frame. Any other release (a push
 // ends) flies on with the motion and turn of its last frame (§4.1).
-static void release(const hs_world *world, hs_body *body) {
+static void release(hs_world *world, hs_body *body) {
 	if (body->grasped_by > 0) {
 		const hs_hand *hand = &world->hands[body->grasped_by - 1];
 		double dt = world->def.dt;
@@ -137,6 +137,10 @@ static void release(const hs_world *world, hs_body *body) {
 		body->spin = hs_quat_normalize(hs_quat_mul(hand->wrist_rot, hs_quat_conj(hand->prev_wrist_rot)));
 	} else {
 		body->spin = hs_quat_normalize(hs_quat_mul(body->rot, hs_quat_conj(body->rot_prev)));
+		if (hs_push_release_on_floor(world, body)) { // stable on the floor: it stops there (push.c)
+			body->grasped_by = 0;
+			return;
+		}
 	}
 	body->grasped_by = 0;
 	body->grounded = 0;
