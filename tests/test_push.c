@@ -236,6 +236,27 @@ static void test_push_end_stops_on_floor(void **state) {
 	hs_world_destroy(w);
 }
 
+// (i) A sunk fingertip that leaves a moving object (it drives nothing, B = C) neither moves it nor
+// takes its motion away: pos - prev stays the motion it had (eq. 3 goes on from it when the contact
+// ends). On an object at rest nothing changes either.
+static void test_leaving_part_keeps_motion(void **state) {
+	(void)state;
+	for (int moving = 0; moving < 2; ++moving) {
+		hs_world *w = box_world(hs_v3(0.1, 0.1, 0.1));
+		hs_body *b = &w->bodies[0];
+		hs_vec3 prev = moving ? hs_v3(-0.001, 0, 0.05) : b->pos;
+		b->prev = prev;
+		w->hands[0].touch_points = 1u << 7;                 // touching last frame, 1 mm in
+		w->hands[0].prev_points[7] = hs_v3(-0.049, 0, 0.05);
+		w->hands[0].points[7] = hs_v3(-0.0495, 0, 0.05);    // drawn back, still inside
+		hs_manipulate(w);
+		assert_int_equal(b->contact, HS_CONTACT_PUSH_ONE);
+		assert_true(b->pos.x == 0.0 && b->pos.y == 0.0 && b->pos.z == 0.05);
+		assert_true(b->prev.x == prev.x && b->prev.y == prev.y && b->prev.z == prev.z);
+		hs_world_destroy(w);
+	}
+}
+
 static void test_free_object_untouched(void **state) {
 	(void)state;
 	hs_world *w = box_world(hs_v3(0.1, 0.1, 0.1));
@@ -255,6 +276,7 @@ int main(void) {
 	    cmocka_unit_test(test_push_remembers_finger_speed),
 	    cmocka_unit_test(test_push_on_a_corner_keeps_floor),
 	    cmocka_unit_test(test_push_end_stops_on_floor),
+	    cmocka_unit_test(test_leaving_part_keeps_motion),
 	    cmocka_unit_test(test_free_object_untouched),
 	};
 	return cmocka_run_group_tests(tests, NULL, NULL);
