@@ -127,7 +127,7 @@ static void carry_along(hs_world *world, int moved, int current, hs_vec3 d) {
 // after the end of a 0.1 s swing, its last held frame is mid-swing and a throw aimed 2 m away
 // landed 1.11 m short. The spin is the wrist's turn over that frame. Any other release (a push
 // ends) flies on with the motion and turn of its last frame (§4.1).
-static void release(const hs_world *world, hs_body *body) {
+static void release(hs_world *world, hs_body *body) {
 	if (body->grasped_by > 0) {
 		const hs_hand *hand = &world->hands[body->grasped_by - 1];
 		double dt = world->def.dt;
@@ -137,6 +137,10 @@ static void release(const hs_world *world, hs_body *body) {
 		body->spin = hs_quat_normalize(hs_quat_mul(hand->wrist_rot, hs_quat_conj(hand->prev_wrist_rot)));
 	} else {
 		body->spin = hs_quat_normalize(hs_quat_mul(body->rot, hs_quat_conj(body->rot_prev)));
+		if (hs_push_release_on_floor(world, body)) { // stable on the floor: it stops there (push.c)
+			body->grasped_by = 0;
+			return;
+		}
 	}
 	body->grasped_by = 0;
 	body->grounded = 0;
@@ -212,6 +216,21 @@ static void remember_motion(hs_body *body, hs_vec3 old_pos, hs_quat old_rot, dou
 	body->rot_prev = hs_quat_normalize(hs_quat_mul(hs_quat_conj(scaled), body->rot));
 }
 
+// A push at one point whose part drives nothing (B = C: a sunk part leaving or sliding along the
+// face, contact.c's friction) on an object that moved last frame neither moves it nor takes its
+// motion away: eq. 3 goes on from the motion it had when the contact ends (as a part off the
+// surface within the margin, contact.c: a finger drawn back after a push does not stop what it
+// pushed). The flicked pyramid was held on its edge for 2-3 frames at 120 frames/s while the
+// lifting fingertip left it, its motion remembered as none, and fell back onto its base.
+static bool push_drives_nothing(hs_contact_state state, const hs_contact *cs, int n, bool at_rest) {
+	if (at_rest || state != HS_CONTACT_PUSH_ONE)
+		return false;
+	for (int k = 0; k < n; ++k)
+		if (cs[k].finger.x != cs[k].point.x || cs[k].finger.y != cs[k].point.y || cs[k].finger.z != cs[k].point.z)
+			return false;
+	return true;
+}
+
 // Which finger parts of each hand touch an object at the end of the frame: next frame a part found
 // inside an object it did not reach then is in contact only if it touches now (contact.c). A check
 // point that touched and has come off by less than grasp_release_mm still touches (near_points).
@@ -261,7 +280,8 @@ void hs_manipulate(hs_world *world) {
 		move_by_contacts(world, body, state, &world->contacts[first], n, continues);
 		hs_motion_keep_above_floor(world, body); // §4.2 for a pushed object; the trajectory shows its floor contacts
 		double after = state == HS_CONTACT_PUSH_ONE && at_rest ? 1.0 - world->contacts[first].t : 1.0;
-		remember_motion(body, old_pos, old_rot, after);
+		if (!push_drives_nothing(state, &world->contacts[first], n, at_rest)) // else its motion is kept
+			remember_motion(body, old_pos, old_rot, after);
 		body->held = 1;
 		hs_wake(world, i);
 		body->grounded = 0;

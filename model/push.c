@@ -125,3 +125,22 @@ void hs_push_many(hs_world *world, hs_body *body, hs_vec3 d) {
 	body->pos = hs_add(body->pos, d);
 }
 
+
+// §4.1-4.2 when a push ends: an object lying on the floor with G' inside its floor hull (eq. 4-5,
+// Gm the motion eq. 3 would carry on plus this frame's gravity) loses its inertia there, as an
+// object landing does ([H] §4.1: no rebound, no sliding). Eq. 3 otherwise carried the push's last
+// motion on for a frame, a dt-dependent slide (1.7 cm at 12 frames/s), and a rise from a noisy
+// push above G's height launched the box.
+bool hs_push_release_on_floor(hs_world *world, hs_body *body) {
+	int count = 0;
+	if (!lies_on_floor(world, body, &count))
+		return false;
+	double dt = world->def.dt;
+	hs_vec3 gm = hs_add(hs_sub(body->pos, body->prev), hs_scale(world->def.gravity, dt * dt));
+	if (!hs_motion_settle(world, body, count, 0.0, gm, false, NULL))
+		return false;
+	body->rot_prev = body->rot;
+	body->grounded = 1;
+	body->floor_contacts = count;
+	return true;
+}

@@ -199,6 +199,64 @@ static void test_push_on_a_corner_keeps_floor(void **state) {
 	hs_world_destroy(w);
 }
 
+// (h) A push that ends leaves an object lying stable on the floor where it is ([H] §4.1: no
+// sliding; §4.2 judged as on landing): a box slid 1 mm a frame at G's height (G' 1.8 cm ahead of G
+// with Gm = (0.001, 0, -g dt²), inside its base) stops when the tip draws back, instead of flying
+// on a frame by eq. 3. A box standing on an edge (G' beyond its one-edge hull) is not stopped.
+static void test_push_end_stops_on_floor(void **state) {
+	(void)state;
+	hs_world *w = box_world(hs_v3(0.1, 0.1, 0.1));
+	hs_body *b = &w->bodies[0];
+	b->prev = hs_v3(-0.001, 0, 0.05); // moving already: no speed-up of the remembered motion
+	w->hands[0].prev_points[7] = hs_v3(-0.0505, 0, 0.05);
+	w->hands[0].points[7] = hs_v3(-0.049, 0, 0.05);
+	hs_manipulate(w);
+	assert_int_equal(b->contact, HS_CONTACT_PUSH_ONE);
+	assert_vec3_near(b->pos, hs_v3(0.001, 0, 0.05), 1e-15);
+	hs_vec3 at = b->pos;
+	w->hands[0].prev_points[7] = w->hands[0].points[7];
+	w->hands[0].points[7] = hs_v3(-0.08, 0, 0.05); // drawn back
+	hs_manipulate(w);
+	assert_int_equal(b->contact, HS_CONTACT_NONE);
+	assert_true(b->pos.x == at.x && b->pos.y == at.y && b->pos.z == at.z);
+	assert_true(b->prev.x == at.x && b->prev.y == at.y && b->prev.z == at.z); // no inertia left
+	assert_true(b->grounded == 1 && b->asleep == 1);
+	assert_near(hs_quat_angle(b->spin), 0.0, 0.0);
+	hs_world_destroy(w);
+
+	w = box_world(hs_v3(0.1, 0.1, 0.1)); // on its edge x = 0.05, G over x = 0.05 - 0.0707 sin(45 - 20 deg)
+	b = &w->bodies[0];
+	b->rot = hs_quat_from_axis_angle(hs_v3(0, 1, 0), -0.349);
+	b->pos = hs_v3(0, 0, 0.2);
+	b->pos.z -= hs_motion_pose_vertices(w, b);
+	hs_motion_keep_above_floor(w, b);
+	assert_int_equal(b->floor_contacts, 2);
+	b->prev = b->pos;
+	assert_false(hs_push_release_on_floor(w, b));
+	hs_world_destroy(w);
+}
+
+// (i) A sunk fingertip that leaves a moving object (it drives nothing, B = C) neither moves it nor
+// takes its motion away: pos - prev stays the motion it had (eq. 3 goes on from it when the contact
+// ends). On an object at rest nothing changes either.
+static void test_leaving_part_keeps_motion(void **state) {
+	(void)state;
+	for (int moving = 0; moving < 2; ++moving) {
+		hs_world *w = box_world(hs_v3(0.1, 0.1, 0.1));
+		hs_body *b = &w->bodies[0];
+		hs_vec3 prev = moving ? hs_v3(-0.001, 0, 0.05) : b->pos;
+		b->prev = prev;
+		w->hands[0].touch_points = 1u << 7;                 // touching last frame, 1 mm in
+		w->hands[0].prev_points[7] = hs_v3(-0.049, 0, 0.05);
+		w->hands[0].points[7] = hs_v3(-0.0495, 0, 0.05);    // drawn back, still inside
+		hs_manipulate(w);
+		assert_int_equal(b->contact, HS_CONTACT_PUSH_ONE);
+		assert_true(b->pos.x == 0.0 && b->pos.y == 0.0 && b->pos.z == 0.05);
+		assert_true(b->prev.x == prev.x && b->prev.y == prev.y && b->prev.z == prev.z);
+		hs_world_destroy(w);
+	}
+}
+
 static void test_free_object_untouched(void **state) {
 	(void)state;
 	hs_world *w = box_world(hs_v3(0.1, 0.1, 0.1));
@@ -217,6 +275,8 @@ int main(void) {
 	    cmocka_unit_test(test_press_within_floor_cone_holds),
 	    cmocka_unit_test(test_push_remembers_finger_speed),
 	    cmocka_unit_test(test_push_on_a_corner_keeps_floor),
+	    cmocka_unit_test(test_push_end_stops_on_floor),
+	    cmocka_unit_test(test_leaving_part_keeps_motion),
 	    cmocka_unit_test(test_free_object_untouched),
 	};
 	return cmocka_run_group_tests(tests, NULL, NULL);
