@@ -26,9 +26,9 @@
 //    stop whatever its speed (2 below 0.369 m/s, 1 below 0.145 m/s: rest_speed 0.10). The cost: a
 //    real reversal reads 0 along the old path until the chord turns, i.e. until the hand is back
 //    where the window began (≤ 8 samples). A ramp from rest (constant acceleration a) reads
-//    a h (1.545, 6.735, 15.94, 28.33, 42.39, 56.43, 69.12) / 100 ... (true a h k) at samples 1-7:
-//    it lags before the window lies on it (at 10 m/s² motion starts at sample 3 instead of 1). test_tracker checks
-//    all three responses against these closed forms.
+//    a h (0.1545, 0.6735, 1.594, 2.833, 4.239, 5.643, 6.912) at samples 1-7 (true: a h k): it
+//    lags until the window lies on it (at 10 m/s² motion starts at sample 3 instead of 1).
+//    test_tracker checks all three responses against these closed forms.
 //    A start from rest still overshoots: 0, 0.309 V, 0.729 V, 1.113 V, 1.366 V, 1.446 V, 1.362 V,
 //    1.176 V, V (a throw 0.1 s after the hand set off leaves 45 % too fast); the quadratic fit is
 //    exact on every constant-acceleration path once the window lies on it.

@@ -563,7 +563,7 @@ static void test_release_after_stop_is_drop(void **state) {
 	(void)state;
 	for (int decel = 0; decel < 2; ++decel) {
 		hs_world *w = spring_world(1.0 / 60, NULL);
-		hs_object_id ball = add_sphere(w, 0.04, 0.2, hs_v3(-0.6, 0, 0.04), hs_v3(0, 0, 0));
+		add_sphere(w, 0.04, 0.2, hs_v3(-0.6, 0, 0.04), hs_v3(0, 0, 0));
 		hs_vec3 p = hs_v3(-0.6, 0, 0.04);
 		for (int f = 0; f < 30; ++f) { // into the ball, press, lift to 0.4 m
 			stylus_at(w, p, f >= 10);
@@ -591,7 +591,6 @@ static void test_release_after_stop_is_drop(void **state) {
 		assert_int_equal(rel.kind, HS_RELEASE_DROP);
 		assert_true(tracker_of(w).motion_starts == 1); // the carry's start only: no motion invented
 		hs_world_destroy(w);
-		(void)ball;
 	}
 }
 
