@@ -447,7 +447,10 @@ int hs_world_contacts(const hs_world *world, hs_contact *out, int max);
 // Per frame: hs_world_set_stylus gives the stylus pose and button at the END of the coming frame
 // (the stylus moves linearly from its previous pose during the frame), then hs_world_step. Button
 // edges take effect at the end of the frame: a press attaches the spring (direct pick, catch, or
-// the 'I want this one' candidate), a release drops (hand at rest) or throws (hand moving).
+// the 'I want this one' candidate) at its rest length — its anchor is the stylus plus an offset
+// fixed at the press (hs_spring_state.anchor), so nothing moves until the pen does — and a release
+// drops (hand at rest) or throws (hand moving; a velocity estimate against the hand's recent path,
+// the fit's overshoot at a stop, counts as none).
 // Objects keep their orientation (no torque, §4.2); spheres collide as exact spheres, every other
 // shape as its world-axis bounding box. In spring worlds hs_object_state.contact is
 // HS_CONTACT_GRASP for the object on the spring, HS_CONTACT_NONE otherwise, and `resting` means
