@@ -16,6 +16,7 @@
 //    keeps the candidate unless the heading has clearly turned away from it (more than 60 deg);
 //    the hand at rest keeps it too.
 #include "spring_grab.h"
+#include "spring_params.h"
 
 // The object the stylus is inside (nearest centre first), -1 when none.
 static int direct_pick(const hs_world *world, const hs_spring_system *sys, hs_vec3 s) {
@@ -99,15 +100,34 @@ void hs_spring_update_candidate(const hs_world *world, hs_spring_system *sys) {
 		sys->candidate = -1;
 }
 
+// The spring at the press (§4.4: "the spring can be extended or compressed by keeping the pen
+// button depressed while moving the pen"): neutral. Its anchor A = S + offset, with the offset
+// fixed here, lies at the rest length x0 from G: straight above G (against gravity; +z without
+// gravity) when the stylus is inside the object (a direct pick: the object then hangs 1.2 x0 below
+// A once lifted), else on the line from G toward the stylus (a catch or a selection at a
+// distance: the spring lies where the user sees it). Nothing moves at the press; the force grows
+// only as the pen moves (k d for a displacement d along the spring). hs_world_spring_attach
+// (HS_ATTACH_API, scripts and tests) keeps the literal spring from the pen tip (offset 0), so a
+// test can set an initial extension by where it holds the stylus.
 void hs_spring_attach(hs_world *world, hs_spring_system *sys, int i, hs_attach_kind kind) {
 	sys->attached = i;
 	sys->attach_kind = kind;
-	hs_vec3 d = hs_sub(world->bodies[i].pos, sys->stylus);
+	const hs_body *body = &world->bodies[i];
+	hs_spring_params sp = hs_spring_params_of(&sys->def, world, body->mass);
+	hs_spring_geom g = i < sys->geom_count ? sys->geom[i] : hs_spring_geom_of(world, body);
+	hs_vec3 d = hs_sub(body->pos, sys->stylus);
 	double len = hs_length(d);
 	hs_vec3 down = hs_normalize(world->def.gravity);
 	if (hs_length(down) == 0.0)
 		down = hs_v3(0.0, 0.0, -1.0);
-	sys->axis = len > 0.0 ? hs_scale(d, 1.0 / len) : down; // an object picked at G hangs below
+	bool inside = hs_spring_geom_inside(&g, body->pos, sys->stylus);
+	if (kind == HS_ATTACH_API) { // the literal spring from the pen tip: tests set its extension
+		sys->axis = len > 0.0 ? hs_scale(d, 1.0 / len) : down;
+		sys->anchor_offset = hs_v3(0.0, 0.0, 0.0);
+	} else {
+		sys->axis = inside || !(len > 1e-9 * sp.x0) ? down : hs_scale(d, 1.0 / len); // unit A → G
+		sys->anchor_offset = hs_sub(hs_mul_add(body->pos, -sp.x0, sys->axis), sys->stylus);
+	}
 	if (sys->candidate == i)
 		sys->candidate = -1;
 }
@@ -153,4 +173,5 @@ void hs_spring_detach(hs_world *world, hs_spring_system *sys, bool classify, dou
 	r->velocity = body->vel;
 	sys->attached = -1;
 	sys->attach_kind = HS_ATTACH_NONE;
+	sys->anchor_offset = hs_v3(0.0, 0.0, 0.0);
 }

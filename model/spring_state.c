@@ -56,7 +56,7 @@ static void stylus_io(hs_spring_system *sys, hs_state_io *io) {
 	hs_state_vec3(io, &sys->stylus_velocity);
 }
 
-// The spring: its object, how it got it, its direction, the candidate and the last release.
+// The spring: its object, how it got it, its direction, its anchor offset, the candidate and the last release.
 static void spring_io(hs_spring_system *sys, hs_state_io *io) {
 	int n = sys->capacity;
 	hs_state_int_range(io, &sys->attached, -1, n - 1);
@@ -64,6 +64,7 @@ static void spring_io(hs_spring_system *sys, hs_state_io *io) {
 	enum_io(io, &kind, HS_ATTACH_NONE, HS_ATTACH_API);
 	sys->attach_kind = (hs_attach_kind)kind;
 	hs_state_vec3(io, &sys->axis);
+	hs_state_vec3(io, &sys->anchor_offset);
 	hs_state_int_range(io, &sys->candidate, -1, n - 1);
 	hs_release *r = &sys->release;
 	int rkind = (int)r->kind;

@@ -38,8 +38,8 @@ static hs_spring_support support_of(const frame_ctx *fx, int i, const hs_spring_
 	su.g = &sys->geom[i];
 	su.attached = i == sys->attached;
 	su.axis = sys->axis;
-	su.stylus_start = sys->stylus_prev;
-	su.stylus_end = sys->stylus;
+	su.stylus_start = hs_spring_anchor_prev(sys); // the spring hangs from the anchor, not the pen tip
+	su.stylus_end = hs_spring_anchor(sys);
 	su.stylus_velocity = sys->stylus_velocity;
 	return su;
 }
@@ -56,7 +56,7 @@ static void step_body(const frame_ctx *fx, int i) {
 	hs_spring_segment sg;
 	memset(&sg, 0, sizeof sg);
 	sg.spring = attached;
-	sg.s0 = sys->stylus_prev;
+	sg.s0 = hs_spring_anchor_prev(sys);
 	sg.w = sys->stylus_velocity;
 	if (attached) // linearise the spring about its state at the frame start
 		hs_spring_linearise(&sg, &sp, p, &sys->axis);

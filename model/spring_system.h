@@ -33,9 +33,18 @@ struct hs_spring_system {
 	// the spring
 	int attached; // body index, -1 when none
 	hs_attach_kind attach_kind;
-	hs_vec3 axis;  // unit direction S → G used when they coincide
+	hs_vec3 axis;  // unit direction A → G used when they coincide
+	hs_vec3 anchor_offset; // A − S: the spring's anchor A beside the stylus S, fixed at the press
+	                       // so that the spring has its rest length there (spring_grab.c)
 	int candidate; // body index, -1 when none
 	hs_release release;
 };
+
+// The spring's anchor at the end of the coming frame and at its start: the stylus plus the offset
+// fixed at the press (spring_grab.c).
+static inline hs_vec3 hs_spring_anchor(const hs_spring_system *sys) { return hs_add(sys->stylus, sys->anchor_offset); }
+static inline hs_vec3 hs_spring_anchor_prev(const hs_spring_system *sys) {
+	return hs_add(sys->stylus_prev, sys->anchor_offset);
+}
 
 #endif

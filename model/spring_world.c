@@ -110,9 +110,10 @@ hs_status hs_world_spring_state(const hs_world *world, hs_spring_state *out) {
 	if (sys->attached >= 0) {
 		const hs_body *body = &world->bodies[sys->attached];
 		hs_spring_params sp = hs_spring_params_of(&sys->def, world, body->mass);
-		out->length = hs_distance(body->pos, sys->stylus);
+		out->anchor = hs_spring_anchor(sys);
+		out->length = hs_distance(body->pos, out->anchor);
 		out->extension = out->length - sp.x0;
-		out->force = hs_spring_force(&sp, sys->axis, body->pos, body->vel, sys->stylus, sys->stylus_velocity);
+		out->force = hs_spring_force(&sp, sys->axis, body->pos, body->vel, out->anchor, sys->stylus_velocity);
 	}
 	return HS_OK;
 }

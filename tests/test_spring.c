@@ -675,6 +675,111 @@ static void test_state_walk_round_trip(void **state) {
 	hs_world_destroy(w);
 }
 
+// The spring after the last step.
+static hs_spring_state spring_state_of(hs_world *w) {
+	hs_spring_state ss;
+	assert_int_equal(hs_world_spring_state(w, &ss), HS_OK);
+	return ss;
+}
+
+// Holds the stylus at p with the button as given for n frames.
+static void hold_for(hs_world *w, hs_vec3 p, bool button, int n) {
+	for (int f = 0; f < n; ++f) {
+		stylus_at(w, p, button);
+		step(w);
+	}
+}
+
+// A press on a resting 1 kg, 10 cm cube (x0 = 0.1 m, k = 490.5 N/m) with the stylus at s, after
+// the stylus has been there (at rest) for half a second: returns the world, the cube's id in *id.
+static hs_world *pressed_cube(hs_vec3 s, hs_object_id *id) {
+	hs_world *w = spring_world(1.0 / 60, EARTH, NULL);
+	*id = add_box(w, hs_v3(0.1, 0.1, 0.1), 1.0, hs_v3(0, 0, 0.05), hs_v3(0, 0, 0));
+	hold_for(w, s, false, 30);
+	hold_for(w, s, true, 1);
+	return w;
+}
+
+// §4.4 "the spring can be extended or compressed by keeping the pen button depressed while moving
+// the pen": a press is neutral. Pressed 3 cm beside G or 4 cm below it (inside the cube), the
+// anchor is x0 straight above G; the cube does not move at the press nor while the pen is still,
+// the spring has its rest length and no force.
+static void test_press_is_neutral(void **state) {
+	(void)state;
+	const hs_vec3 presses[] = {{0.03, 0, 0.05}, {0, 0, 0.01}, {0.04, -0.03, 0.08}};
+	for (int k = 0; k < 3; ++k) {
+		hs_object_id cube;
+		hs_world *w = pressed_cube(presses[k], &cube);
+		hs_spring_state ss = spring_state_of(w);
+		assert_int_equal(ss.attach_kind, HS_ATTACH_PICK);
+		assert_vec3_near(ss.anchor, hs_v3(0, 0, 0.15), 1e-15); // x0 above G
+		assert_near(ss.extension, 0.0, 1e-15);
+		assert_vec3_near(ss.force, hs_v3(0, 0, 0), 1e-12);
+		hold_for(w, presses[k], true, 60);
+		assert_vec3_near(pos_of(w, cube), hs_v3(0, 0, 0.05), 0.0); // not a bit moved
+		assert_vec3_near(info_of(w, cube).velocity, hs_v3(0, 0, 0), 0.0);
+		hs_world_destroy(w);
+	}
+}
+
+// 'I want this one' 0.45 m from the cube's surface: the anchor lies x0 from G toward the stylus;
+// nothing moves at the press. Then the pen moves d = 5 mm further away along the spring (in 1 s): the force
+// is k d toward the pen (2.45 N, below static friction μ m g = 4.9 N: the cube stays put).
+static void test_far_press_is_neutral(void **state) {
+	(void)state;
+	hs_world *w = spring_world(1.0 / 60, EARTH, NULL);
+	hs_object_id cube = add_box(w, hs_v3(0.1, 0.1, 0.1), 1.0, hs_v3(0, 0, 0.05), hs_v3(0, 0, 0));
+	for (int f = 0; f <= 60; ++f) { // approach along +x at 0.3 m/s, from x = -0.8 to -0.5
+		stylus_at(w, hs_v3(-0.8 + 0.3 * f / 60.0, 0, 0.05), false);
+		step(w);
+	}
+	hs_vec3 s = hs_v3(-0.5, 0, 0.05);
+	hold_for(w, s, false, 30);
+	hold_for(w, s, true, 1);
+	hs_spring_state ss = spring_state_of(w);
+	assert_int_equal(ss.attach_kind, HS_ATTACH_SELECT);
+	assert_vec3_near(ss.anchor, hs_v3(-0.1, 0, 0.05), 1e-15);
+	assert_near(ss.extension, 0.0, 1e-15);
+	hold_for(w, s, true, 30);
+	assert_vec3_near(pos_of(w, cube), hs_v3(0, 0, 0.05), 0.0);
+	double d = 0.005, k = info_of(w, cube).stiffness;
+	for (int f = 1; f <= 60; ++f) { // slowly (5 mm/s: the damper adds c v = 0.22 N)
+		stylus_at(w, hs_v3(-0.5 - d * f / 60.0, 0, 0.05), true);
+		step(w);
+	}
+	hold_for(w, hs_v3(-0.5 - d, 0, 0.05), true, 30);
+	ss = spring_state_of(w);
+	assert_near(ss.extension, d, 1e-15);
+	assert_vec3_near(ss.force, hs_v3(-k * d, 0, 0), 1e-12);
+	assert_vec3_near(pos_of(w, cube), hs_v3(0, 0, 0.05), 0.0);
+	hs_world_destroy(w);
+}
+
+// After the neutral press the force grows as the pen moves: raised by d = 1 cm (< 0.2 x0) the
+// spring pulls k d up (4.905 N of the 9.81 N weight: the cube stays); raised 0.3 m, the cube hangs
+// at rest 1.2 x0 below the anchor, the spring stretched by 0.2 x0 (§4.2).
+static void test_lift_after_neutral_press(void **state) {
+	(void)state;
+	hs_object_id cube;
+	hs_vec3 s = hs_v3(0.03, 0, 0.05);
+	hs_world *w = pressed_cube(s, &cube);
+	double d = 0.01, k = info_of(w, cube).stiffness;
+	hold_for(w, hs_v3(s.x, s.y, s.z + d), true, 30);
+	hs_spring_state ss = spring_state_of(w);
+	assert_vec3_near(ss.force, hs_v3(0, 0, k * d), 1e-12);
+	assert_vec3_near(pos_of(w, cube), hs_v3(0, 0, 0.05), 0.0);
+	for (int f = 1; f <= 60; ++f) { // up 0.3 m in 1 s, then hold 2 s
+		stylus_at(w, hs_v3(s.x, s.y, s.z + d + 0.29 * f / 60.0), true);
+		step(w);
+	}
+	hold_for(w, hs_v3(s.x, s.y, s.z + 0.3), true, 120);
+	ss = spring_state_of(w);
+	assert_vec3_near(ss.anchor, hs_v3(0, 0, 0.45), 1e-12); // the offset (-0.03, 0, 0.1) rides along
+	assert_near(ss.extension, 0.2 * 0.1, 1e-9);
+	assert_vec3_near(pos_of(w, cube), hs_v3(0, 0, 0.45 - 0.12), 1e-9);
+	hs_world_destroy(w);
+}
+
 static void test_invalid_input_rejected(void **state) {
 	(void)state;
 	hs_spring_def sd = hs_default_spring_def();
@@ -743,6 +848,9 @@ int main(void) {
 	    cmocka_unit_test(test_free_flight_and_landing),
 	    cmocka_unit_test(test_deterministic),
 	    cmocka_unit_test(test_state_walk_round_trip),
+	    cmocka_unit_test(test_press_is_neutral),
+	    cmocka_unit_test(test_far_press_is_neutral),
+	    cmocka_unit_test(test_lift_after_neutral_press),
 	    cmocka_unit_test(test_invalid_input_rejected),
 	};
 	return cmocka_run_group_tests_name("spring", tests, NULL, NULL);

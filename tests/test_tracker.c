@@ -386,9 +386,10 @@ static void test_catch(void **state) {
 	assert_near(hs_length(o.velocity), 0.0, 1e-6); // decelerated and stopped
 	ss = spring_of(w);
 	assert_near(ss.extension, 0.2 * o.rest_length, 1e-6); // hanging at rest
-	hs_vec3 p = pos_of(w, ball);
-	assert_near(p.x, s.x, 1e-6);
-	assert_near(p.y, s.y, 1e-6);
+	hs_vec3 p = pos_of(w, ball); // hanging 1.2 x0 below the anchor fixed at the catch (neutral)
+	assert_near(p.x, ss.anchor.x, 1e-6);
+	assert_near(p.y, ss.anchor.y, 1e-6);
+	assert_near(p.z, ss.anchor.z - 1.2 * o.rest_length, 1e-6);
 	hs_world_destroy(w);
 }
 
@@ -456,6 +457,143 @@ static void test_selection_among_three(void **state) {
 	hs_world_destroy(w);
 }
 
+// The fit's end-point velocity weights for window 9, newest first (tracker.c): the closed form of
+// the least-squares quadratic's derivative at τ = 0 over τ = 0, −1, ..., −8 periods.
+static const double W9[9] = {17.0 / 55,    73.0 / 660,  -83.0 / 2310, -201.0 / 1540, -40.0 / 231,
+                             -757.0 / 4620, -79.0 / 770, 7.0 / 660,    29.0 / 165};
+
+// The unclipped response Σ w_j y_j / h to positions y(age j) = f(k − j) (k: periods since the event).
+static double fit_response(double (*f)(double), int k, double h) {
+	double v = 0.0;
+	for (int j = 0; j < 9; ++j)
+		v += W9[j] * f((double)(k - j));
+	return v / h;
+}
+
+static double path_start(double n) { return n > 0.0 ? n : 0.0; }        // V = 1 period⁻¹ from n = 0
+static double path_ramp(double n) { return n > 0.0 ? 0.5 * n * n : 0.0; } // a = 1 period⁻² from n = 0
+static double path_stop(double n) { return n < 0.0 ? n : 0.0; }         // V = 1 period⁻¹ until n = 0
+
+typedef struct response {
+	double v[16];   // velocity estimate (m/s along x) at 0..15 samples after the event
+	int event_at;   // samples after the event of the first rest/motion event, -1 when none
+	bool at_rest;   // after the last sample
+	long starts, ends;
+} response;
+
+// Feeds the tracker 1 s of a hand at rest (or moving at 'speed' along x), then the path
+// p(t) = scale · f(t / h) along x for 16 samples after the event at t = 1 s.
+static response run_response(double (*f)(double), double scale, double speed_before) {
+	hs_spring_def sd = hs_default_spring_def();
+	hs_tracker tr;
+	hs_tracker_init(&tr, &sd, 0.0);
+	double h = 1.0 / sd.tracker_rate;
+	response r = {.event_at = -1};
+	for (int k = -50; k < 16; ++k) {
+		double x = k <= 0 ? speed_before * k * h : scale * f((double)k);
+		long events = tr.motion_starts + tr.motion_ends;
+		hs_tracker_record(&tr, 1.0 + k * h, hs_v3(x, 0.2, 0.5), hs_quat_identity(), false);
+		if (k == 0) {
+			assert_true(tr.at_rest == (speed_before == 0.0)); // settled before the event
+			r.starts = tr.motion_starts;
+			r.ends = tr.motion_ends;
+		}
+		if (k >= 0) {
+			r.v[k] = tr.velocity.x;
+			assert_near(tr.velocity.y, 0.0, 1e-12);
+			if (k > 0 && r.event_at < 0 && tr.motion_starts + tr.motion_ends != events)
+				r.event_at = k;
+		}
+	}
+	r.at_rest = tr.at_rest;
+	r.starts = tr.motion_starts - r.starts;
+	r.ends = tr.motion_ends - r.ends;
+	return r;
+}
+
+// Step (a start from rest at V), ramp (constant acceleration from rest) and stop (V to rest at
+// once) responses of the estimator against their closed forms Σ w_j y_j / h, and the latency of
+// the events in tracker samples (20 ms at 50 Hz). The stop response is the fit's with the part
+// against the hand's path removed: V, 0.691 V, 0.271 V, then 0 — never backwards (the bare fit
+// reads −0.446 V 5 samples after the stop).
+static void test_step_ramp_stop_responses(void **state) {
+	(void)state;
+	const double h = 0.02, V = 1.0, A = 10.0;
+	response r = run_response(path_start, V * h, 0.0); // step: 0, 0.309, 0.729, 1.113 ... 1.446 ... V
+	for (int k = 0; k < 16; ++k)
+		assert_near(r.v[k], V * h * fit_response(path_start, k, h), 1e-12);
+	assert_near(r.v[5], 1.4458874458874459 * V, 1e-12); // the overshoot: +44.6 % (left as it is)
+	assert_near(r.v[8], V, 1e-12);                       // exact from 8 samples on
+	assert_int_equal(r.event_at, 1);                     // motion start: 1 sample (0.309 V > 0.20)
+	assert_int_equal(r.starts, 1);
+	assert_int_equal(r.ends, 0);
+
+	r = run_response(path_ramp, A * h * h, 0.0); // ramp: exact (A k h) from 8 samples on
+	for (int k = 0; k < 16; ++k)
+		assert_near(r.v[k], A * h * h * fit_response(path_ramp, k, h), 1e-11);
+	for (int k = 8; k < 16; ++k)
+		assert_near(r.v[k], A * k * h, 1e-11);
+	// 10 m/s²: the hand passes 0.20 m/s at sample 1; the fit reads 0.031, 0.135, 0.319 m/s at
+	// samples 1-3 (true 0.2, 0.4, 0.6): motion start at sample 3, 2 samples (40 ms) late
+	assert_int_equal(r.event_at, 3);
+	assert_int_equal(r.starts, 1);
+
+	r = run_response(path_stop, V * h, V); // stop from 1 m/s: V, 0.691 V, 0.271 V, 0, 0, ...
+	assert_near(r.v[0], V, 1e-12);
+	assert_near(r.v[1], 38.0 / 55 * V, 1e-12);
+	assert_near(r.v[2], 179.0 / 660 * V, 1e-12);
+	for (int k = 3; k < 16; ++k) {
+		assert_true(V * h * fit_response(path_stop, k, h) <= 1e-12); // the bare fit: ≤ 0 (−0.446 V at 5)
+		assert_near(r.v[k], 0.0, 1e-12);                              // clipped: no motion invented
+	}
+	assert_int_equal(r.event_at, 3); // motion end: 3 samples (60 ms) after the stop
+	assert_true(r.at_rest);
+	assert_int_equal(r.starts, 0);
+	assert_int_equal(r.ends, 1);
+
+	r = run_response(path_stop, 0.3 * h, 0.3); // from 0.3 m/s: 0.271 V = 0.081 < 0.10 at sample 2
+	assert_int_equal(r.event_at, 2);
+	assert_int_equal(r.starts, 0);
+}
+
+// The case in a spring world: carry a ball at 1 m/s, stop abruptly, release 0.1 s later —
+// a drop (the bare fit read −0.45 m/s and threw it backwards); and after a 0.1 s linear
+// deceleration to rest, released 0.1 s later, a drop too (the bare fit read −0.15 m/s).
+static void test_release_after_stop_is_drop(void **state) {
+	(void)state;
+	for (int decel = 0; decel < 2; ++decel) {
+		hs_world *w = spring_world(1.0 / 60, NULL);
+		add_sphere(w, 0.04, 0.2, hs_v3(-0.6, 0, 0.04), hs_v3(0, 0, 0));
+		hs_vec3 p = hs_v3(-0.6, 0, 0.04);
+		for (int f = 0; f < 30; ++f) { // into the ball, press, lift to 0.4 m
+			stylus_at(w, p, f >= 10);
+			step(w);
+		}
+		for (int f = 0; f < 60; ++f) {
+			p.z = 0.04 + 0.36 * (f + 1) / 60.0;
+			stylus_at(w, p, true);
+			step(w);
+		}
+		double speed = 1.0;
+		for (int f = 0; f < 90; ++f) { // carry along +x at 1 m/s for 0.5 s, then stop
+			if (f >= 30)
+				speed = decel ? (speed - 1.0 / 6.0 > 0.0 ? speed - 1.0 / 6.0 : 0.0) : 0.0;
+			p.x += speed / 60.0;
+			stylus_at(w, p, true);
+			step(w);
+			if (f == 29 + (decel ? 6 : 0) + 6) // 0.1 s after the stop: release
+				break;
+		}
+		stylus_at(w, p, false);
+		step(w);
+		hs_release rel;
+		assert_int_equal(hs_world_spring_last_release(w, &rel), HS_OK);
+		assert_int_equal(rel.kind, HS_RELEASE_DROP);
+		assert_true(tracker_of(w).motion_starts == 1); // the carry's start only: no motion invented
+		hs_world_destroy(w);
+	}
+}
+
 int main(void) {
 	const struct CMUnitTest tests[] = {
 	    cmocka_unit_test(test_estimates_exact_on_polynomial_paths),
@@ -468,6 +606,8 @@ int main(void) {
 	    cmocka_unit_test(test_catch),
 	    cmocka_unit_test(test_press_in_empty_space),
 	    cmocka_unit_test(test_selection_among_three),
+	    cmocka_unit_test(test_step_ramp_stop_responses),
+	    cmocka_unit_test(test_release_after_stop_is_drop),
 	};
 	return cmocka_run_group_tests_name("tracker", tests, NULL, NULL);
 }

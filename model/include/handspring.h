@@ -447,7 +447,10 @@ int hs_world_contacts(const hs_world *world, hs_contact *out, int max);
 // Per frame: hs_world_set_stylus gives the stylus pose and button at the END of the coming frame
 // (the stylus moves linearly from its previous pose during the frame), then hs_world_step. Button
 // edges take effect at the end of the frame: a press attaches the spring (direct pick, catch, or
-// the 'I want this one' candidate), a release drops (hand at rest) or throws (hand moving).
+// the 'I want this one' candidate) at its rest length — its anchor is the stylus plus an offset
+// fixed at the press (hs_spring_state.anchor), so nothing moves until the pen does — and a release
+// drops (hand at rest) or throws (hand moving; a velocity estimate against the hand's recent path,
+// the fit's overshoot at a stop, counts as none).
 // Objects keep their orientation (no torque, §4.2); spheres collide as exact spheres, every other
 // shape as its world-axis bounding box. In spring worlds hs_object_state.contact is
 // HS_CONTACT_GRASP for the object on the spring, HS_CONTACT_NONE otherwise, and `resting` means
@@ -507,7 +510,11 @@ bool hs_world_springs_enabled(const hs_world *world);
 hs_status hs_world_set_stylus(hs_world *world, hs_vec3 position, hs_quat orientation, bool button);
 
 /// Attaches the spring to an object now, whatever the button (scripts and tests); a later button
-/// release detaches it as usual.
+/// release detaches it as usual. Unlike a button press it anchors the spring at the stylus itself
+/// (the literal spring: a stylus away from x0 pulls or pushes at once). A press is neutral: the
+/// spring's anchor is the stylus plus an offset fixed at the press so that |G - anchor| = x0 (x0
+/// straight above G when the stylus is inside the object, else on the line from G toward the
+/// stylus); nothing moves at the press and the force grows only as the pen moves.
 hs_status hs_world_spring_attach(hs_world *world, hs_object_id id);
 /// Detaches the spring now as a drop: the object keeps its own velocity.
 hs_status hs_world_spring_detach(hs_world *world);
@@ -530,7 +537,8 @@ typedef struct hs_spring_state {
 	hs_quat stylus_orientation;
 	bool button;
 	hs_vec3 stylus_velocity;    ///< m/s over the last frame
-	double length;              ///< m: |G − stylus| (0 when nothing is attached)
+	hs_vec3 anchor;             ///< m: the spring's anchor, stylus + the offset fixed at the press (0 when nothing is attached)
+	double length;              ///< m: |G − anchor| (0 when nothing is attached)
 	double extension;           ///< m: length − x0, negative when compressed (0 when nothing is attached)
 	hs_vec3 force;              ///< N: spring + damper force on the attached object
 } hs_spring_state;
