@@ -194,12 +194,15 @@ static fr_scene *scene_create(fr_shape kind, int objects, int touched, bool skip
 		sc->wrist[k] = hs_add(base, bench_path(k));
 	sc->first_lost = -1;
 	sc->checksum = 14695981039346656037ull;
-	if (nt > 0) { // the hand closes on the touched objects: fingers that start inside touch nothing
+	if (nt > 0) { // the hand comes down open and closes on the touched objects, as a user's does:
+		// fingers that start inside touch nothing (docs/model.md §3)
 		uint8_t wide[HS_GLOVE_SENSORS];
 		if (hs_hand_posture(&hd, HS_POSTURE_GRASP, 0.12, wide) != HS_OK)
 			die_status("posture", HS_ERR_INVALID_ARGUMENT);
-		hs_world_set_hand(sc->world, sc->hand, sc->wrist[0], sc->rot, wide);
-		hs_world_step(sc->world);
+		for (int k = 4; k >= 0; --k) { // down 5 cm in 5 frames, open
+			hs_world_set_hand(sc->world, sc->hand, hs_add(sc->wrist[0], hs_v3(0, 0, 0.01 * k)), sc->rot, wide);
+			hs_world_step(sc->world);
+		}
 		hs_world_set_hand(sc->world, sc->hand, sc->wrist[0], sc->rot, sc->sensors);
 		hs_world_step(sc->world);
 	}
