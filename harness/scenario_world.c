@@ -222,6 +222,19 @@ bool hs_read_wrist_deg(hs_scenario_parser *p, const yaml_node_t *node, double *r
 	return true;
 }
 
+// A key of two values (absent: *second unchanged): *second is true for `second`; anything else is
+// one error line naming both.
+static bool read_choice(hs_scenario_parser *p, const yaml_node_t *node, const char *key, const char *first,
+                        const char *second, bool *is_second) {
+	if (!node)
+		return true;
+	if (hs_yaml_scalar_is(node, first) || hs_yaml_scalar_is(node, second)) {
+		*is_second = hs_yaml_scalar_is(node, second);
+		return true;
+	}
+	return hs_yaml_fail(&p->y, node, "'%s' must be %s or %s, got %s", key, first, second, hs_yaml_got(node).text);
+}
+
 bool hs_read_model(hs_scenario_parser *p, const yaml_node_t *node, hs_world_def *def) {
 	static const char *const names[] = {"grasp_threshold_deg", "stacking",     "floor_tolerance",
 	                                    "skip_work",           "spring",       "input_noise", "grasp_rule",
@@ -231,35 +244,19 @@ bool hs_read_model(hs_scenario_parser *p, const yaml_node_t *node, hs_world_def 
 	hs_fields f;
 	if (!hs_yaml_mapping(&p->y, node, names, 8, "model", &f))
 		return false;
-	if (f.value[7]) { // swept detection and rectification (default) or the paper's letter
-		if (hs_yaml_scalar_is(f.value[7], "rectified") || hs_yaml_scalar_is(f.value[7], "paper"))
-			def->paper_contacts = hs_yaml_scalar_is(f.value[7], "paper");
-		else
-			return hs_yaml_fail(&p->y, f.value[7], "'contacts' must be rectified or paper, got %s",
-			                    hs_yaml_got(f.value[7]).text);
-	}
-	if (f.value[6]) { // a grasp's two contacts on different fingers (default) or any two (the paper)
-		if (hs_yaml_scalar_is(f.value[6], "fingers") || hs_yaml_scalar_is(f.value[6], "any"))
-			def->grasp_any_contacts = hs_yaml_scalar_is(f.value[6], "any");
-		else
-			return hs_yaml_fail(&p->y, f.value[6], "'grasp_rule' must be fingers or any, got %s",
-			                    hs_yaml_got(f.value[6]).text);
-	}
+	bool stacking_support = def->stacking == HS_STACKING_SUPPORT;
+	// the realistic rule first, the paper's letter second (docs/model.md §3, §6)
+	if (!read_choice(p, f.value[7], "contacts", "rectified", "paper", &def->paper_contacts) ||
+	    !read_choice(p, f.value[6], "grasp_rule", "fingers", "any", &def->grasp_any_contacts) ||
+	    !read_choice(p, f.value[1], "stacking", "paper", "support", &stacking_support))
+		return false;
+	def->stacking = stacking_support ? HS_STACKING_SUPPORT : HS_STACKING_PAPER;
 	if (f.value[0]) {
 		if (!hs_yaml_number(&p->y, f.value[0], names[0], &def->grasp_threshold_deg))
 			return false;
 		if (!(def->grasp_threshold_deg > 0.0 && def->grasp_threshold_deg <= 180.0))
 			return hs_yaml_fail(&p->y, f.value[0], "'grasp_threshold_deg' must be within (0, 180] deg, got %s",
 			                    hs_yaml_show(f.value[0]).text);
-	}
-	if (f.value[1]) {
-		if (hs_yaml_scalar_is(f.value[1], "paper"))
-			def->stacking = HS_STACKING_PAPER;
-		else if (hs_yaml_scalar_is(f.value[1], "support"))
-			def->stacking = HS_STACKING_SUPPORT;
-		else
-			return hs_yaml_fail(&p->y, f.value[1], "'stacking' must be paper or support, got %s",
-			                    hs_yaml_got(f.value[1]).text);
 	}
 	if (f.value[2]) {
 		if (!hs_yaml_number(&p->y, f.value[2], names[2], &def->floor_tolerance))

@@ -537,12 +537,6 @@ hs_vec3 hs_contact_rectify(const hs_world *world, hs_vec3 p) {
 	return p;
 }
 
-bool hs_hand_near(const hs_world *world, const hs_hand *hand, int object) {
-	const hs_body *body = &world->bodies[object];
-	double r = world->shapes[body->shape].radius + hand->sweep_radius;
-	return hs_length_sq(hs_sub(body->pos, hand->sweep_center)) <= r * r;
-}
-
 int hs_contact_detect(hs_world *world, int object, const hs_body *before) {
 	return hs_contact_detect_grown(world, object, before, 0.0);
 }

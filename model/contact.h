@@ -8,8 +8,6 @@
 
 #include "world_internal.h"
 
-// True when the object's bounding sphere overlaps the hand's.
-bool hs_hand_near(const hs_world *world, const hs_hand *hand, int object);
 // Appends the contacts of every hand with the object to world->contacts; returns how many.
 // `before` is the object's pose one frame ago when it has moved since (NULL: it has not).
 int hs_contact_detect(hs_world *world, int object, const hs_body *before);

@@ -12,18 +12,13 @@
 #include "contact.h"
 #include "grasp.h"
 
-void hs_grasp_follow_wrist(hs_body *body, const hs_hand *hand) {
-	body->pos = hs_add(hand->wrist_pos, hs_quat_rotate(hand->wrist_rot, body->grip_pos));
-	body->rot = hs_quat_normalize(hs_quat_mul(hand->wrist_rot, body->grip_rot));
+hs_vec3 hs_grasp_held_pos(const hs_body *body, const hs_hand *hand) {
+	return hs_add(hand->wrist_pos, hs_quat_rotate(hand->wrist_rot, body->grip_pos));
 }
 
-hs_vec3 hs_part_displacement(const hs_hand *hand, const hs_contact *c) {
-	if (c->part < HS_HAND_POINTS)
-		return hs_sub(hand->points[c->part], hand->prev_points[c->part]);
-	int j = c->part - HS_HAND_POINTS;
-	hs_vec3 d0 = hs_sub(hand->lines[j][0], hand->prev_lines[j][0]);
-	hs_vec3 d1 = hs_sub(hand->lines[j][1], hand->prev_lines[j][1]);
-	return hs_scale(hs_add(d0, d1), 0.5);
+void hs_grasp_follow_wrist(hs_body *body, const hs_hand *hand) {
+	body->pos = hs_grasp_held_pos(body, hand);
+	body->rot = hs_quat_normalize(hs_quat_mul(hand->wrist_rot, body->grip_rot));
 }
 
 // The finger of a check point (i / 4) or check line (j / 12), §3.1.

@@ -7,13 +7,13 @@
 
 #include "world_internal.h"
 
+// Where the wrist's present pose carries a held object's G (the grip pose fixed when the grasp began).
+hs_vec3 hs_grasp_held_pos(const hs_body *body, const hs_hand *hand);
 // §3.2 (2): a held object follows its wrist rigidly, at the pose fixed when the grasp began.
 void hs_grasp_follow_wrist(hs_body *body, const hs_hand *hand);
 // The grasp of hand index `h` begins: fixes the object's pose in the wrist frame, the glove's
 // reading and the fingers touching it (cs[0..n)), and ends any release rule (docs/model.md §3).
 void hs_grasp_begin(hs_world *world, hs_body *body, int h, const hs_contact *cs, int n);
-// The motion of a contact's finger part over the frame (world frame; a line's: its ends' mean).
-hs_vec3 hs_part_displacement(const hs_hand *hand, const hs_contact *c);
 // Fig. 2 for object i: its contacts (appended from world->contacts[first], *n of them) and state.
 // A held object whose grasp continues has moved with its wrist and *continues is set; else it is
 // classified where it was, without the contacts the release rule sets aside.

@@ -131,8 +131,7 @@ static void release(hs_world *world, hs_body *body) {
 	if (body->grasped_by > 0) {
 		const hs_hand *hand = &world->hands[body->grasped_by - 1];
 		double dt = world->def.dt;
-		hs_vec3 carried = hs_add(hand->wrist_pos, hs_quat_rotate(hand->wrist_rot, body->grip_pos));
-		hs_vec3 v_dt = hs_sub(carried, body->pos);
+		hs_vec3 v_dt = hs_sub(hs_grasp_held_pos(body, hand), body->pos);
 		body->prev = hs_add(hs_sub(body->pos, v_dt), hs_scale(world->def.gravity, 0.5 * dt * dt));
 		body->spin = hs_quat_normalize(hs_quat_mul(hand->wrist_rot, hs_quat_conj(hand->prev_wrist_rot)));
 	} else {
