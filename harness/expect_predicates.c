@@ -48,6 +48,17 @@ static bool parse_vector(hs_scenario_parser *p, const hs_fields *f, hs_clause *c
 	return hs_yaml_vec3(&p->y, value_of(f, c), name_of(c), &c->target);
 }
 
+// a direction in the object's own frame: not zero, stored as a unit vector
+static bool parse_direction(hs_scenario_parser *p, const hs_fields *f, hs_clause *c) {
+	if (!hs_yaml_vec3(&p->y, value_of(f, c), name_of(c), &c->target))
+		return false;
+	double len = hs_length(c->target);
+	if (!(len > 0.0))
+		return hs_yaml_fail(&p->y, value_of(f, c), "'%s' must be a direction, got the zero vector", name_of(c));
+	c->target = hs_scale(c->target, 1.0 / len);
+	return true;
+}
+
 static bool parse_flag(hs_scenario_parser *p, const hs_fields *f, hs_clause *c) {
 	return hs_yaml_bool(&p->y, value_of(f, c), name_of(c), &c->flag);
 }
@@ -231,6 +242,21 @@ static bool eval_on_face(const hs_scenario *s, const hs_clause *c, const hs_chec
 	snprintf(v->what, sizeof v->what, "on_face %s %s", c->flag ? "true" : "false", v->when);
 	snprintf(v->measured, sizeof v->measured, "floor_contacts %d", k->u.at.state.floor_contacts);
 	return (k->u.at.state.floor_contacts >= 3) == c->flag;
+}
+
+// face_down: n (a face's outward normal in the object's own frame) points straight down, within
+// HS_FACE_DOWN_DEG, and the object stands on a face (at least 3 floor vertices): it rests on that face.
+#define HS_FACE_DOWN_DEG 1.0
+static bool eval_face_down(const hs_scenario *s, const hs_clause *c, const hs_check *k, hs_verdict *v) {
+	(void)s;
+	const hs_object_state *st = &k->u.at.state;
+	hs_vec3 n = hs_quat_rotate(st->orientation, c->target);
+	double off = acos(fmax(-1.0, fmin(1.0, -n.z))) * (180.0 / HS_PI);
+	snprintf(v->what, sizeof v->what, "face_down [%.6g, %.6g, %.6g] %s", c->target.x, c->target.y, c->target.z,
+	         v->when);
+	snprintf(v->measured, sizeof v->measured, "that normal %.3g deg from straight down, floor_contacts %d", off,
+	         st->floor_contacts);
+	return off <= HS_FACE_DOWN_DEG && st->floor_contacts >= 3;
 }
 
 static bool eval_height(const hs_scenario *s, const hs_clause *c, const hs_check *k, hs_verdict *v) {
@@ -462,6 +488,7 @@ const hs_predicate hs_predicates[HS_PREDICATE_COUNT] = {
     {"resting",          AT,                   NULL,       parse_flag,        hs_capture_at,        S_AT,    eval_resting},
     {"floor_contacts",   AT,                   NULL,       parse_count,       hs_capture_at,        S_AT,    eval_floor_contacts},
     {"on_face",          AT,                   NULL,       parse_flag,        hs_capture_at,        S_AT,    eval_on_face},
+    {"face_down",        AT,                   NULL,       parse_direction,   hs_capture_at,        S_AT,    eval_face_down},
     {"below",            AT,                   NULL,       parse_value,       hs_capture_at,        S_AT,    eval_height},
     {"above",            AT,                   NULL,       parse_value,       hs_capture_at,        S_AT,    eval_height},
     {"moved",            AT,                   NULL,       parse_nonnegative, hs_capture_at,        S_AT,    eval_moved},

@@ -8,7 +8,7 @@
 #include "state_io.h"
 
 // Rows of hs_predicates; the keys of a clause are the predicates' names, then the modifiers.
-#define HS_PREDICATE_COUNT 25
+#define HS_PREDICATE_COUNT 26
 enum { HS_E_OBJECT = HS_PREDICATE_COUNT, HS_E_AT, HS_E_TOLERANCE, HS_E_AXES, HS_E_FROM, HS_E_TO, HS_E_ROBUST, HS_E_COUNT };
 
 // What a predicate accepts and how it is watched.

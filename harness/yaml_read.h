@@ -78,7 +78,7 @@ bool hs_yaml_bounded_vec3(const hs_yaml *y, const yaml_node_t *node, const char 
 bool hs_yaml_rpy(const hs_yaml *y, const yaml_node_t *node, const char *key, hs_quat *out);
 bool hs_yaml_quat(const hs_yaml *y, const yaml_node_t *node, const char *key, hs_quat *out);
 
-enum { HS_YAML_MAX_FIELDS = 32 }; // keys of the largest mapping (an expect clause)
+enum { HS_YAML_MAX_FIELDS = 40 }; // keys of the largest mapping (an expect clause: 33)
 
 // A mapping's values by name index (NULL: not given) and the keys, for messages at the key.
 typedef struct hs_fields {

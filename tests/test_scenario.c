@@ -236,7 +236,7 @@ static void test_load_errors(void **state) {
 	load_error("e.yaml", text, "7: 'tolerance' must be > 0, got 0");
 	snprintf(text, sizeof text, "%s" ONE_CUBE "expect:\n  - { object: a, at: end }\n", head);
 	load_error("e.yaml", text,
-	           "7: expect clause needs a predicate: near, resting, floor_contacts, on_face, below, above, moved, turned_deg, "
+	           "7: expect clause needs a predicate: near, resting, floor_contacts, on_face, face_down, below, above, moved, turned_deg, "
 	           "moved_at_most, turned_at_most_deg, speed_below, velocity, attached, candidate, extension_ratio, lands_at, still, "
 	           "contact_sequence, never_contact, grasped, released, rest_length, stiffness, conserved or swing_below");
 	snprintf(text, sizeof text, "%s" ONE_CUBE "expect:\n  - { object: a, still: true, at: end }\n", head);
@@ -1243,6 +1243,27 @@ static void test_upper_bounds(void **state) {
 	                 0);
 }
 
+// face_down: which face an object rests on (a face's outward normal in its own frame, any length)
+static void test_face_down(void **state) {
+	(void)state;
+	char report[4096];
+	// the tilted cube ends flat on the face that was its bottom
+	assert_int_equal(check_in(tilt_scenario, "tilt.yaml", "{ object: tilt, at: end, face_down: [0, 0, -2] }", report,
+	                          sizeof report),
+	                 0);
+	assert_int_equal(check_in(tilt_scenario, "tilt.yaml", "{ object: tilt, at: end, face_down: [0, 1, 0] }", report,
+	                          sizeof report),
+	                 1);
+	assert_string_equal(report, "FAIL  line 7: tilt face_down [0, 1, 0] at end (t = 1.5 s): that normal 90 deg from "
+	                            "straight down, floor_contacts 4\n");
+	// in the air, turned 30 deg: neither on a face nor with that normal down
+	assert_int_equal(check_in(tilt_scenario, "tilt.yaml", "{ object: tilt, at: 0, face_down: [0, 0, -1] }", report,
+	                          sizeof report),
+	                 1);
+	assert_string_equal(report, "FAIL  line 7: tilt face_down [0, 0, -1] at t = 0 s: that normal 30 deg from "
+	                            "straight down, floor_contacts 0\n");
+}
+
 static void test_contact_watch(void **state) {
 	(void)state;
 	expect_pass("{ object: block, never_contact: 2 }", "block never_contact 2 from t = 0 s to t = 1.5 s: never in state 2");
@@ -1418,6 +1439,7 @@ int main(void) {
 	    cmocka_unit_test(test_save_and_resume),
 	    cmocka_unit_test(test_resume_refusals),
 	    cmocka_unit_test(test_upper_bounds),
+	    cmocka_unit_test(test_face_down),
 	    cmocka_unit_test(test_contact_watch),
 	    cmocka_unit_test(test_load_options),
 	    cmocka_unit_test(test_sweep),
