@@ -108,6 +108,24 @@ static double first_touch(hs_world *world, const hs_body *body, hs_vec3 c, hs_ve
 	return best;
 }
 
+// A turn about one vertex (rule (1)) that brings a second one down keeps turning about the edge
+// they make: the impulse at the new vertex, on that edge, leaves the turn about it alone. A flicked
+// pyramid yawed by a degree stands on one corner of its front edge, and stopping it there rocked
+// it back onto its base. G keeps its motion across the edge (its part along the edge is stopped:
+// a thrown cube kept it and tumbled on) and rule (2) turns it about the edge next frame
+// (docs/model.md §5); a landing on a face stops it, as before.
+static void keep_turning_about_edge(hs_world *world, hs_body *body, hs_vec3 motion) {
+	if (hs_motion_floor_points(world, body) != 2)
+		return;
+	const hs_vec2 *f = world->scratch_points;
+	hs_vec3 e = hs_v3(f[1].x - f[0].x, f[1].y - f[0].y, 0.0);
+	double len = hs_length(e);
+	if (!(len > 0.0))
+		return;
+	e = hs_scale(e, 1.0 / len);
+	body->prev = hs_sub(body->pos, hs_mul_add(motion, -hs_dot(motion, e), e));
+}
+
 // Rules (1)-(3) of §4.2 for an unstable object: pick the contact vertex or edge and turn about it.
 static void tip(hs_world *world, hs_body *body, const hs_vec2 *hull, int hull_count, double height,
                 hs_vec2 g_proj, hs_vec3 gm, const hs_settle_supports *sup) {
@@ -154,11 +172,15 @@ static void tip(hs_world *world, hs_body *body, const hs_vec2 *hull, int hull_co
 	if (landed)
 		theta = touch;
 	hs_quat q = hs_quat_from_axis_angle(axis, theta);
-	hs_vec3 old = body->pos;
+	hs_vec3 old = body->pos, motion = hs_sub(body->pos, body->prev);
 	body->pos = hs_add(c, hs_quat_rotate(q, cg));
 	body->rot = hs_quat_normalize(hs_quat_mul(q, body->rot));
 	body->prev = landed ? body->pos : old;
 	rectify(world, body, hs_motion_pose_vertices(world, body));
+	// on the floor alone, in paper mode: support mode's step of an object on the floor and a
+	// support read the kept motion as a turn over both and sank a cube 5 µm into the floor
+	if (landed && hull_count == 1 && !sup && height == 0.0 && world->def.stacking == HS_STACKING_PAPER)
+		keep_turning_about_edge(world, body, motion);
 	world->counters.object_steps++;
 }
 

@@ -49,16 +49,44 @@ static hs_vec3 floor_point_along(const hs_world *world, int count, hs_vec3 u) {
 	return hs_v3(p[best].x, p[best].y, 0.0);
 }
 
+// The floor edge from p nearest in direction to the horizontal unit axis a, when it is within
+// HS_PUSH_EDGE_DEG of it (oriented along a); else a, the turn about the vertex p. An object standing
+// on a floor edge tips about that edge: turned about a line a degree off it, a flicked pyramid
+// yawed by the tracker's noise stood on one corner and rocked back (docs/model.md §4).
+#define HS_PUSH_EDGE_DEG 20.0
+static hs_vec3 floor_edge_along(const hs_world *world, int count, hs_vec3 p, hs_vec3 a) {
+	const hs_vec2 *f = world->scratch_points;
+	double best = cos(HS_PUSH_EDGE_DEG * (HS_PI / 180.0));
+	hs_vec3 axis = a;
+	for (int i = 0; i < count; ++i) {
+		hs_vec3 e = hs_v3(f[i].x - p.x, f[i].y - p.y, 0.0);
+		double len = hs_length(e);
+		if (!(len > 1e-9))
+			continue; // p itself (or a vertex within a nanometre of it)
+		double along = hs_dot(e, a) / len;
+		if (fabs(along) > best) {
+			best = fabs(along);
+			axis = hs_scale(e, (along > 0.0 ? 1.0 : -1.0) / len);
+		}
+	}
+	return axis;
+}
+
 // §4.2-style tipping in place of eq. 2's swing about the horizontal n_h, which moves C by r_swing:
-// the turn about the line through the floor point on the side the swing sinks, along n_h, by eq. 2's
+// the turn about the floor edge (or vertex) on the side the swing sinks, along n_h, by eq. 2's
 // form about that line, θ = atan(|R'| / |PC|) = atan(((PC × r_swing) · a) / |PC|²), when the
 // push's torque about that line, (PC × CB) · a, lifts the object. False (nothing done) otherwise.
-static bool tip_about_floor_edge(hs_world *world, hs_body *body, int count, hs_vec3 c, hs_vec3 cb,
-                                 hs_vec3 n_h, hs_vec3 r_swing, hs_vec3 slid) {
+// The floor points are those of the pose eq. 2's yaw turned and T slid: the edge it stands on.
+static bool tip_about_floor_edge(hs_world *world, hs_body *body, hs_vec3 c, hs_vec3 cb, hs_vec3 n_h,
+                                 hs_vec3 r_swing, hs_vec3 slid) {
+	hs_motion_pose_vertices(world, body);
+	int count = hs_motion_floor_points(world, body);
+	if (count < 1)
+		return false;
 	hs_vec3 a = hs_normalize(n_h);
 	hs_vec3 p = floor_point_along(world, count, hs_cross(a, hs_v3(0, 0, 1)));
-	hs_vec3 pc = hs_sub(c, p);
-	p = hs_add(p, slid); // the floor points are those of the pose before T slid it
+	a = floor_edge_along(world, count, p, a);
+	hs_vec3 pc = hs_sub(hs_add(c, slid), p); // C where T took it
 	pc = hs_mul_add(pc, -hs_dot(pc, a), a); // from the edge to C, normal to the edge
 	double lever_sq = hs_length_sq(pc);
 	double torque = hs_dot(hs_cross(pc, cb), a);        // > 0: the finger turns the free side up
@@ -107,7 +135,7 @@ bool hs_push_on_floor(hs_world *world, hs_body *body, hs_vec3 c, hs_vec3 b) {
 		return true; // no swing
 	hs_vec3 n_h = hs_v3(n.x, n.y, 0.0);
 	hs_vec3 r_swing = hs_scale(hs_cross(cg_unit, n_h), r_len);
-	if (tip_about_floor_edge(world, body, count, c, cb, n_h, r_swing, slid))
+	if (tip_about_floor_edge(world, body, c, cb, n_h, r_swing, slid))
 		return true;
 	// no tip: the swing slides instead, and T + R's swing share is CB less R's yaw share
 	hs_vec3 r_yaw = hs_scale(hs_cross(cg_unit, hs_v3(0, 0, 1)), r_len * n.z);

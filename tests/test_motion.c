@@ -6,6 +6,7 @@
 
 #include <cmocka.h>
 
+#include "motion.h"
 #include "world_internal.h"
 #include "test_util.h"
 
@@ -188,6 +189,42 @@ static void test_tipping_about_an_edge(void **state) {
 	assert_vec3_near(up, hs_v3(1, 0, 0), 1e-9); // lying on its side, top toward +x
 }
 
+// A box tipping forward on one corner of its far edge (pitched 20 deg, 6 deg short of its balance
+// angle, and rolled 2 deg so one vertex is lowest), G moving over that edge at 0.3 m/s: rule (1)
+// turns it about the corner until the edge's second vertex comes down, and it goes on turning about
+// the edge (rule (2)) over its balance angle, onto its side. Stopped at that second vertex it
+// would settle back upright. Without the motion it settles back upright either way.
+static hs_vec3 tip_on_corner(double speed) {
+	hs_world *w = make_world(1.0 / 60, true);
+	hs_quat rot = hs_quat_mul(hs_quat_from_axis_angle(hs_v3(1, 0, 0), 2 * HS_PI / 180),
+	                          hs_quat_from_axis_angle(hs_v3(0, 1, 0), 20 * HS_PI / 180));
+	hs_object_id id = add_object(w, add_box(w, 0.1, 0.1, 0.2), hs_v3(0, 0, 0.5), rot, hs_v3(0, 0, 0));
+	hs_body *b = &w->bodies[0];
+	b->pos.z -= hs_motion_pose_vertices(w, b); // its lowest vertex on the floor
+	hs_motion_keep_above_floor(w, b);
+	assert_int_equal(b->floor_contacts, 1);
+	hs_vec3 edge = hs_v3(0.05, 0, -0.1), g_dir = hs_normalize(hs_cross(hs_v3(0, 1, 0), hs_quat_rotate(rot, hs_neg(edge))));
+	b->prev = hs_sub(b->pos, hs_scale(g_dir, speed / 60)); // G turning about +y over the far edge
+	b->grounded = 1;
+	b->asleep = 0;
+	for (int n = 0; n < 180; ++n)
+		hs_world_step(w);
+	hs_object_state s = state_of(w, id);
+	assert_true(s.resting);
+	assert_true(s.floor_contacts >= 3);
+	hs_vec3 up = hs_quat_rotate(s.orientation, hs_v3(0, 0, 1));
+	hs_world_destroy(w);
+	return up;
+}
+
+static void test_corner_landing_keeps_turning_about_edge(void **state) {
+	(void)state;
+	hs_vec3 up = tip_on_corner(0.3);
+	assert_true(up.x > 0.99); // on its side, top toward +x
+	up = tip_on_corner(0.0);
+	assert_true(up.z > 0.99); // upright
+}
+
 // §4.2 rule (1): Gm parallel to CG is the well-balanced state: an upright pyramid on its apex stays.
 static void test_balanced_on_apex_stays(void **state) {
 	(void)state;
@@ -260,6 +297,7 @@ int main(void) {
 	    cmocka_unit_test(test_drop_lands_and_sleeps),
 	    cmocka_unit_test(test_skipping_changes_nothing),
 	    cmocka_unit_test(test_tipping_about_an_edge),
+	    cmocka_unit_test(test_corner_landing_keeps_turning_about_edge),
 	    cmocka_unit_test(test_balanced_on_apex_stays),
 	    cmocka_unit_test(test_pyramid_falls_onto_a_face),
 	    cmocka_unit_test(test_invalid_input_rejected),

@@ -199,6 +199,27 @@ static void test_push_on_a_corner_keeps_floor(void **state) {
 	hs_world_destroy(w);
 }
 
+// (g2) A push above G that also yaws the box (C off the centre line, eq. 2's yaw about the vertical)
+// tips it about the floor edge it stands on after that yaw, not about eq. 2's horizontal axis
+// through its furthest floor vertex, which lies a few degrees off that edge: both vertices of the
+// far edge stay on the floor (two floor contacts, the lowest exactly on it) frame after frame.
+static void test_skewed_push_tips_about_floor_edge(void **state) {
+	(void)state;
+	hs_world *w = box_world(hs_v3(0.1, 0.1, 0.3));
+	hs_body *b = &w->bodies[0];
+	for (int frame = 0; frame < 10; ++frame) {
+		hs_vec3 c = hs_add(b->pos, hs_quat_rotate(b->rot, hs_v3(-0.05, 0.03, 0.1)));
+		assert_true(hs_push_on_floor(w, b, c, hs_add(c, hs_v3(0.002, 0.0, 0.0))));
+		hs_motion_keep_above_floor(w, b);
+		assert_int_equal(b->floor_contacts, 2);
+		assert_near(lowest_z(w), 0.0, 1e-15);
+	}
+	hs_vec3 up = hs_quat_rotate(b->rot, hs_v3(0, 0, 1));
+	assert_true(up.x > 0.05);                    // tipped forward about its far edge
+	assert_true(hs_quat_rotate(b->rot, hs_v3(1, 0, 0)).y < 0.0); // and yawed: the pushed +y side went ahead
+	hs_world_destroy(w);
+}
+
 // (h) A push that ends leaves an object lying stable on the floor where it is ([H] §4.1: no
 // sliding; §4.2 judged as on landing): a box slid 1 mm a frame at G's height (G' 1.8 cm ahead of G
 // with Gm = (0.001, 0, -g dt²), inside its base) stops when the tip draws back, instead of flying
@@ -275,6 +296,7 @@ int main(void) {
 	    cmocka_unit_test(test_press_within_floor_cone_holds),
 	    cmocka_unit_test(test_push_remembers_finger_speed),
 	    cmocka_unit_test(test_push_on_a_corner_keeps_floor),
+	    cmocka_unit_test(test_skewed_push_tips_about_floor_edge),
 	    cmocka_unit_test(test_push_end_stops_on_floor),
 	    cmocka_unit_test(test_leaving_part_keeps_motion),
 	    cmocka_unit_test(test_free_object_untouched),
