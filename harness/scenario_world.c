@@ -238,11 +238,11 @@ static bool read_choice(hs_scenario_parser *p, const yaml_node_t *node, const ch
 bool hs_read_model(hs_scenario_parser *p, const yaml_node_t *node, hs_world_def *def) {
 	static const char *const names[] = {"grasp_threshold_deg", "stacking",     "floor_tolerance",
 	                                    "skip_work",           "spring",       "input_noise", "grasp_rule",
-	                                    "contacts"};
+	                                    "contacts",            "glove_deadband"};
 	if (node->type != YAML_MAPPING_NODE)
 		return hs_yaml_fail(&p->y, node, "'model' must be a mapping, got %s", hs_yaml_got(node).text);
 	hs_fields f;
-	if (!hs_yaml_mapping(&p->y, node, names, 8, "model", &f))
+	if (!hs_yaml_mapping(&p->y, node, names, 9, "model", &f))
 		return false;
 	bool stacking_support = def->stacking == HS_STACKING_SUPPORT;
 	// the realistic rule first, the paper's letter second (docs/model.md §3, §6)
@@ -267,6 +267,10 @@ bool hs_read_model(hs_scenario_parser *p, const yaml_node_t *node, hs_world_def 
 	}
 	if (f.value[3] && !hs_yaml_bool(&p->y, f.value[3], names[3], &def->skip_work))
 		return false;
+	int64_t band = def->glove_deadband;
+	if (f.value[8] && !hs_yaml_integer(&p->y, f.value[8], names[8], 0, HS_MAX_GLOVE_DEADBAND, &band))
+		return false;
+	def->glove_deadband = (int)band;
 	if (f.value[4]) {
 		p->spring_key = f.key[4];
 		if (!read_spring(p, f.value[4]))

@@ -68,6 +68,7 @@ static uint64_t definition_checksum(const hs_world *w) {
 	h = hs_state_mix(h, d->paper_contacts ? 1u : 0u);
 	h = hs_state_mix_f64(h, d->grasp_release_mm);
 	h = hs_state_mix_f64(h, d->grasp_open_mm);
+	h = hs_state_mix(h, (uint64_t)d->glove_deadband);
 	for (int i = 0; i < w->shape_count; ++i)
 		h = shape_checksum(h, &w->shapes[i]);
 	for (int i = 0; i < w->object_count; ++i) {

@@ -926,6 +926,71 @@ static void test_hand_inside_cube_opens(void **state) {
 	hs_world_destroy(r.world);
 }
 
+// The glove deadband (docs/model.md §1): each sensor passes a play operator of glove_deadband
+// units. The hand's points are those of hs_hand_kinematics for the values used.
+static void deadband_world(int band, hs_world **w, hs_hand_id *h) {
+	hs_world_def def = hs_default_world_def();
+	def.glove_deadband = band;
+	*w = hs_world_create(&def, NULL);
+	assert_non_null(*w);
+	hs_hand_def hd = hs_default_hand_def();
+	*h = hs_world_add_hand(*w, &hd, NULL);
+}
+
+// true when the hand stands at the kinematics of `used` (bit for bit)
+static bool hand_at(hs_world *w, hs_hand_id h, const uint8_t used[HS_GLOVE_SENSORS]) {
+	hs_hand_def def = hs_default_hand_def();
+	hs_vec3 want[HS_HAND_POINTS], got[HS_HAND_POINTS];
+	hs_hand_kinematics(&def, hs_v3(0, 0, 0), hs_quat_identity(), used, want, NULL);
+	assert_int_equal(hs_world_hand_points(w, h, got), HS_OK);
+	return memcmp(want, got, sizeof want) == 0;
+}
+
+static void set_all(hs_world *w, hs_hand_id h, int v, uint8_t used[HS_GLOVE_SENSORS], int u) {
+	uint8_t s[HS_GLOVE_SENSORS];
+	for (int i = 0; i < HS_GLOVE_SENSORS; ++i) {
+		s[i] = (uint8_t)v;
+		used[i] = (uint8_t)u;
+	}
+	assert_int_equal(hs_world_set_hand(w, h, hs_v3(0, 0, 0), hs_quat_identity(), s), HS_OK);
+}
+
+static void test_glove_deadband(void **state) {
+	(void)state;
+	hs_world *w;
+	hs_hand_id h;
+	uint8_t used[HS_GLOVE_SENSORS];
+	deadband_world(3, &w, &h);
+	set_all(w, h, 100, used, 100); // the first reading is used as it is
+	assert_true(hand_at(w, h, used));
+	static const int tremble[] = {103, 97, 101, 99, 103, 100, 97};
+	for (size_t k = 0; k < sizeof tremble / sizeof tremble[0]; ++k) { // within +-3: the hand keeps its bits
+		set_all(w, h, tremble[k], used, 100);
+		assert_true(hand_at(w, h, used));
+	}
+	for (int v = 101; v <= 120; ++v) { // a ramp: the value used lags by 3 once the reading leaves the band
+		set_all(w, h, v, used, v - 3 > 100 ? v - 3 : 100);
+		assert_true(hand_at(w, h, used));
+	}
+	for (int v = 119; v >= 111; --v) { // turning back: nothing moves until the reading is 3 below 117
+		set_all(w, h, v, used, v + 3 < 117 ? v + 3 : 117);
+		assert_true(hand_at(w, h, used));
+	}
+	hs_world_destroy(w);
+	deadband_world(0, &w, &h); // 0: every raw reading (the paper)
+	set_all(w, h, 100, used, 100);
+	set_all(w, h, 101, used, 101);
+	assert_true(hand_at(w, h, used));
+	set_all(w, h, 99, used, 99);
+	assert_true(hand_at(w, h, used));
+	hs_world_destroy(w);
+	hs_world_def def = hs_default_world_def(); // the range
+	def.glove_deadband = -1;
+	assert_null(hs_world_create(&def, NULL));
+	def.glove_deadband = HS_MAX_GLOVE_DEADBAND + 1;
+	assert_null(hs_world_create(&def, NULL));
+}
+
 int main(void) {
 	const struct CMUnitTest tests[] = {
 	    cmocka_unit_test(test_sensor_mapping),
@@ -951,6 +1016,7 @@ int main(void) {
 	    cmocka_unit_test(test_grasp_holds_under_noise),
 	    cmocka_unit_test(test_grasp_release_on_opening),
 	    cmocka_unit_test(test_hand_inside_cube_opens),
+	    cmocka_unit_test(test_glove_deadband),
 	};
 	return cmocka_run_group_tests_name("hand", tests, NULL, NULL);
 }

@@ -167,6 +167,7 @@ typedef enum hs_stacking {
 #define HS_MAX_GRAVITY 1e4    ///< m/s², per component
 #define HS_MAX_COORDINATE 1e6 ///< m, per component of positions and wrist poses
 #define HS_MAX_SPEED 1e6      ///< m/s and rad/s, per component of initial velocities
+#define HS_MAX_GLOVE_DEADBAND 32 ///< sensor units (16 deg)
 
 typedef struct hs_world_def {
 	double dt;                  ///< s, fixed frame time (default 1/60)
@@ -182,6 +183,7 @@ typedef struct hs_world_def {
 	double grasp_release_mm;    ///< mm: a held object stays grasped while its holder's fingers grasp it grown by this much (default 5; docs/model.md §3)
 	double grasp_open_mm;       ///< mm: the grasp ends when the holding fingertips spread or reach out this much more than when it began (default 8)
 	bool skip_work;             ///< bounding-volume rejection and sleeping on (default true); off only to measure what they save
+	int glove_deadband;         ///< sensor units, 0..HS_MAX_GLOVE_DEADBAND: a glove sensor moves the hand only once its reading leaves ±this around the value last used, which then follows it at this distance (default 3; 0: every raw reading, the 1999 paper's letter; docs/model.md §1)
 } hs_world_def;
 
 hs_world_def hs_default_world_def(void);
@@ -402,6 +404,8 @@ hs_hand_id hs_world_add_hand(hs_world *world, const hs_hand_def *def, hs_status 
 hs_hand_id hs_world_hand_at(const hs_world *world, int i);
 /// Sets a hand's wrist pose and glove sensors for the next step (HS_ERR_INVALID_ARGUMENT for an
 /// invalid handle, NULL sensors, a non-unit orientation or a position beyond HS_MAX_COORDINATE).
+/// After the first call each sensor passes the world's glove_deadband: the hand keeps the value it
+/// used until the reading leaves ±glove_deadband around it, then follows the reading at that distance.
 hs_status hs_world_set_hand(hs_world *world, hs_hand_id hand, hs_vec3 wrist_position,
                             hs_quat wrist_orientation, const uint8_t sensors[HS_GLOVE_SENSORS]);
 /// The hand's check points after the last step.
