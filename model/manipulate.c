@@ -126,8 +126,9 @@ static void carry_along(hs_world *world, int moved, int current, hs_vec3 d) {
 // last two positions) lags the hand by a frame: at 12 frames/s, with the hand opened 10 ms
 // after the end of a 0.1 s swing, its last held frame is mid-swing and a throw aimed 2 m away
 // landed 1.11 m short. The spin is the wrist's turn over that frame. Any other release (a push
-// ends) flies on with the motion and turn of its last frame (§4.1).
-static void release(hs_world *world, hs_body *body) {
+// ends, `last` its contact state) flies on with the motion and turn of its last frame (§4.1),
+// unless it is left on the floor (push.c).
+static void release(hs_world *world, hs_body *body, hs_contact_state last) {
 	if (body->grasped_by > 0) {
 		const hs_hand *hand = &world->hands[body->grasped_by - 1];
 		double dt = world->def.dt;
@@ -136,7 +137,7 @@ static void release(hs_world *world, hs_body *body) {
 		body->spin = hs_quat_normalize(hs_quat_mul(hand->wrist_rot, hs_quat_conj(hand->prev_wrist_rot)));
 	} else {
 		body->spin = hs_quat_normalize(hs_quat_mul(body->rot, hs_quat_conj(body->rot_prev)));
-		if (hs_push_release_on_floor(world, body)) { // stable on the floor: it stops there (push.c)
+		if (hs_push_release_on_floor(world, body, last == HS_CONTACT_PUSH_MANY)) { // it stays on the floor
 			body->grasped_by = 0;
 			return;
 		}
@@ -269,11 +270,12 @@ void hs_manipulate(hs_world *world) {
 		bool at_rest = body->prev.x == old_pos.x && body->prev.y == old_pos.y && body->prev.z == old_pos.z;
 		hs_contact_state state = hs_grasp_detect(world, i, first, &n, &continues);
 		bool was_held = body->held != 0;
+		hs_contact_state last = (hs_contact_state)body->contact;
 		body->contact = (uint8_t)state;
 		body->held = 0;
 		if (state == HS_CONTACT_NONE) {
 			if (was_held)
-				release(world, body);
+				release(world, body, last);
 			continue;
 		}
 		move_by_contacts(world, body, state, &world->contacts[first], n, continues);

@@ -21,8 +21,10 @@ bool hs_push_on_floor(hs_world *world, hs_body *body, hs_vec3 c, hs_vec3 b);
 // along the floor only when it lies on the floor.
 void hs_push_many(hs_world *world, hs_body *body, hs_vec3 d);
 // A push has ended: an object lying on the floor and stable there (G' inside its floor hull)
-// stops where it is instead of flying on by eq. 3 (docs/model.md §4 "Release"). False when it
-// is not on the floor or not stable: eq. 3 then carries it on.
-bool hs_push_release_on_floor(hs_world *world, hs_body *body);
+// stops where it is instead of flying on by eq. 3 (docs/model.md §4 "Release"). After a push at
+// several points (`many`) an object on the floor and not stable tips there by §4.2's rules
+// instead. False when it is not on the floor, or after a one-point push not stable: eq. 3 then
+// carries it on.
+bool hs_push_release_on_floor(hs_world *world, hs_body *body, bool many);
 
 #endif

@@ -253,7 +253,34 @@ static void test_push_end_stops_on_floor(void **state) {
 	hs_motion_keep_above_floor(w, b);
 	assert_int_equal(b->floor_contacts, 2);
 	b->prev = b->pos;
-	assert_false(hs_push_release_on_floor(w, b));
+	assert_false(hs_push_release_on_floor(w, b, false)); // after a one-point push: eq. 3 carries it on
+	hs_world_destroy(w);
+}
+
+// (h2) A push at several points that ends with the box a hair up on its floor edge (tilted 0.004
+// deg about y, moving 1 cm a frame along +x) leaves it on the floor: rules (1)-(3) turn it back onto
+// its face where it is, turned about that edge, with no slide (the push's motion across the edge
+// turns it, its part along the floor is the floor's). After a one-point push it would fly a frame on.
+static void test_push_many_end_stays_on_floor(void **state) {
+	(void)state;
+	hs_world *w = box_world(hs_v3(0.1, 0.2, 0.06));
+	hs_body *b = &w->bodies[0];
+	b->rot = hs_quat_from_axis_angle(hs_v3(0, 1, 0), -7e-5); // the -x edge a hair up: on its +x edge
+	b->pos = hs_v3(0, 0, 0.2);
+	b->pos.z -= hs_motion_pose_vertices(w, b);
+	hs_motion_keep_above_floor(w, b);
+	assert_int_equal(b->floor_contacts, 2);
+	hs_vec3 at = b->pos;
+	b->prev = hs_sub(at, hs_v3(0.01, 0, 0));
+	assert_true(hs_push_release_on_floor(w, b, true));
+	assert_true(b->grounded == 1);
+	assert_true(hs_motion_pose_vertices(w, b) >= -1e-15);
+	assert_true(fabs(b->pos.x - at.x) < 1e-4 && b->pos.y == at.y); // turned about its edge, not slid
+	for (int n = 0; n < 30 && !b->asleep; ++n) // §4.2 on the floor from here on
+		hs_motion_step(w, b);
+	assert_true(b->asleep);
+	assert_int_equal(b->floor_contacts, 4);
+	assert_true(fabs(b->pos.x - at.x) < 1e-4 && fabs(b->pos.z - 0.03) < 1e-12);
 	hs_world_destroy(w);
 }
 
@@ -298,6 +325,7 @@ int main(void) {
 	    cmocka_unit_test(test_push_on_a_corner_keeps_floor),
 	    cmocka_unit_test(test_skewed_push_tips_about_floor_edge),
 	    cmocka_unit_test(test_push_end_stops_on_floor),
+	    cmocka_unit_test(test_push_many_end_stays_on_floor),
 	    cmocka_unit_test(test_leaving_part_keeps_motion),
 	    cmocka_unit_test(test_free_object_untouched),
 	};
