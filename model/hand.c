@@ -327,6 +327,22 @@ void hs_hand_keep_previous(hs_hand *hand) {
 	memcpy(hand->prev_sensors, hand->sensors, sizeof hand->sensors);
 }
 
+void hs_hand_age_wrist(hs_hand *hand) {
+	if (!hand->placed)
+		return;
+	memmove(&hand->older_pos[1], &hand->older_pos[0], (HS_HAND_OLDER - 1) * sizeof hand->older_pos[0]);
+	memmove(&hand->older_rot[1], &hand->older_rot[0], (HS_HAND_OLDER - 1) * sizeof hand->older_rot[0]);
+	hand->older_pos[0] = hand->prev_wrist_pos;
+	hand->older_rot[0] = hand->prev_wrist_rot;
+	if (hand->older_count < HS_HAND_OLDER)
+		hand->older_count++;
+}
+
+void hs_hand_past_wrist(const hs_hand *hand, int frames, hs_vec3 *pos, hs_quat *rot) {
+	*pos = frames == 0 ? hand->wrist_pos : frames == 1 ? hand->prev_wrist_pos : hand->older_pos[frames - 2];
+	*rot = frames == 0 ? hand->wrist_rot : frames == 1 ? hand->prev_wrist_rot : hand->older_rot[frames - 2];
+}
+
 void hs_hand_refresh(hs_hand *hand) {
 	if (!hand->placed) { // as hs_world_add_hand left it
 		memset(hand->points, 0, sizeof hand->points);

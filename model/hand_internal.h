@@ -13,6 +13,9 @@
 #define HS_HAND_PATH_DEG 10.0
 #define HS_HAND_PATH_MAX 8
 
+// Wrist poses kept beyond the last step's (for a release's velocity, manipulate.c).
+#define HS_HAND_OLDER 7
+
 // A hand of a world. MODEL: `def`. STATE (state.c's hand_io lists them): the wrist pose and
 // sensors now and at the end of the last step, `placed`, the touch masks. CACHES, rebuilt from the state after a
 // load (hs_hand_refresh): the check points and lines now and one frame ago (the kinematics of
@@ -27,6 +30,11 @@ typedef struct hs_hand {
 	hs_quat prev_wrist_rot;
 	uint8_t prev_sensors[HS_GLOVE_SENSORS];
 	bool placed; // set at least once: before that its previous points are its current ones
+	// the wrist poses at the ends of the steps before the last one, newest first (older_pos[0]: two
+	// frames ago), older_count of them: a release takes the hand's motion over its last frames
+	int older_count;
+	hs_vec3 older_pos[HS_HAND_OLDER];
+	hs_quat older_rot[HS_HAND_OLDER];
 	// which check points (bit i) and check lines (bit j) touched an object at the end of the last
 	// step: a part found inside an object it did not reach this frame is in contact only if it
 	// touched before (rectification, contact.c); else it started inside and touches nothing
@@ -76,6 +84,11 @@ void hs_hand_update_shape(hs_hand *hand);
 void hs_hand_update_bounds(hs_hand *hand);
 // The reading of this frame becomes the previous one (the end of a step, a first placement).
 void hs_hand_keep_previous(hs_hand *hand);
+// The end of a step, before hs_hand_keep_previous: the previous wrist pose joins the older ones.
+void hs_hand_age_wrist(hs_hand *hand);
+// The wrist pose `frames` steps before this frame's (0: this frame's, 1: the previous one), 0 ≤
+// frames ≤ older_count + 1.
+void hs_hand_past_wrist(const hs_hand *hand, int frames, hs_vec3 *pos, hs_quat *rot);
 // Rebuilds every cache from the state alone (after hs_world_load_state).
 void hs_hand_refresh(hs_hand *hand);
 

@@ -117,24 +117,47 @@ static void carry_along(hs_world *world, int moved, int current, hs_vec3 d) {
 	}
 }
 
+// How many of the hand's last frames a release's velocity is taken over: HS_RELEASE_S of them (1 at
+// 12-17 frames/s, 3 at 60, 6 at 120), at most the wrist poses it has. Over one frame at 120
+// frames/s the tracker's noise alone (0.76 mm) made a hand opening in place release the object at
+// up to 0.2 m/s and 30 deg/s: a pair let go 0.1 m up landed 3 cm off (docs/model.md §4 "Release").
+#define HS_RELEASE_S 0.05
+static int release_frames(const hs_hand *hand, double dt) {
+	double n = floor(HS_RELEASE_S / dt + 0.5);
+	int most = hand->older_count + 1;
+	return n < 1.0 ? 1 : n > (double)most ? most : (int)n;
+}
+
 // Eq. 3 on release. A grasp that ends starts eq. 3 on the exact parabola of the release velocity
 // v (DESIGN.md "Release"), as hs_world_add_object does for an initial velocity: P(t - dt) =
 // P(t) - v dt + g dt²/2, so the flight does not depend on the frame rate. v is the hand's motion
-// over the frame in which it let go: where its wrist would have carried the object this frame,
-// less where it was, over dt (the object is in the hand when the frame starts and leaves it
-// during the frame). The object's own last frame (the paper's letter: eq. 3 continued from its
+// over its last frames (release_frames of them, the one in which it let go the last): where its
+// wrist carries the object now, less where it carried it then, over that time (the object is in
+// the hand when the frame starts and leaves it during the frame). The object's own last frame (the paper's letter: eq. 3 continued from its
 // last two positions) lags the hand by a frame: at 12 frames/s, with the hand opened 10 ms
 // after the end of a 0.1 s swing, its last held frame is mid-swing and a throw aimed 2 m away
-// landed 1.11 m short. The spin is the wrist's turn over that frame. Any other release (a push
+// landed 1.11 m short. The spin is the wrist's mean turn over those frames. Any other release (a push
 // ends, `last` its contact state) flies on with the motion and turn of its last frame (§4.1),
 // unless it is left on the floor (push.c).
 static void release(hs_world *world, hs_body *body, hs_contact_state last) {
 	if (body->grasped_by > 0) {
 		const hs_hand *hand = &world->hands[body->grasped_by - 1];
 		double dt = world->def.dt;
-		hs_vec3 v_dt = hs_sub(hs_grasp_held_pos(body, hand), body->pos);
+		hs_vec3 v_dt, then_pos;
+		hs_quat turn, then_rot;
+		int frames = release_frames(hand, dt);
+		hs_hand_past_wrist(hand, frames, &then_pos, &then_rot);
+		if (frames == 1) { // the frame it let go in: where the wrist carried the object less where it was
+			v_dt = hs_sub(hs_grasp_held_pos(body, hand), body->pos);
+			turn = hs_quat_normalize(hs_quat_mul(hand->wrist_rot, hs_quat_conj(then_rot)));
+		} else { // the mean over its last frames
+			hs_vec3 then = hs_add(then_pos, hs_quat_rotate(then_rot, body->grip_pos));
+			v_dt = hs_scale(hs_sub(hs_grasp_held_pos(body, hand), then), 1.0 / frames);
+			hs_quat q = hs_quat_normalize(hs_quat_mul(hand->wrist_rot, hs_quat_conj(then_rot)));
+			turn = hs_quat_normalize(hs_quat_slerp(hs_quat_identity(), q, 1.0 / frames));
+		}
 		body->prev = hs_add(hs_sub(body->pos, v_dt), hs_scale(world->def.gravity, 0.5 * dt * dt));
-		body->spin = hs_quat_normalize(hs_quat_mul(hand->wrist_rot, hs_quat_conj(hand->prev_wrist_rot)));
+		body->spin = turn;
 	} else {
 		body->spin = hs_quat_normalize(hs_quat_mul(body->rot, hs_quat_conj(body->rot_prev)));
 		if (hs_push_release_on_floor(world, body, last == HS_CONTACT_PUSH_MANY)) { // it stays on the floor

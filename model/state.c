@@ -126,9 +126,10 @@ static void body_io(hs_state_io *io, const hs_world *w, hs_body *b) {
 	hs_state_int_range(io, &b->released_by, 0, w->hand_count);
 }
 
-// One hand: 55 words, the two readings its check points now and a frame ago come from (the points
-// and lines are rebuilt from them after a load), its two touch masks and its two embedded masks. Its definition is in the
-// checksum.
+// One hand: 105 words (56 and 7 for each of the HS_HAND_OLDER older wrist poses), the two readings its check
+// points now and a frame ago come from (the points and lines are rebuilt from them after a load),
+// the wrist poses before those (a release's velocity), its two touch masks and its two embedded
+// masks. Its definition is in the checksum.
 static void hand_io(hs_state_io *io, hs_hand *h) {
 	hs_state_vec3(io, &h->wrist_pos);
 	hs_state_rotation(io, &h->wrist_rot);
@@ -139,6 +140,11 @@ static void hand_io(hs_state_io *io, hs_hand *h) {
 	for (int i = 0; i < HS_GLOVE_SENSORS; ++i)
 		hs_state_u8(io, &h->prev_sensors[i]);
 	hs_state_bool(io, &h->placed);
+	hs_state_int_range(io, &h->older_count, 0, HS_HAND_OLDER);
+	for (int i = 0; i < HS_HAND_OLDER; ++i) { // all of them (those not yet reached are zero): a fixed size
+		hs_state_vec3(io, &h->older_pos[i]);
+		hs_state_rotation(io, &h->older_rot[i]);
+	}
 	uint64_t points = h->touch_points;
 	hs_state_mask(io, &points, HS_HAND_POINTS);
 	h->touch_points = (uint32_t)points;

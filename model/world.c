@@ -354,8 +354,10 @@ hs_status hs_world_step(hs_world *world) {
 	for (int k = 0; k < moved; ++k) // the awake list may grow only once the loop is over
 		hs_support_wake_neighbours(world, world->queue[k]);
 	hs_awake_compact(world);
-	for (int h = 0; h < world->hand_count; ++h) // a hand not set again stays where it is
+	for (int h = 0; h < world->hand_count; ++h) { // a hand not set again stays where it is
+		hs_hand_age_wrist(&world->hands[h]);
 		hs_hand_keep_previous(&world->hands[h]);
+	}
 	world->frame++;
 	return HS_OK;
 }
@@ -414,6 +416,8 @@ hs_hand_id hs_world_add_hand(hs_world *world, const hs_hand_def *def, hs_status 
 	memset(hand, 0, sizeof *hand);
 	hand->def = *def;
 	hand->wrist_rot = hand->prev_wrist_rot = hs_quat_identity();
+	for (int k = 0; k < HS_HAND_OLDER; ++k) // not yet reached: a unit rotation, as a state file must hold
+		hand->older_rot[k] = hs_quat_identity();
 	hs_hand_update_bounds(hand); // touches nothing until it is set
 	set_status(status, HS_OK);
 	int index = world->hand_count++;

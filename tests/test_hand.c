@@ -848,6 +848,42 @@ static void test_grasp_holds_under_noise(void **state) {
 // grasp (2) follows, and the opening fingers drag the cube less than 1 mm across the floor (on
 // main: states 2, 3, 2, 3, 2 and 9 mm). Held 2 mm up and tilted by the pushes before the grasp,
 // the released cube falls and settles on its own (1.4 mm at 1/17 s, with no contact).
+// A release takes the hand's motion over its last frames (HS_RELEASE_S = 50 ms of them): a hand
+// holding a cube 0.25 m up, its wrist trembling +-0.7 mm along x from frame to frame (the tracker's
+// noise), opens wide in place. At 120 frames/s the mean over 6 frames is the chord between two
+// frames of the same sign: the cube drops with no x velocity at all (over the one frame it let go
+// in: 2 x 0.7 mm x 120 = 0.168 m/s). At 12 frames/s the window is that one frame.
+static double release_vx(double dt) {
+	grasp_rig r = grasp_world(dt, 0.05, 0.09, 1);
+	int held = (int)(1.6 / dt + 0.5);
+	for (int f = 0; f < held; ++f) {
+		pick_up_frame(&r, (f + 1) * dt, 0, 0.0);
+		assert_int_equal(hs_world_step(r.world), HS_OK);
+	}
+	assert_int_equal(cube_state(&r).contact, HS_CONTACT_GRASP);
+	double a = 0.0007;
+	for (int f = 0; f < 8; ++f) { // trembling, still held
+		set_grasp_hand(&r, hs_v3(f % 2 ? -a : a, 0, 0.275), 1.0, r.grasp, 0, 0.0);
+		assert_int_equal(hs_world_step(r.world), HS_OK);
+		assert_int_equal(cube_state(&r).contact, HS_CONTACT_GRASP);
+	}
+	hs_object_state st = cube_state(&r);
+	for (int f = 8; f < 16 && st.contact == HS_CONTACT_GRASP; ++f) { // open wide, still trembling: let go
+		set_grasp_hand(&r, hs_v3(f % 2 ? -a : a, 0, 0.275), 0.0, r.grasp, 0, 0.0);
+		assert_int_equal(hs_world_step(r.world), HS_OK);
+		st = cube_state(&r);
+	}
+	assert_int_equal(st.contact, HS_CONTACT_NONE);
+	hs_world_destroy(r.world);
+	return st.velocity.x;
+}
+
+static void test_release_over_last_frames(void **state) {
+	(void)state;
+	assert_true(fabs(release_vx(1.0 / 120)) < 1e-12);
+	assert_near(fabs(release_vx(1.0 / 12)), 2 * 0.0007 * 12, 1e-9);
+}
+
 static void test_grasp_release_on_opening(void **state) {
 	(void)state;
 	const double dts[] = {1.0 / 60, 1.0 / 17};
@@ -1017,6 +1053,7 @@ int main(void) {
 	    cmocka_unit_test(test_grasp_release_on_opening),
 	    cmocka_unit_test(test_hand_inside_cube_opens),
 	    cmocka_unit_test(test_glove_deadband),
+	    cmocka_unit_test(test_release_over_last_frames),
 	};
 	return cmocka_run_group_tests_name("hand", tests, NULL, NULL);
 }
