@@ -9,18 +9,19 @@
 #include "push.h"
 #include "support.h"
 
-// Object i, moved by `shift` from where it is, overlaps object j.
-static bool bodies_overlap_at(const hs_world *world, int i, hs_vec3 shift, int j) {
-	const hs_body *a = &world->bodies[i], *b = &world->bodies[j];
-	const hs_shape *sa = &world->shapes[a->shape], *sb = &world->shapes[b->shape];
+// Objects i, posed at (pos, rot), and j overlap (libccd; bounding spheres first).
+static bool overlap_at_pose(const hs_world *world, int i, hs_vec3 pos, hs_quat rot, int j) {
+	const hs_body *b = &world->bodies[j];
+	const hs_shape *sa = &world->shapes[world->bodies[i].shape], *sb = &world->shapes[b->shape];
 	double r = sa->radius + sb->radius;
-	hs_vec3 pos = hs_add(a->pos, shift);
 	if (hs_length_sq(hs_sub(pos, b->pos)) > r * r)
 		return false; // bounding spheres apart: no narrow test
-	return hs_shapes_overlap(sa, pos, a->rot, sb, b->pos, b->rot);
+	return hs_shapes_overlap(sa, pos, rot, sb, b->pos, b->rot);
 }
 
-static bool bodies_overlap(const hs_world *world, int i, int j) { return bodies_overlap_at(world, i, hs_v3(0, 0, 0), j); }
+static bool bodies_overlap(const hs_world *world, int i, int j) {
+	return overlap_at_pose(world, i, world->bodies[i].pos, world->bodies[i].rot, j);
+}
 
 bool hs_object_interferes(hs_world *world, int object) {
 	const hs_body *body = &world->bodies[object];
@@ -86,15 +87,31 @@ static void add_candidate(hs_world *world, int j) {
 	++world->candidate_count;
 }
 
-// §4.3, paper mode: every object interfering with a moved object is translated with it, and so on.
-static void carry_along(hs_world *world, int moved, int current, hs_vec3 d) {
-	if (world->def.stacking != HS_STACKING_PAPER || !(hs_length_sq(d) > 0.0))
+// The rigid motion of a hand's frame on an object: from (pos0, rot0) to (pos, rot).
+typedef struct rigid_move {
+	hs_vec3 from, to; // the moved object's G before and after
+	hs_quat turn;     // its rotation over the move
+} rigid_move;
+
+// §4.3, paper mode: every object interfering with a moved object moves with it, and so on: by the
+// moved object's rigid motion, its turn about its G included. Translated only, a cube on a held bar
+// that the tracker's noise tilted by 0.15 deg lost its contact on one side each frame and fell onto
+// the bar again; let go in such a frame, the bar no longer interfered with it and fell a frame
+// (3.4 cm at 12 frames/s) before the two met again.
+static void carry_along(hs_world *world, int moved, int current, rigid_move m) {
+	hs_vec3 d = hs_sub(m.to, m.from);
+	bool turned = m.turn.x != 0.0 || m.turn.y != 0.0 || m.turn.z != 0.0;
+	if (world->def.stacking != HS_STACKING_PAPER || !(hs_length_sq(d) > 0.0 || turned))
 		return;
+	hs_quat back = hs_quat_conj(m.turn);
 	int head = 0, tail = 0;
 	world->queue[tail++] = moved;
 	while (head < tail) {
 		int i = world->queue[head++];
 		const hs_body *moved_body = &world->bodies[i];
+		// where i was before this move (its inverse motion about the mover's G)
+		hs_vec3 was = hs_add(m.from, hs_quat_rotate(back, hs_sub(moved_body->pos, m.to)));
+		hs_quat was_rot = hs_quat_normalize(hs_quat_mul(back, moved_body->rot));
 		int n = hs_grid_query(world, moved_body->pos, world->shapes[moved_body->shape].radius, world->near);
 		for (int k = 0; k < n; ++k) {
 			int j = world->near[k];
@@ -102,10 +119,15 @@ static void carry_along(hs_world *world, int moved, int current, hs_vec3 d) {
 			// interfering where i is now, or where it was before this move (an object resting on a
 			// held one that the hand lowers a little: under tracker noise it was left hovering)
 			if (j == moved || b->held || b->carried ||
-			    !(bodies_overlap(world, i, j) || bodies_overlap_at(world, i, hs_scale(d, -1.0), j)))
+			    !(bodies_overlap(world, i, j) || overlap_at_pose(world, i, was, was_rot, j)))
 				continue;
-			b->pos = hs_add(b->pos, d);
-			b->prev = hs_add(b->prev, d); // carried, not thrown: no inertia is gained
+			hs_vec3 at = hs_add(m.to, hs_quat_rotate(m.turn, hs_sub(b->pos, m.from)));
+			b->prev = hs_add(b->prev, hs_sub(at, b->pos)); // carried, not thrown: no inertia is gained
+			b->pos = at;
+			if (turned) {
+				b->rot = hs_quat_normalize(hs_quat_mul(m.turn, b->rot));
+				b->rot_prev = hs_quat_normalize(hs_quat_mul(m.turn, b->rot_prev));
+			}
 			b->carried = 1;
 			hs_wake(world, j);
 			hs_motion_keep_above_floor(world, b);
@@ -133,12 +155,12 @@ static int release_frames(const hs_hand *hand, double dt) {
 // P(t) - v dt + g dt²/2, so the flight does not depend on the frame rate. v is the hand's motion
 // over its last frames (release_frames of them, the one in which it let go the last): where its
 // wrist carries the object now, less where it carried it then, over that time (the object is in
-// the hand when the frame starts and leaves it during the frame). The object's own last frame (the paper's letter: eq. 3 continued from its
-// last two positions) lags the hand by a frame: at 12 frames/s, with the hand opened 10 ms
-// after the end of a 0.1 s swing, its last held frame is mid-swing and a throw aimed 2 m away
-// landed 1.11 m short. The spin is the wrist's mean turn over those frames. Any other release (a push
-// ends, `last` its contact state) flies on with the motion and turn of its last frame (§4.1),
-// unless it is left on the floor (push.c).
+// the hand when the frame starts and leaves it during the frame). The object's own last frame
+// (the paper's letter: eq. 3 continued from its last two positions) lags the hand by a frame: at
+// 12 frames/s, with the hand opened 10 ms after the end of a 0.1 s swing, its last held frame is
+// mid-swing and a throw aimed 2 m away landed 1.11 m short. The spin is the wrist's mean turn over
+// those frames. Any other release (a push ends, `last` its contact state) flies on with the motion
+// and turn of its last frame (§4.1), unless it is left on the floor (push.c).
 static void release(hs_world *world, hs_body *body, hs_contact_state last) {
 	if (body->grasped_by > 0) {
 		const hs_hand *hand = &world->hands[body->grasped_by - 1];
@@ -313,7 +335,8 @@ void hs_manipulate(hs_world *world) {
 		if (world->def.stacking == HS_STACKING_SUPPORT)
 			hs_support_wake_neighbours(world, i); // what rested on it or against it looks again
 		else
-			carry_along(world, i, i, hs_sub(body->pos, old_pos));
+			carry_along(world, i, i,
+			            (rigid_move){old_pos, body->pos, hs_quat_normalize(hs_quat_mul(body->rot, hs_quat_conj(old_rot)))});
 	}
 	note_touching(world);
 }

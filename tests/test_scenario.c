@@ -1264,6 +1264,48 @@ static void test_face_down(void **state) {
 	                            "straight down, floor_contacts 0\n");
 }
 
+// Paper mode (§4.3) carries what interferes with a held object by its rigid motion, turn included:
+// hand/stack_lift_pair_paper's hand turns 10 deg about the vertical while it holds the bar up. The
+// cube on the bar, its G at (0, -0.06, 0.045) from the bar's, must end at the bar's G plus that
+// offset turned by 10 deg about z, (0.06 sin 10, -0.06 cos 10, 0.045), and turned 10 deg itself: it
+// stays where it sat on the bar. (Translated by the bar's displacement only, it would be 1 cm off
+// and unturned.) The bar's end is where the hand's grip took it (pinned as measured).
+static const char carry_turn_scenario[] =
+    "description: a held bar turns and carries the cube on it\n"
+    "dt: 1/60\n"
+    "duration: 1.6\n"
+    "model: { stacking: paper }\n"
+    "objects:\n"
+    "  - { name: lower, shape: box, size: [0.05, 0.2, 0.05], position: [0, 0, 0.025] }\n"
+    "  - { name: upper, shape: cube, size: 0.04, position: [0, -0.06, 0.07] }\n"
+    "hands:\n"
+    "  - name: right\n"
+    "    keys:\n"
+    "      - { t: 0.0, grip: [0.004, 0.06, 0.208], rpy_deg: [0, 0, 0], posture: { grasp: 0.12 } }\n"
+    "      - { t: 0.5, grip: [0.004, 0.06, 0.058] }\n"
+    "      - { t: 0.6 }\n"
+    "      - { t: 0.605, grip: [0, 0.06, 0.043], posture: { grasp: 0.035 } }\n"
+    "      - { t: 0.7 }\n"
+    "      - { t: 1.2, grip: [0, 0.06, 0.143] }\n"
+    "      - { t: 1.4, rpy_deg: [0, 0, 10] }\n"
+    "expect:\n"
+    "  - { object: lower, at: end, near: [0.006242324910926, 0.018630177935619, 0.125], tolerance: 1e-9 }\n";
+
+static void test_paper_carry_turns(void **state) {
+	(void)state;
+	char report[4096];
+	assert_int_equal(check_in(carry_turn_scenario, "carry.yaml",
+	                          "{ object: upper, at: end, near: [0.016661215570942, -0.040458287245113, 0.17], tolerance: 1e-9 }",
+	                          report, sizeof report),
+	                 0);
+	assert_int_equal(check_in(carry_turn_scenario, "carry.yaml", "{ object: upper, at: end, turned_deg: 9.999999 }", report,
+	                          sizeof report),
+	                 0);
+	assert_int_equal(check_in(carry_turn_scenario, "carry.yaml", "{ object: upper, at: end, turned_at_most_deg: 10.000001 }",
+	                          report, sizeof report),
+	                 0);
+}
+
 static void test_contact_watch(void **state) {
 	(void)state;
 	expect_pass("{ object: block, never_contact: 2 }", "block never_contact 2 from t = 0 s to t = 1.5 s: never in state 2");
@@ -1440,6 +1482,7 @@ int main(void) {
 	    cmocka_unit_test(test_resume_refusals),
 	    cmocka_unit_test(test_upper_bounds),
 	    cmocka_unit_test(test_face_down),
+	    cmocka_unit_test(test_paper_carry_turns),
 	    cmocka_unit_test(test_contact_watch),
 	    cmocka_unit_test(test_load_options),
 	    cmocka_unit_test(test_sweep),
