@@ -8,15 +8,8 @@
 # paper's §5.1), read from the sweep's own header and row labels, so any YAML style is checked;
 # and at least one of its clauses must be `robust: true`.
 # Prints each failing sweep in full, then the table of scripts/sweep_table.sh.
-# With --table (what `make check` runs while issue 10 is open): the guard and every nominal run
-# must pass, failing cells are counted in the table but do not fail the run.
-#   sweep_catalog.sh [--table] TOOL [DIR]
+#   sweep_catalog.sh TOOL [DIR]
 set -eu
-cells_fail=1
-if [ "${1:-}" = "--table" ]; then
-	cells_fail=0
-	shift
-fi
 tool=$1
 dir=${2:-scenarios/hand}
 here=$(dirname "$0")
@@ -69,7 +62,7 @@ for f in "$dir"/*.yaml; do
 		echo "$why" | sed "s|^|check-sweep: $f: |"
 		fail=1
 	fi
-	if [ "$rc" -ne 0 ] && { [ "$cells_fail" -eq 1 ] || ! grep -q '^nominal .*: ok$' "$out"; }; then
+	if [ "$rc" -ne 0 ]; then
 		cat "$out"
 		fail=1
 	fi
@@ -83,8 +76,5 @@ if [ "$fail" -ne 0 ]; then
 	echo "check-sweep: FAILED (a sweep cell, a nominal run or the guard above)"
 	exit 1
 fi
-if [ "$cells_fail" -eq 0 ]; then
-	echo "check-sweep --table: the guard and the nominal runs of all $n hand scenarios pass (cells above: make check-sweep fails until every one passes)"
-else
-	echo "check-sweep: all $n hand scenarios pass every cell"
-fi
+echo "check-sweep: all $n hand scenarios pass every cell"
+
