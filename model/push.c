@@ -56,7 +56,7 @@ static hs_vec3 floor_point_along(const hs_world *world, int count, hs_vec3 u) {
 #define HS_PUSH_EDGE_DEG 20.0
 static hs_vec3 floor_edge_along(const hs_world *world, int count, hs_vec3 p, hs_vec3 a) {
 	const hs_vec2 *f = world->scratch_points;
-	double best = cos(HS_PUSH_EDGE_DEG * (HS_PI / 180.0));
+	double best = hs_cos(HS_PUSH_EDGE_DEG * (HS_PI / 180.0)); // the own cos: libm's may differ by a bit
 	hs_vec3 axis = a;
 	for (int i = 0; i < count; ++i) {
 		hs_vec3 e = hs_v3(f[i].x - p.x, f[i].y - p.y, 0.0);
