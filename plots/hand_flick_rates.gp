@@ -23,7 +23,12 @@ do for [i = 1:N] {
 verdict = over == N ? "it tips over onto a side face at every rate" : \
           (over == 0 ? "it only rocks and falls back onto its base at every rate" : \
            sprintf("it tips over onto a side face only at %s; at the other rates it rocks and falls back onto its base", tipped))
-t_end = 2.0
+t_end = 2.6 # the scenario's duration
+# the window: from 0.1 s before the earliest push, 0.5 s wide (the stroke and the fall that follows)
+t0 = 1e9
+do for [i = 1:N] { if (v("push_t", i) < t0) { t0 = v("push_t", i) } }
+t0 = floor((t0 - 0.1) * 20) / 20.0
+t1 = t0 + 0.5
 
 do for [k = 1:2] {
     if (k == 1) {
@@ -35,25 +40,25 @@ do for [k = 1:2] {
     }
     set multiplot title "Flicking an 8 cm pyramid with the index fingertip (Fig. 9, scenario hand/flick\\_pyramid) at 12-120 frames/s:\n".verdict font ",13"
     set grid
-    set xrange [0.3:0.8]
+    set xrange [t0:t1]
     set xtics 0.05
 
     # (a) the angle turned
     set origin 0, 0.34
     set size 1, 0.6
-    set title "(a) the angle the pyramid has turned since frame 0 (the same stroke sampled at each rate); nothing moves after t = 0.6 s, to the end at 2 s"
+    set title sprintf("(a) the angle the pyramid has turned since frame 0 (the same stroke sampled at each rate); the end poses are those at t = %.1f s", t_end)
     set xlabel "t [s]"
     set ylabel "turned since frame 0 [deg]"
     set yrange [-5:135]
     set ytics 15
     set key top left box opaque font ",10"
-    set arrow 1 from 0.3, 116.565 to 0.8, 116.565 nohead dt 3 lc rgb "#555555"
-    set label 1 "180 - atan(2h/b) = 116.57 deg: lying on a side face" at 0.795, 121 right font ",10"
+    set arrow 1 from t0, 116.565 to t1, 116.565 nohead dt 3 lc rgb "#555555"
+    set label 1 "180 - atan(2h/b) = 116.57 deg: lying on a side face" at t1 - 0.005, 121 right font ",10"
     # each rate's outcome, in the empty space right of the stroke
     do for [i = 1:N] {
         set label 10 + i sprintf("1/%d s: pushed from t = %.3f s, turns at most %.1f deg;\n    rests on %s, turned %.2f deg, G at x = %.4f, z = %.4f m", \
                                  v("fps", i), v("push_t", i), v("max_turn", i), face(i), v("end_turn", i), v("end_x", i), v("end_z", i)) \
-            at 0.548, 103 - 16 * (i - 1) left font ",10" tc rgb color(i) front
+            at t0 + 0.262, 58 - 12.5 * (i - 1) left font ",9" tc rgb color(i) front
     }
     plot for [i = 1:N] data index (i - 1) using 3:7 with linespoints lw 2 pt 7 ps 0.6 lc rgb color(i) title sprintf("dt = 1/%d s", v("fps", i))
     unset label
@@ -68,8 +73,8 @@ do for [k = 1:2] {
     set ytics ("0" 0, "1" 1)
     unset key
     plot for [i = 1:N] data index (i - 1) using 3:($6 + 0.05 * (i - 1)) with steps lw 2 lc rgb color(i) notitle, \
-         for [i = 1:N] '+' using (0.62 + 0.035 * (i - 1)):(1.3) every ::0::0 with points pt 7 ps 1.2 lc rgb color(i) notitle, \
-         for [i = 1:N] '+' using (0.627 + 0.035 * (i - 1)):(1.3):(sprintf("1/%d s", v("fps", i))) every ::0::0 with labels left font ",10" tc rgb color(i) notitle
+         for [i = 1:N] '+' using (t0 + 0.32 + 0.035 * (i - 1)):(1.3) every ::0::0 with points pt 7 ps 1.2 lc rgb color(i) notitle, \
+         for [i = 1:N] '+' using (t0 + 0.327 + 0.035 * (i - 1)):(1.3):(sprintf("1/%d s", v("fps", i))) every ::0::0 with labels left font ",10" tc rgb color(i) notitle
     unset multiplot
     set output
 }
