@@ -34,6 +34,9 @@
 #define PHI0 (-60.0 * HS_PI / 180.0)
 #define PHI_R (45.0 * HS_PI / 180.0)
 #define T_RELEASE 1.0
+// The grasp posture's width: 5 mm less than the cube, the fingertips pressing into its faces (a
+// grasp of exactly the cube's width leaves them on the faces, and the glove deadband 1.5 deg short).
+#define BENCH_SQUEEZE (BENCH_CUBE - 0.005)
 #define TARGET_X 2.0
 #define TARGET_R 0.15
 #define REST_Z (0.5 * BENCH_CUBE)
@@ -184,10 +187,13 @@ static e2e_result end_to_end(const swing *s, int fps, uint64_t *checksum) {
 	hs_hand_def hd = hs_default_hand_def();
 	hs_hand_id hand = hs_world_add_hand(w, &hd, &st);
 	uint8_t grasp[HS_GLOVE_SENSORS], open[HS_GLOVE_SENSORS];
-	hs_hand_posture(&hd, HS_POSTURE_GRASP, BENCH_CUBE, grasp);
+	hs_hand_posture(&hd, HS_POSTURE_GRASP, BENCH_SQUEEZE, grasp);
 	hs_hand_posture(&hd, HS_POSTURE_OPEN, 0.0, open);
 	hs_vec3 grip, axis;
 	hs_hand_grip(&hd, grasp, &grip, &axis);
+	// placed open at the start, it closes on the cube in the first frame (a hand placed around an
+	// object touches nothing until it has come out of it: docs/model.md §3)
+	hs_world_set_hand(w, hand, hs_sub(path_at(s, 0.0), grip), hs_quat_identity(), open);
 	long max_frames = (long)(4.0 * fps);
 	hs_object_state os;
 	for (long f = 1; f <= max_frames; ++f) {
@@ -217,8 +223,9 @@ static e2e_result end_to_end(const swing *s, int fps, uint64_t *checksum) {
 // in the grasp posture stays GRASP for 5 frames — every smaller displacement holding too.
 static int hold_limit_mm(hs_vec3 dir) {
 	hs_hand_def hd = hs_default_hand_def();
-	uint8_t grasp[HS_GLOVE_SENSORS];
-	hs_hand_posture(&hd, HS_POSTURE_GRASP, BENCH_CUBE, grasp);
+	uint8_t grasp[HS_GLOVE_SENSORS], open[HS_GLOVE_SENSORS];
+	hs_hand_posture(&hd, HS_POSTURE_GRASP, BENCH_SQUEEZE, grasp);
+	hs_hand_posture(&hd, HS_POSTURE_OPEN, 0.0, open);
 	hs_vec3 grip, axis;
 	hs_hand_grip(&hd, grasp, &grip, &axis);
 	for (int mm = 1; mm <= 200; ++mm) {
@@ -233,6 +240,7 @@ static int hold_limit_mm(hs_vec3 dir) {
 		od.position = hs_v3(0.0, 0.0, 1.0);
 		hs_object_id id = hs_world_add_object(w, &od, NULL);
 		hs_hand_id hand = hs_world_add_hand(w, &hd, NULL);
+		hs_world_set_hand(w, hand, hs_sub(od.position, grip), hs_quat_identity(), open); // closes in frame 0
 		bool held = true;
 		for (int f = 0; f <= 5 && held; ++f) {
 			hs_vec3 wrist = hs_add(hs_sub(od.position, grip), hs_scale(dir, 1e-3 * mm * f));
