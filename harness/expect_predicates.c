@@ -9,7 +9,7 @@
 #include "expect_table.h"
 #include "scenario_internal.h"
 
-static const char *const attach_names[] = {"none", "pick", "catch", "select", "api"};
+static const char *const attach_names[] = {"none", "pick", "catch", "select", "api", "rod"};
 static const char *const release_names[] = {"none", "drop", "throw"};
 
 // "not reached" for a check whose frames the run never got to.
@@ -66,12 +66,14 @@ static bool parse_flag(hs_scenario_parser *p, const hs_fields *f, hs_clause *c) 
 // true, false, or how it got there
 static bool parse_attached(hs_scenario_parser *p, const hs_fields *f, hs_clause *c) {
 	const yaml_node_t *v = value_of(f, c);
-	int kind = hs_yaml_word(v, attach_names, 4);
+	int kind = hs_yaml_word(v, attach_names, 4); // "api" is no way a scenario attaches
+	if (kind <= HS_ATTACH_NONE && hs_yaml_is_scalar(v) && hs_yaml_scalar_is(v, "rod"))
+		kind = HS_ATTACH_ROD;
 	if (kind > HS_ATTACH_NONE) {
 		c->flag = true;
 		c->count = kind;
 	} else if (!(hs_yaml_is_scalar(v) && hs_yaml_bool(&p->y, v, name_of(c), &c->flag))) {
-		return hs_yaml_fail(&p->y, v, "'attached' must be true, false, pick, catch or select, got %s", hs_yaml_got(v).text);
+		return hs_yaml_fail(&p->y, v, "'attached' must be true, false, pick, catch, select or rod, got %s", hs_yaml_got(v).text);
 	}
 	return true;
 }

@@ -13,8 +13,16 @@
 //    hand's path over the tracker's fit window goes at least select_speed (0.05 m/s: slow
 //    approaches select too; tracker noise gives about 0.01 m/s at rest) — the first object hit by a
 //    ray from the stylus along that path's heading (up to select_range). A ray that hits nothing
-//    keeps the candidate unless the heading has clearly turned away from it (more than 60 deg);
-//    the hand at rest keeps it too.
+//    keeps the candidate unless the heading has clearly turned away from it (more than 60 deg).
+//    With the hand slower than that, ray casting (§3, "for distant objects we use ray casting"):
+//    the stylus's pointing ray (its +x axis) picks the first object it hits beyond grab_range, up to
+//    select_range, unless the candidate is within grab_range (chosen by the hand's path: it stays);
+//    near objects are left to direct picking and the hand's path. A pointing ray that hits no
+//    distant object keeps the candidate.
+//  - A press with a candidate beyond grab_range (and within select_range) attaches it by the
+//    'fishing rod' (§4.4: "wherever spring actions are performed (too) far from the user's body"):
+//    the spring's anchor is fixed in the stylus's frame, at the end of a rod from the pen, so the
+//    rod's tip moves with the pen and swings as it turns (rod length × angle).
 #include "spring_grab.h"
 #include "spring_params.h"
 
@@ -82,6 +90,11 @@ static bool turned_away(const hs_world *world, const hs_spring_system *sys, hs_v
 	return hs_dot(heading, to) < 0.5 * hs_length(to);
 }
 
+// Object i (-1: none) lies within grab_range of the stylus.
+static bool within_grab(const hs_world *world, const hs_spring_system *sys, int i) {
+	return i >= 0 && hs_spring_geom_distance(&sys->geom[i], world->bodies[i].pos, sys->stylus) <= sys->def.grab_range;
+}
+
 void hs_spring_update_candidate(const hs_world *world, hs_spring_system *sys) {
 	int pick = direct_pick(world, sys, sys->stylus);
 	if (pick >= 0) {
@@ -95,6 +108,10 @@ void hs_spring_update_candidate(const hs_world *world, hs_spring_system *sys) {
 			sys->candidate = hit;
 		else if (sys->candidate >= 0 && turned_away(world, sys, heading))
 			sys->candidate = -1;
+	} else if (!within_grab(world, sys, sys->candidate)) { // ray casting: the pointing ray, a distant object
+		int hit = ray_pick(world, sys, sys->stylus, hs_quat_rotate(sys->rot, HS_STYLUS_AXIS));
+		if (hit >= 0 && !within_grab(world, sys, hit))
+			sys->candidate = hit;
 	}
 	if (sys->candidate == sys->attached)
 		sys->candidate = -1;
@@ -127,6 +144,8 @@ void hs_spring_attach(hs_world *world, hs_spring_system *sys, int i, hs_attach_k
 	} else {
 		sys->axis = inside || !(len > 1e-9 * sp.x0) ? down : hs_scale(d, 1.0 / len); // unit A → G
 		sys->anchor_offset = hs_sub(hs_mul_add(body->pos, -sp.x0, sys->axis), sys->stylus);
+		if (kind == HS_ATTACH_ROD) // the rod: fixed in the stylus's frame
+			sys->anchor_offset = hs_quat_inv_rotate(sys->rot, sys->anchor_offset);
 	}
 	if (sys->candidate == i)
 		sys->candidate = -1;
@@ -147,8 +166,13 @@ void hs_spring_press(hs_world *world, hs_spring_system *sys) {
 		return;
 	}
 	int c = sys->candidate;
-	if (c >= 0 && hs_spring_geom_distance(&sys->geom[c], world->bodies[c].pos, s) <= sys->def.grab_range)
+	if (c < 0)
+		return;
+	double d = hs_spring_geom_distance(&sys->geom[c], world->bodies[c].pos, s);
+	if (d <= sys->def.grab_range)
 		hs_spring_attach(world, sys, c, HS_ATTACH_SELECT);
+	else if (d <= sys->def.select_range) // too far to reach: the fishing rod
+		hs_spring_attach(world, sys, c, HS_ATTACH_ROD);
 }
 
 void hs_spring_hold(hs_world *world, hs_spring_system *sys) {

@@ -61,7 +61,7 @@ static void spring_io(hs_spring_system *sys, hs_state_io *io) {
 	int n = sys->capacity;
 	hs_state_int_range(io, &sys->attached, -1, n - 1);
 	int kind = (int)sys->attach_kind;
-	enum_io(io, &kind, HS_ATTACH_NONE, HS_ATTACH_API);
+	enum_io(io, &kind, HS_ATTACH_NONE, HS_ATTACH_ROD);
 	sys->attach_kind = (hs_attach_kind)kind;
 	hs_state_vec3(io, &sys->axis);
 	hs_state_vec3(io, &sys->anchor_offset);

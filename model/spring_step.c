@@ -40,7 +40,7 @@ static hs_spring_support support_of(const frame_ctx *fx, int i, const hs_spring_
 	su.axis = sys->axis;
 	su.stylus_start = hs_spring_anchor_prev(sys); // the spring hangs from the anchor, not the pen tip
 	su.stylus_end = hs_spring_anchor(sys);
-	su.stylus_velocity = sys->stylus_velocity;
+	su.stylus_velocity = hs_spring_anchor_velocity(sys, fx->dt); // the anchor's, in fact
 	return su;
 }
 
@@ -57,7 +57,7 @@ static void step_body(const frame_ctx *fx, int i) {
 	memset(&sg, 0, sizeof sg);
 	sg.spring = attached;
 	sg.s0 = hs_spring_anchor_prev(sys);
-	sg.w = sys->stylus_velocity;
+	sg.w = hs_spring_anchor_velocity(sys, fx->dt);
 	if (attached) // linearise the spring about its state at the frame start
 		hs_spring_linearise(&sg, &sp, p, &sys->axis);
 

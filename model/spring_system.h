@@ -35,16 +35,32 @@ struct hs_spring_system {
 	hs_attach_kind attach_kind;
 	hs_vec3 axis;  // unit direction A → G used when they coincide
 	hs_vec3 anchor_offset; // A − S: the spring's anchor A beside the stylus S, fixed at the press
-	                       // so that the spring has its rest length there (spring_grab.c)
+	                       // so that the spring has its rest length there (spring_grab.c); in the
+	                       // stylus's frame for the fishing rod (HS_ATTACH_ROD)
 	int candidate; // body index, -1 when none
 	hs_release release;
 };
 
 // The spring's anchor at the end of the coming frame and at its start: the stylus plus the offset
-// fixed at the press (spring_grab.c).
-static inline hs_vec3 hs_spring_anchor(const hs_spring_system *sys) { return hs_add(sys->stylus, sys->anchor_offset); }
-static inline hs_vec3 hs_spring_anchor_prev(const hs_spring_system *sys) {
-	return hs_add(sys->stylus_prev, sys->anchor_offset);
+// fixed at the press (spring_grab.c), in the world frame, or for the fishing rod in the stylus's
+// frame (the rod turns with the pen).
+static inline hs_vec3 hs_spring_anchor_at(const hs_spring_system *sys, hs_vec3 stylus, hs_quat rot) {
+	return hs_add(stylus, sys->attach_kind == HS_ATTACH_ROD ? hs_quat_rotate(rot, sys->anchor_offset) : sys->anchor_offset);
 }
+static inline hs_vec3 hs_spring_anchor(const hs_spring_system *sys) { return hs_spring_anchor_at(sys, sys->stylus, sys->rot); }
+static inline hs_vec3 hs_spring_anchor_prev(const hs_spring_system *sys) {
+	return hs_spring_anchor_at(sys, sys->stylus_prev, sys->rot_prev);
+}
+
+// The anchor's velocity over the frame: the stylus's, or for the fishing rod, whose tip swings as
+// the pen turns, its tip's chord over the frame.
+static inline hs_vec3 hs_spring_anchor_velocity(const hs_spring_system *sys, double dt) {
+	if (sys->attach_kind != HS_ATTACH_ROD)
+		return sys->stylus_velocity;
+	return hs_scale(hs_sub(hs_spring_anchor(sys), hs_spring_anchor_prev(sys)), 1.0 / dt);
+}
+
+// The stylus points along its own +x axis: the pointing ray (ray casting, §3) and the fishing rod.
+#define HS_STYLUS_AXIS hs_v3(1.0, 0.0, 0.0)
 
 #endif

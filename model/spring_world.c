@@ -113,7 +113,8 @@ hs_status hs_world_spring_state(const hs_world *world, hs_spring_state *out) {
 		out->anchor = hs_spring_anchor(sys);
 		out->length = hs_distance(body->pos, out->anchor);
 		out->extension = out->length - sp.x0;
-		out->force = hs_spring_force(&sp, sys->axis, body->pos, body->vel, out->anchor, sys->stylus_velocity);
+		out->force = hs_spring_force(&sp, sys->axis, body->pos, body->vel, out->anchor,
+		                             hs_spring_anchor_velocity(sys, world->def.dt));
 	}
 	return HS_OK;
 }

@@ -780,6 +780,55 @@ static void test_lift_after_neutral_press(void **state) {
 	hs_world_destroy(w);
 }
 
+// Ray casting and the fishing rod (§3, §4.4). A still stylus 1.5 m from a cube on the floor points
+// at it (its +x axis, yawed by atan(0.3 / 1.5) toward it): the pointing ray makes the cube the
+// candidate (beyond grab_range; the same ray at a cube within grab_range selects nothing). The
+// press attaches it by the rod: neutral (anchor x0 from G toward the pen, extension 0), the anchor
+// fixed in the stylus's frame. Turned 30 deg about the vertical through the pen, with the pen in
+// place, the anchor goes round the pen by 30 deg: A' = S + Rz(30 deg) (A - S), to 1e-12.
+static void pointing_world(hs_world **w, hs_object_id *cube, hs_vec3 at, hs_quat *rot) {
+	*w = spring_world(1.0 / 60, EARTH, NULL);
+	*cube = add_box(*w, hs_v3(0.1, 0.1, 0.1), 1.0, at, hs_v3(0, 0, 0));
+	*rot = hs_quat_from_axis_angle(hs_v3(0, 0, 1), atan2(at.y, at.x));
+}
+
+static void test_ray_cast_and_rod(void **state) {
+	(void)state;
+	hs_world *w;
+	hs_object_id cube;
+	hs_quat rot;
+	pointing_world(&w, &cube, hs_v3(0.3, 0.06, 0.05), &rot); // near: left to direct picking and the path
+	for (int f = 0; f < 30; ++f) {
+		assert_int_equal(hs_world_set_stylus(w, hs_v3(0, 0, 0.05), rot, false), HS_OK);
+		step(w);
+	}
+	assert_int_equal(spring_state_of(w).candidate.index1, 0);
+	hs_world_destroy(w);
+
+	pointing_world(&w, &cube, hs_v3(1.5, 0.3, 0.05), &rot);
+	hs_vec3 s = hs_v3(0, 0, 0.05);
+	for (int f = 0; f < 30; ++f) {
+		assert_int_equal(hs_world_set_stylus(w, s, rot, false), HS_OK);
+		step(w);
+	}
+	hs_spring_state ss = spring_state_of(w);
+	assert_int_equal(ss.candidate.index1, cube.index1);
+	assert_int_equal(hs_world_set_stylus(w, s, rot, true), HS_OK);
+	step(w);
+	ss = spring_state_of(w);
+	assert_int_equal(ss.attach_kind, HS_ATTACH_ROD);
+	hs_vec3 g = hs_v3(1.5, 0.3, 0.05), toward = hs_normalize(hs_sub(s, g));
+	hs_vec3 a = hs_mul_add(g, 0.1, toward); // x0 from G toward the pen
+	assert_vec3_near(ss.anchor, a, 1e-15);
+	assert_near(ss.extension, 0.0, 1e-15);
+	hs_quat turn = hs_quat_from_axis_angle(hs_v3(0, 0, 1), 30 * HS_PI / 180);
+	assert_int_equal(hs_world_set_stylus(w, s, hs_quat_mul(turn, rot), true), HS_OK);
+	step(w);
+	ss = spring_state_of(w);
+	assert_vec3_near(ss.anchor, hs_add(s, hs_quat_rotate(turn, hs_sub(a, s))), 1e-12);
+	hs_world_destroy(w);
+}
+
 static void test_invalid_input_rejected(void **state) {
 	(void)state;
 	hs_spring_def sd = hs_default_spring_def();
@@ -851,6 +900,7 @@ int main(void) {
 	    cmocka_unit_test(test_press_is_neutral),
 	    cmocka_unit_test(test_far_press_is_neutral),
 	    cmocka_unit_test(test_lift_after_neutral_press),
+	    cmocka_unit_test(test_ray_cast_and_rod),
 	    cmocka_unit_test(test_invalid_input_rejected),
 	};
 	return cmocka_run_group_tests_name("spring", tests, NULL, NULL);

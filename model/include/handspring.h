@@ -450,13 +450,15 @@ int hs_world_contacts(const hs_world *world, hs_contact *out, int max);
 //
 // Per frame: hs_world_set_stylus gives the stylus pose and button at the END of the coming frame
 // (the stylus moves linearly from its previous pose during the frame), then hs_world_step. Button
-// edges take effect at the end of the frame: a press attaches the spring (direct pick, catch, or
-// the 'I want this one' candidate) at its rest length — its anchor is the stylus plus an offset
+// edges take effect at the end of the frame: a press attaches the spring (direct pick, catch, the
+// selection candidate — 'I want this one' along the hand's path, or, the hand still, the first
+// object beyond grab_range on the stylus's pointing ray, its +x axis — and beyond grab_range by
+// the fishing rod, its anchor fixed in the stylus's frame) at its rest length — its anchor is the stylus plus an offset
 // fixed at the press (hs_spring_state.anchor), so nothing moves until the pen does — and a release
 // drops (hand at rest) or throws (hand moving; a velocity estimate against the hand's recent path,
 // the fit's overshoot at a stop, counts as none).
-// Objects keep their orientation (no torque, §4.2); spheres collide as exact spheres, every other
-// shape as its world-axis bounding box. In spring worlds hs_object_state.contact is
+// Objects keep their orientation (no torque, §4.2); spheres collide as exact spheres, boxes as
+// oriented boxes, every other shape through libccd. In spring worlds hs_object_state.contact is
 // HS_CONTACT_GRASP for the object on the spring, HS_CONTACT_NONE otherwise, and `resting` means
 // lying still on the floor.
 //
@@ -498,7 +500,7 @@ typedef struct hs_spring_def {
 	double motion_speed;       ///< m/s: a resting hand starts moving above this speed (default 0.20)
 	double catch_radius;       ///< m: a press this close to a flying object's surface catches it, and so does a button held down with nothing attached when one arrives this close (default 0.05)
 	double grab_range;         ///< m: a press attaches the candidate only this close to its surface (default 0.5)
-	double select_range;       ///< m: length of the selection ray (default 2.0)
+	double select_range;       ///< m: length of the selection rays ('I want this one' and the stylus's pointing ray), and how far the fishing rod reaches (default 2.0)
 	double select_speed;       ///< m/s: the hand's path over the tracker's fit window selects along its heading from this speed (default 0.05)
 } hs_spring_def;
 
@@ -530,6 +532,7 @@ typedef enum hs_attach_kind {
 	HS_ATTACH_CATCH,  ///< the object was flying, within catch_radius of the stylus or around it
 	HS_ATTACH_SELECT, ///< the 'I want this one' candidate, within grab_range
 	HS_ATTACH_API,    ///< hs_world_spring_attach
+	HS_ATTACH_ROD,    ///< the candidate beyond grab_range, within select_range: the 'fishing rod' (§4.4), the anchor fixed in the stylus's frame
 } hs_attach_kind;
 
 /// The stylus and the spring after the last step.
