@@ -101,8 +101,88 @@ void hs_spring_linearise(hs_spring_segment *sg, const hs_spring_params *sp, hs_v
 	sg->omega_t = len > sp->x0 ? sp->omega * sqrt(1.0 - sp->x0 / len) : 0.0; // ω⊥ = √(k⊥ / m)
 }
 
+static double comp(hs_vec3 v, int k) { return k == 0 ? v.x : k == 1 ? v.y : v.z; }
+static void set_comp(hs_vec3 *v, int k, double x) {
+	if (k == 0)
+		v->x = x;
+	else if (k == 1)
+		v->y = x;
+	else
+		v->z = x;
+}
+
+// The spring against a frictionless wall (sg->pinned): G moves in the free axes only (z, and x or y).
+// The linearised stiffness per mass K = ω² u uᵀ + ω⊥² (I − u uᵀ) restricted to them is split into
+// its eigenmodes (at most 2 × 2, closed form), each damped critically as the free spring's modes
+// are (§4.4); the pinned axes' share of e (at the middle of the stretch: exact for a still stylus)
+// is a constant force. At rest the step stands exactly where the spring's force along the wall
+// vanishes, whatever t: the free modes' different ω⊥ and ω otherwise left a rest point that moved
+// with dt (1.6 cm between 1/12 and 1/1000 s for a hanging cube pulled into a wall).
+static void integrate_pinned(hs_integrator integrator, const hs_spring_segment *sg, hs_vec3 p0, hs_vec3 v0, double t,
+                             hs_vec3 *p1, hs_vec3 *v1) {
+	hs_vec3 u = sg->axis;
+	double w2 = sg->omega * sg->omega, t2 = sg->omega_t * sg->omega_t;
+	hs_vec3 s_mid = hs_mul_add(sg->s0, 0.5 * t, sg->w), s1 = hs_mul_add(sg->s0, t, sg->w);
+	hs_vec3 e0 = hs_sub(hs_sub(p0, sg->s0), hs_scale(u, sg->x0));
+	hs_vec3 e_mid = hs_sub(hs_sub(p0, s_mid), hs_scale(u, sg->x0)); // the pinned axes' e mid-stretch
+	int free_axes[3], nf = 0;
+	for (int k = 0; k < 3; ++k)
+		if (!(sg->pinned >> k & 1u))
+			free_axes[nf++] = k;
+	double K[2][2], b[2], e[2], r[2];
+	for (int i = 0; i < nf; ++i) {
+		int a = free_axes[i];
+		double ua = comp(u, a);
+		for (int j = 0; j < nf; ++j) {
+			int c = free_axes[j];
+			K[i][j] = (w2 - t2) * ua * comp(u, c) + (a == c ? t2 : 0.0);
+		}
+		b[i] = comp(sg->accel, a);
+		for (int c = 0; c < 3; ++c) // the pinned axes push through the stiffness's coupling
+			if (sg->pinned >> c & 1u)
+				b[i] -= (w2 - t2) * ua * comp(u, c) * comp(e_mid, c);
+		e[i] = comp(e0, a);
+		r[i] = comp(v0, a) - comp(sg->w, a);
+	}
+	// eigenvectors of the symmetric K: q0 = (cos θ, sin θ), q1 = (−sin θ, cos θ)
+	double th = nf == 2 ? 0.5 * hs_atan2(2.0 * K[0][1], K[0][0] - K[1][1]) : 0.0;
+	double cs = hs_cos(th), sn = hs_sin(th);
+	double q[2][2] = {{cs, sn}, {-sn, cs}};
+	double ef[2] = {0.0, 0.0}, rf[2] = {0.0, 0.0};
+	for (int m = 0; m < nf; ++m) {
+		double lam = nf == 1 ? K[0][0]
+		                     : q[m][0] * (K[0][0] * q[m][0] + K[0][1] * q[m][1]) + q[m][1] * (K[1][0] * q[m][0] + K[1][1] * q[m][1]);
+		double om = lam > 0.0 ? sqrt(lam) : 0.0;
+		double em = 0.0, rm = 0.0, am = 0.0;
+		for (int i = 0; i < nf; ++i) {
+			double qi = nf == 1 ? 1.0 : q[m][i];
+			em += qi * e[i];
+			rm += qi * r[i];
+			am += qi * b[i];
+		}
+		double em1, rm1;
+		mode_step(integrator, om, em, rm, am, t, &em1, &rm1);
+		for (int i = 0; i < nf; ++i) {
+			double qi = nf == 1 ? 1.0 : q[m][i];
+			ef[i] += qi * em1;
+			rf[i] += qi * rm1;
+		}
+	}
+	*p1 = sg->pinned_at;
+	*v1 = hs_v3(0.0, 0.0, 0.0);
+	for (int i = 0; i < nf; ++i) {
+		int a = free_axes[i];
+		set_comp(p1, a, comp(s1, a) + sg->x0 * comp(u, a) + ef[i]);
+		set_comp(v1, a, rf[i] + comp(sg->w, a));
+	}
+}
+
 void hs_spring_integrate(hs_integrator integrator, const hs_spring_segment *sg, hs_vec3 p0, hs_vec3 v0, double t,
                          hs_vec3 *p1, hs_vec3 *v1) {
+	if (sg->spring && sg->pinned) {
+		integrate_pinned(integrator, sg, p0, v0, t, p1, v1);
+		return;
+	}
 	if (!sg->spring) {
 		mode_step3(integrator, 0.0, p0, v0, sg->accel, t, p1, v1);
 		return;

@@ -15,6 +15,10 @@ typedef struct hs_spring_segment {
 	hs_vec3 s0;     // stylus at the stretch start
 	hs_vec3 w;      // stylus velocity
 	hs_vec3 accel;  // constant acceleration: gravity, normal force, friction
+	// a frictionless wall holds G's x (bit 0) and/or y (bit 1) at `pinned_at`: the step moves it
+	// in the other directions only, under the linearised spring restricted to them
+	unsigned pinned;
+	hs_vec3 pinned_at;
 } hs_spring_segment;
 
 // Linearises the spring about G at p with the stylus at sg->s0: sets u (in *axis too; *axis is

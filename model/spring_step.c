@@ -44,6 +44,47 @@ static hs_spring_support support_of(const frame_ctx *fx, int i, const hs_spring_
 	return su;
 }
 
+// The walls (x: bit 0, y: bit 1) object i at p touches, at most floor_tolerance away.
+static unsigned walls_touched(const hs_spring_walls *wl, const hs_spring_geom *g, hs_vec3 p, double tol) {
+	if (!wl->enabled)
+		return 0u;
+	unsigned bits = 0u;
+	if (p.x + g->lo.x <= wl->x_min + tol || p.x + g->hi.x >= wl->x_max - tol)
+		bits |= 1u;
+	if (p.y + g->lo.y <= wl->y_min + tol || p.y + g->hi.y >= wl->y_max - tol)
+		bits |= 2u;
+	return bits;
+}
+
+// A frame in the air. An attached object that touches a wall at the frame start and that the
+// free step would push on into it slides along it instead (the segment pinned to the wall:
+// spring_integrate.c), so that it comes to rest where the spring's force along the wall vanishes,
+// at any dt; an object that reaches a wall during the frame is stopped there by the projection.
+static void fly_along_walls(const frame_ctx *fx, hs_spring_segment *sg, const hs_spring_params *sp, int i,
+                            hs_vec3 *p, hs_vec3 *v) {
+	hs_spring_system *sys = fx->sys;
+	const hs_spring_geom *g = &sys->geom[i];
+	unsigned touching = sg->spring ? walls_touched(&sys->def.walls, g, *p, fx->world->def.floor_tolerance) : 0u;
+	hs_spring_segment start = *sg;
+	hs_vec3 axis0 = sys->axis, p1 = *p, v1 = *v;
+	hs_spring_fly(sys->def.integrator, sg, sp, fx->dt, &sys->axis, &p1, &v1);
+	hs_vec3 q = p1;
+	hs_spring_wall_project(&sys->def.walls, g, &q, NULL);
+	unsigned pinned = (q.x != p1.x ? 1u : 0u) | (q.y != p1.y ? 2u : 0u);
+	if (!(pinned & touching)) {
+		*p = p1;
+		*v = v1;
+		return;
+	}
+	*sg = start; // again, along the wall
+	sys->axis = axis0;
+	sg->pinned = pinned & touching;
+	sg->pinned_at = *p;
+	hs_spring_wall_project(&sys->def.walls, g, &sg->pinned_at, NULL);
+	*p = sg->pinned_at;
+	hs_spring_fly(sys->def.integrator, sg, sp, fx->dt, &sys->axis, p, v);
+}
+
 // One object through one frame: on the floor (friction) or in the air, then the walls.
 static void step_body(const frame_ctx *fx, int i) {
 	hs_spring_system *sys = fx->sys;
@@ -68,7 +109,7 @@ static void step_body(const frame_ctx *fx, int i) {
 		fx->world->counters.floor_checks++;
 	} else { // in the air: gravity and the spring
 		sg.accel = fx->gravity;
-		hs_spring_fly(sys->def.integrator, &sg, &sp, fx->dt, &sys->axis, &p, &v);
+		fly_along_walls(fx, &sg, &sp, i, &p, &v);
 		on_floor = hs_spring_land(g, &p, &v);
 	}
 	hs_spring_wall_project(&sys->def.walls, g, &p, &v);

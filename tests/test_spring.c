@@ -829,6 +829,52 @@ static void test_ray_cast_and_rod(void **state) {
 	hs_world_destroy(w);
 }
 
+// Issue 11: a hanging 1 kg cube (x0 = 0.1 m, k = 490.5 N/m) carried into a frictionless wall rests
+// where the spring's force along the wall balances its weight, at every dt: the anchor at
+// (0.6, 0, 0.7), the wall holding G at x = 0.45, so d = (0.15, 0, 0.7 - z), L = |d|, and
+// k (L - x0) (0.7 - z) / L = m g. z from that equation by bisection (to 1e-15), the model within 1e-6
+// m at 1/12, 1/60 and 1/1000 s (before, with the free step projected back onto the wall: 0.6049 at
+// 1/12, 0.6410 at 1/60 and 0.6459 at 1/1000 against 0.6462883).
+static double wall_rest_z(void) {
+	double lo = 0.3, hi = 0.7;
+	for (int k = 0; k < 200; ++k) {
+		double z = 0.5 * (lo + hi), dz = 0.7 - z, len = sqrt(0.15 * 0.15 + dz * dz);
+		if ((len - 0.1) * dz / len > 0.02) // k (L - x0) dz / L > m g: the spring lifts it
+			lo = z;
+		else
+			hi = z;
+	}
+	return 0.5 * (lo + hi);
+}
+
+static void test_wall_rest_any_dt(void **state) {
+	(void)state;
+	const double rates[] = {12, 60, 1000};
+	double z = wall_rest_z();
+	for (int r = 0; r < 3; ++r) {
+		hs_spring_def sd = hs_default_spring_def();
+		sd.walls.enabled = true;
+		sd.walls.x_min = -0.5;
+		sd.walls.x_max = 0.5;
+		sd.walls.y_min = -0.5;
+		sd.walls.y_max = 0.5;
+		hs_world *w = spring_world(1.0 / rates[r], EARTH, &sd);
+		hs_object_id cube = add_box(w, hs_v3(0.1, 0.1, 0.1), 1.0, hs_v3(0.4, 0, 0.55), hs_v3(0, 0, 0));
+		stylus_at(w, hs_v3(0.4, 0, 0.7), false);
+		assert_int_equal(hs_world_spring_attach(w, cube), HS_OK); // the literal spring: 0.15 - 0.1 = 5 cm stretched
+		int frames = (int)(6.0 * rates[r] + 0.5);
+		for (int f = 1; f <= frames; ++f) { // to x = 0.6 in 1 s, beyond the wall, then still
+			double t = f / rates[r];
+			stylus_at(w, hs_v3(t < 1.0 ? 0.4 + 0.2 * t : 0.6, 0, 0.7), false);
+			step(w);
+		}
+		hs_vec3 g = pos_of(w, cube);
+		assert_near(g.x, 0.45, 0.0);
+		assert_near(g.z, z, 1e-6);
+		hs_world_destroy(w);
+	}
+}
+
 static void test_invalid_input_rejected(void **state) {
 	(void)state;
 	hs_spring_def sd = hs_default_spring_def();
@@ -901,6 +947,7 @@ int main(void) {
 	    cmocka_unit_test(test_far_press_is_neutral),
 	    cmocka_unit_test(test_lift_after_neutral_press),
 	    cmocka_unit_test(test_ray_cast_and_rod),
+	    cmocka_unit_test(test_wall_rest_any_dt),
 	    cmocka_unit_test(test_invalid_input_rejected),
 	};
 	return cmocka_run_group_tests_name("spring", tests, NULL, NULL);
