@@ -13,6 +13,9 @@
 //    MPR's depth and direction, deepest part pair). A box whose faces lie on its world-axis
 //    bounding box uses the bounding-box formulas, the same bits as before turned boxes existed.
 //    Objects do not turn (§4.2: no torque), so a collision changes velocities only.
+//  - No tunnelling: a pair apart at the frame's end whose paths through the frame met (exactly for
+//    two spheres, by sub-steps no longer than the sum of their inner radii otherwise) is put back
+//    where they met and answered there (first_meeting).
 //  - There is no resting contact between objects.
 #include "spring_collide.h"
 
@@ -200,26 +203,153 @@ static void file_all(hs_world *world, hs_spring_system *sys) {
 		hs_hgrid_file(&sys->grid, i, box_centre(&sys->geom[i], world->bodies[i].pos));
 }
 
-// Objects whose bounds may meet object i's box (its margin included), in index order.
-static int near_of(const hs_world *world, hs_spring_system *sys, int i) {
+// Objects whose bounds may meet object i's box (its margin included), or its path through the frame
+// grown by `reach` (the farthest any object moved: where another's path may cross it), in index
+// order.
+static int near_of(const hs_world *world, hs_spring_system *sys, int i, double reach) {
+	if (sys->all_pairs) {
+		for (int j = 0; j < world->object_count; ++j)
+			sys->near[j] = j;
+		return world->object_count;
+	}
 	const hs_spring_geom *g = &sys->geom[i];
-	hs_vec3 p = world->bodies[i].pos;
+	hs_vec3 p = world->bodies[i].pos, s = sys->saved_pos[i];
 	double m = margin_of(g, p);
 	hs_vec3 lo = hs_add(p, hs_sub(g->lo, hs_v3(m, m, m))), hi = hs_add(p, hs_add(g->hi, hs_v3(m, m, m)));
+	if (reach > 0.0) {
+		lo = hs_v3(fmin(lo.x, s.x + g->lo.x) - reach, fmin(lo.y, s.y + g->lo.y) - reach, fmin(lo.z, s.z + g->lo.z) - reach);
+		hi = hs_v3(fmax(hi.x, s.x + g->hi.x) + reach, fmax(hi.y, s.y + g->hi.y) + reach, fmax(hi.z, s.z + g->hi.z) + reach);
+	}
 	return hs_hgrid_query(&sys->grid, lo, hi, sys->near);
 }
+
+// The largest ball about G inside the object (a box's smallest half extent; for other convex shapes
+// an eighth of the bounding box's, as the hand model's fall sweep takes).
+static double inner_radius(const hs_spring_geom *g) {
+	if (g->sphere)
+		return g->radius;
+	if (g->form == HS_FORM_BOX)
+		return fmin(g->half.x, fmin(g->half.y, g->half.z));
+	hs_vec3 h = hs_scale(hs_sub(g->hi, g->lo), 0.5);
+	double r = fmin(h.x, fmin(h.y, h.z));
+	return g->form == HS_FORM_AXIS_BOX ? r : r / 8.0;
+}
+
+// Object i at the fraction tau of the frame, for motion at constant acceleration through it (gravity,
+// sliding friction): the position from the frame start's and end's velocities, p0 + dt (tau v0 +
+// tau² (v1 - v0) / 2), when its end is the frame's end (the step was such); else the straight path.
+static hs_vec3 path_at(const hs_world *world, const hs_spring_system *sys, int i, double tau) {
+	const hs_body *b = &world->bodies[i];
+	double dt = world->def.dt;
+	hs_vec3 v0 = sys->saved_vel[i], dv = hs_sub(b->vel, v0), p0 = sys->saved_pos[i];
+	hs_vec3 end = hs_add(p0, hs_scale(hs_mul_add(v0, 0.5, dv), dt));
+	if (hs_length_sq(hs_sub(end, b->pos)) <= 1e-24)
+		return hs_add(p0, hs_scale(hs_mul_add(hs_scale(v0, tau), 0.5 * tau * tau, dv), dt));
+	return hs_mul_add(p0, tau, hs_sub(b->pos, p0));
+}
+
+// Object i put back to the fraction tau of the frame: on its path, the velocity between the frame
+// start's and end's.
+static void state_at(hs_world *world, const hs_spring_system *sys, int i, double tau) {
+	hs_body *b = &world->bodies[i];
+	hs_vec3 p = path_at(world, sys, i, tau);
+	b->vel = hs_mul_add(sys->saved_vel[i], tau, hs_sub(b->vel, sys->saved_vel[i]));
+	b->pos = p;
+}
+
+// No tunnelling (issue 11): two objects apart at the frame's start may meet on the way, whether or
+// not they still overlap where the frame leaves them. The first fraction tau at which they meet, -1 when
+// they do not: at sub-steps no longer than the sum of their inner radii (a sphere's radius, a box's
+// smallest half extent) along their paths (path_at), so no pass through the other's inner ball is
+// missed (a glancing overlap shallower than that may be), then by bisection to 1e-12 of the frame
+// between the last sub-step apart and the first that meets.
+#define HS_MAX_SWEEP_STEPS 4096
+static bool meet_at(const hs_world *world, const hs_spring_system *sys, int i, int j, double t) {
+	hs_vec3 n;
+	double depth;
+	return hs_spring_contact(world, &sys->geom[i], path_at(world, sys, i, t), &sys->geom[j], path_at(world, sys, j, t),
+	                         &n, &depth);
+}
+
+// Two spheres: the gap |G_b - G_a| - (r_a + r_b) along their paths, a smooth function of tau.
+static double sphere_gap(const hs_world *world, const hs_spring_system *sys, int i, int j, double t) {
+	return hs_length(hs_sub(path_at(world, sys, j, t), path_at(world, sys, i, t))) - sys->geom[i].radius -
+	       sys->geom[j].radius;
+}
+
+// The gap's root in [lo, hi] (apart at lo, meeting at hi) by regula falsi with the Illinois rule,
+// to 1e-12 of the frame or a gap within 1e-15 m: a few steps where bisection takes forty.
+static double sphere_root(const hs_world *world, const hs_spring_system *sys, int i, int j, double lo, double hi) {
+	double flo = sphere_gap(world, sys, i, j, lo), fhi = sphere_gap(world, sys, i, j, hi);
+	int side = 0;
+	for (int it = 0; it < 100 && hi - lo > 1e-12; ++it) {
+		double t = flo - fhi > 0.0 ? lo + (hi - lo) * flo / (flo - fhi) : 0.5 * (lo + hi);
+		if (!(t > lo && t < hi))
+			t = 0.5 * (lo + hi);
+		double f = sphere_gap(world, sys, i, j, t);
+		if (f <= 0.0) { // meeting at t
+			hi = t;
+			fhi = f;
+			if (side == -1)
+				flo *= 0.5;
+			side = -1;
+			if (f > -1e-15)
+				break;
+		} else {
+			lo = t;
+			flo = f;
+			if (side == 1)
+				fhi *= 0.5;
+			side = 1;
+		}
+	}
+	return hi;
+}
+
+static double first_meeting(const hs_world *world, const hs_spring_system *sys, int i, int j, bool end_meets) {
+	const hs_spring_geom *ga = &sys->geom[i], *gb = &sys->geom[j];
+	hs_vec3 rel = hs_sub(hs_sub(world->bodies[j].pos, sys->saved_pos[j]), hs_sub(world->bodies[i].pos, sys->saved_pos[i]));
+	double step = inner_radius(ga) + inner_radius(gb), len = hs_length(rel);
+	if (!(step > 0.0) || !(len > 0.0) || (!end_meets && !(len > step)))
+		return -1.0; // no relative motion, or slower: a pass through the inner balls shows at an end
+	bool spheres = ga->sphere && gb->sphere && ga->form != HS_FORM_BOX && gb->form != HS_FORM_BOX;
+	if (spheres ? sphere_gap(world, sys, i, j, 0.0) <= 0.0 : meet_at(world, sys, i, j, 0.0))
+		return -1.0; // met already at the start: a contact going on, not a first meeting
+	double n = ceil(len / step);
+	int steps = n > HS_MAX_SWEEP_STEPS ? HS_MAX_SWEEP_STEPS : n < 1.0 ? 1 : (int)n;
+	int k = 1;
+	while (k < steps && !(spheres ? sphere_gap(world, sys, i, j, (double)k / steps) <= 0.0
+	                              : meet_at(world, sys, i, j, (double)k / steps)))
+		++k;
+	if (k == steps && !end_meets)
+		return -1.0;
+	double lo = (double)(k - 1) / steps, hi = (double)k / steps;
+	if (spheres)
+		return sphere_root(world, sys, i, j, lo, hi);
+	while (hi - lo > 1e-12) {
+		double mid = 0.5 * (lo + hi);
+		if (meet_at(world, sys, i, j, mid))
+			hi = mid;
+		else
+			lo = mid;
+	}
+	return hi;
+}
+
 
 void hs_spring_collide(hs_world *world, hs_spring_system *sys) {
 	// Pairs in ascending (i, j), as the full double loop met them, so the bits are the same: for
 	// each i the broad phase lists the j near it now; when a pair moved i, the list is taken again
 	// from where i is now and resumes after j (only i and j move within i's turn).
 	const hs_spring_geom *geom = sys->geom;
-	double e = sys->def.restitution;
+	double e = sys->def.restitution, reach = 0.0;
+	for (int i = 0; i < world->object_count; ++i) // the farthest any object moved this frame
+		reach = fmax(reach, hs_length(hs_sub(world->bodies[i].pos, sys->saved_pos[i])));
 	file_all(world, sys);
 	for (int i = 0; i < world->object_count; ++i) {
 		hs_body *a = &world->bodies[i];
 		const hs_spring_geom *ga = &geom[i];
-		int count = near_of(world, sys, i);
+		int count = near_of(world, sys, i, reach);
 		for (int k = 0; k < count; ++k) {
 			int j = sys->near[k];
 			if (j <= i)
@@ -228,14 +358,31 @@ void hs_spring_collide(hs_world *world, hs_spring_system *sys) {
 			const hs_spring_geom *gb = &geom[j];
 			hs_vec3 n;
 			double depth;
-			if (!boxes_meet(ga, a->pos, gb, b->pos, margin_of(ga, a->pos) + margin_of(gb, b->pos)) ||
-			    !hs_spring_contact(world, ga, a->pos, gb, b->pos, &n, &depth))
+			bool end_meets = boxes_meet(ga, a->pos, gb, b->pos, margin_of(ga, a->pos) + margin_of(gb, b->pos)) &&
+			                 hs_spring_contact(world, ga, a->pos, gb, b->pos, &n, &depth);
+			double tau = first_meeting(world, sys, i, j, end_meets); // where they first met on the way
+			if (!end_meets && tau < 0.0)
 				continue;
+			if (tau >= 0.0 && tau < 1.0) {
+				state_at(world, sys, i, tau); // both back to where they met (the rest of the frame's
+				state_at(world, sys, j, tau); // motion is lost: a delay, no energy)
+				if (!hs_spring_contact(world, ga, a->pos, gb, b->pos, &n, &depth)) { // just touching
+					n = hs_normalize(hs_sub(b->pos, a->pos));
+					depth = 0.0;
+				}
+			}
 			respond(a, b, n, depth, e);
+			if (tau > 0.0 && tau < 1.0) { // the rest of the frame, from where they met (on the spring: lost)
+				double rest = (1.0 - tau) * world->def.dt;
+				if (i != sys->attached)
+					hs_spring_advance(world, sys, i, rest);
+				if (j != sys->attached)
+					hs_spring_advance(world, sys, j, rest);
+			}
 			sys->separated[i] = sys->separated[j] = 1;
 			hs_hgrid_file(&sys->grid, i, box_centre(ga, a->pos));
 			hs_hgrid_file(&sys->grid, j, box_centre(gb, b->pos));
-			count = near_of(world, sys, i);
+			count = near_of(world, sys, i, reach);
 			for (k = 0; k < count && sys->near[k] <= j; ++k)
 				;
 			--k; // the loop's ++k lands on the first object after j

@@ -120,6 +120,11 @@ static void step_body(const frame_ctx *fx, int i) {
 	fx->world->counters.object_steps++;
 }
 
+void hs_spring_advance(hs_world *world, hs_spring_system *sys, int i, double dt) {
+	frame_ctx fx = {world, sys, dt, world->def.gravity};
+	step_body(&fx, i);
+}
+
 static int floor_contacts(hs_world *world, const hs_spring_system *sys, int i) {
 	if (sys->geom[i].sphere)
 		return 1;

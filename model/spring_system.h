@@ -24,6 +24,7 @@ struct hs_spring_system {
 	hs_hgrid grid;
 	int grid_count;
 	int *near;
+	bool all_pairs; // tests only: every object is near every other (the double loop the grid replaces)
 	// the stylus: pose at the end of the coming frame and at its start
 	bool has_stylus;
 	hs_vec3 stylus, stylus_prev;
@@ -59,6 +60,10 @@ static inline hs_vec3 hs_spring_anchor_velocity(const hs_spring_system *sys, dou
 		return sys->stylus_velocity;
 	return hs_scale(hs_sub(hs_spring_anchor(sys), hs_spring_anchor_prev(sys)), 1.0 / dt);
 }
+
+// Object i, not on the spring, through `dt` seconds of free motion on the floor or in the air from
+// where it is (spring_step.c): the rest of a frame after a collision within it (spring_collide.c).
+void hs_spring_advance(hs_world *world, hs_spring_system *sys, int i, double dt);
 
 // The stylus points along its own +x axis: the pointing ray (ray casting, §3) and the fishing rod.
 #define HS_STYLUS_AXIS hs_v3(1.0, 0.0, 0.0)
