@@ -360,7 +360,9 @@ void hs_spring_collide(hs_world *world, hs_spring_system *sys) {
 			double depth;
 			bool end_meets = boxes_meet(ga, a->pos, gb, b->pos, margin_of(ga, a->pos) + margin_of(gb, b->pos)) &&
 			                 hs_spring_contact(world, ga, a->pos, gb, b->pos, &n, &depth);
-			double tau = first_meeting(world, sys, i, j, end_meets); // where they first met on the way
+			// where they first met on the way; an object answered already this frame has left the
+			// path its frame-start state describes: such pairs meet at the frame's end only
+			double tau = sys->separated[i] || sys->separated[j] ? -1.0 : first_meeting(world, sys, i, j, end_meets);
 			if (!end_meets && tau < 0.0)
 				continue;
 			if (tau >= 0.0 && tau < 1.0) {
