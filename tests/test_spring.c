@@ -373,15 +373,19 @@ static void test_swing_is_damped(void **state) {
 	assert_true(peak > 0.3 && peak < 0.36); // one overshoot of a few cm
 }
 
+// The default spring model inside walls at x, y = ±half.
+static hs_spring_def walled(double half) {
+	hs_spring_def sd = hs_default_spring_def();
+	sd.walls.enabled = true;
+	sd.walls.x_min = sd.walls.y_min = -half;
+	sd.walls.x_max = sd.walls.y_max = half;
+	return sd;
+}
+
 // Fig. 4: an object pulled into a wall stays at the wall while the spring stretches.
 static void test_wall_holds_object(void **state) {
 	(void)state;
-	hs_spring_def sd = hs_default_spring_def();
-	sd.walls.enabled = true;
-	sd.walls.x_min = -1.0;
-	sd.walls.x_max = 1.0;
-	sd.walls.y_min = -1.0;
-	sd.walls.y_max = 1.0;
+	hs_spring_def sd = walled(1.0);
 	hs_world *w = spring_world(1.0 / 60, EARTH, &sd);
 	hs_object_id ball = add_sphere(w, 0.05, 1.0, hs_v3(0.8, 0, 1.0), hs_v3(0, 0, 0));
 	hs_object_id box = add_box(w, hs_v3(0.1, 0.1, 0.1), 0.5, hs_v3(0.8, 0.5, 0.05), hs_v3(0, 0, 0));
@@ -852,12 +856,7 @@ static void test_wall_rest_any_dt(void **state) {
 	const double rates[] = {12, 60, 1000};
 	double z = wall_rest_z();
 	for (int r = 0; r < 3; ++r) {
-		hs_spring_def sd = hs_default_spring_def();
-		sd.walls.enabled = true;
-		sd.walls.x_min = -0.5;
-		sd.walls.x_max = 0.5;
-		sd.walls.y_min = -0.5;
-		sd.walls.y_max = 0.5;
+		hs_spring_def sd = walled(0.5);
 		hs_world *w = spring_world(1.0 / rates[r], EARTH, &sd);
 		hs_object_id cube = add_box(w, hs_v3(0.1, 0.1, 0.1), 1.0, hs_v3(0.4, 0, 0.55), hs_v3(0, 0, 0));
 		stylus_at(w, hs_v3(0.4, 0, 0.7), false);
