@@ -297,8 +297,8 @@ void bench_accuracy(const bench_opts *opts, bench_shared *shared) {
 	}
 	shared->checksum ^= checksum;
 
-	FILE *csv = bench_csv(opts, "accuracy.csv");
-	fprintf(csv, "# speed against error: error (m) and ns per step; unstable = diverged or frozen by the numeric guard\n");
+	FILE *csv = bench_csv(opts, "accuracy.csv",
+	                      "speed against error: error (m) and ns per step; unstable = diverged or frozen by the numeric guard");
 	fprintf(csv, "problem,integrator,fps,dt,omega_dt,steps,error,ns_per_step,us_per_sim_s,unstable,explicit_limit\n");
 	for (int p = 0; p < N_PROBLEMS; ++p)
 		for (int i = 0; i < N_INTEGRATORS; ++i)

@@ -45,7 +45,9 @@ double bench_median(const double *values, int n);
 void bench_progress(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
 
 /// Opens out_dir/name for writing (exits with a message when it cannot).
-FILE *bench_csv(const bench_opts *opts, const char *name);
+FILE *bench_csv(const bench_opts *opts, const char *name, const char *about);
+/// Starts DIR/meta.txt: the machine, date, compiler, flags and QUICK; bench_csv adds a line per CSV.
+void bench_meta_start(const bench_opts *opts);
 
 /// The closing summary: one line per figure, and the targets of the issue.
 typedef enum bench_verdict { BENCH_INFO = 0, BENCH_MET, BENCH_NOT_MET, BENCH_UNKNOWN } bench_verdict;
@@ -77,8 +79,9 @@ void bench_collide(const bench_opts *opts, bench_shared *shared);    // item 6 (
 void bench_profile_collide(const char *spec);
 /// The seed scene of item 1 timed alone (the peers' comparison when item 1 did not run).
 bench_stats bench_seed_measure(const bench_opts *opts, bool skip);
-/// N frames of the seed scene alone (for a profiler): 10 objects (or `objects`), 2 grasped.
-void bench_profile_seed(long frames, int objects, bool skip, bool paper);
+/// N frames of the seed scene alone (for a profiler): 10 objects (or `objects`), 2 grasped; `honest`:
+/// the honest frame's input (noisy glove reading and turning wrist every frame, the hash every frame).
+void bench_profile_seed(long frames, int objects, bool skip, bool paper, bool honest);
 
 // ---------------------------------------------------------------------------------------------
 // The seed scene and the projectile, as every engine builds them (the peers use these numbers)

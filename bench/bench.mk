@@ -52,5 +52,5 @@ bench-run: $(BENCH_BIN) bench-peers-note
 	@$(BENCH_BIN) $(if $(filter-out 0,$(QUICK)),--quick) --out $(BENCH_OUT) > $(BENCH_OUT)/report.txt; \
 		status=$$?; cat $(BENCH_OUT)/report.txt; exit $$status
 	@for s in bench/*.gp; do \
-		gnuplot -e "dir='$(BENCH_OUT)'" $$s || exit 1; done
+		gnuplot -e "dir='$(BENCH_OUT)'; quick=$(if $(filter-out 0,$(QUICK)),1,0)" $$s || exit 1; done
 	@ls $(BENCH_OUT)/*.png $(BENCH_OUT)/*.svg

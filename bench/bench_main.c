@@ -2,9 +2,12 @@
 // speed against error, throw fidelity across frame rates, and the peers side by side.
 //
 //   hs_bench [--quick] [--out DIR] [--only SECTION]
-//   hs_bench --profile-seed N[,OBJECTS] | --profile-seed-noskip N[,OBJECTS] | --profile-seed-paper N[,OBJECTS]
-//                                 (N frames of the seed scene alone, 2 grasped, for perf; -paper: the
-//                                 paper's contact rule; callgrind --toggle-collect=fr_profiled_frames)
+//   hs_bench --profile-seed N[,OBJECTS] | --profile-seed-honest N[,OBJECTS] | --profile-seed-noskip N[,OBJECTS]
+//            | --profile-seed-paper N[,OBJECTS]
+//                                 (N frames of the seed scene alone, 2 grasped, for perf; -honest: the
+//                                 honest frame's input, noisy glove, turning wrist, hash every frame;
+//                                 -paper: the paper's contact rule; callgrind
+//                                 --toggle-collect=fr_profiled_frames)
 //   hs_bench --profile-collide KIND,FRAMES[,N]   (box, hand, hand+box, spring, spring+box)
 //
 // Progress goes to stderr, the tables and the closing summary to stdout, CSV files to DIR
@@ -56,15 +59,19 @@ int main(int argc, char **argv) {
 			only = argv[++i];
 		else if (strcmp(argv[i], "--profile-seed") == 0 && i + 1 < argc) {
 			const char *comma = strchr(argv[i + 1], ',');
-			bench_profile_seed(atol(argv[i + 1]), comma ? atoi(comma + 1) : 10, true, false);
+			bench_profile_seed(atol(argv[i + 1]), comma ? atoi(comma + 1) : 10, true, false, false);
+			return 0;
+		} else if (strcmp(argv[i], "--profile-seed-honest") == 0 && i + 1 < argc) {
+			const char *comma = strchr(argv[i + 1], ',');
+			bench_profile_seed(atol(argv[i + 1]), comma ? atoi(comma + 1) : 10, true, false, true);
 			return 0;
 		} else if (strcmp(argv[i], "--profile-seed-paper") == 0 && i + 1 < argc) {
 			const char *comma = strchr(argv[i + 1], ',');
-			bench_profile_seed(atol(argv[i + 1]), comma ? atoi(comma + 1) : 10, true, true);
+			bench_profile_seed(atol(argv[i + 1]), comma ? atoi(comma + 1) : 10, true, true, false);
 			return 0;
 		} else if (strcmp(argv[i], "--profile-seed-noskip") == 0 && i + 1 < argc) {
 			const char *comma = strchr(argv[i + 1], ',');
-			bench_profile_seed(atol(argv[i + 1]), comma ? atoi(comma + 1) : 10, false, false);
+			bench_profile_seed(atol(argv[i + 1]), comma ? atoi(comma + 1) : 10, false, false, false);
 			return 0;
 		} else if (strcmp(argv[i], "--profile-collide") == 0 && i + 1 < argc) {
 			bench_profile_collide(argv[i + 1]);
@@ -82,6 +89,7 @@ int main(int argc, char **argv) {
 	bench_shared shared;
 	memset(&shared, 0, sizeof shared);
 	bench_note_start();
+	bench_meta_start(&opts);
 	double t0 = bench_now();
 	int ran = 0;
 	for (int i = 0; i < N_SECTIONS; ++i) {

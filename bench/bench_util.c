@@ -74,15 +74,24 @@ void bench_progress(const char *fmt, ...) {
 	fflush(stderr);
 }
 
-FILE *bench_csv(const bench_opts *opts, const char *name) {
+static FILE *open_out(const bench_opts *opts, const char *name, const char *mode) {
 	char path[1024];
 	snprintf(path, sizeof path, "%s/%s", opts->out_dir, name);
-	FILE *f = fopen(path, "w");
+	FILE *f = fopen(path, mode);
 	if (!f) {
 		fprintf(stderr, "bench: cannot write %s: %s\n", path, strerror(errno));
 		exit(2);
 	}
 	return f;
+}
+
+// A CSV whose first line is its header row (csv.DictReader and pandas read it as it is); what it
+// holds goes to meta.txt, with the machine, date, compiler, flags and QUICK (bench_meta_start).
+FILE *bench_csv(const bench_opts *opts, const char *name, const char *about) {
+	FILE *meta = open_out(opts, "meta.txt", "a");
+	fprintf(meta, "%-16s: %s\n", name, about);
+	fclose(meta);
+	return open_out(opts, name, "w");
 }
 
 uint64_t bench_mix(uint64_t h, double x) {
@@ -186,7 +195,8 @@ static const char *verdict_name(bench_verdict v) {
 	return "";
 }
 
-void bench_summary_print(FILE *out, const bench_opts *opts) {
+// The run's circumstances: machine, compiler, flags, date, QUICK.
+static void describe_run(FILE *out, const bench_opts *opts) {
 	char cpu[256], uname[512], compiler[256], date[64], load_end[32];
 	read_cpu_model(cpu, sizeof cpu);
 	read_loadavg(load_end, sizeof load_end);
@@ -196,13 +206,25 @@ void bench_summary_print(FILE *out, const bench_opts *opts) {
 	struct tm tm_now;
 	gmtime_r(&now, &tm_now);
 	strftime(date, sizeof date, "%Y-%m-%d %H:%M UTC", &tm_now);
-	fprintf(out, "\n== handspring bench summary%s ==\n", opts->quick ? " (QUICK=1)" : "");
-	fprintf(out, "machine  : %s; %s; %ld CPUs online; load average %s at the start, %s at the end\n", uname, cpu,
+	fprintf(out, "machine  : %s; %s; %ld CPUs online; load average %s at the start, %s now\n", uname, cpu,
 	        sysconf(_SC_NPROCESSORS_ONLN), load_at_start, load_end);
 	fprintf(out, "compiler : %s\n", compiler);
 	fprintf(out, "flags    : %s\n", HS_BENCH_FLAGS);
 	fprintf(out, "date     : %s; batches of %.0f ms, median of %d after a warm-up\n", date, 1e3 * opts->batch_s,
 	        opts->reps);
+	fprintf(out, "quick    : %s\n", opts->quick ? "yes (QUICK=1: fewer batches and sizes; the figures are rougher)" : "no");
+}
+
+void bench_meta_start(const bench_opts *opts) {
+	FILE *meta = open_out(opts, "meta.txt", "w");
+	describe_run(meta, opts);
+	fprintf(meta, "files    : every CSV starts with its header row; what each holds:\n");
+	fclose(meta);
+}
+
+void bench_summary_print(FILE *out, const bench_opts *opts) {
+	fprintf(out, "\n== handspring bench summary%s ==\n", opts->quick ? " (QUICK=1)" : "");
+	describe_run(out, opts);
 	size_t wsec = 7, wwhat = 4, wval = 5;
 	for (int i = 0; i < summary_count; ++i) {
 		size_t a = strlen(summary[i].section), b = strlen(summary[i].what), c = strlen(summary[i].value);

@@ -8,7 +8,9 @@ set datafile separator ','
 set logscale xy
 set xlabel 'objects in the scene'
 set ylabel 'frames/s (median; bars: min-max)'
-set title "Fig. 13 reproduced: frames/s of the full hand-object check (one hand, 20 points + 60 lines)\nthe paper: 17 frames/s at 10 objects, 2 grasped (SGI Indigo2 R10000)"
+# a QUICK run says so in the title (make bench passes quick=1)
+qnote = (exists("quick") && quick != 0) ? "\n[QUICK run: fewer batches, rougher figures]" : ""
+set title "Fig. 13 reproduced: frames/s of the full hand-object check (one hand, 20 points + 60 lines)\nthe paper: 17 frames/s at 10 objects, 2 grasped (SGI Indigo2 R10000)".qnote
 set key outside right top
 set grid
 set xrange [0.8:1300]

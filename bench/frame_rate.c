@@ -105,6 +105,11 @@ typedef struct fr_scene {
 	hs_vec3 wrist[BENCH_PATH_FRAMES]; // the loop, precomputed: no trigonometry in the timed steps
 	hs_quat rot;
 	uint8_t sensors[HS_GLOVE_SENSORS];
+	// the honest frame (issue 12): the glove's reading with seeded noise, the wrist turning, per frame
+	// of the loop (drawn when the scene is built, as a driver's reading arrives), the hash every frame
+	bool honest;
+	uint8_t noisy[BENCH_PATH_FRAMES][HS_GLOVE_SENSORS];
+	hs_quat turns[BENCH_PATH_FRAMES];
 	int k;            // frame within the loop
 	long frames;      // stepped so far
 	long lost;        // frames with a target not GRASP
@@ -128,9 +133,41 @@ static void die_status(const char *what, hs_status st) {
 // default); true, the 1999 paper's letter (hs_world_def.paper_contacts), to measure what they cost.
 static bool fr_paper_contacts;
 
+// The honest frame's input (issue 12, DESIGN.md "Benchmarks that tell the truth"): the grasp
+// posture with uniform noise of ±FR_GLOVE_UNITS sensor units on every sensor every frame (what the
+// hand scenarios' robustness sweep uses), and the wrist turning by up to FR_WOBBLE_DEG about x and
+// y over the loop (a real wrist is never held square), from a fixed seed.
+#define FR_GLOVE_UNITS 4
+#define FR_WOBBLE_DEG 2.5
+// The posture squeezes the touched objects FR_SQUEEZE narrower than the pose found on clean input
+// (the fingertips pressing into their faces, as a holding hand does): at the found width itself the
+// noise opened the fingers off the faces and the grasp was lost in 79 of 1200 frames, at 1 cm
+// narrower in 115 of 2400, at 2 cm in none.
+#define FR_SQUEEZE 0.02
+static void honest_input(fr_scene *sc, const fr_pose *pose) {
+	hs_hand_def hd = hs_default_hand_def();
+	uint8_t held[HS_GLOVE_SENSORS];
+	if (hs_hand_posture(&hd, HS_POSTURE_GRASP, pose->width - FR_SQUEEZE, held) != HS_OK)
+		die_status("posture", HS_ERR_INVALID_ARGUMENT);
+	held[HS_SENSOR_INDEX_MIDDLE_ABDUCTION] = pose->sensors[HS_SENSOR_INDEX_MIDDLE_ABDUCTION];
+	memcpy(sc->sensors, held, sizeof held);
+	uint64_t seed = 0x9E3779B97F4A7C15ull;
+	for (int k = 0; k < BENCH_PATH_FRAMES; ++k) {
+		for (int i = 0; i < HS_GLOVE_SENSORS; ++i) {
+			seed = seed * 6364136223846793005ull + 1442695040888963407ull;
+			int v = (int)held[i] + (int)((seed >> 33) % (2 * FR_GLOVE_UNITS + 1)) - FR_GLOVE_UNITS;
+			sc->noisy[k][i] = (uint8_t)(v < 0 ? 0 : v > 255 ? 255 : v);
+		}
+		double th = 2.0 * HS_PI * (double)k / (double)BENCH_PATH_FRAMES, a = FR_WOBBLE_DEG * HS_PI / 180.0;
+		hs_quat qx = hs_quat_from_axis_angle(hs_v3(1, 0, 0), a * sin(th));
+		hs_quat qy = hs_quat_from_axis_angle(hs_v3(0, 1, 0), a * sin(2.0 * th));
+		sc->turns[k] = hs_quat_normalize(hs_quat_mul(qx, qy));
+	}
+}
+
 // Builds `objects` objects (the touched ones first, at their cells) and the hand at frame 0 of the
 // loop; `pose` places the hand (nothing touched: the pose of the pair, 0.3 m higher).
-static fr_scene *scene_create(fr_shape kind, int objects, int touched, bool skip, const fr_pose *pose) {
+static fr_scene *scene_create(fr_shape kind, int objects, int touched, bool skip, const fr_pose *pose, bool honest) {
 	fr_scene *sc = calloc(1, sizeof *sc);
 	if (!sc)
 		die_status("scene", HS_ERR_NO_MEMORY);
@@ -185,6 +222,9 @@ static fr_scene *scene_create(fr_shape kind, int objects, int touched, bool skip
 		die_status("hand", st);
 	memcpy(sc->sensors, pose->sensors, sizeof sc->sensors);
 	sc->rot = hs_quat_identity(); // palm down, fingers along +x: the grip axis is the row
+	sc->honest = honest;
+	if (honest)
+		honest_input(sc, pose);
 	if (nt > 0)
 		centroid = hs_scale(centroid, 1.0 / nt);
 	else // nothing touched: over the seed pair, 0.3 m up
@@ -203,7 +243,8 @@ static fr_scene *scene_create(fr_shape kind, int objects, int touched, bool skip
 			hs_world_set_hand(sc->world, sc->hand, hs_add(sc->wrist[0], hs_v3(0, 0, 0.01 * k)), sc->rot, wide);
 			hs_world_step(sc->world);
 		}
-		hs_world_set_hand(sc->world, sc->hand, sc->wrist[0], sc->rot, sc->sensors);
+		hs_world_set_hand(sc->world, sc->hand, sc->wrist[0], honest ? sc->turns[0] : sc->rot,
+		                  honest ? sc->noisy[0] : sc->sensors);
 		hs_world_step(sc->world);
 	}
 	return sc;
@@ -213,8 +254,14 @@ static fr_scene *scene_create(fr_shape kind, int objects, int touched, bool skip
 static void scene_step(void *state, long frames) {
 	fr_scene *sc = state;
 	for (long f = 0; f < frames; ++f) {
-		hs_world_set_hand(sc->world, sc->hand, sc->wrist[sc->k], sc->rot, sc->sensors);
-		hs_world_step(sc->world);
+		if (sc->honest) { // a new noisy reading and a turned wrist every frame, the state hashed every frame
+			hs_world_set_hand(sc->world, sc->hand, sc->wrist[sc->k], sc->turns[sc->k], sc->noisy[sc->k]);
+			hs_world_step(sc->world);
+			sc->checksum ^= hs_world_hash(sc->world);
+		} else {
+			hs_world_set_hand(sc->world, sc->hand, sc->wrist[sc->k], sc->rot, sc->sensors);
+			hs_world_step(sc->world);
+		}
 		sc->k = sc->k + 1 == BENCH_PATH_FRAMES ? 0 : sc->k + 1;
 		bool held = true;
 		for (int t = 0; t < sc->touched; ++t) {
@@ -361,7 +408,7 @@ static fr_pose find_pose(fr_shape kind, int touched, double width0, double dz0, 
 			if (!above_floor(kind, touched, &p))
 				continue;
 			// quick test: the first frame only, the touched objects alone
-			fr_scene *quick = scene_create(kind, touched, touched, true, &p);
+			fr_scene *quick = scene_create(kind, touched, touched, true, &p, false);
 			scene_step(quick, 1);
 			bool ok = quick->lost == 0;
 			scene_destroy(quick);
@@ -369,7 +416,7 @@ static fr_pose find_pose(fr_shape kind, int touched, double width0, double dz0, 
 				continue;
 			char why[256];
 			for (int skip = 1; skip >= 0 && ok; --skip) {
-				fr_scene *full = scene_create(kind, 2 * BENCH_PER_ROW, touched, skip != 0, &p);
+				fr_scene *full = scene_create(kind, 2 * BENCH_PER_ROW, touched, skip != 0, &p, false);
 				ok = scene_verify(full, why, sizeof why);
 				scene_destroy(full);
 			}
@@ -402,12 +449,12 @@ typedef struct fr_result {
 } fr_result;
 
 static fr_result measure(fr_shape kind, int objects, int touched, const fr_pose *pose, const bench_opts *opts,
-                         bench_shared *shared) {
+                         bench_shared *shared, bool honest) {
 	fr_result r;
 	memset(&r, 0, sizeof r);
 	r.valid = true;
 	for (int skip = 1; skip >= 0; --skip) {
-		fr_scene *sc = scene_create(kind, objects, touched, skip != 0, pose);
+		fr_scene *sc = scene_create(kind, objects, touched, skip != 0, pose, honest);
 		bench_stats st = bench_measure(scene_step, sc, opts);
 		if (skip) {
 			r.on = st;
@@ -471,18 +518,22 @@ void bench_frame_rate(const bench_opts *opts, bench_shared *shared) {
 					continue;
 				if (opts->quick && s == FR_ELLIPSOID && objects != 10 && objects != 1000)
 					continue; // QUICK: the ellipsoid at 10 and 1000 objects only
-				res[s][c][t] = measure((fr_shape)s, objects, touched, &poses[s][t], opts, shared);
+				res[s][c][t] = measure((fr_shape)s, objects, touched, &poses[s][t], opts, shared, false);
 			}
 
 	// +1000 untouched resting objects around the seed scene (the issue's flatness target)
-	fr_result seed_plus = measure(FR_CUBE, 10 + 1000, 2, &poses[FR_CUBE][2], opts, shared);
+	fr_result seed_plus = measure(FR_CUBE, 10 + 1000, 2, &poses[FR_CUBE][2], opts, shared, false);
 	// the seed scene again with the paper's contact rule: what swept detection and rectification cost
 	fr_paper_contacts = true;
-	fr_result seed_paper = measure(FR_CUBE, 10, 2, &poses[FR_CUBE][2], opts, shared);
+	fr_result seed_paper = measure(FR_CUBE, 10, 2, &poses[FR_CUBE][2], opts, shared, false);
 	fr_paper_contacts = false;
+	// the honest frame (issue 12): the seed scene on the input a user's glove and tracker give
+	fr_result honest = measure(FR_CUBE, 10, 2, &poses[FR_CUBE][2], opts, shared, true);
 
-	FILE *csv = bench_csv(opts, "frame_rate.csv");
-	fprintf(csv, "# 1999 paper Experiment 3 (Fig. 13): frames/s of the hand check, median of %d batches\n", opts->reps);
+	char about[160];
+	snprintf(about, sizeof about, "1999 paper Experiment 3 (Fig. 13): frames/s of the hand check, median of %d batches",
+	         opts->reps);
+	FILE *csv = bench_csv(opts, "frame_rate.csv", about);
 	fprintf(csv, "shape,objects,touched,fps_on,fps_on_min,fps_on_max,us_on,fps_off,fps_off_min,fps_off_max,us_off,"
 	             "off_over_on,lost_on,lost_off,on_over_paper_17fps\n");
 	for (int s = 0; s < 2; ++s)
@@ -607,13 +658,21 @@ void bench_frame_rate(const bench_opts *opts, bench_shared *shared) {
 				lost += res[s][c][t].lost_on + res[s][c][t].lost_off;
 				stray += res[s][c][t].stray;
 			}
+	if (honest.valid) { // the headline: the frame a user runs (issue 12)
+		fmt_fps(value, sizeof value, &honest.on);
+		bench_summary_add("1 frame rate", "HONEST frame: seed scene, glove +-4 units noise, wrist turning, hash/frame",
+		                  value, BENCH_INFO);
+		snprintf(value, sizeof value, "%.0fx  (%.3f us/frame; grasp lost %ld frames)", 1.0 / honest.on.median / 17.0,
+		         1e6 * honest.on.median, honest.lost_on);
+		bench_summary_add("1 frame rate", "honest frame: ratio to the paper's 17 frames/s", value, BENCH_INFO);
+	}
 	if (seed->valid) {
 		shared->seed_us_per_frame = 1e6 * seed->on.median;
 		shared->seed_dt = BENCH_DT;
 		fmt_fps(value, sizeof value, &seed->on);
-		bench_summary_add("1 frame rate", "seed scene (10 cubes, 2 grasped), frames/s", value, BENCH_INFO);
+		bench_summary_add("1 frame rate", "seed scene, constant glove reading (cache hits), frames/s", value, BENCH_INFO);
 		snprintf(value, sizeof value, "%.0fx  (%.3f us/frame)", 1.0 / seed->on.median / 17.0, 1e6 * seed->on.median);
-		bench_summary_add("1 frame rate", "ratio to the paper's 17 frames/s", value, BENCH_INFO);
+		bench_summary_add("1 frame rate", "constant reading: ratio to the paper's 17 frames/s", value, BENCH_INFO);
 		snprintf(value, sizeof value, "%.0f frames/s", 1.0 / seed->on.median);
 		bench_summary_add("target", "seed scene >= 500,000 frames/s, full check, 1 core", value,
 		                  1.0 / seed->on.median >= 500000.0 ? BENCH_MET : BENCH_NOT_MET);
@@ -658,7 +717,7 @@ void bench_frame_rate(const bench_opts *opts, bench_shared *shared) {
 
 bench_stats bench_seed_measure(const bench_opts *opts, bool skip) {
 	fr_pose pose = find_pose(FR_CUBE, 2, 0.11, 0.0, 0);
-	fr_scene *sc = scene_create(FR_CUBE, 10, 2, skip, &pose);
+	fr_scene *sc = scene_create(FR_CUBE, 10, 2, skip, &pose, false);
 	bench_stats st = bench_measure(scene_step, sc, opts);
 	if (sc->lost)
 		bench_progress("[frame rate] WARNING: seed scene: grasp lost in %ld of %ld frames\n", sc->lost, sc->frames);
@@ -671,17 +730,18 @@ bench_stats bench_seed_measure(const bench_opts *opts, bool skip) {
 __attribute__((noinline)) void fr_profiled_frames(fr_scene *sc, long frames);
 void fr_profiled_frames(fr_scene *sc, long frames) { scene_step(sc, frames); }
 
-void bench_profile_seed(long frames, int objects, bool skip, bool paper) {
+void bench_profile_seed(long frames, int objects, bool skip, bool paper, bool honest) {
 	fr_pose pose = find_pose(FR_CUBE, 2, 0.11, 0.0, 0);
 	fr_paper_contacts = paper;
-	fr_scene *sc = scene_create(FR_CUBE, objects < 2 ? 10 : objects, 2, skip, &pose);
+	fr_scene *sc = scene_create(FR_CUBE, objects < 2 ? 10 : objects, 2, skip, &pose, honest);
 	fr_paper_contacts = false;
 	double t0 = bench_now();
 	fr_profiled_frames(sc, frames);
 	double el = bench_now() - t0;
-	printf("seed scene (%d objects), skip_work %s, %s contacts: %ld frames in %.3f s = %.3f us/frame (%.0f frames/s), "
+	printf("seed scene (%d objects), skip_work %s, %s contacts%s: %ld frames in %.3f s = %.3f us/frame (%.0f frames/s), "
 	       "grasp lost in %ld, checksum %016llx\n",
-	       sc->objects, skip ? "on" : "off", paper ? "paper" : "rectified", frames, el, 1e6 * el / (double)frames,
+	       sc->objects, skip ? "on" : "off", paper ? "paper" : "rectified", honest ? ", honest input" : "", frames, el,
+	       1e6 * el / (double)frames,
 	       (double)frames / el, sc->lost, (unsigned long long)sc->checksum);
 	scene_destroy(sc);
 }

@@ -67,7 +67,7 @@ void bench_peers(const bench_opts *opts, bench_shared *shared) {
 	       "proj. error m", "setup");
 	print_peer("handspring", HS_VERSION, hs_us, 1e6 * hs.min, 1e6 * hs.max, hs_us, hs_proj,
 	           "1999 hand model: hand kinematics + full hand-object check + eq. 3 motion, skip_work on");
-	FILE *csv = bench_csv(opts, "peers.csv");
+	FILE *csv = bench_csv(opts, "peers.csv", "the peers on the seed scene, microseconds per step, same run");
 	fprintf(csv, "engine,version,us_per_step,us_min,us_max,peer_over_handspring,projectile_error_m,resting_drift_m\n");
 	fprintf(csv, "handspring,%s,%.4f,%.4f,%.4f,1,%.3e,0\n", HS_VERSION, hs_us, 1e6 * hs.min, 1e6 * hs.max, hs_proj);
 	for (int i = 0; i < n; ++i) {

@@ -6,7 +6,9 @@ set datafile separator ','
 set logscale xy
 set xlabel 'objects in the scene'
 set ylabel 'µs per frame (median)'
-set title "What skipping saves: skip_work on (solid) and off (dashed), cubes" noenhanced
+# a QUICK run says so in the title (make bench passes quick=1)
+qnote = (exists("quick") && quick != 0) ? "\n[QUICK run: fewer batches, rougher figures]" : ""
+set title "What skipping saves: skip_work on (solid) and off (dashed), cubes".qnote noenhanced
 set key outside right top
 set grid
 set xrange [0.8:1300]

@@ -315,10 +315,12 @@ void bench_throw(const bench_opts *opts, bench_shared *shared) {
 	gsl_rng_free(rng);
 	shared->checksum ^= checksum;
 
-	FILE *csv = bench_csv(opts, "throw.csv");
-	fprintf(csv, "# throw at a %.2f m target %.1f m away; continuous-time landing x = %.6f m; errors in m; noisy = RMS of %d "
-	             "trials at %.3f mm RMS\n",
-	        TARGET_R, TARGET_X, exact.x, trials, 1e3 * NOISE);
+	char about[200];
+	snprintf(about, sizeof about,
+	         "throw at a %.2f m target %.1f m away; continuous-time landing x = %.6f m; errors in m; noisy = RMS of %d "
+	         "trials at %.3f mm RMS",
+	         TARGET_R, TARGET_X, exact.x, trials, 1e3 * NOISE);
+	FILE *csv = bench_csv(opts, "throw.csv", about);
 	fprintf(csv, "fps");
 	for (int e = 0; e < N_EST; ++e)
 		fprintf(csv, ",%s_x,%s_err,%s_noisy_rms", est_names[e], est_names[e], est_names[e]);

@@ -4,6 +4,8 @@
 # schemes reach their stability edge. Errors below 1e-17 m (exact to rounding) are drawn at 1e-17.
 if (!exists("dir")) dir = 'build/bench'
 data = dir.'/accuracy.csv'
+# a QUICK run says so in the title (make bench passes quick=1)
+qnote = (exists("quick") && quick != 0) ? "\n[QUICK run: fewer batches, rougher figures]" : ""
 set datafile separator ','
 set logscale xy
 set format y '10^{%L}'
@@ -23,7 +25,7 @@ do for [term in 'pngcairo svg'] {
 	set multiplot layout 2,2 title 'Work-precision: error (m) against µs of CPU per simulated second (dt = 1/12 ... 1/2000 s)'
 	do for [p=1:4] {
 		prob = word(problems, p)
-		set title word(titles, p)
+		set title word(titles, p).qnote
 		set xlabel 'µs CPU per simulated second'
 		set ylabel 'error (m)'
 		set yrange [1e-18:1e4]
