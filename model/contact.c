@@ -478,8 +478,20 @@ static void detect_lines(hs_world *world, int object, int h, const hs_part *part
 	double r = part->radius + grow;
 	bool paper = world->def.paper_contacts, swept = grow == 0.0 && !paper;
 	int steps = moved ? 1 : hand->path_steps; // a held object moves with the hand: chords suffice
+	// a finger segment's 4 check lines lie finger_radius from its axis (joint to joint): when the
+	// axis is further than r + finger_radius from the part (and the lines' paths do not count), all
+	// four are, and none is tested one by one (the same lines culled, fewer distances taken)
+	bool by_segment = cull && (!swept || moved);
+	double rs = r + hand->def.finger_radius + 1e-9;
 	for (int j = 0; j < HS_HAND_LINES; ++j) {
 		const hs_vec3 *l = hand->lines[j], *m = hand->prev_lines[j];
+		if (by_segment && j % 4 == 0) {
+			int f = j / 12, k = j / 4 % 3;
+			if (segment_distance_sq(center, hand->points[4 * f + k], hand->points[4 * f + k + 1]) > rs * rs) {
+				j += 3; // the segment's other three lines too
+				continue;
+			}
+		}
 		if (cull && segment_distance_sq(center, l[0], l[1]) > r * r &&
 		    (!swept || moved || !line_path_near(hand, j, steps, center, r)))
 			continue;
