@@ -223,17 +223,6 @@ static int near_of(const hs_world *world, hs_spring_system *sys, int i, double r
 	return hs_hgrid_query(&sys->grid, lo, hi, sys->near);
 }
 
-// The largest ball about G inside the object (a box's smallest half extent; for other convex shapes
-// an eighth of the bounding box's, as the hand model's fall sweep takes).
-static double inner_radius(const hs_spring_geom *g) {
-	if (g->sphere)
-		return g->radius;
-	if (g->form == HS_FORM_BOX)
-		return fmin(g->half.x, fmin(g->half.y, g->half.z));
-	hs_vec3 h = hs_scale(hs_sub(g->hi, g->lo), 0.5);
-	double r = fmin(h.x, fmin(h.y, h.z));
-	return g->form == HS_FORM_AXIS_BOX ? r : r / 8.0;
-}
 
 // Object i at the fraction tau of the frame, for motion at constant acceleration through it (gravity,
 // sliding friction): the position from the frame start's and end's velocities, p0 + dt (tau v0 +
@@ -309,7 +298,7 @@ static double sphere_root(const hs_world *world, const hs_spring_system *sys, in
 static double first_meeting(const hs_world *world, const hs_spring_system *sys, int i, int j, bool end_meets) {
 	const hs_spring_geom *ga = &sys->geom[i], *gb = &sys->geom[j];
 	hs_vec3 rel = hs_sub(hs_sub(world->bodies[j].pos, sys->saved_pos[j]), hs_sub(world->bodies[i].pos, sys->saved_pos[i]));
-	double step = inner_radius(ga) + inner_radius(gb), len = hs_length(rel);
+	double step = ga->inner + gb->inner, len = hs_length(rel);
 	if (!(step > 0.0) || !(len > 0.0) || (!end_meets && !(len > step)))
 		return -1.0; // no relative motion, or slower: a pass through the inner balls shows at an end
 	bool spheres = ga->sphere && gb->sphere && ga->form != HS_FORM_BOX && gb->form != HS_FORM_BOX;
@@ -345,7 +334,7 @@ void hs_spring_collide(hs_world *world, hs_spring_system *sys) {
 	double e = sys->def.restitution, reach = 0.0, inner = INFINITY;
 	for (int i = 0; i < world->object_count; ++i) { // the farthest any object moved this frame
 		reach = fmax(reach, hs_length(hs_sub(world->bodies[i].pos, sys->saved_pos[i])));
-		inner = fmin(inner, inner_radius(&geom[i]));
+		inner = fmin(inner, geom[i].inner);
 	}
 	// no two objects moved apart by more than the sum of any two inner radii: a pass through shows
 	// at the frame's end (first_meeting), so the queries need not cover the paths

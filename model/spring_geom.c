@@ -32,6 +32,7 @@ hs_spring_geom hs_spring_geom_of(const hs_world *world, const hs_body *body) {
 		g.radius = r;
 		g.lo = hs_v3(-r, -r, -r);
 		g.hi = hs_v3(r, r, r);
+		g.inner = r;
 		return g;
 	}
 	g.lo = hs_v3(INFINITY, INFINITY, INFINITY);
@@ -44,6 +45,9 @@ hs_spring_geom hs_spring_geom_of(const hs_world *world, const hs_body *body) {
 		               fmax(g.half.z, fabs(shape->vertices[i].z)));
 	}
 	g.form = shape->kind != HS_SHAPE_BOX ? HS_FORM_CONVEX : axis_aligned(shape, body->rot, g.lo, g.hi) ? HS_FORM_AXIS_BOX : HS_FORM_BOX;
+	hs_vec3 h = hs_scale(hs_sub(g.hi, g.lo), 0.5);
+	double r = fmin(h.x, fmin(h.y, h.z));
+	g.inner = g.form == HS_FORM_BOX ? fmin(g.half.x, fmin(g.half.y, g.half.z)) : g.form == HS_FORM_AXIS_BOX ? r : r / 8.0;
 	return g;
 }
 

@@ -19,6 +19,8 @@ typedef struct hs_spring_geom {
 	int shape;      // index into world->shapes
 	hs_quat rot;    // body → world
 	hs_vec3 half;   // m: half extents of a box in its body frame
+	double inner;   // m: the largest ball about G inside it (a sphere's radius, a box's smallest half
+	                // extent; other shapes an eighth of the bounding box's): the swept collisions' step
 } hs_spring_geom;
 
 // The reach of `body` in its present orientation.
