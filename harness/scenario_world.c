@@ -297,11 +297,12 @@ enum {
 	O_VELOCITY,
 	O_ANGULAR,
 	O_DENSITY,
+	O_RESTITUTION,
 	O_COUNT
 };
 static const char *const object_keys[O_COUNT] = {
     "name", "shape", "size", "thickness", "vertices", "faces", "position", "rpy_deg", "quat", "velocity",
-    "angular_velocity_deg", "density",
+    "angular_velocity_deg", "density", "restitution",
 };
 
 static bool is_name_char(char c) {
@@ -532,6 +533,13 @@ static bool read_object_def(hs_scenario_parser *p, const hs_fields *f, const yam
 		if (!(def->density > 0.0))
 			return hs_yaml_fail(&p->y, f->value[O_DENSITY], "'density' must be > 0 kg/m^3, got %s",
 			                    hs_yaml_show(f->value[O_DENSITY]).text);
+	}
+	if (f->value[O_RESTITUTION]) {
+		if (!hs_yaml_number(&p->y, f->value[O_RESTITUTION], "restitution", &def->restitution))
+			return false;
+		if (!(def->restitution >= 0.0 && def->restitution <= 1.0))
+			return hs_yaml_fail(&p->y, f->value[O_RESTITUTION], "'restitution' must be in [0, 1], got %s",
+			                    hs_yaml_show(f->value[O_RESTITUTION]).text);
 	}
 	return true;
 }

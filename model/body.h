@@ -21,6 +21,7 @@ typedef struct hs_body {
 	uint8_t asleep;   // stable and at rest: skipped until something touches it
 	uint8_t held;     // moved by a hand this frame: free motion does not run
 	double mass;      // MODEL: kg, density × volume (spring model)
+	double restitution; // MODEL: e of the spring model's object collisions, < 0: the model's (hs_object_def)
 	hs_vec3 vel;      // m/s: the spring model integrates velocity explicitly
 	hs_quat rot_prev; // orientation at t - dt: a released object keeps rot * rot_prev⁻¹ (§4.1)
 	int grasped_by;   // hand index + 1 holding it (0: none)

@@ -6,7 +6,7 @@
 // Nothing here allocates: support points are posed on the fly from the body-frame vertices.
 #include <ccd/ccd.h>
 
-#include "handspring.h"
+#include "collide.h"
 
 // m added around each shape, so that faces touching within 1e-12 m always count as
 // interference instead of being left to rounding (handspring.h: hs_shapes_overlap).
@@ -26,6 +26,7 @@ typedef struct posed_part {
 	double radius;  // m
 	hs_vec3 origin; // world point that is 0 in libccd coordinates
 	double inv_scale;
+	double margin; // m added around the part (HS_TOUCH_MARGIN, plus half a gap: collide.h)
 } posed_part;
 
 static posed_part pose_part(const hs_shape *shape, int index, hs_vec3 pos, hs_quat rot) {
@@ -40,6 +41,7 @@ static posed_part pose_part(const hs_shape *shape, int index, hs_vec3 pos, hs_qu
 	p.radius = part->radius;
 	p.origin = hs_v3(0.0, 0.0, 0.0);
 	p.inv_scale = 1.0;
+	p.margin = HS_TOUCH_MARGIN;
 	return p;
 }
 
@@ -75,7 +77,7 @@ static void support(const void *obj, const ccd_vec3_t *dir, ccd_vec3_t *out) {
 		x = hs_add(p->pos, hs_quat_rotate(p->rot, p->vertices[best]));
 	}
 	if (len > 0.0)
-		x = hs_mul_add(x, HS_TOUCH_MARGIN / len, d);
+		x = hs_mul_add(x, p->margin / len, d);
 	to_ccd(p, x, out);
 }
 
@@ -108,7 +110,11 @@ static void setup_ccd(ccd_t *ccd) {
 	ccd->dist_tolerance = HS_CCD_TOLERANCE;
 }
 
-// Bounding spheres touch (within the margins). Written so that NaN poses never pass.
+// Bounding spheres touch (within the margins and a gap). Written so that NaN poses never pass.
+static bool spheres_within(hs_vec3 ca, double ra, hs_vec3 cb, double rb, double gap) {
+	double reach = ra + rb + 2.0 * HS_TOUCH_MARGIN + gap;
+	return hs_length_sq(hs_sub(cb, ca)) <= reach * reach;
+}
 static bool spheres_meet(hs_vec3 ca, double ra, hs_vec3 cb, double rb) {
 	double reach = ra + rb + 2.0 * HS_TOUCH_MARGIN;
 	return hs_length_sq(hs_sub(cb, ca)) <= reach * reach;
@@ -151,7 +157,7 @@ static bool boxes_apart(const posed_part *a, const posed_part *b) {
 	hs_vec3 ca, ha, cb, hb;
 	part_box(a, &ca, &ha);
 	part_box(b, &cb, &hb);
-	double m = 1e-8 * (a->radius + b->radius) + 4.0 * HS_TOUCH_MARGIN;
+	double m = 1e-8 * (a->radius + b->radius) + 4.0 * HS_TOUCH_MARGIN + (a->margin - HS_TOUCH_MARGIN) * 2.0;
 	return fabs(cb.x - ca.x) > ha.x + hb.x + m || fabs(cb.y - ca.y) > ha.y + hb.y + m ||
 	       fabs(cb.z - ca.z) > ha.z + hb.z + m;
 }
@@ -183,16 +189,21 @@ bool hs_shapes_overlap(const hs_shape *a, hs_vec3 pos_a, hs_quat rot_a, const hs
 
 bool hs_shapes_penetration(const hs_shape *a, hs_vec3 pos_a, hs_quat rot_a, const hs_shape *b, hs_vec3 pos_b,
                            hs_quat rot_b, double *depth, hs_vec3 *direction) {
-	if (!valid_shape(a) || !valid_shape(b) || !depth || !direction ||
-	    !spheres_meet(pos_a, a->radius, pos_b, b->radius))
+	return hs_shapes_within(a, pos_a, rot_a, b, pos_b, rot_b, 0.0, depth, direction);
+}
+
+bool hs_shapes_within(const hs_shape *a, hs_vec3 pos_a, hs_quat rot_a, const hs_shape *b, hs_vec3 pos_b,
+                      hs_quat rot_b, double gap, double *depth, hs_vec3 *direction) {
+	if (!valid_shape(a) || !valid_shape(b) || !depth || !direction || !(gap >= 0.0) ||
+	    !spheres_within(pos_a, a->radius, pos_b, b->radius, gap))
 		return false;
-	double best = -1.0;
+	double best = -gap - 1.0;
 	hs_vec3 best_dir = hs_v3(0.0, 0.0, 1.0);
 	if (a->kind == HS_SHAPE_SPHERE && b->kind == HS_SHAPE_SPHERE) {
 		// exact: along the line of centres (up when they coincide)
 		hs_vec3 d = hs_sub(pos_b, pos_a);
 		double dist = hs_length(d);
-		best = fmax(0.0, a->sphere_radius + b->sphere_radius - dist);
+		best = fmax(-gap, a->sphere_radius + b->sphere_radius - dist);
 		if (dist > 0.0)
 			best_dir = hs_scale(d, 1.0 / dist);
 	} else {
@@ -200,9 +211,11 @@ bool hs_shapes_penetration(const hs_shape *a, hs_vec3 pos_a, hs_quat rot_a, cons
 		setup_ccd(&ccd);
 		for (int i = 0; i < a->part_count; i++) {
 			posed_part pa = pose_part(a, i, pos_a, rot_a);
+			pa.margin += 0.5 * gap;
 			for (int j = 0; j < b->part_count; j++) {
 				posed_part pb = pose_part(b, j, pos_b, rot_b);
-				if (!spheres_meet(pa.center, pa.radius, pb.center, pb.radius) || boxes_apart(&pa, &pb))
+				pb.margin += 0.5 * gap;
+				if (!spheres_within(pa.center, pa.radius, pb.center, pb.radius, gap) || boxes_apart(&pa, &pb))
 					continue;
 				normalise_pair(&pa, &pb);
 				ccd_real_t d = 0.0;
@@ -210,7 +223,7 @@ bool hs_shapes_penetration(const hs_shape *a, hs_vec3 pos_a, hs_quat rot_a, cons
 				if (ccdMPRPenetration(&pa, &pb, &ccd, &d, &dir, &pos) != 0)
 					continue;
 				// back to metres, without the touch margins
-				double pair_depth = fmax(0.0, d / pa.inv_scale - 2.0 * HS_TOUCH_MARGIN);
+				double pair_depth = fmax(-gap, d / pa.inv_scale - 2.0 * HS_TOUCH_MARGIN - gap);
 				if (!(pair_depth > best))
 					continue;
 				best = pair_depth;
@@ -224,7 +237,7 @@ bool hs_shapes_penetration(const hs_shape *a, hs_vec3 pos_a, hs_quat rot_a, cons
 			}
 		}
 	}
-	if (!(best >= 0.0))
+	if (!(best >= -gap))
 		return false;
 	*depth = best;
 	*direction = best_dir;

@@ -2,9 +2,12 @@
 // Workbench" (§4.5: "collisions ... momentum and energy are conserved").
 //
 // Readings fixed here (DESIGN.md "Spring model" leaves them to us):
-//  - After the step, each overlapping pair (array order) exchanges an impulse along the contact
-//    normal, J = −(1 + e) v_n / (1/m_a + 1/m_b), then is pushed apart along the normal in
-//    inverse-mass shares.
+//  - After the step, pairs that met during the frame are answered in the order of time (the
+//    earliest first, then the meetings of its two objects found again from their new paths): an
+//    impulse along the contact normal, J = −(1 + e) v_n / (1/m_a + 1/m_b) with the pair's e (the
+//    smaller of the two objects'; none below HS_REST_BOUNCE_SPEED), then the separation
+//    (separate). Pairs still overlapping where the frame leaves them follow, in array order, in
+//    passes until none moved (at most HS_SEPARATION_PASSES).
 //  - "Physical contact of objects is intuitively equivalent with geometric intersection" (§4.5):
 //    the true shapes meet. Spheres are exact (along the line of centres); a box is the box in its
 //    own orientation: sphere–box along the nearest point, box–box along the separating-axis
@@ -16,11 +19,18 @@
 //  - No tunnelling: a pair apart at the frame's end whose paths through the frame met (exactly for
 //    two spheres, by sub-steps no longer than the sum of their inner radii otherwise) is put back
 //    where they met and answered there (first_meeting).
-//  - There is no resting contact between objects.
+//  - A pair touching at the frame's start is a resting contact (spring_rest.c: its forces acted
+//    through the frame): no sweep and no bounce; an overlap up to twice the touch gap stays.
+#include <stdlib.h>
+#include <string.h>
+
+#include "collide.h"
 #include "spring_collide.h"
+#include "spring_rest.h"
 
 // A sphere (centre c, radius r) against the box lo..hi in the same frame: normal from the sphere
-// to the box in that frame, depth; false when they do not meet.
+// to the box in that frame, depth; false when they do not meet. (r is grown by the gap of a
+// touch test: the caller takes the gap off the depth.)
 static bool sphere_in_frame(hs_vec3 c, double r, hs_vec3 lo, hs_vec3 hi, hs_vec3 *n, double *depth) {
 	hs_vec3 q = hs_v3(fmin(fmax(c.x, lo.x), hi.x), fmin(fmax(c.y, lo.y), hi.y), fmin(fmax(c.z, lo.z), hi.z));
 	hs_vec3 d = hs_sub(q, c);
@@ -45,18 +55,22 @@ static bool sphere_in_frame(hs_vec3 c, double r, hs_vec3 lo, hs_vec3 hi, hs_vec3
 	return true;
 }
 
-// Contact of a (sphere) with b (box): normal from a to b, depth.
-static bool sphere_box(hs_vec3 pa, double r, hs_vec3 pb, const hs_spring_geom *gb, hs_vec3 *n, double *depth) {
-	return sphere_in_frame(pa, r, hs_add(pb, gb->lo), hs_add(pb, gb->hi), n, depth);
+// Contact of a (sphere) with b (box) within gap: normal from a to b, depth (less the gap).
+static bool sphere_box(hs_vec3 pa, double r, hs_vec3 pb, const hs_spring_geom *gb, double gap, hs_vec3 *n,
+                       double *depth) {
+	if (!sphere_in_frame(pa, r + gap, hs_add(pb, gb->lo), hs_add(pb, gb->hi), n, depth))
+		return false;
+	*depth -= gap;
+	return true;
 }
 
 // Contact of two boxes: along the axis of least overlap, normal from a to b.
-static bool box_box(const hs_spring_geom *ga, hs_vec3 pa, const hs_spring_geom *gb, hs_vec3 pb, hs_vec3 *n,
-                    double *depth) {
+static bool box_box(const hs_spring_geom *ga, hs_vec3 pa, const hs_spring_geom *gb, hs_vec3 pb, double gap,
+                    hs_vec3 *n, double *depth) {
 	hs_vec3 alo = hs_add(pa, ga->lo), ahi = hs_add(pa, ga->hi), blo = hs_add(pb, gb->lo), bhi = hs_add(pb, gb->hi);
 	double ov[3] = {fmin(ahi.x, bhi.x) - fmax(alo.x, blo.x), fmin(ahi.y, bhi.y) - fmax(alo.y, blo.y),
 	                fmin(ahi.z, bhi.z) - fmax(alo.z, blo.z)};
-	if (ov[0] <= 0.0 || ov[1] <= 0.0 || ov[2] <= 0.0)
+	if (ov[0] <= -gap || ov[1] <= -gap || ov[2] <= -gap)
 		return false;
 	int axis = 0;
 	for (int k = 1; k < 3; ++k)
@@ -70,11 +84,13 @@ static bool box_box(const hs_spring_geom *ga, hs_vec3 pa, const hs_spring_geom *
 }
 
 // Contact of a (sphere) with b (turned box): as sphere_box in b's body frame, normal from a to b.
-static bool sphere_obox(hs_vec3 pa, double r, hs_vec3 pb, const hs_spring_geom *gb, hs_vec3 *n, double *depth) {
+static bool sphere_obox(hs_vec3 pa, double r, hs_vec3 pb, const hs_spring_geom *gb, double gap, hs_vec3 *n,
+                        double *depth) {
 	hs_vec3 c = hs_quat_inv_rotate(gb->rot, hs_sub(pa, pb)), h = gb->half;
-	if (!sphere_in_frame(c, r, hs_scale(h, -1.0), h, n, depth))
+	if (!sphere_in_frame(c, r + gap, hs_scale(h, -1.0), h, n, depth))
 		return false;
 	*n = hs_quat_rotate(gb->rot, *n);
+	*depth -= gap;
 	return true;
 }
 
@@ -86,8 +102,8 @@ static double box_reach(const hs_vec3 u[3], hs_vec3 h, hs_vec3 l) {
 // Two boxes in their own orientations: the separating-axis test over the 6 face normals and the
 // 9 edge-edge cross products; contact along the axis of least overlap, normal from a to b. An
 // edge axis must beat the best face axis by 5 % (a face normal is the stabler answer at a tie).
-static bool obox_obox(const hs_spring_geom *ga, hs_vec3 pa, const hs_spring_geom *gb, hs_vec3 pb, hs_vec3 *n,
-                      double *depth) {
+static bool obox_obox(const hs_spring_geom *ga, hs_vec3 pa, const hs_spring_geom *gb, hs_vec3 pb, double gap,
+                      hs_vec3 *n, double *depth) {
 	hs_vec3 ua[3] = {hs_quat_rotate(ga->rot, hs_v3(1, 0, 0)), hs_quat_rotate(ga->rot, hs_v3(0, 1, 0)),
 	                 hs_quat_rotate(ga->rot, hs_v3(0, 0, 1))};
 	hs_vec3 ub[3] = {hs_quat_rotate(gb->rot, hs_v3(1, 0, 0)), hs_quat_rotate(gb->rot, hs_v3(0, 1, 0)),
@@ -103,8 +119,8 @@ static bool obox_obox(const hs_spring_geom *ga, hs_vec3 pa, const hs_spring_geom
 			l = hs_scale(l, 1.0 / len);
 		}
 		double overlap = box_reach(ua, ga->half, l) + box_reach(ub, gb->half, l) - fabs(hs_dot(t, l));
-		if (!(overlap > 0.0))
-			return false; // a separating axis
+		if (!(overlap > -gap))
+			return false; // a separating axis (wider than the gap)
 		if (k < 6 ? overlap < best : overlap < 0.95 * best) {
 			best = overlap;
 			best_axis = l;
@@ -117,58 +133,130 @@ static bool obox_obox(const hs_spring_geom *ga, hs_vec3 pa, const hs_spring_geom
 
 // Any pair with a shape that is neither a sphere nor a box: libccd on the convex parts.
 static bool convex_pair(const hs_world *world, const hs_spring_geom *ga, hs_vec3 pa, const hs_spring_geom *gb,
-                        hs_vec3 pb, hs_vec3 *n, double *depth) {
-	return hs_shapes_penetration(&world->shapes[ga->shape], pa, ga->rot, &world->shapes[gb->shape], pb, gb->rot,
-	                             depth, n);
+                        hs_vec3 pb, double gap, hs_vec3 *n, double *depth) {
+	return hs_shapes_within(&world->shapes[ga->shape], pa, ga->rot, &world->shapes[gb->shape], pb, gb->rot, gap,
+	                        depth, n);
 }
 
 bool hs_spring_contact(const hs_world *world, const hs_spring_geom *ga, hs_vec3 pa, const hs_spring_geom *gb,
                        hs_vec3 pb, hs_vec3 *n, double *depth) {
+	return hs_spring_contact_within(world, ga, pa, gb, pb, 0.0, n, depth);
+}
+
+bool hs_spring_contact_within(const hs_world *world, const hs_spring_geom *ga, hs_vec3 pa, const hs_spring_geom *gb,
+                     hs_vec3 pb, double gap, hs_vec3 *n, double *depth) {
 	if (ga->form == HS_FORM_CONVEX || gb->form == HS_FORM_CONVEX)
-		return convex_pair(world, ga, pa, gb, pb, n, depth);
+		return convex_pair(world, ga, pa, gb, pb, gap, n, depth);
 	if (ga->form == HS_FORM_BOX || gb->form == HS_FORM_BOX) { // a turned box
 		if (ga->sphere)
-			return sphere_obox(pa, ga->radius, pb, gb, n, depth);
+			return sphere_obox(pa, ga->radius, pb, gb, gap, n, depth);
 		if (gb->sphere) {
-			if (!sphere_obox(pb, gb->radius, pa, ga, n, depth))
+			if (!sphere_obox(pb, gb->radius, pa, ga, gap, n, depth))
 				return false;
 			*n = hs_neg(*n);
 			return true;
 		}
-		return obox_obox(ga, pa, gb, pb, n, depth);
+		return obox_obox(ga, pa, gb, pb, gap, n, depth);
 	}
 	if (ga->sphere && gb->sphere) {
 		hs_vec3 d = hs_sub(pb, pa);
 		double dist = hs_length(d), reach = ga->radius + gb->radius;
-		if (dist >= reach)
+		if (dist >= reach + gap)
 			return false;
 		*n = dist > 0.0 ? hs_scale(d, 1.0 / dist) : hs_v3(0.0, 0.0, 1.0);
 		*depth = reach - dist;
 		return true;
 	}
 	if (ga->sphere)
-		return sphere_box(pa, ga->radius, pb, gb, n, depth);
+		return sphere_box(pa, ga->radius, pb, gb, gap, n, depth);
 	if (gb->sphere) {
-		if (!sphere_box(pb, gb->radius, pa, ga, n, depth))
+		if (!sphere_box(pb, gb->radius, pa, ga, gap, n, depth))
 			return false;
 		*n = hs_neg(*n);
 		return true;
 	}
-	return box_box(ga, pa, gb, pb, n, depth);
+	return box_box(ga, pa, gb, pb, gap, n, depth);
 }
 
-// The impulse of restitution e along n (from a to b) when approaching, then the separation by
-// depth in inverse-mass shares (velocities untouched by it: momentum stays exact).
-static void respond(hs_body *a, hs_body *b, hs_vec3 n, double depth, double e) {
-	double wa = 1.0 / a->mass, wb = 1.0 / b->mass, wsum = wa + wb;
-	double vn = hs_dot(hs_sub(b->vel, a->vel), n);
-	if (vn < 0.0) { // approaching: impulse along the normal
-		double impulse = -(1.0 + e) * vn / wsum;
-		a->vel = hs_mul_add(a->vel, -impulse * wa, n);
-		b->vel = hs_mul_add(b->vel, impulse * wb, n);
+// Object i lies where the frame began, without velocity along the floor.
+static bool still(const hs_world *world, const hs_spring_system *sys, int i) {
+	const hs_body *b = &world->bodies[i];
+	hs_vec3 p = b->pos, s = sys->saved_pos[i];
+	return p.x == s.x && p.y == s.y && b->vel.x == 0.0 && b->vel.y == 0.0;
+}
+
+// The direction d (unit) object i can be moved along to separate it: without the components
+// into the floor or a wall it touches, and none at all, for a resting contact, when it lies on the
+// floor and has not moved this frame (static friction holds it: the overlap is the other's doing).
+static hs_vec3 free_part(const hs_world *world, const hs_spring_system *sys, int i, hs_vec3 d, bool holds) {
+	const hs_spring_geom *g = &sys->geom[i];
+	const hs_body *b = &world->bodies[i];
+	hs_vec3 p = b->pos;
+	double tol = world->def.floor_tolerance;
+	const hs_spring_walls *wl = &sys->def.walls;
+	bool on_floor = p.z + g->lo.z <= tol;
+	if (holds && on_floor && d.z <= 0.0 && still(world, sys, i))
+		return hs_v3(0.0, 0.0, 0.0); // it has not moved this frame
+	if (d.z < 0.0 && on_floor)
+		d.z = 0.0;
+	if (wl->enabled) {
+		if ((d.x < 0.0 && p.x + g->lo.x <= wl->x_min + tol) || (d.x > 0.0 && p.x + g->hi.x >= wl->x_max - tol))
+			d.x = 0.0;
+		if ((d.y < 0.0 && p.y + g->lo.y <= wl->y_min + tol) || (d.y > 0.0 && p.y + g->hi.y >= wl->y_max - tol))
+			d.y = 0.0;
 	}
-	a->pos = hs_mul_add(a->pos, -depth * wa / wsum, n);
-	b->pos = hs_mul_add(b->pos, depth * wb / wsum, n);
+	return d;
+}
+
+// The separation of an overlapping pair by depth along n: each object moved along the part of
+// ±n it is free to move along (free_part), mass-weighted (inverse-mass shares when both are
+// free); velocities untouched, so momentum stays exact. A separation that lifts the pair costs
+// potential energy: it is paid from the pair's kinetic energy (both velocities scaled down, to
+// zero when it does not suffice). A resting pair's separation by at most HS_DRIFT (the drift of a
+// contact at rest) goes only as far as that pays; an impact's, or a deeper one, goes all the way
+// (objects do not pass through each other), and test_spring_rest's seeded closed box measures
+// that energy still never rises (issue 11).
+#define HS_DRIFT 1e-4 // m
+static void separate(hs_world *world, const hs_spring_system *sys, int i, int j, hs_vec3 n, double depth,
+                     bool resting) {
+	if (!(depth > 0.0))
+		return;
+	hs_body *a = &world->bodies[i], *b = &world->bodies[j];
+	// a resting pair where one has not moved: the other's doing (both still: shared)
+	bool hold_a = resting && !still(world, sys, j), hold_b = resting && !still(world, sys, i);
+	hs_vec3 ua = free_part(world, sys, i, hs_neg(n), hold_a), ub = free_part(world, sys, j, n, hold_b);
+	if (sys->shock) { // shock propagation (end passes, bottom up): the lower one is not pushed down
+		hs_vec3 *down = world->bodies[i].pos.z <= world->bodies[j].pos.z ? &ua : &ub;
+		if (down->z < 0.0)
+			down->z = 0.0;
+	}
+	double wa = 1.0 / a->mass, wb = 1.0 / b->mass;
+	hs_vec3 da, db;
+	if (hs_dot(ua, ua) == 1.0 && hs_dot(ub, ub) == 1.0 && hs_dot(ua, n) == -1.0) { // both free: along n
+		double wsum = wa + wb;
+		da = hs_scale(n, -depth * wa / wsum);
+		db = hs_scale(n, depth * wb / wsum);
+	} else {
+		double ga = -hs_dot(ua, n), gb = hs_dot(ub, n), den = wa * ga * ga + wb * gb * gb;
+		if (!(den > 0.0))
+			return; // held on both sides
+		double lam = depth / den;
+		da = hs_scale(ua, lam * wa * ga);
+		db = hs_scale(ub, lam * wb * gb);
+	}
+	hs_vec3 g = world->def.gravity;
+	double lift = -a->mass * hs_dot(g, da) - b->mass * hs_dot(g, db); // J of potential energy
+	if (lift > 0.0) {
+		double kinetic = 0.5 * a->mass * hs_length_sq(a->vel) + 0.5 * b->mass * hs_length_sq(b->vel);
+		double share = kinetic >= lift || !resting || depth > HS_DRIFT ? 1.0 : kinetic / lift;
+		double keep = kinetic > lift ? sqrt(1.0 - lift / kinetic) : 0.0;
+		a->vel = hs_scale(a->vel, keep);
+		b->vel = hs_scale(b->vel, keep);
+		da = hs_scale(da, share);
+		db = hs_scale(db, share);
+	}
+	a->pos = hs_add(a->pos, da);
+	b->pos = hs_add(b->pos, db);
 }
 
 // m added around each bounding box in the broad phase: far above rounding and libccd's touch
@@ -213,7 +301,7 @@ static int near_of(const hs_world *world, hs_spring_system *sys, int i, double r
 		return world->object_count;
 	}
 	const hs_spring_geom *g = &sys->geom[i];
-	hs_vec3 p = world->bodies[i].pos, s = sys->saved_pos[i];
+	hs_vec3 p = world->bodies[i].pos, s = sys->path_pos[i];
 	double m = margin_of(g, p);
 	hs_vec3 lo = hs_add(p, hs_sub(g->lo, hs_v3(m, m, m))), hi = hs_add(p, hs_add(g->hi, hs_v3(m, m, m)));
 	if (reach > 0.0) {
@@ -224,25 +312,72 @@ static int near_of(const hs_world *world, hs_spring_system *sys, int i, double r
 }
 
 
-// Object i at the fraction tau of the frame, for motion at constant acceleration through it (gravity,
-// sliding friction): the position from the frame start's and end's velocities, p0 + dt (tau v0 +
-// tau² (v1 - v0) / 2), when its end is the frame's end (the step was such); else the straight path.
-static hs_vec3 path_at(const hs_world *world, const hs_spring_system *sys, int i, double tau) {
-	const hs_body *b = &world->bodies[i];
-	double dt = world->def.dt;
-	hs_vec3 v0 = sys->saved_vel[i], dv = hs_sub(b->vel, v0), p0 = sys->saved_pos[i];
-	hs_vec3 end = hs_add(p0, hs_scale(hs_mul_add(v0, 0.5, dv), dt));
-	if (hs_length_sq(hs_sub(end, b->pos)) <= 1e-24)
-		return hs_add(p0, hs_scale(hs_mul_add(hs_scale(v0, tau), 0.5 * tau * tau, dv), dt));
-	return hs_mul_add(p0, tau, hs_sub(b->pos, p0));
+void hs_spring_find_touches(hs_world *world, hs_spring_system *sys, double gap) {
+	file_all(world, sys);
+	sys->touch_count = 0;
+	const hs_spring_geom *geom = sys->geom;
+	for (int i = 0; i < world->object_count; ++i) {
+		hs_vec3 pa = world->bodies[i].pos;
+		int count = near_of(world, sys, i, 0.0);
+		for (int k = 0; k < count; ++k) {
+			int j = sys->near[k];
+			hs_vec3 pb = world->bodies[j].pos, n;
+			double depth;
+			if (j <= i || !boxes_meet(&geom[i], pa, &geom[j], pb, margin_of(&geom[i], pa) + margin_of(&geom[j], pb)) ||
+			    !hs_spring_contact_within(world, &geom[i], pa, &geom[j], pb, gap, &n, &depth))
+				continue;
+			if (sys->touch_count == sys->touch_capacity) {
+				world->counters.dropped_contacts++;
+				continue;
+			}
+			hs_spring_touch *t = &sys->touch[sys->touch_count++];
+			memset(t, 0, sizeof *t);
+			t->a = i;
+			t->b = j;
+			t->n = n;
+			t->depth = depth;
+		}
+	}
 }
 
-// Object i put back to the fraction tau of the frame: on its path, the velocity between the frame
-// start's and end's.
+bool hs_spring_touching(const hs_spring_system *sys, int a, int b) {
+	int lo = 0, hi = sys->touch_count;
+	while (lo < hi) { // touches are in ascending (a, b)
+		int mid = lo + (hi - lo) / 2;
+		const hs_spring_touch *t = &sys->touch[mid];
+		if (t->a < a || (t->a == a && t->b < b))
+			lo = mid + 1;
+		else
+			hi = mid;
+	}
+	return lo < sys->touch_count && sys->touch[lo].a == a && sys->touch[lo].b == b;
+}
+
+// Object i at the fraction tau of the frame, for motion at constant acceleration through it (gravity,
+// sliding friction): the position from its path's start and the frame end's velocity, p0 + h (s v0
+// + s² (v1 - v0) / 2) with s the fraction of the path (h long) done, when its end is the frame's
+// end (the step was such); else the straight path. A path starts at the frame start, or where the
+// object was last answered this frame (sys->path_*); before that the object is where the path starts.
+static hs_vec3 path_at(const hs_world *world, const hs_spring_system *sys, int i, double tau) {
+	const hs_body *b = &world->bodies[i];
+	double t0 = sys->path_t0[i];
+	hs_vec3 v0 = sys->path_vel[i], dv = hs_sub(b->vel, v0), p0 = sys->path_pos[i];
+	if (!(tau > t0))
+		return p0;
+	double dt = (1.0 - t0) * world->def.dt, s = (tau - t0) / (1.0 - t0);
+	hs_vec3 end = hs_add(p0, hs_scale(hs_mul_add(v0, 0.5, dv), dt));
+	if (hs_length_sq(hs_sub(end, b->pos)) <= 1e-24)
+		return hs_add(p0, hs_scale(hs_mul_add(hs_scale(v0, s), 0.5 * s * s, dv), dt));
+	return hs_mul_add(p0, s, hs_sub(b->pos, p0));
+}
+
+// Object i put back to the fraction tau of the frame: on its path, the velocity between the path
+// start's and the frame end's.
 static void state_at(hs_world *world, const hs_spring_system *sys, int i, double tau) {
 	hs_body *b = &world->bodies[i];
 	hs_vec3 p = path_at(world, sys, i, tau);
-	b->vel = hs_mul_add(sys->saved_vel[i], tau, hs_sub(b->vel, sys->saved_vel[i]));
+	double t0 = sys->path_t0[i], s = tau > t0 ? (tau - t0) / (1.0 - t0) : 0.0;
+	b->vel = hs_mul_add(sys->path_vel[i], s, hs_sub(b->vel, sys->path_vel[i]));
 	b->pos = p;
 }
 
@@ -297,22 +432,24 @@ static double sphere_root(const hs_world *world, const hs_spring_system *sys, in
 
 static double first_meeting(const hs_world *world, const hs_spring_system *sys, int i, int j, bool end_meets) {
 	const hs_spring_geom *ga = &sys->geom[i], *gb = &sys->geom[j];
-	hs_vec3 rel = hs_sub(hs_sub(world->bodies[j].pos, sys->saved_pos[j]), hs_sub(world->bodies[i].pos, sys->saved_pos[i]));
+	double t0 = fmax(sys->path_t0[i], sys->path_t0[j]); // the later of their paths' starts
+	hs_vec3 rel = hs_sub(hs_sub(world->bodies[j].pos, path_at(world, sys, j, t0)),
+	                     hs_sub(world->bodies[i].pos, path_at(world, sys, i, t0)));
 	double step = ga->inner + gb->inner, len = hs_length(rel);
 	if (!(step > 0.0) || !(len > 0.0) || (!end_meets && !(len > step)))
 		return -1.0; // no relative motion, or slower: a pass through the inner balls shows at an end
 	bool spheres = ga->sphere && gb->sphere && ga->form != HS_FORM_BOX && gb->form != HS_FORM_BOX;
-	if (spheres ? sphere_gap(world, sys, i, j, 0.0) <= 0.0 : meet_at(world, sys, i, j, 0.0))
+	if (spheres ? sphere_gap(world, sys, i, j, t0) <= 0.0 : meet_at(world, sys, i, j, t0))
 		return -1.0; // met already at the start: a contact going on, not a first meeting
-	double n = ceil(len / step);
+	double n = ceil(len / step), span = 1.0 - t0;
 	int steps = n > HS_MAX_SWEEP_STEPS ? HS_MAX_SWEEP_STEPS : n < 1.0 ? 1 : (int)n;
 	int k = 1;
-	while (k < steps && !(spheres ? sphere_gap(world, sys, i, j, (double)k / steps) <= 0.0
-	                              : meet_at(world, sys, i, j, (double)k / steps)))
+	while (k < steps && !(spheres ? sphere_gap(world, sys, i, j, t0 + span * ((double)k / steps)) <= 0.0
+	                              : meet_at(world, sys, i, j, t0 + span * ((double)k / steps))))
 		++k;
 	if (k == steps && !end_meets)
 		return -1.0;
-	double lo = (double)(k - 1) / steps, hi = (double)k / steps;
+	double lo = t0 + span * ((double)(k - 1) / steps), hi = t0 + span * ((double)k / steps);
 	if (spheres)
 		return sphere_root(world, sys, i, j, lo, hi);
 	while (hi - lo > 1e-12) {
@@ -326,12 +463,178 @@ static double first_meeting(const hs_world *world, const hs_spring_system *sys, 
 }
 
 
-void hs_spring_collide(hs_world *world, hs_spring_system *sys) {
-	// Pairs in ascending (i, j), as the full double loop met them, so the bits are the same: for
-	// each i the broad phase lists the j near it now; when a pair moved i, the list is taken again
-	// from where i is now and resumes after j (only i and j move within i's turn).
+// Objects i and j answered at the fraction tau of the frame (tau < 0: where the frame leaves
+// them): both put back to where they met, the impulse, the separation, then for each the rest of
+// the frame from there on a new path (on the spring: the rest is lost). False when they were a
+// resting pair still within the touch gap: nothing to answer.
+static bool answer(hs_world *world, hs_spring_system *sys, int i, int j, double tau, bool resting) {
+	hs_body *a = &world->bodies[i], *b = &world->bodies[j];
+	const hs_spring_geom *ga = &sys->geom[i], *gb = &sys->geom[j];
+	hs_vec3 n;
+	double depth;
+	if (tau >= 0.0 && tau < 1.0) {
+		state_at(world, sys, i, tau); // both back to where they met (the rest of the frame's
+		state_at(world, sys, j, tau); // motion is lost: a delay, no energy)
+		if (!hs_spring_contact(world, ga, a->pos, gb, b->pos, &n, &depth)) { // just touching
+			n = hs_normalize(hs_sub(b->pos, a->pos));
+			depth = 0.0;
+		}
+	} else if (!hs_spring_contact(world, ga, a->pos, gb, b->pos, &n, &depth)) {
+		return false;
+	}
+	if (resting) { // an overlap up to twice the touch gap stays (it is a touch: the next frame holds it)
+		double gap = world->def.floor_tolerance;
+		depth = depth > 2.0 * gap ? depth - gap : 0.0;
+		if (!(depth > 0.0) && !(hs_dot(hs_sub(b->vel, a->vel), n) < 0.0))
+			return false; // at rest on each other, within the gap
+	}
+	// an impact slower than HS_REST_BOUNCE_SPEED is a resting push: no bounce (spring_rest.h)
+	bool push = resting || -hs_dot(hs_sub(b->vel, a->vel), n) <= HS_REST_BOUNCE_SPEED;
+	hs_spring_pair_impulse(world, sys, i, j, n, push ? 0.0 : hs_spring_pair_restitution(world, sys, i, j), push);
+	separate(world, sys, i, j, n, depth, push);
+	if (tau > 0.0 && tau < 1.0) { // the rest of the frame, from where they met
+		int ends[2] = {i, j};
+		for (int q = 0; q < 2; ++q) { // their paths start again here
+			sys->path_pos[ends[q]] = world->bodies[ends[q]].pos;
+			sys->path_vel[ends[q]] = world->bodies[ends[q]].vel;
+			sys->path_t0[ends[q]] = tau;
+			if (ends[q] != sys->attached)
+				hs_spring_advance(world, sys, ends[q], (1.0 - tau) * world->def.dt);
+		}
+	}
+	sys->separated[i] = sys->separated[j] = 1;
+	hs_hgrid_file(&sys->grid, i, box_centre(ga, a->pos));
+	hs_hgrid_file(&sys->grid, j, box_centre(gb, b->pos));
+	return true;
+}
+
+// Where the pair (i, j), i < j, first meets on the rest of its paths, -1 when it does not (or
+// is a resting pair, or both are held).
+static double meeting_of(hs_world *world, const hs_spring_system *sys, int i, int j) {
+	if ((sys->held[i] && sys->held[j]) || hs_spring_touching(sys, i, j))
+		return -1.0;
+	const hs_spring_geom *ga = &sys->geom[i], *gb = &sys->geom[j];
+	hs_vec3 pa = world->bodies[i].pos, pb = world->bodies[j].pos, n;
+	double depth;
+	bool end_meets = boxes_meet(ga, pa, gb, pb, margin_of(ga, pa) + margin_of(gb, pb)) &&
+	                 hs_spring_contact(world, ga, pa, gb, pb, &n, &depth);
+	double tau = first_meeting(world, sys, i, j, end_meets);
+	return tau >= 0.0 && tau < 1.0 ? tau : -1.0;
+}
+
+// The meetings of object q with its neighbours r > after (and r != skip) into sys->events, counting
+// those beyond the capacity (answered at the frame's end instead).
+static void list_meetings(hs_world *world, hs_spring_system *sys, int q, int after, int skip, double reach) {
+	int count = near_of(world, sys, q, reach);
+	for (int k = 0; k < count; ++k) {
+		int r = sys->near[k], i = q < r ? q : r, j = q < r ? r : q;
+		if (r == q || r <= after || r == skip)
+			continue;
+		double tau = meeting_of(world, sys, i, j);
+		if (tau < 0.0)
+			continue;
+		if (sys->event_count == sys->event_capacity) {
+			world->counters.dropped_contacts++;
+			continue;
+		}
+		sys->events[sys->event_count++] = (hs_spring_event){i, j, tau};
+	}
+}
+
+static void drop_meetings_of(hs_spring_system *sys, int a, int b) {
+	int kept = 0;
+	for (int e = 0; e < sys->event_count; ++e) {
+		hs_spring_event ev = sys->events[e];
+		if (ev.i != a && ev.j != a && ev.i != b && ev.j != b)
+			sys->events[kept++] = ev;
+	}
+	sys->event_count = kept;
+}
+
+// The earliest listed meeting (ties: the lowest pair), removed from the list; false when none.
+static bool earliest(hs_spring_system *sys, hs_spring_event *out) {
+	if (sys->event_count == 0)
+		return false;
+	int best = 0;
+	for (int e = 1; e < sys->event_count; ++e) {
+		const hs_spring_event *x = &sys->events[e], *y = &sys->events[best];
+		if (x->tau < y->tau || (x->tau == y->tau && (x->i < y->i || (x->i == y->i && x->j < y->j))))
+			best = e;
+	}
+	*out = sys->events[best];
+	sys->events[best] = sys->events[--sys->event_count];
+	return true;
+}
+
+#define HS_SEPARATION_PASSES 8
+
+// Object i held still by its contacts this frame and not moved since (by a separation).
+static bool unmoved(const hs_world *world, const hs_spring_system *sys, int i) {
+	return sys->held[i] && memcmp(&world->bodies[i].pos, &sys->saved_pos[i], sizeof(hs_vec3)) == 0;
+}
+
+// Pairs for an end pass: by the height of the lower object's G, then index.
+static int by_height(const void *x, const void *y) {
+	const hs_spring_event *a = x, *b = y;
+	if (a->tau != b->tau)
+		return a->tau < b->tau ? -1 : 1;
+	if (a->i != b->i)
+		return a->i < b->i ? -1 : 1;
+	return (a->j > b->j) - (a->j < b->j);
+}
+
+// One pass over the overlapping pairs where the frame leaves them, bottom up (shock propagation,
+// Guendelman et al. 2003: a separation never pushes the lower object of a pair down, so a column
+// of overlapping objects comes apart in one pass): the first pass over every pair, later ones over
+// the pairs of objects the pass before moved (sys->moved bit 0; this pass's in bit 1). True when
+// one was separated.
+static bool end_pass(hs_world *world, hs_spring_system *sys, bool first) {
 	const hs_spring_geom *geom = sys->geom;
-	double e = sys->def.restitution, reach = 0.0, inner = INFINITY;
+	uint8_t *mv = sys->moved;
+	sys->event_count = 0;
+	for (int q = 0; q < world->object_count; ++q) {
+		if (!first && !(mv[q] & 1u))
+			continue;
+		int count = near_of(world, sys, q, 0.0);
+		for (int k = 0; k < count; ++k) {
+			int r = sys->near[k], i = q < r ? q : r, j = q < r ? r : q;
+			if (r == q || (first && r < q) || (!first && r < q && (mv[r] & 1u)) || (unmoved(world, sys, i) && unmoved(world, sys, j)) ||
+			    !boxes_meet(&geom[i], world->bodies[i].pos, &geom[j], world->bodies[j].pos,
+			                margin_of(&geom[i], world->bodies[i].pos) + margin_of(&geom[j], world->bodies[j].pos)))
+				continue; // (a pair of two movers is met from the lower index)
+			if (sys->event_count == sys->event_capacity) {
+				world->counters.dropped_contacts++;
+				continue;
+			}
+			double low = fmin(world->bodies[i].pos.z, world->bodies[j].pos.z);
+			sys->events[sys->event_count++] = (hs_spring_event){i, j, low};
+		}
+	}
+	if (sys->event_count > 1)
+		qsort(sys->events, (size_t)sys->event_count, sizeof *sys->events, by_height);
+	bool moved = false;
+	sys->shock = true;
+	for (int e = 0; e < sys->event_count; ++e) {
+		int i = sys->events[e].i, j = sys->events[e].j;
+		hs_vec3 pa = world->bodies[i].pos, pb = world->bodies[j].pos;
+		if (!answer(world, sys, i, j, -1.0, hs_spring_touching(sys, i, j)))
+			continue;
+		if (memcmp(&pa, &world->bodies[i].pos, sizeof pa) != 0)
+			mv[i] |= 2u;
+		if (memcmp(&pb, &world->bodies[j].pos, sizeof pb) != 0)
+			mv[j] |= 2u;
+		moved = moved || (mv[i] & 2u) || (mv[j] & 2u);
+	}
+	sys->shock = false;
+	sys->event_count = 0;
+	for (int q = 0; q < world->object_count; ++q)
+		mv[q] = (uint8_t)(mv[q] >> 1);
+	return moved;
+}
+
+void hs_spring_collide(hs_world *world, hs_spring_system *sys) {
+	const hs_spring_geom *geom = sys->geom;
+	double reach = 0.0, inner = INFINITY;
 	for (int i = 0; i < world->object_count; ++i) { // the farthest any object moved this frame
 		reach = fmax(reach, hs_length(hs_sub(world->bodies[i].pos, sys->saved_pos[i])));
 		inner = fmin(inner, geom[i].inner);
@@ -340,49 +643,30 @@ void hs_spring_collide(hs_world *world, hs_spring_system *sys) {
 	// at the frame's end (first_meeting), so the queries need not cover the paths
 	if (2.0 * reach <= 2.0 * inner)
 		reach = 0.0;
-	file_all(world, sys);
-	for (int i = 0; i < world->object_count; ++i) {
-		hs_body *a = &world->bodies[i];
-		const hs_spring_geom *ga = &geom[i];
-		int count = near_of(world, sys, i, reach);
-		for (int k = 0; k < count; ++k) {
-			int j = sys->near[k];
-			if (j <= i)
-				continue;
-			hs_body *b = &world->bodies[j];
-			const hs_spring_geom *gb = &geom[j];
-			hs_vec3 n;
-			double depth;
-			bool end_meets = boxes_meet(ga, a->pos, gb, b->pos, margin_of(ga, a->pos) + margin_of(gb, b->pos)) &&
-			                 hs_spring_contact(world, ga, a->pos, gb, b->pos, &n, &depth);
-			// where they first met on the way; an object answered already this frame has left the
-			// path its frame-start state describes: such pairs meet at the frame's end only
-			double tau = sys->separated[i] || sys->separated[j] ? -1.0 : first_meeting(world, sys, i, j, end_meets);
-			if (!end_meets && tau < 0.0)
-				continue;
-			if (tau >= 0.0 && tau < 1.0) {
-				state_at(world, sys, i, tau); // both back to where they met (the rest of the frame's
-				state_at(world, sys, j, tau); // motion is lost: a delay, no energy)
-				if (!hs_spring_contact(world, ga, a->pos, gb, b->pos, &n, &depth)) { // just touching
-					n = hs_normalize(hs_sub(b->pos, a->pos));
-					depth = 0.0;
-				}
-			}
-			respond(a, b, n, depth, e);
-			if (tau > 0.0 && tau < 1.0) { // the rest of the frame, from where they met (on the spring: lost)
-				double rest = (1.0 - tau) * world->def.dt;
-				if (i != sys->attached)
-					hs_spring_advance(world, sys, i, rest);
-				if (j != sys->attached)
-					hs_spring_advance(world, sys, j, rest);
-			}
-			sys->separated[i] = sys->separated[j] = 1;
-			hs_hgrid_file(&sys->grid, i, box_centre(ga, a->pos));
-			hs_hgrid_file(&sys->grid, j, box_centre(gb, b->pos));
-			count = near_of(world, sys, i, reach);
-			for (k = 0; k < count && sys->near[k] <= j; ++k)
-				;
-			--k; // the loop's ++k lands on the first object after j
-		}
+	for (int i = 0; i < world->object_count; ++i) { // every path starts at the frame start
+		sys->path_pos[i] = sys->saved_pos[i];
+		sys->path_vel[i] = sys->saved_vel[i];
+		sys->path_t0[i] = 0.0;
 	}
+	file_all(world, sys);
+	// Meetings in the order of time (no tunnelling, issue 11): the earliest is answered, then the
+	// meetings of its two objects are found again from their new paths; at most 8 per object and
+	// frame (a pile in a wedge could bounce on), the rest are answered where the frame leaves them.
+	sys->event_count = 0;
+	for (int i = 0; i < world->object_count; ++i)
+		list_meetings(world, sys, i, i, -1, reach);
+	hs_spring_event ev;
+	for (long budget = 8L * world->object_count; budget > 0 && earliest(sys, &ev); --budget) {
+		answer(world, sys, ev.i, ev.j, ev.tau, false);
+		drop_meetings_of(sys, ev.i, ev.j);
+		list_meetings(world, sys, ev.i, -1, -1, reach);
+		list_meetings(world, sys, ev.j, -1, ev.i, reach);
+	}
+	// where the frame leaves them: resting pairs, overlaps begun before a path restarted, the rest;
+	// a separation may push an object into a third one, so the pass goes again (at most
+	// HS_SEPARATION_PASSES times) while one moved anything
+	if (world->object_count > 0)
+		memset(sys->moved, 0, (size_t)world->object_count);
+	for (int pass = 0; pass < HS_SEPARATION_PASSES && end_pass(world, sys, pass == 0); ++pass)
+		;
 }

@@ -8,6 +8,15 @@
 // depth (m) of the true shapes' overlap; false when they do not meet.
 bool hs_spring_contact(const hs_world *world, const hs_spring_geom *ga, hs_vec3 pa, const hs_spring_geom *gb,
                        hs_vec3 pb, hs_vec3 *n, double *depth);
+// As hs_spring_contact, for shapes within `gap` (m) of each other: *depth is the overlap less the
+// gap, negative for shapes apart by less than it.
+bool hs_spring_contact_within(const hs_world *world, const hs_spring_geom *ga, hs_vec3 pa, const hs_spring_geom *gb,
+                     hs_vec3 pb, double gap, hs_vec3 *n, double *depth);
+// Every pair of objects within `gap` of each other where they are now, into sys->touch in ascending
+// (a, b) (normal and depth set, the rest zero), through the broad phase.
+void hs_spring_find_touches(hs_world *world, hs_spring_system *sys, double gap);
+// True when (a, b), a < b, is among sys->touch.
+bool hs_spring_touching(const hs_spring_system *sys, int a, int b);
 // Every overlapping pair of the world's objects (array order, shapes in sys->geom, found through
 // the broad phase sys->grid) exchanges an impulse of restitution sys->def.restitution along the
 // contact normal and is pushed apart; each object pushed gets sys->separated[i] = 1 (the caller

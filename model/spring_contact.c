@@ -72,6 +72,8 @@ static hs_vec3 hold_force(const hs_spring_support *su, hs_vec3 p) {
 	hs_vec3 f = hs_scale(su->gravity, su->sp->mass);
 	if (su->attached)
 		f = hs_add(f, hs_spring_force(su->sp, su->axis, p, hs_v3(0.0, 0.0, 0.0), su->stylus_end, su->stylus_velocity));
+	if (su->load)
+		f = hs_add(f, *su->load);
 	return f;
 }
 
@@ -109,8 +111,10 @@ static bool floor_stretch(const hs_spring_support *su, hs_spring_segment *sg, hs
 		return false;
 	}
 	hs_vec3 dir = speed > 0.0 ? hs_scale(vh, 1.0 / speed) : hs_scale(fh, 1.0 / push);
-	sg->accel = hs_add(su->gravity,
-	                   hs_scale(hs_mul_add(hs_v3(0.0, 0.0, normal), -mu_k * normal, dir), 1.0 / su->sp->mass));
+	hs_vec3 fc = hs_mul_add(hs_v3(0.0, 0.0, normal), -mu_k * normal, dir); // the floor's force
+	if (su->load) // and the touching objects' (spring_rest.c)
+		fc = hs_add(fc, *su->load);
+	sg->accel = hs_add(su->gravity, hs_scale(fc, 1.0 / su->sp->mass));
 	sg->s0 = hs_mul_add(su->stylus_start, t, su->stylus_velocity);
 	double rest = su->dt - t;
 	hs_vec3 p1, v1;

@@ -20,6 +20,7 @@ typedef struct hs_spring_support {
 	hs_vec3 stylus_start;       // m: the stylus at the frame start,
 	hs_vec3 stylus_end;         // at its end,
 	hs_vec3 stylus_velocity;    // m/s: and in between
+	const hs_vec3 *load;        // N: the force of the objects it touches (spring_rest.c), NULL when none
 } hs_spring_support;
 
 // Removes the components of `vec` that push into a wall the object (G at p) touches within tol.

@@ -17,6 +17,7 @@
 #include "spring_collide.h"
 #include "spring_contact.h"
 #include "spring_grab.h"
+#include "spring_rest.h"
 
 typedef struct frame_ctx {
 	hs_world *world;
@@ -41,6 +42,7 @@ static hs_spring_support support_of(const frame_ctx *fx, int i, const hs_spring_
 	su.stylus_start = hs_spring_anchor_prev(sys); // the spring hangs from the anchor, not the pen tip
 	su.stylus_end = hs_spring_anchor(sys);
 	su.stylus_velocity = hs_spring_anchor_velocity(sys, fx->dt); // the anchor's, in fact
+	su.load = sys->rest_index[i] >= 0 ? &sys->load[i] : NULL;
 	return su;
 }
 
@@ -108,7 +110,7 @@ static void step_body(const frame_ctx *fx, int i) {
 	if (on_floor) {
 		fx->world->counters.floor_checks++;
 	} else { // in the air: gravity and the spring
-		sg.accel = fx->gravity;
+		sg.accel = su.load ? hs_mul_add(fx->gravity, 1.0 / body->mass, *su.load) : fx->gravity;
 		fly_along_walls(fx, &sg, &sp, i, &p, &v);
 		on_floor = hs_spring_land(g, &p, &v);
 	}
@@ -145,13 +147,14 @@ static void finish_bodies(hs_world *world, hs_spring_system *sys) {
 		body->prev = sys->saved_pos[i];
 		bool still = body->vel.x == 0.0 && body->vel.y == 0.0 && body->vel.z == 0.0;
 		body->grounded = sys->on_floor[i];
-		body->asleep = sys->on_floor[i] && still && !sys->separated[i] && i != sys->attached;
+		body->asleep = (sys->on_floor[i] || sys->held[i]) && still && !sys->separated[i] && i != sys->attached;
 		body->contact = (uint8_t)(i == sys->attached ? HS_CONTACT_GRASP : HS_CONTACT_NONE);
 		body->floor_contacts = sys->on_floor[i] ? floor_contacts(world, sys, i) : 0;
 	}
 }
 
 void hs_spring_step(hs_world *world) {
+
 	hs_spring_system *sys = world->spring;
 	int n = world->object_count;
 	if (sys->geom_count < n) // the broad phase's levels follow the geometry
@@ -164,12 +167,20 @@ void hs_spring_step(hs_world *world) {
 	double t0 = (double)world->frame * fx.dt, t1 = (double)(world->frame + 1) * fx.dt;
 	sys->stylus_velocity = hs_scale(hs_sub(sys->stylus, sys->stylus_prev), 1.0 / fx.dt);
 
+	hs_spring_rest(world, sys); // touching objects: impulses, then their forces for the frame
 	for (int i = 0; i < n; ++i) {
 		sys->saved_pos[i] = world->bodies[i].pos;
 		sys->saved_vel[i] = world->bodies[i].vel;
 	}
-	for (int i = 0; i < n; ++i)
-		step_body(&fx, i);
+	for (int i = 0; i < n; ++i) {
+		if (!sys->held[i]) {
+			step_body(&fx, i);
+			continue;
+		}
+		world->bodies[i].vel = hs_v3(0.0, 0.0, 0.0); // held still by its contacts: not stepped
+		sys->on_floor[i] = sys->rest[sys->rest_index[i]].floor;
+		sys->sliding[i] = false;
+	}
 	if (n > 0) // (n is never negative; the test keeps gcc's size analysis quiet)
 		memset(sys->separated, 0, (size_t)n);
 	hs_spring_collide(world, sys);

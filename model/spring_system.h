@@ -8,6 +8,42 @@
 #include "spring_geom.h"
 #include "tracker.h"
 
+// Touches the resting contacts hold per object (the world's max_objects of them): equal spheres
+// packed closest have 6 per object (12 neighbours, each shared); beyond, a frame counts the
+// touches it had no room for in counters.dropped_contacts and answers them as collisions.
+#define HS_SPRING_TOUCHES_PER_OBJECT 8
+
+// Two objects touching at the frame start (spring_rest.c): within floor_tolerance of each other.
+typedef struct hs_spring_touch {
+	int a, b;        // body indices, a < b
+	hs_vec3 n;       // unit normal from a to b
+	hs_vec3 slide;   // unit direction of b's sliding on a at the frame start; zero: sticking
+	double depth;    // m: overlap (negative: apart by less than the gap)
+	double mass;     // kg: 1 / (1/m_a + 1/m_b)
+	double e;        // restitution of the pair: the smaller of the two objects'
+	double normal;   // N: normal force on b (on a: its opposite)
+	hs_vec3 friction; // N: friction force on b, across n
+	uint8_t open;    // moving apart at the frame start: no force (it would do work)
+} hs_spring_touch;
+
+// A meeting of objects i < j at the fraction tau of the frame (spring_collide.c).
+typedef struct hs_spring_event {
+	int i, j;
+	double tau;
+} hs_spring_event;
+
+// What the resting contacts know of one object in a frame (spring_rest.c).
+typedef struct hs_spring_rest_body {
+	hs_vec3 force;   // N: gravity and the spring with the object held where it is
+	hs_vec3 acc;     // m/s²: its acceleration under the forces found so far
+	hs_vec3 floor_friction; // N
+	double floor_normal;    // N
+	double wall[4];  // N: walls x_min, x_max, y_min, y_max
+	uint8_t floor;   // on the floor at the frame start (as the floor's step sees it)
+	uint8_t walls;   // bit k: touching wall k
+	uint8_t sliding; // on the floor and moving: sliding friction
+} hs_spring_rest_body;
+
 struct hs_spring_system {
 	hs_spring_def def;
 	hs_tracker tracker;
@@ -19,11 +55,29 @@ struct hs_spring_system {
 	uint8_t *separated; // pushed apart from a neighbour this frame: moved without a velocity
 	hs_vec3 *saved_pos; // frame-start state for the numeric guard
 	hs_vec3 *saved_vel;
+	// SCRATCH of the swept collisions (spring_collide.c): where each object's path through the
+	// frame starts (the frame start, or where it was last answered) and at which fraction of it
+	hs_vec3 *path_pos, *path_vel;
+	double *path_t0;
+	hs_spring_event *events; // the meetings still to answer this frame
+	uint8_t *moved;          // moved by a separation pass (bit 0: the last, bit 1: this one)
+	bool shock;              // an end pass is separating bottom up (spring_collide.c)
+	int event_count, event_capacity;
 	// CACHE: the collisions' broad phase (spring_collide.c), 3D, built for grid_count objects
 	// (-1: to build), refiled every frame; near holds a query's result
 	hs_hgrid grid;
 	int grid_count;
 	int *near;
+	// SCRATCH of the resting contacts (spring_rest.c), found again every frame from the state:
+	// touches in ascending (a, b), the objects in any (active, ascending), their forces
+	hs_spring_touch *touch;
+	int touch_count, touch_capacity;
+	int *active;
+	int active_count;
+	int *rest_index;          // object → its place in `active`, -1 when in no touch
+	hs_spring_rest_body *rest; // per active object
+	hs_vec3 *load;            // N: force of the touching objects on each object this frame
+	uint8_t *held;            // held still by its contacts this frame: not stepped
 	bool all_pairs; // tests only: every object is near every other (the double loop the grid replaces)
 	// the stylus: pose at the end of the coming frame and at its start
 	bool has_stylus;

@@ -20,6 +20,17 @@ void hs_spring_system_destroy(hs_spring_system *system) {
 	free(system->saved_vel);
 	hs_hgrid_free(&system->grid);
 	free(system->near);
+	free(system->touch);
+	free(system->path_pos);
+	free(system->path_vel);
+	free(system->path_t0);
+	free(system->events);
+	free(system->moved);
+	free(system->active);
+	free(system->rest_index);
+	free(system->rest);
+	free(system->load);
+	free(system->held);
 	free(system);
 }
 
@@ -37,10 +48,26 @@ hs_status hs_world_enable_springs(hs_world *world, const hs_spring_def *def) {
 	sys->saved_pos = calloc(cap, sizeof *sys->saved_pos);
 	sys->saved_vel = calloc(cap, sizeof *sys->saved_vel);
 	sys->near = calloc(cap, sizeof *sys->near);
+	sys->path_pos = calloc(cap, sizeof *sys->path_pos);
+	sys->path_vel = calloc(cap, sizeof *sys->path_vel);
+	sys->path_t0 = calloc(cap, sizeof *sys->path_t0);
+	sys->moved = calloc(cap, sizeof *sys->moved);
+	sys->event_capacity = (int)(HS_SPRING_TOUCHES_PER_OBJECT * cap);
+	sys->events = calloc((size_t)sys->event_capacity, sizeof *sys->events);
+	sys->touch_capacity = (int)(HS_SPRING_TOUCHES_PER_OBJECT * cap);
+	sys->touch = calloc((size_t)sys->touch_capacity, sizeof *sys->touch);
+	sys->active = calloc(cap, sizeof *sys->active);
+	sys->rest_index = malloc(cap * sizeof *sys->rest_index);
+	for (size_t i = 0; sys->rest_index && i < cap; ++i)
+		sys->rest_index[i] = -1;
+	sys->rest = calloc(cap, sizeof *sys->rest);
+	sys->load = calloc(cap, sizeof *sys->load);
+	sys->held = calloc(cap, sizeof *sys->held);
 	bool grid = hs_hgrid_alloc(&sys->grid, (int)cap, 3);
 	sys->grid_count = -1;
 	if (!sys->geom || !sys->on_floor || !sys->sliding || !sys->separated || !sys->saved_pos || !sys->saved_vel ||
-	    !sys->near || !grid) {
+	    !sys->near || !grid || !sys->touch || !sys->active || !sys->rest_index || !sys->rest || !sys->load ||
+	    !sys->held || !sys->path_pos || !sys->path_vel || !sys->path_t0 || !sys->events || !sys->moved) {
 		hs_spring_system_destroy(sys);
 		return HS_ERR_NO_MEMORY;
 	}

@@ -74,6 +74,8 @@ static uint64_t definition_checksum(const hs_world *w) {
 	for (int i = 0; i < w->object_count; ++i) {
 		h = hs_state_mix(h, (uint64_t)w->bodies[i].shape);
 		h = hs_state_mix_f64(h, w->bodies[i].mass);
+		if (w->bodies[i].restitution >= 0.0) // set: a definition of its own (unset keeps older checksums)
+			h = hs_state_mix_f64(h, w->bodies[i].restitution);
 	}
 	for (int i = 0; i < w->hand_count; ++i)
 		h = hand_def_checksum(h, &w->hands[i].def);

@@ -43,6 +43,7 @@ hs_object_def hs_default_object_def(void) {
 	memset(&def, 0, sizeof def);
 	def.orientation = hs_quat_identity();
 	def.density = 500.0;
+	def.restitution = -1.0;
 	return def;
 }
 
@@ -216,7 +217,8 @@ hs_object_id hs_world_add_object(hs_world *world, const hs_object_def *def, hs_s
 	hs_object_id none = {0};
 	if (!world || !def || hs_shape_index(world, def->shape) < 0 || !within(def->position, HS_MAX_COORDINATE) ||
 	    !within(def->velocity, HS_MAX_SPEED) || !within(def->angular_velocity, HS_MAX_SPEED) ||
-	    !hs_quat_is_unit(def->orientation) || !isfinite(def->density) || !(def->density > 0.0)) {
+	    !hs_quat_is_unit(def->orientation) || !isfinite(def->density) || !(def->density > 0.0) ||
+	    !(def->restitution <= 1.0)) {
 		set_status(status, HS_ERR_INVALID_ARGUMENT);
 		return none;
 	}
@@ -238,6 +240,7 @@ hs_object_id hs_world_add_object(hs_world *world, const hs_object_def *def, hs_s
 	body->spin = w > 0.0 ? hs_quat_from_axis_angle(hs_scale(def->angular_velocity, 1.0 / w), w * dt)
 	                     : hs_quat_identity();
 	body->mass = def->density * world->shapes[body->shape].volume;
+	body->restitution = def->restitution < 0.0 ? -1.0 : def->restitution;
 	body->vel = def->velocity;
 	if (hs_motion_pose_vertices(world, body) <= world->def.floor_tolerance) {
 		body->grounded = 1;

@@ -207,6 +207,10 @@ typedef struct hs_object_def {
 	hs_vec3 velocity;         ///< m/s at t = 0
 	hs_vec3 angular_velocity; ///< rad/s at t = 0, world frame
 	double density;           ///< kg/m³ (spring model: mass = density × volume; default 500)
+	/// Spring model: e in [0, 1] of this object's collisions with objects; a pair takes the smaller
+	/// of its two objects' e (the less elastic decides). Negative (default −1): the model's
+	/// hs_spring_def.restitution.
+	double restitution;
 } hs_object_def;
 
 hs_object_def hs_default_object_def(void);
@@ -458,9 +462,11 @@ int hs_world_contacts(const hs_world *world, hs_contact *out, int max);
 // drops (hand at rest) or throws (hand moving; a velocity estimate against the hand's recent path,
 // the fit's overshoot at a stop, counts as none).
 // Objects keep their orientation (no torque, §4.2); spheres collide as exact spheres, boxes as
-// oriented boxes, every other shape through libccd. In spring worlds hs_object_state.contact is
+// oriented boxes, every other shape through libccd; touching objects rest on each other (contact
+// forces with static and sliding friction, docs/model.md §8), and collide in the order of time
+// with the smaller of the two objects' restitutions. In spring worlds hs_object_state.contact is
 // HS_CONTACT_GRASP for the object on the spring, HS_CONTACT_NONE otherwise, and `resting` means
-// lying still on the floor.
+// lying still on the floor or held still by its contacts.
 //
 // Noise is input, not physics: the model holds no random generator. The tracker records exactly
 // the stylus poses it is given, so a caller that simulates a real tracker (the Fastrak's 0.03 inch

@@ -1,0 +1,29 @@
+// spring_rest.h — resting contact between the spring model's objects: the forces touching objects,
+// the floor and the walls exert on each other, found at the frame start (issue 11: stacks stand,
+// static friction holds through contacts).
+#ifndef HS_SPRING_REST_H
+#define HS_SPRING_REST_H
+
+#include "spring_system.h"
+
+// For the frame about to run: the touches (sys->touch), their impulses (touching objects still
+// approaching), the force each object gets from the objects it touches (sys->load) and the
+// objects those forces hold still (sys->held: they keep position and get zero velocity).
+void hs_spring_rest(hs_world *world, hs_spring_system *sys);
+
+// m/s: an impact slower than this does not bounce and is a resting contact's push (no restitution;
+// the floor's static friction may hold the object pushed). Measured: under the tracker's noise
+// (§5.1) an object pressed by the spring against another chatters at 0.5 to 20 mm/s.
+#define HS_REST_BOUNCE_SPEED 0.05
+
+// The impulse of restitution e along n (unit, from i to j) when i and j approach (true then).
+// For a resting contact (`resting`), an object lying on the floor whose static friction takes the
+// impulse within the frame (μ m g dt) does not move: the other stops against it.
+bool hs_spring_pair_impulse(hs_world *world, const hs_spring_system *sys, int i, int j, hs_vec3 n, double e,
+                            bool resting);
+
+// The restitution of a pair of objects: the smaller of their own (hs_object_def.restitution; the
+// model's where unset).
+double hs_spring_pair_restitution(const hs_world *world, const hs_spring_system *sys, int a, int b);
+
+#endif
