@@ -136,4 +136,21 @@ int bench_peer_ode(const bench_opts *opts, bench_peer_result out[2]);
 bench_peer_result bench_peer_mujoco(const bench_opts *opts);
 #endif
 
+// ---------------------------------------------------------------------------------------------
+/// The race (issue 12, item 4; bench/race.c): one frame of the honest seed scene as handspring ran
+/// it: the hand's 20 check points, the 10 cubes' poses (the 2 grasped first) and which fingers
+/// touch which cubes (bit finger · 10 + cube).
+typedef struct bench_race_frame {
+	hs_vec3 points[HS_HAND_POINTS];
+	hs_vec3 pos[10];
+	hs_quat rot[10];
+	uint64_t touch;
+} bench_race_frame;
+/// Records one loop (BENCH_PATH_FRAMES frames) of the honest seed scene; *finger_radius (m).
+void bench_race_record(bench_race_frame frames[BENCH_PATH_FRAMES], double *finger_radius);
+/// The honest frame (the seed scene on noisy glove input, wrist turning, hash every frame) timed.
+bench_stats bench_honest_measure(const bench_opts *opts);
+void bench_race(const bench_opts *opts, bench_shared *shared); // issue 12, item 4
+
+
 #endif

@@ -34,6 +34,7 @@ static const bench_section sections[] = {
     {"throw", "item 4: throw fidelity across frame rates", bench_throw},
     {"peers", "item 5: ODE and MuJoCo on the seed scene", bench_peers},
     {"collide", "item 6: collisions that scale (issue 11)", bench_collide},
+    {"race", "issue 12 item 4: contact generation only, handspring against ODE and MuJoCo", bench_race},
 };
 #define N_SECTIONS ((int)(sizeof sections / sizeof sections[0]))
 

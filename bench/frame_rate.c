@@ -725,6 +725,39 @@ bench_stats bench_seed_measure(const bench_opts *opts, bool skip) {
 	return st;
 }
 
+bench_stats bench_honest_measure(const bench_opts *opts) {
+	fr_pose pose = find_pose(FR_CUBE, 2, 0.11, 0.0, 0);
+	fr_scene *sc = scene_create(FR_CUBE, 10, 2, true, &pose, true);
+	bench_stats st = bench_measure(scene_step, sc, opts);
+	scene_destroy(sc);
+	return st;
+}
+
+void bench_race_record(bench_race_frame frames[BENCH_PATH_FRAMES], double *finger_radius) {
+	fr_pose pose = find_pose(FR_CUBE, 2, 0.11, 0.0, 0);
+	fr_scene *sc = scene_create(FR_CUBE, 10, 2, true, &pose, true);
+	*finger_radius = hs_default_hand_def().finger_radius;
+	for (int f = 0; f < BENCH_PATH_FRAMES; ++f) {
+		scene_step(sc, 1);
+		bench_race_frame *r = &frames[f];
+		hs_world_hand_points(sc->world, sc->hand, r->points);
+		for (int i = 0; i < 10; ++i) {
+			hs_object_state os;
+			hs_world_object_state(sc->world, hs_world_object_at(sc->world, i), &os);
+			r->pos[i] = os.position;
+			r->rot[i] = os.orientation;
+		}
+		hs_contact cs[128];
+		int n = hs_world_contacts(sc->world, cs, 128);
+		r->touch = 0;
+		for (int k = 0; k < n; ++k) {
+			int part = cs[k].part, finger = part < HS_HAND_POINTS ? part / 4 : (part - HS_HAND_POINTS) / 12;
+			r->touch |= 1ull << (finger * 10 + (int)cs[k].object.index1 - 1);
+		}
+	}
+	scene_destroy(sc);
+}
+
 // `hs_bench --profile-seed N`: N frames of the seed scene and nothing else, for perf or callgrind.
 // not inlined: `valgrind --tool=callgrind --toggle-collect=fr_profiled_frames` counts these frames only
 __attribute__((noinline)) void fr_profiled_frames(fr_scene *sc, long frames);
