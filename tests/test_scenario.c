@@ -465,17 +465,12 @@ static void test_trajectory_rows(void **state) {
 	free(csv);
 }
 
-// The hands' check points (handspring run --hands-out): hand/push_press_down holds its index tip
-// (check point 7) 1 mm into the top face of a box (z = 0.1): the row gives the tip where the glove
-// puts it (z 0.099) and rectified onto the face (rz 0.1, §3.2), touching; the thumb's base (0) is
-// in no object and rectified to itself.
-static void test_hand_trace_rows(void **state) {
-	(void)state;
-	hs_error err;
-	hs_scenario *s = hs_scenario_load("scenarios/hand/push_press_down.yaml", &err);
-	assert_non_null(s);
-	for (int f = 0; f < 30; ++f)
-		assert_true(hs_scenario_step(s));
+// What the hands do (handspring run --hands-out): hand/push_press_down holds its index tip (check
+// point 7) 1 mm into the top face of a box (z = 0.1): the point row gives the tip where the glove
+// puts it (z 0.099) and rectified onto the face (w 0.1, §3.2), touching; the thumb's base (0) is
+// in no object and rectified to itself; the tip's contact row names the box, the point C on its
+// top face, the face normal +z and the box's contact state 1 (push at one point, Fig. 12).
+static char *trace_frame(hs_scenario *s) {
 	char *text = NULL;
 	size_t size = 0;
 	FILE *out = open_memstream(&text, &size);
@@ -483,27 +478,97 @@ static void test_hand_trace_rows(void **state) {
 	hs_hand_trace_write_header(out);
 	hs_hand_trace_write_frame(out, s);
 	fclose(out);
-	const char *header = "frame,t,hand,point,x,y,z,rx,ry,rz,touching\n";
+	const char *header = "frame,t,kind,hand,index,x,y,z,u,v,w,flag,object,value\n";
 	assert_memory_equal(text, header, strlen(header));
-	int rows = 0;
-	for (const char *p = text; (p = strchr(p, '\n')) && p[1]; ++p)
-		rows++;
-	assert_int_equal(rows, HS_HAND_POINTS);
-	const char *tip = strstr(text, "\n30,0.5,0,7,");
+	return text;
+}
+
+static int count_kind(const char *text, const char *kind) {
+	int n = 0;
+	char key[32];
+	snprintf(key, sizeof key, ",%s,", kind);
+	for (const char *p = text; (p = strstr(p, key)); ++p)
+		n++;
+	return n;
+}
+
+static void test_hand_trace_rows(void **state) {
+	(void)state;
+	hs_error err;
+	hs_scenario *s = hs_scenario_load("scenarios/hand/push_press_down.yaml", &err);
+	assert_non_null(s);
+	for (int f = 0; f < 30; ++f)
+		assert_true(hs_scenario_step(s));
+	char *text = trace_frame(s);
+	assert_int_equal(count_kind(text, "point"), HS_HAND_POINTS);
+	assert_int_equal(count_kind(text, "stylus"), 0); // a hand world
+	const char *tip = strstr(text, "\n30,0.5,point,0,7,");
 	assert_non_null(tip);
 	double x, y, z, rx, ry, rz;
 	int touching;
-	assert_int_equal(sscanf(tip + 1, "30,0.5,0,7,%lf,%lf,%lf,%lf,%lf,%lf,%d", &x, &y, &z, &rx, &ry, &rz, &touching), 7);
+	assert_int_equal(sscanf(tip + 1, "30,0.5,point,0,7,%lf,%lf,%lf,%lf,%lf,%lf,%d", &x, &y, &z, &rx, &ry, &rz, &touching),
+	                 7);
 	assert_near(z, 0.099, 1e-12);
 	assert_near(rz, 0.1, 1e-12);
 	assert_near(rx, x, 1e-12);
 	assert_near(ry, y, 1e-12);
 	assert_int_equal(touching, 1);
-	const char *base = strstr(text, "\n30,0.5,0,0,");
+	const char *base = strstr(text, "\n30,0.5,point,0,0,");
 	assert_non_null(base);
-	assert_int_equal(sscanf(base + 1, "30,0.5,0,0,%lf,%lf,%lf,%lf,%lf,%lf,%d", &x, &y, &z, &rx, &ry, &rz, &touching), 7);
+	assert_int_equal(
+	    sscanf(base + 1, "30,0.5,point,0,0,%lf,%lf,%lf,%lf,%lf,%lf,%d", &x, &y, &z, &rx, &ry, &rz, &touching), 7);
 	assert_true(x == rx && y == ry && z == rz && touching == 0);
+	const char *contact = strstr(text, "\n30,0.5,contact,0,7,");
+	assert_non_null(contact);
+	double nx, ny, nz;
+	int edge, contact_state;
+	char object[16];
+	assert_int_equal(sscanf(contact + 1, "30,0.5,contact,0,7,%lf,%lf,%lf,%lf,%lf,%lf,%d,%15[^,],%d", &x, &y, &z, &nx,
+	                        &ny, &nz, &edge, object, &contact_state),
+	                 9);
+	assert_near(z, 0.1, 1e-12);
+	assert_true(nx == 0.0 && ny == 0.0 && nz == 1.0 && edge == 0);
+	assert_string_equal(object, "box");
+	assert_int_equal(contact_state, HS_CONTACT_PUSH_ONE);
 	free(text);
+	hs_scenario_destroy(s);
+}
+
+// In a spring world: spring/select_slow selects its target while the hand approaches (a candidate
+// row at its G) and, once attached, the spring row runs from the anchor to the object's G with the
+// extension hs_world_spring_state gives; the stylus row carries the button and the attached name.
+static void test_hand_trace_spring(void **state) {
+	(void)state;
+	hs_error err;
+	hs_scenario *s = hs_scenario_load("scenarios/spring/select_slow.yaml", &err);
+	assert_non_null(s);
+	hs_world *w = hs_scenario_world(s);
+	bool saw_candidate = false, saw_spring = false;
+	while (hs_scenario_step(s) && !(saw_candidate && saw_spring)) {
+		char *text = trace_frame(s);
+		assert_int_equal(count_kind(text, "stylus"), 1);
+		hs_spring_state ss;
+		assert_int_equal(hs_world_spring_state(w, &ss), HS_OK);
+		assert_int_equal(count_kind(text, "candidate"), ss.candidate.index1 ? 1 : 0);
+		assert_int_equal(count_kind(text, "spring"), ss.attached.index1 ? 1 : 0);
+		const char *row = strstr(text, ",spring,");
+		if (row) {
+			double ax, ay, az, gx, gy, gz, ext;
+			int flag;
+			char object[16];
+			assert_int_equal(sscanf(row, ",spring,,0,%lf,%lf,%lf,%lf,%lf,%lf,%d,%15[^,],%lf", &ax, &ay, &az, &gx, &gy,
+			                        &gz, &flag, object, &ext),
+			                 9);
+			assert_true(ax == ss.anchor.x && ay == ss.anchor.y && az == ss.anchor.z);
+			assert_true(ext == ss.extension);
+			assert_string_equal(object, "target");
+			assert_non_null(strstr(text, ",stylus,,0,"));
+			saw_spring = true;
+		}
+		saw_candidate = saw_candidate || strstr(text, ",candidate,,0,") != NULL;
+		free(text);
+	}
+	assert_true(saw_candidate && saw_spring);
 	hs_scenario_destroy(s);
 }
 
@@ -1487,6 +1552,7 @@ int main(void) {
 	    cmocka_unit_test(test_load_options),
 	    cmocka_unit_test(test_sweep),
 	    cmocka_unit_test(test_hand_trace_rows),
+	    cmocka_unit_test(test_hand_trace_spring),
 	};
 	return cmocka_run_group_tests_name("scenario", tests, make_temp_dir, remove_temp_dir);
 }

@@ -42,9 +42,11 @@ static const char *const usage_run =
     "with the measured value, and the final state hash.\n"
     "  --out TRAJ.csv     also write the trajectory (one row per object per frame, frame 0 included);\n"
     "                     '-' writes it to stdout (the summary then goes to stderr)\n"
-    "  --hands-out FILE   also write the hands' check points, one row per hand and check point per\n"
-    "                     frame: where the glove and tracker put it (x, y, z), where rectification\n"
-    "                     draws it back to an object's surface (rx, ry, rz), and whether it touches\n"
+    "  --hands-out FILE   also write what the hands and the stylus do, per frame (frame 0 included), one\n"
+    "                     row per thing, its `kind` first: each check point as the glove and tracker\n"
+    "                     put it and as rectification draws it back to a surface, each contact with its\n"
+    "                     object and that object's contact state; in spring worlds the stylus, the\n"
+    "                     spring's ends and extension, the selection candidate (scenarios/README.md)\n"
     "  --save-at FRAME    with --state-out: when frame FRAME (0 to the scenario's frames) has run,\n"
     "  --state-out PATH   write the run's state to PATH (the world, the input noise generator, what\n"
     "                     the expectations captured so far), then run on to the end\n"
@@ -70,10 +72,11 @@ static const char *const usage_sweep =
     "Exit status: 0 every cell and the nominal run pass, 1 any fails, 2 bad input (no robust block too).\n";
 
 static const char *const usage_all =
-    "usage: handspring all [--dir DIR] [--out-dir DIR] [--golden-dir DIR]\n"
+    "usage: handspring all [--dir DIR] [--out-dir DIR] [--golden-dir DIR] [--hands-dir DIR]\n"
     "Runs every scenario below --dir (default: scenarios) and prints a summary table.\n"
     "  --out-dir DIR     write each trajectory to DIR/<name>.csv (subfolders are created)\n"
     "  --golden-dir DIR  write each trajectory as a golden file DIR/<name>.csv (what 'make golden' does)\n"
+    "  --hands-dir DIR   write each scenario's hands and stylus (as run --hands-out) to DIR/<name>.csv\n"
     "Exit status: 0 every scenario passed, 1 one failed, 2 bad input.\n";
 
 static int usage_error(const char *command, const char *usage, const char *fmt, const char *arg) {
@@ -178,16 +181,20 @@ static void output_free(output *o) {
 }
 
 // Runs every frame, writing the trajectory to each open file.
-static void run_scenario(hs_scenario *s, FILE **outs, int out_count) {
+static void run_scenario(hs_scenario *s, FILE **outs, int out_count, FILE *hands) {
 	for (int k = 0; k < out_count; ++k)
 		if (outs[k]) {
 			hs_trajectory_write_header(outs[k]);
 			hs_trajectory_write_frame(outs[k], s);
 		}
-	while (hs_scenario_step(s))
+	hs_hand_trace_write_header(hands);
+	hs_hand_trace_write_frame(hands, s);
+	while (hs_scenario_step(s)) {
 		for (int k = 0; k < out_count; ++k)
 			if (outs[k])
 				hs_trajectory_write_frame(outs[k], s);
+		hs_hand_trace_write_frame(hands, s);
+	}
 }
 
 typedef struct run_options {
@@ -457,7 +464,8 @@ static int cmd_list(int argc, char **argv) {
 }
 
 // `all`'s options; -1 to go on, else the exit status.
-static int all_options(int argc, char **argv, const char **dir, const char **out_dir, const char **golden_dir) {
+static int all_options(int argc, char **argv, const char **dir, const char **out_dir, const char **golden_dir,
+                       const char **hands_dir) {
 	for (int i = 0; i < argc; ++i) {
 		int status = -1;
 		if (is_help(argv[i])) {
@@ -466,7 +474,8 @@ static int all_options(int argc, char **argv, const char **dir, const char **out
 		}
 		if (parse_dir_option(argc, argv, &i, "--dir", dir, &status, "all", usage_all) ||
 		    parse_dir_option(argc, argv, &i, "--out-dir", out_dir, &status, "all", usage_all) ||
-		    parse_dir_option(argc, argv, &i, "--golden-dir", golden_dir, &status, "all", usage_all)) {
+		    parse_dir_option(argc, argv, &i, "--golden-dir", golden_dir, &status, "all", usage_all) ||
+		    parse_dir_option(argc, argv, &i, "--hands-dir", hands_dir, &status, "all", usage_all)) {
 			if (status >= 0)
 				return status;
 			continue;
@@ -477,15 +486,15 @@ static int all_options(int argc, char **argv, const char **dir, const char **out
 	return -1;
 }
 
-// Runs one loaded scenario writing its trajectory to out_dir and golden_dir (either may be NULL);
-// false on a write error (said on stderr).
+// Runs one loaded scenario writing its trajectory to out_dir and golden_dir and its hands and
+// stylus to hands_dir (any may be NULL); false on a write error (said on stderr).
 static bool all_run_one(hs_scenario *s, const char *name, const char *path, const char *out_dir,
-                        const char *golden_dir) {
-	output outs[2];
+                        const char *golden_dir, const char *hands_dir) {
+	output outs[3];
 	memset(outs, 0, sizeof outs);
-	const char *dirs[2] = {out_dir, golden_dir};
+	const char *dirs[3] = {out_dir, golden_dir, hands_dir};
 	bool io_ok = true;
-	for (int k = 0; k < 2 && io_ok; ++k) {
+	for (int k = 0; k < 3 && io_ok; ++k) {
 		if (!dirs[k])
 			continue;
 		char *csv = join_csv(dirs[k], name);
@@ -501,8 +510,8 @@ static bool all_run_one(hs_scenario *s, const char *name, const char *path, cons
 	}
 	FILE *files[2] = {outs[0].file, outs[1].file};
 	if (io_ok)
-		run_scenario(s, files, 2);
-	for (int k = 0; k < 2; ++k) {
+		run_scenario(s, files, 2, outs[2].file);
+	for (int k = 0; k < 3; ++k) {
 		if (!output_close(&outs[k], io_ok) && io_ok) {
 			fprintf(stderr, "handspring: cannot write %s: %s\n", outs[k].path, strerror(errno));
 			io_ok = false;
@@ -538,8 +547,8 @@ static int all_report(hs_scenario *s, const char *name, int width, FILE *log) {
 }
 
 static int cmd_all(int argc, char **argv) {
-	const char *dir = "scenarios", *out_dir = NULL, *golden_dir = NULL;
-	int status = all_options(argc, argv, &dir, &out_dir, &golden_dir);
+	const char *dir = "scenarios", *out_dir = NULL, *golden_dir = NULL, *hands_dir = NULL;
+	int status = all_options(argc, argv, &dir, &out_dir, &golden_dir, &hands_dir);
 	if (status >= 0)
 		return status;
 	hs_catalog catalog;
@@ -567,7 +576,7 @@ static int cmd_all(int argc, char **argv) {
 		hs_scenario *s = hs_scenario_load(catalog.paths[i], &err);
 		if (!s)
 			fprintf(stderr, "%s\n", err.message);
-		if (!s || !all_run_one(s, name, catalog.paths[i], out_dir, golden_dir)) {
+		if (!s || !all_run_one(s, name, catalog.paths[i], out_dir, golden_dir, hands_dir)) {
 			printf("%-*s  %9s  %7s  %11s  %-16s  %s\n", width, name, "-", "-", "-", "-", s ? "WRITE ERROR" : "BAD INPUT");
 			bad++;
 		} else if (all_report(s, name, width, log)) {

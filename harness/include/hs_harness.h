@@ -118,10 +118,13 @@ void hs_trajectory_write_header(FILE *out);
 /// Writes the rows of the current frame of a scenario's world (numbers with 17 significant digits).
 void hs_trajectory_write_frame(FILE *out, hs_scenario *scenario);
 
-/// The hands' check points, one row per hand per check point per frame: the header line
-/// `frame,t,hand,point,x,y,z,rx,ry,rz,touching` (x, y, z where the glove and tracker put the check
-/// point; rx, ry, rz where rectification draws it back to the surface of the object it is in,
-/// hs_world_hand_rectified_points; touching 1 when it touched an object in the last step).
+/// What the hands and the stylus do, one row per thing per frame, the header line
+/// `frame,t,kind,hand,index,x,y,z,u,v,w,flag,object,value`: kind `point` (each hand's check
+/// points as measured, x y z, and as rectified, u v w; flag 1 when touching), `contact` (each
+/// contact of the last step: C, its normal, flag 1 for an edge, the object's name and contact
+/// state), and in spring worlds `stylus` (position, pointing ray, button, attached object, attach
+/// kind), `spring` (anchor, the attached object's G, extension) and `candidate` (its G, its name).
+/// scenarios/README.md gives every column. Nothing is written for a NULL `out`.
 void hs_hand_trace_write_header(FILE *out);
 /// Writes the rows of the current frame (hand h = index in the order added, point 0-19 as
 /// hs_world_hand_points; numbers with 17 significant digits).
