@@ -112,7 +112,7 @@ $(BUILD)/pic/harness/%.o: harness/%.c $(HARNESS_H) $(wildcard model/include/*.h)
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS_HARNESS) $(PIC_FLAGS) -c $< -o $@
 
-$(BUILD)/obj/tool/%.o: tool/%.c $(wildcard model/include/*.h harness/include/*.h) | deps
+$(BUILD)/obj/tool/%.o: tool/%.c $(wildcard tool/*.h model/include/*.h harness/include/*.h) | deps
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS_ALL) -c $< -o $@
 
@@ -149,8 +149,11 @@ $(HSOLIB): $(HLIB_PIC_OBJ) $(SOLIB) $(BUILD)/pic/handspring-harness.map
 	ln -sf $(notdir $@) $(BUILD)/libhandspring-harness.so.$(HS_SOVERSION)
 	ln -sf libhandspring-harness.so.$(HS_SOVERSION) $(BUILD)/libhandspring-harness.so
 
-$(TOOL): $(BUILD)/obj/tool/handspring.o $(LIBS)
+$(TOOL): $(BUILD)/obj/tool/handspring.o $(BUILD)/obj/tool/view.o $(LIBS)
 	$(CC) $(LDFLAGS) -o $@ $^ $(LDLIBS_ALL)
+
+# test_view reads the pictures `handspring view` draws with libpng
+$(BUILD)/tests/test_view: LDLIBS += $$(pkg-config --libs libpng)
 
 $(BUILD)/tests/%: $(BUILD)/obj/tests/%.o $(LIBS)
 	@mkdir -p $(dir $@)

@@ -278,6 +278,11 @@ hs_object_id hs_world_object_at(const hs_world *world, int i) {
 	return world ? hs_object_handle(world, i) : none;
 }
 
+hs_shape_id hs_world_object_shape(const hs_world *world, hs_object_id id) {
+	int i = world ? hs_object_index(world, id) : -1;
+	return i < 0 ? (hs_shape_id){0, 0, 0} : hs_world_shape_at(world, world->bodies[i].shape);
+}
+
 static bool body_is_finite(const hs_body *body) {
 	return hs_vec3_is_finite(body->pos) && hs_vec3_is_finite(body->prev) && hs_quat_is_finite(body->rot) &&
 	       hs_quat_is_finite(body->spin);

@@ -18,6 +18,7 @@
 #include <sys/stat.h>
 
 #include "hs_harness.h"
+#include "view.h"
 
 enum { EXIT_PASS = 0, EXIT_FAILED = 1, EXIT_BAD_INPUT = 2 };
 
@@ -29,6 +30,8 @@ static const char *const usage_main =
     "                                                     run one scenario and check its expectations\n"
     "  all [--dir DIR] [--out-dir DIR] [--golden-dir DIR] run every scenario of a catalog\n"
     "  sweep FILE                                         run a scenario's robust matrix (dt x noise seeds)\n"
+    "  view FILE [--gif OUT] [--strip OUT --at T,...] [--html OUT]\n"
+    "                                                     draw a scenario in 3-D with gnuplot\n"
     "Run 'handspring <command> --help' for the options of a command.\n";
 
 static const char *const usage_list =
@@ -643,5 +646,7 @@ int main(int argc, char **argv) {
 		return cmd_all(argc - 2, argv + 2);
 	if (strcmp(command, "sweep") == 0)
 		return cmd_sweep(argc - 2, argv + 2);
+	if (strcmp(command, "view") == 0)
+		return hs_view_main(argc - 2, argv + 2);
 	return usage_error(NULL, usage_main, "unknown command '%s'", command);
 }

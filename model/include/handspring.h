@@ -242,6 +242,9 @@ hs_status hs_world_object_state(const hs_world *world, hs_object_id id, hs_objec
 int hs_world_object_count(const hs_world *world);
 /// The handle of the i-th object (0 ≤ i < count), in creation order.
 hs_object_id hs_world_object_at(const hs_world *world, int i);
+/// The shape an object was made of (its faces and vertices: hs_world_shape); the null handle for
+/// an invalid object handle.
+hs_shape_id hs_world_object_shape(const hs_world *world, hs_object_id id);
 
 /// Advances the world by one frame of dt. Never allocates.
 hs_status hs_world_step(hs_world *world);

@@ -1,0 +1,470 @@
+// view.c — `handspring view FILE`: a scenario drawn in 3-D by gnuplot (splot with polygons), as an
+// animated GIF, a filmstrip PNG of chosen times and an HTML page (gnuplot's canvas terminal) in
+// which the view turns with the mouse (issue 13, item 2).
+//
+// The scenario runs once; the frames to draw are written to a data file in a temporary folder as
+// gnuplot blocks, then one gnuplot script draws every output from it. Per frame: each object's
+// faces as polygons shaded by the angle to a light (gnuplot 5.4 cannot colour polygons from a
+// column, so the faces go to VIEW_SHADES blocks per contact-state colour, each drawn in its
+// colour), the hand's 15 finger segments as thick lines and its palm as a polygon, the contact
+// points coloured by their object's contact state, the stylus and the spring as a coil; the floor
+// and the walls once. The title gives the time and the contact states.
+#include <errno.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "hs_harness.h"
+#include "view.h"
+
+const char *const hs_view_usage =
+    "usage: handspring view FILE [--gif OUT.gif] [--every N] [--strip OUT.png --at T1,T2,...]\n"
+    "                            [--html OUT.html] [--html-at T] [--size WxH]\n"
+    "Runs the scenario FILE and draws it with gnuplot in 3-D: the objects as their shaded polyhedra,\n"
+    "coloured by contact state (blue none, orange push, green grasp, purple push at several points),\n"
+    "the hand's finger segments and palm, the contact points, the stylus and the spring as a coil, the\n"
+    "floor; the time and the contact states in the title. Progress goes to stderr.\n"
+    "  --gif OUT.gif     an animated GIF of the run, every frame or every Nth (--every N)\n"
+    "  --strip OUT.png   a filmstrip: the frames nearest the times --at T1,T2,... (s) side by side\n"
+    "  --html OUT.html   a page (gnuplot's canvas terminal) in which the view turns with the mouse:\n"
+    "                    the last frame, or the one nearest --html-at T\n"
+    "  --size WxH        pixels per picture (default 640x480)\n"
+    "Exit status: 0 written, 2 bad input or gnuplot failed (one error line on stderr).\n";
+
+#define VIEW_SHADES 6
+#define VIEW_COLOURS 4 // objects by contact state: none, push, grasp, push at several points
+#define VIEW_BLOCKS (VIEW_COLOURS * VIEW_SHADES + 4) // + hand lines, palm, contacts, stylus
+#define VIEW_MAX_TIMES 16
+
+static const char *const state_rgb[VIEW_COLOURS][2] = { // [state] = {dark, light}
+    {"#2b4a6f", "#9cc3ea"}, {"#8a4b12", "#f3b072"}, {"#1f6b2c", "#8fdc98"}, {"#7a2a6b", "#e59fd6"}};
+static const char *const state_name[VIEW_COLOURS] = {"none", "push", "grasp", "push at several points"};
+
+typedef struct view_opts {
+	const char *file, *gif, *strip, *html;
+	int every;             // GIF: every Nth frame
+	double at[VIEW_MAX_TIMES];
+	int at_count;          // filmstrip times (s)
+	double html_at;        // s; < 0: the last frame
+	int width, height;
+} view_opts;
+
+typedef struct view_run {
+	FILE *data;
+	long records;          // frames written
+	hs_vec3 lo, hi;        // bounds of everything drawn
+	char (*titles)[160];
+	long *frames;          // frame of each record
+	long capacity;
+} view_run;
+
+static void grow(view_run *v, hs_vec3 p) {
+	v->lo = hs_v3(fmin(v->lo.x, p.x), fmin(v->lo.y, p.y), fmin(v->lo.z, p.z));
+	v->hi = hs_v3(fmax(v->hi.x, p.x), fmax(v->hi.y, p.y), fmax(v->hi.z, p.z));
+}
+
+static void point(view_run *v, hs_vec3 p) {
+	fprintf(v->data, "%.9g %.9g %.9g\n", p.x, p.y, p.z);
+	grow(v, p);
+}
+
+static void end_block(FILE *f, bool empty) {
+	if (empty)
+		fputs("NaN NaN NaN\n", f);
+	fputs("\n\n", f);
+}
+
+// The faces of every object, into VIEW_COLOURS × VIEW_SHADES blocks.
+static void objects(view_run *v, hs_world *w) {
+	hs_vec3 light = hs_normalize(hs_v3(-0.4, -0.6, 1.0));
+	for (int c = 0; c < VIEW_COLOURS; ++c)
+		for (int s = 0; s < VIEW_SHADES; ++s) {
+			bool empty = true;
+			for (int i = 0; i < hs_world_object_count(w); ++i) {
+				hs_object_id id = hs_world_object_at(w, i);
+				hs_object_state st;
+				hs_world_object_state(w, id, &st);
+				const hs_shape *shape = hs_world_shape(w, hs_world_object_shape(w, id));
+				if (!shape || (int)st.contact != c)
+					continue;
+				for (int f = 0; f < shape->face_count; ++f) {
+					const hs_face *face = &shape->faces[f];
+					double lit = fmax(0.0, hs_dot(hs_quat_rotate(st.orientation, face->normal), light));
+					int shade = (int)(lit * (VIEW_SHADES - 1) + 0.5);
+					if (shade != s)
+						continue;
+					for (int k = 0; k < face->index_count; ++k) {
+						hs_vec3 p = shape->vertices[shape->face_vertices[face->first_index + k]];
+						point(v, hs_add(st.position, hs_quat_rotate(st.orientation, p)));
+					}
+					fputc('\n', v->data);
+					empty = false;
+				}
+			}
+			end_block(v->data, empty);
+		}
+}
+
+// The hands: 15 segments (lines), the palm through the fingers' bases, the contacts.
+static void hands(view_run *v, hs_world *w) {
+	bool empty = true;
+	for (int h = 0;; ++h) {
+		hs_hand_id id = hs_world_hand_at(w, h);
+		hs_vec3 p[HS_HAND_POINTS];
+		if (id.index1 == 0 || hs_world_hand_points(w, id, p) != HS_OK)
+			break;
+		for (int f = 0; f < 5; ++f) {
+			for (int j = 0; j < 4; ++j)
+				point(v, p[f * 4 + j]);
+			fputc('\n', v->data);
+		}
+		empty = false;
+	}
+	end_block(v->data, empty);
+	empty = true;
+	for (int h = 0;; ++h) {
+		hs_hand_id id = hs_world_hand_at(w, h);
+		hs_vec3 p[HS_HAND_POINTS];
+		if (id.index1 == 0 || hs_world_hand_points(w, id, p) != HS_OK)
+			break;
+		for (int f = 0; f < 5; ++f)
+			point(v, p[f * 4]);
+		fputc('\n', v->data);
+		empty = false;
+	}
+	end_block(v->data, empty);
+	hs_contact cs[256];
+	int n = hs_world_contacts(w, cs, 256);
+	for (int k = 0; k < n && k < 256; ++k) {
+		hs_object_state st;
+		hs_world_object_state(w, cs[k].object, &st);
+		fprintf(v->data, "%.9g %.9g %.9g %d\n", cs[k].point.x, cs[k].point.y, cs[k].point.z, (int)st.contact);
+	}
+	end_block(v->data, n == 0);
+}
+
+// The stylus (its pointing ray, 10 cm) and the spring as a coil from its anchor to G.
+static void stylus(view_run *v, hs_world *w, hs_spring_state *ss, bool *attached) {
+	*attached = false;
+	if (!hs_world_springs_enabled(w) || hs_world_spring_state(w, ss) != HS_OK) {
+		end_block(v->data, true);
+		return;
+	}
+	point(v, ss->stylus);
+	point(v, hs_add(ss->stylus, hs_scale(hs_quat_rotate(ss->stylus_orientation, hs_v3(1, 0, 0)), 0.1)));
+	fputc('\n', v->data);
+	hs_object_state st;
+	if (ss->attached.index1 && hs_world_object_state(w, ss->attached, &st) == HS_OK) {
+		*attached = true;
+		hs_vec3 a = ss->anchor, d = hs_sub(st.position, a);
+		double len = hs_length(d);
+		hs_vec3 u = len > 0.0 ? hs_scale(d, 1.0 / len) : hs_v3(0, 0, -1);
+		hs_vec3 e1 = hs_normalize(hs_cross(u, fabs(u.x) < 0.9 ? hs_v3(1, 0, 0) : hs_v3(0, 1, 0))), e2 = hs_cross(u, e1);
+		double r = 0.01;
+		for (int k = 0; k <= 96; ++k) { // 8 turns
+			double s = (double)k / 96.0, phi = 2.0 * HS_PI * 8.0 * s;
+			point(v, hs_add(hs_add(a, hs_scale(d, s)), hs_add(hs_scale(e1, r * cos(phi)), hs_scale(e2, r * sin(phi)))));
+		}
+		fputc('\n', v->data);
+	}
+	end_block(v->data, false);
+}
+
+// One frame: its blocks and its title.
+static void record(view_run *v, hs_scenario *s) {
+	hs_world *w = hs_scenario_world(s);
+	if (v->records == v->capacity) {
+		long cap = v->capacity ? 2 * v->capacity : 256;
+		void *t = realloc(v->titles, (size_t)cap * sizeof *v->titles), *f = realloc(v->frames, (size_t)cap * sizeof *v->frames);
+		if (!t || !f) {
+			fprintf(stderr, "handspring view: out of memory\n");
+			exit(2);
+		}
+		v->titles = t;
+		v->frames = f;
+		v->capacity = cap;
+	}
+	objects(v, w);
+	hands(v, w);
+	hs_spring_state ss;
+	bool attached;
+	stylus(v, w, &ss, &attached);
+	long frame = hs_world_frame(w);
+	char *title = v->titles[v->records];
+	int len = snprintf(title, 160, "t = %.3f s", (double)frame * hs_world_dt(w));
+	for (int i = 0; i < hs_world_object_count(w) && len < 150; ++i) {
+		hs_object_state st;
+		hs_world_object_state(w, hs_world_object_at(w, i), &st);
+		if (st.contact != HS_CONTACT_NONE)
+			len += snprintf(title + len, (size_t)(160 - len), "  %s: %s", hs_scenario_object_name(s, i),
+			                attached ? "spring" : state_name[st.contact]);
+	}
+	if (attached && len < 150)
+		snprintf(title + len, (size_t)(160 - len), "  ext %.3f m", ss.extension);
+	v->frames[v->records++] = frame;
+}
+
+static void splot(FILE *g, const char *data, long r) {
+	long base = r * VIEW_BLOCKS;
+	fputs("splot ", g);
+	for (int c = 0; c < VIEW_COLOURS; ++c)
+		for (int s = 0; s < VIEW_SHADES; ++s) {
+			int b = c * VIEW_SHADES + s;
+			fprintf(g, "'%s' index %ld with polygons fs solid 1.0 noborder fc rgb mix(%d) notitle, ", data, base + b,
+			        c * VIEW_SHADES + s);
+		}
+	long h = base + VIEW_COLOURS * VIEW_SHADES;
+	fprintf(g, "'%s' index %ld with lines lw 5 lc rgb '#c98e6b' notitle, ", data, h);
+	fprintf(g, "'%s' index %ld with polygons fs solid 1.0 noborder fc rgb '#e0b392' notitle, ", data, h + 1);
+	fprintf(g, "'%s' index %ld using 1:2:3:(col($4)) with points pt 7 ps 1.2 lc rgb variable notitle, ", data, h + 2);
+	fprintf(g, "'%s' index %ld with lines lw 2 lc rgb '#333333' notitle, ", data, h + 3);
+	fprintf(g, "floor with lines lw 0.5 lc rgb '#b0b0b0' notitle\n");
+}
+
+static void script(FILE *g, const view_run *v, const char *name) {
+	hs_vec3 c = hs_scale(hs_add(v->lo, v->hi), 0.5), e = hs_sub(v->hi, v->lo);
+	double half = 0.6 * fmax(fmax(e.x, e.y), fmax(e.z, 0.1));
+	fprintf(g, "set encoding utf8\nset view 62, 28\nset view equal xyz\nunset border\nunset tics\nunset key\n");
+	fprintf(g, "set xrange [%.9g:%.9g]\nset yrange [%.9g:%.9g]\nset zrange [%.9g:%.9g]\nset xyplane at 0\n", c.x - half,
+	        c.x + half, c.y - half, c.y + half, fmin(0.0, c.z - half), c.z + half);
+	fprintf(g, "set pm3d depthorder\narray col[4] = [%s, %s, %s, %s]\n", "0x3b6ea5", "0xe07b22", "0x2e9e44", "0xb03a9a");
+	fprintf(g, "array shade[%d]\n", VIEW_COLOURS * VIEW_SHADES);
+	for (int k = 0; k < VIEW_COLOURS; ++k) { // dark to light per contact state
+		unsigned dark = (unsigned)strtoul(state_rgb[k][0] + 1, NULL, 16), light = (unsigned)strtoul(state_rgb[k][1] + 1, NULL, 16);
+		for (int s = 0; s < VIEW_SHADES; ++s) {
+			double t = (double)s / (VIEW_SHADES - 1);
+			unsigned rgb = 0;
+			for (int ch = 16; ch >= 0; ch -= 8) {
+				double a = (double)(dark >> ch & 255u), b = (double)(light >> ch & 255u);
+				rgb |= (unsigned)(a + t * (b - a) + 0.5) << ch;
+			}
+			fprintf(g, "shade[%d] = %u\n", k * VIEW_SHADES + s + 1, rgb);
+		}
+	}
+	fputs("mix(i) = shade[i + 1]\ncol(s) = col[int(s) + 1]\n", g);
+	// the floor as a grid of lines (drawn over nothing: a filled floor would hide what rests on it
+	// in the depth sort), 10 lines each way at a round spacing
+	double step = pow(10.0, floor(log10(2.0 * half / 10.0)));
+	while (2.0 * half / step > 12.0)
+		step *= 2.0;
+	double x0 = step * floor((c.x - half) / step), y0 = step * floor((c.y - half) / step);
+	fputs("$floor << EOD\n", g);
+	for (double x = x0; x <= c.x + half + 1e-9; x += step)
+		fprintf(g, "%.9g %.9g 0\n%.9g %.9g 0\n\n", x, c.y - half, x, c.y + half);
+	for (double y = y0; y <= c.y + half + 1e-9; y += step)
+		fprintf(g, "%.9g %.9g 0\n%.9g %.9g 0\n\n", c.x - half, y, c.x + half, y);
+	fputs("EOD\nfloor = '$floor'\n", g);
+	fputs("name = \"", g);
+	for (const char *p = name; *p; ++p)
+		fputc(*p == '"' || *p == '\\' ? '_' : *p, g);
+	fputs("\"\n", g);
+	fputs("array title[", g);
+	fprintf(g, "%ld]\n", v->records);
+	for (long r = 0; r < v->records; ++r) {
+		fprintf(g, "title[%ld] = \"", r + 1);
+		for (const char *p = v->titles[r]; *p; ++p)
+			fputc(*p == '"' || *p == '\\' ? '_' : *p, g);
+		fputs("\"\n", g);
+	}
+}
+
+// The record nearest time t.
+static long nearest(const view_run *v, double t, double dt) {
+	long best = 0;
+	for (long r = 1; r < v->records; ++r)
+		if (fabs((double)v->frames[r] * dt - t) < fabs((double)v->frames[best] * dt - t))
+			best = r;
+	return best;
+}
+
+static bool wanted(const view_opts *o, long frame, long frames, double dt) {
+	if (o->gif && frame % o->every == 0)
+		return true;
+	for (int k = 0; k < o->at_count; ++k)
+		if (llround(o->at[k] / dt) == frame || (frame == frames && llround(o->at[k] / dt) > frames))
+			return true;
+	return o->html && (o->html_at < 0.0 ? frame == frames : llround(o->html_at / dt) == frame);
+}
+
+static int draw(const view_opts *o, const view_run *v, const char *data, hs_world *w, const char *name) {
+	FILE *g = popen("gnuplot", "w");
+	if (!g) {
+		fprintf(stderr, "handspring view: cannot start gnuplot: %s\n", strerror(errno));
+		return 2;
+	}
+	script(g, v, name);
+	double dt = hs_world_dt(w);
+	if (o->gif) {
+		int delay = (int)fmax(2.0, 100.0 * dt * o->every + 0.5);
+		fprintf(g, "set terminal gif animate delay %d size %d,%d\nset output '%s'\n", delay, o->width, o->height, o->gif);
+		long n = 0;
+		for (long r = 0; r < v->records; ++r)
+			if (v->frames[r] % o->every == 0) {
+				fprintf(g, "set title name.'   '.title[%ld] noenhanced\n", r + 1);
+				splot(g, data, r);
+				if (++n % 25 == 0)
+					fprintf(g, "print 'handspring view: %ld GIF frames drawn'\n", n);
+			}
+		fputs("set output\n", g);
+	}
+	if (o->strip) {
+		fprintf(g, "set terminal pngcairo size %d,%d\nset output '%s'\nset multiplot layout 1,%d\n", o->width * o->at_count,
+		        o->height, o->strip, o->at_count);
+		for (int k = 0; k < o->at_count; ++k) {
+			long r = nearest(v, o->at[k], dt);
+			fprintf(g, "set title title[%ld] noenhanced\n", r + 1);
+			splot(g, data, r);
+		}
+		fputs("unset multiplot\nset output\n", g);
+	}
+	if (o->html) {
+		long r = o->html_at < 0.0 ? v->records - 1 : nearest(v, o->html_at, dt);
+		fprintf(g, "set terminal canvas standalone mousing size %d,%d\nset output '%s'\n", o->width, o->height, o->html);
+		fprintf(g, "set title name.'   '.title[%ld] noenhanced\n", r + 1);
+		splot(g, data, r);
+		fputs("set output\n", g);
+	}
+	int rc = pclose(g);
+	if (rc != 0) {
+		fprintf(stderr, "handspring view: gnuplot failed (status %d)\n", rc);
+		return 2;
+	}
+	return 0;
+}
+
+static int view_usage(const char *fmt, const char *arg) {
+	fprintf(stderr, "handspring view: ");
+	fprintf(stderr, fmt, arg);
+	fprintf(stderr, "\n%s", hs_view_usage);
+	return 2;
+}
+
+static bool parse_times(const char *text, view_opts *o) {
+	o->at_count = 0;
+	const char *p = text;
+	while (*p && o->at_count < VIEW_MAX_TIMES) {
+		char *end;
+		double t = strtod(p, &end);
+		if (end == p || !(t >= 0.0))
+			return false;
+		o->at[o->at_count++] = t;
+		p = *end == ',' ? end + 1 : end;
+		if (*end && *end != ',')
+			return false;
+	}
+	return o->at_count > 0 && !*p;
+}
+
+static int parse(int argc, char **argv, view_opts *o) {
+	memset(o, 0, sizeof *o);
+	o->every = 1;
+	o->html_at = -1.0;
+	o->width = 640;
+	o->height = 480;
+	for (int i = 0; i < argc; ++i) {
+		const char *a = argv[i], *val = i + 1 < argc ? argv[i + 1] : NULL;
+		if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
+			fputs(hs_view_usage, stdout);
+			return 0;
+		}
+		if (a[0] != '-') {
+			if (o->file)
+				return view_usage("unexpected argument '%s'", a);
+			o->file = a;
+			continue;
+		}
+		if (!val)
+			return view_usage("%s needs a value", a);
+		++i;
+		if (strcmp(a, "--gif") == 0)
+			o->gif = val;
+		else if (strcmp(a, "--strip") == 0)
+			o->strip = val;
+		else if (strcmp(a, "--html") == 0)
+			o->html = val;
+		else if (strcmp(a, "--every") == 0) {
+			char *end;
+			long n = strtol(val, &end, 10);
+			if (*end || n < 1 || n > 100000)
+				return view_usage("--every needs a whole number of frames within [1, 100000], got '%s'", val);
+			o->every = (int)n;
+		} else if (strcmp(a, "--at") == 0) {
+			if (!parse_times(val, o))
+				return view_usage("--at needs times in s, comma-separated (at most 16, each >= 0), got '%s'", val);
+		} else if (strcmp(a, "--html-at") == 0) {
+			char *end;
+			o->html_at = strtod(val, &end);
+			if (*end || !(o->html_at >= 0.0))
+				return view_usage("--html-at needs a time >= 0 s, got '%s'", val);
+		} else if (strcmp(a, "--size") == 0) {
+			if (sscanf(val, "%dx%d", &o->width, &o->height) != 2 || o->width < 64 || o->height < 64 ||
+			    o->width > 4096 || o->height > 4096)
+				return view_usage("--size needs WIDTHxHEIGHT in pixels, each within [64, 4096], got '%s'", val);
+		} else {
+			return view_usage("unknown option '%s'", a);
+		}
+	}
+	if (!o->file)
+		return view_usage("%s", "missing the scenario FILE");
+	if (!o->gif && !o->strip && !o->html)
+		return view_usage("%s", "give at least one of --gif, --strip, --html");
+	if (o->strip && o->at_count == 0)
+		return view_usage("%s", "--strip needs --at T1,T2,... (the times to show)");
+	return -1;
+}
+
+int hs_view_main(int argc, char **argv) {
+	view_opts o;
+	int status = parse(argc, argv, &o);
+	if (status >= 0)
+		return status;
+	hs_error err;
+	hs_scenario *s = hs_scenario_load(o.file, &err);
+	if (!s) {
+		fprintf(stderr, "%s\n", err.message);
+		return 2;
+	}
+	char dir[] = "/tmp/handspring-view-XXXXXX";
+	if (!mkdtemp(dir)) {
+		fprintf(stderr, "handspring view: cannot make a temporary folder: %s\n", strerror(errno));
+		hs_scenario_destroy(s);
+		return 2;
+	}
+	char data[64];
+	snprintf(data, sizeof data, "%s/frames.dat", dir);
+	view_run v;
+	memset(&v, 0, sizeof v);
+	v.lo = hs_v3(INFINITY, INFINITY, INFINITY);
+	v.hi = hs_v3(-INFINITY, -INFINITY, -INFINITY);
+	v.data = fopen(data, "w");
+	if (!v.data) {
+		fprintf(stderr, "handspring view: cannot write %s: %s\n", data, strerror(errno));
+		rmdir(dir);
+		hs_scenario_destroy(s);
+		return 2;
+	}
+	hs_world *w = hs_scenario_world(s);
+	long frames = hs_scenario_frame_count(s);
+	double dt = hs_world_dt(w);
+	fprintf(stderr, "handspring view: running %s, %ld frames\n", o.file, frames);
+	if (wanted(&o, 0, frames, dt))
+		record(&v, s);
+	while (hs_scenario_step(s))
+		if (wanted(&o, hs_world_frame(w), frames, dt))
+			record(&v, s);
+	fclose(v.data);
+	fprintf(stderr, "handspring view: drawing %ld frames with gnuplot\n", v.records);
+	status = draw(&o, &v, data, w, hs_scenario_name(s));
+	if (!getenv("HS_VIEW_KEEP")) { // (debugging: keep the data and the folder)
+		remove(data);
+		rmdir(dir);
+	}
+	free(v.titles);
+	free(v.frames);
+	hs_scenario_destroy(s);
+	if (status == 0)
+		fprintf(stderr, "handspring view: wrote%s%s%s%s%s%s\n", o.gif ? " " : "", o.gif ? o.gif : "", o.strip ? " " : "",
+		        o.strip ? o.strip : "", o.html ? " " : "", o.html ? o.html : "");
+	return status;
+}
