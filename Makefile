@@ -87,7 +87,7 @@ else
 SO_LDFLAGS := -Wl,--no-undefined
 endif
 
-.PHONY: all shared tool deps check check-core check-readme check-resume check-sweep run golden bench plots install uninstall clean
+.PHONY: all shared tool deps check check-core check-readme check-resume check-sweep run golden bench plots figures install uninstall clean
 
 all: $(LIB) $(HLIB) $(SOLIBS) $(TOOL)
 shared: $(SOLIBS)
@@ -180,7 +180,8 @@ check: deps
 	@$(MAKE) --no-print-directory check-resume
 	@sh scripts/layout_check.sh
 	@$(MAKE) --no-print-directory check-sweep
-	@echo "check: all suites passed (plain and ASan+UBSan, reliability, README examples, resume, layout, the hand scenarios' robustness sweep)"
+	@$(MAKE) --no-print-directory figures
+	@echo "check: all suites passed (plain and ASan+UBSan, reliability, README examples, resume, layout, the hand scenarios' robustness sweep, the papers' figures)"
 
 # Save half-way and resume every catalog scenario: the rest of the run must be byte-identical.
 check-resume: all
@@ -189,6 +190,10 @@ check-resume: all
 # Real input (issue 10; part of make check): every hand scenario's robust sweep (12-120 frames/s x
 # 10 noise seeds, in process: seconds) passes in every cell, and none lacks its robust block;
 # prints the table.
+# The papers' pictures as filmstrips of catalog scenarios (issue 13): build/figures/*.png
+figures: all
+	@sh scripts/figures.sh $(TOOL) $(BUILD)/figures
+
 check-sweep: all
 	@sh scripts/sweep_catalog.sh $(TOOL) scenarios/hand
 

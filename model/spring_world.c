@@ -85,6 +85,13 @@ hs_status hs_world_enable_springs(hs_world *world, const hs_spring_def *def) {
 
 bool hs_world_springs_enabled(const hs_world *world) { return world && world->spring; }
 
+hs_status hs_world_spring_def(const hs_world *world, hs_spring_def *out) {
+	if (!world || !world->spring || !out)
+		return HS_ERR_INVALID_ARGUMENT;
+	*out = world->spring->def;
+	return HS_OK;
+}
+
 hs_status hs_world_set_stylus(hs_world *world, hs_vec3 position, hs_quat orientation, bool button) {
 	if (!world || !world->spring || !hs_vec3_is_finite(position) || !hs_quat_is_finite(orientation) ||
 	    fabs(sqrt(hs_quat_dot(orientation, orientation)) - 1.0) > 1e-6)

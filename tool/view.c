@@ -219,13 +219,13 @@ static void splot(FILE *g, const char *data, long r) {
 	fprintf(g, "'%s' index %ld with polygons fs solid 1.0 noborder fc rgb '#e0b392' notitle, ", data, h + 1);
 	fprintf(g, "'%s' index %ld using 1:2:3:(col($4)) with points pt 7 ps 1.2 lc rgb variable notitle, ", data, h + 2);
 	fprintf(g, "'%s' index %ld with lines lw 2 lc rgb '#333333' notitle, ", data, h + 3);
-	fprintf(g, "floor with lines lw 0.5 lc rgb '#b0b0b0' notitle\n");
+	fprintf(g, "floor with lines lw 0.5 lc rgb '#b0b0b0' notitle, walls with lines lw 1.5 lc rgb '#808080' notitle\n");
 }
 
-static void script(FILE *g, const view_run *v, const char *name) {
+static void script(FILE *g, const view_run *v, const char *name, const hs_world *w) {
 	hs_vec3 c = hs_scale(hs_add(v->lo, v->hi), 0.5), e = hs_sub(v->hi, v->lo);
 	double half = 0.6 * fmax(fmax(e.x, e.y), fmax(e.z, 0.1));
-	fprintf(g, "set encoding utf8\nset view 62, 28\nset view equal xyz\nunset border\nunset tics\nunset key\n");
+	fprintf(g, "set encoding utf8\nset view 62, 28, 1.45\nset view equal xyz\nunset border\nunset tics\nunset key\n");
 	fprintf(g, "set xrange [%.9g:%.9g]\nset yrange [%.9g:%.9g]\nset zrange [%.9g:%.9g]\nset xyplane at 0\n", c.x - half,
 	        c.x + half, c.y - half, c.y + half, fmin(0.0, c.z - half), c.z + half);
 	fprintf(g, "set pm3d depthorder\narray col[4] = [%s, %s, %s, %s]\n", "0x3b6ea5", "0xe07b22", "0x2e9e44", "0xb03a9a");
@@ -248,13 +248,30 @@ static void script(FILE *g, const view_run *v, const char *name) {
 	double step = pow(10.0, floor(log10(2.0 * half / 10.0)));
 	while (2.0 * half / step > 12.0)
 		step *= 2.0;
-	double x0 = step * floor((c.x - half) / step), y0 = step * floor((c.y - half) / step);
+	double x0 = step * ceil((c.x - half) / step), y0 = step * ceil((c.y - half) / step);
 	fputs("$floor << EOD\n", g);
 	for (double x = x0; x <= c.x + half + 1e-9; x += step)
 		fprintf(g, "%.9g %.9g 0\n%.9g %.9g 0\n\n", x, c.y - half, x, c.y + half);
 	for (double y = y0; y <= c.y + half + 1e-9; y += step)
 		fprintf(g, "%.9g %.9g 0\n%.9g %.9g 0\n\n", c.x - half, y, c.x + half, y);
 	fputs("EOD\nfloor = '$floor'\n", g);
+	// the walls of a spring world (§4.5): their outlines, 0.3 m high
+	hs_spring_def sd;
+	fputs("$walls << EOD\n", g);
+	if (hs_world_spring_def(w, &sd) == HS_OK && sd.walls.enabled) {
+		double xs[5] = {sd.walls.x_min, sd.walls.x_max, sd.walls.x_max, sd.walls.x_min, sd.walls.x_min};
+		double ys[5] = {sd.walls.y_min, sd.walls.y_min, sd.walls.y_max, sd.walls.y_max, sd.walls.y_min};
+		for (int z = 0; z < 2; ++z) {
+			for (int k = 0; k < 5; ++k)
+				fprintf(g, "%.9g %.9g %g\n", xs[k], ys[k], 0.3 * z);
+			fputs("\n", g);
+		}
+		for (int k = 0; k < 4; ++k)
+			fprintf(g, "%.9g %.9g 0\n%.9g %.9g 0.3\n\n", xs[k], ys[k], xs[k], ys[k]);
+	} else {
+		fputs("NaN NaN NaN\n", g);
+	}
+	fputs("EOD\nwalls = '$walls'\n", g);
 	fputs("name = \"", g);
 	for (const char *p = name; *p; ++p)
 		fputc(*p == '"' || *p == '\\' ? '_' : *p, g);
@@ -293,7 +310,7 @@ static int draw(const view_opts *o, const view_run *v, const char *data, hs_worl
 		fprintf(stderr, "handspring view: cannot start gnuplot: %s\n", strerror(errno));
 		return 2;
 	}
-	script(g, v, name);
+	script(g, v, name, w);
 	double dt = hs_world_dt(w);
 	if (o->gif) {
 		int delay = (int)fmax(2.0, 100.0 * dt * o->every + 0.5);
@@ -445,6 +462,11 @@ int hs_view_main(int argc, char **argv) {
 		return 2;
 	}
 	hs_world *w = hs_scenario_world(s);
+	hs_spring_def sd;
+	if (hs_world_spring_def(w, &sd) == HS_OK && sd.walls.enabled) { // the walls in view
+		grow(&v, hs_v3(sd.walls.x_min, sd.walls.y_min, 0.0));
+		grow(&v, hs_v3(sd.walls.x_max, sd.walls.y_max, 0.3));
+	}
 	long frames = hs_scenario_frame_count(s);
 	double dt = hs_world_dt(w);
 	fprintf(stderr, "handspring view: running %s, %ld frames\n", o.file, frames);

@@ -520,6 +520,9 @@ hs_spring_def hs_default_spring_def(void);
 hs_status hs_world_enable_springs(hs_world *world, const hs_spring_def *def);
 /// True when the world runs the spring model.
 bool hs_world_springs_enabled(const hs_world *world);
+/// The spring model's definition (walls, friction, ...) as enabled; HS_ERR_INVALID_ARGUMENT when
+/// the world does not run it or out is NULL.
+hs_status hs_world_spring_def(const hs_world *world, hs_spring_def *out);
 
 /// The stylus pose (m, unit quaternion) and button at the end of the next frame.
 hs_status hs_world_set_stylus(hs_world *world, hs_vec3 position, hs_quat orientation, bool button);
