@@ -29,7 +29,9 @@ void hs_trajectory_write_header(FILE *out) {
 		fputs(TRAJECTORY_HEADER "\n", out);
 }
 
-void hs_trajectory_write_frame(FILE *out, hs_scenario *scenario) {
+void hs_trajectory_write_frame(FILE *out, hs_scenario *scenario) { hs_trajectory_write_selected(out, scenario, NULL); }
+
+void hs_trajectory_write_selected(FILE *out, hs_scenario *scenario, const uint8_t *selected) {
 	hs_world *world = hs_scenario_world(scenario);
 	if (!out || !world)
 		return;
@@ -38,6 +40,8 @@ void hs_trajectory_write_frame(FILE *out, hs_scenario *scenario) {
 	uint64_t hash = hs_world_hash(world);
 	int n = hs_world_object_count(world);
 	for (int i = 0; i < n; ++i) {
+		if (selected && !selected[i])
+			continue;
 		hs_object_state st;
 		memset(&st, 0, sizeof st);
 		hs_world_object_state(world, hs_world_object_at(world, i), &st);

@@ -14,7 +14,7 @@
 
 #define CATALOG_DIR "scenarios"
 #define GOLDEN_DIR "golden"
-#define GOLDEN_TOLERANCE 1e-12 // absolute: room for libm differences between machines, nothing more
+#define GOLDEN_TOLERANCE HS_GOLDEN_TOLERANCE
 
 typedef struct scenario_run {
 	const char *name, *path;

@@ -18,6 +18,8 @@
 #include <sys/stat.h>
 
 #include "hs_harness.h"
+#include "golden.h"
+#include "outsel.h"
 #include "view.h"
 
 enum { EXIT_PASS = 0, EXIT_FAILED = 1, EXIT_BAD_INPUT = 2 };
@@ -30,6 +32,8 @@ static const char *const usage_main =
     "                                                     run one scenario and check its expectations\n"
     "  all [--dir DIR] [--out-dir DIR] [--golden-dir DIR] run every scenario of a catalog\n"
     "  sweep FILE                                         run a scenario's robust matrix (dt x noise seeds)\n"
+    "  check DIR [--golden GDIR]                          compare a folder of scenarios with their goldens\n"
+    "  golden DIR [--golden GDIR]                         write a folder's goldens\n"
     "  view FILE [--gif OUT] [--strip OUT --at T,...] [--html OUT]\n"
     "                                                     draw a scenario in 3-D with gnuplot\n"
     "Run 'handspring <command> --help' for the options of a command.\n";
@@ -59,6 +63,7 @@ static const char *const usage_run =
     "                     the full run's.\n"
     "  --dt DT            replace the file's dt: a number or a fraction like 1/12, within [1/2000, 1/12] s;\n"
     "                     the frames are round(duration / DT), clause times are converted with it\n"
+    HS_OUTSEL_USAGE
     "  --noise-seed N     draw realistic input noise with seed N (0 to 4294967295): hands a glove's\n"
     "                     +-4 units per sensor and the tracker's 0.762 mm, 0.15 deg on the wrist (or the\n"
     "                     levels of the file's robust block or model.input_noise), a stylus the tracker's\n"
@@ -74,12 +79,20 @@ static const char *const usage_sweep =
     "non-finite value); then 'sweep: N of M cells pass'.\n"
     "Exit status: 0 every cell and the nominal run pass, 1 any fails, 2 bad input (no robust block too).\n";
 
+static const char *const usage_golden =
+    "usage: handspring golden DIR [--golden GDIR]\n"
+    "Runs every scenario below DIR and writes its trajectory as the golden GDIR/<name>.csv (default:\n"
+    "the folder 'golden' beside DIR); 'handspring check DIR' then compares runs with them.\n"
+    "Exit status: 0 written and every expectation passed, 1 one failed, 2 bad input.\n";
+
 static const char *const usage_all =
     "usage: handspring all [--dir DIR] [--out-dir DIR] [--golden-dir DIR] [--hands-dir DIR]\n"
     "Runs every scenario below --dir (default: scenarios) and prints a summary table.\n"
     "  --out-dir DIR     write each trajectory to DIR/<name>.csv (subfolders are created)\n"
     "  --golden-dir DIR  write each trajectory as a golden file DIR/<name>.csv (what 'make golden' does)\n"
     "  --hands-dir DIR   write each scenario's hands and stylus (as run --hands-out) to DIR/<name>.csv\n"
+    "the --out-dir and --hands-dir files only (not the goldens), objects a scenario lacks passed over:\n"
+    HS_OUTSEL_USAGE
     "Exit status: 0 every scenario passed, 1 one failed, 2 bad input.\n";
 
 static int usage_error(const char *command, const char *usage, const char *fmt, const char *arg) {
@@ -184,19 +197,29 @@ static void output_free(output *o) {
 }
 
 // Runs every frame, writing the trajectory to each open file.
-static void run_scenario(hs_scenario *s, FILE **outs, int out_count, FILE *hands) {
-	for (int k = 0; k < out_count; ++k)
-		if (outs[k]) {
-			hs_trajectory_write_header(outs[k]);
-			hs_trajectory_write_frame(outs[k], s);
-		}
-	hs_hand_trace_write_header(hands);
-	hs_hand_trace_write_frame(hands, s);
-	while (hs_scenario_step(s)) {
+// Runs a scenario writing its trajectory to outs[k] (the first one, and `hands`, through `sel`;
+// the others whole: goldens).
+static void run_scenario(hs_scenario *s, FILE **outs, int out_count, FILE *hands, hs_outsel *sel) {
+	hs_world *w = hs_scenario_world(s);
+	long frames = hs_scenario_frame_count(s);
+	for (long f = 0;; ++f) {
+		bool keep = hs_outsel_keep(sel, f);
 		for (int k = 0; k < out_count; ++k)
-			if (outs[k])
-				hs_trajectory_write_frame(outs[k], s);
-		hs_hand_trace_write_frame(hands, s);
+			if (outs[k]) {
+				if (f == 0)
+					hs_trajectory_write_header(outs[k]);
+				if (k > 0)
+					hs_trajectory_write_frame(outs[k], s);
+				else if (keep)
+					hs_trajectory_write_selected(outs[k], s, sel->selected);
+			}
+		if (f == 0)
+			hs_hand_trace_write_header(hands);
+		if (keep)
+			hs_hand_trace_write_frame(hands, s);
+		hs_outsel_progress(sel, hs_world_frame(w), frames);
+		if (!hs_scenario_step(s))
+			break;
 	}
 }
 
@@ -204,6 +227,7 @@ typedef struct run_options {
 	const char *file, *out, *hands_out, *state_out, *resume;
 	long save_at; // -1: no state saved
 	hs_scenario_options load; // --dt, --noise-seed
+	hs_outsel sel; // --objects, --every, --from, --to
 } run_options;
 
 // A noise seed: decimal digits, at most 4294967295 (unsigned long is 32 bits on i386).
@@ -251,12 +275,17 @@ static int parse_run(int argc, char **argv, run_options *o) {
 	int status = -1;
 	memset(o, 0, sizeof *o);
 	o->save_at = -1;
+	hs_outsel_init(&o->sel);
 	for (int i = 0; i < argc; ++i) {
 		bool missing = false;
 		const char *frame = NULL;
+		char why[160];
 		if (is_help(argv[i])) {
 			fputs(usage_run, stdout);
 			return EXIT_PASS;
+		} else if (hs_outsel_option(&o->sel, argc, argv, &i, why, sizeof why)) {
+			if (why[0])
+				return usage_error("run", usage_run, "%s", why);
 		} else if (option_value(argc, argv, &i, "--out", &o->out, &missing) ||
 		           option_value(argc, argv, &i, "--hands-out", &o->hands_out, &missing) ||
 		           option_value(argc, argv, &i, "--state-out", &o->state_out, &missing) ||
@@ -321,14 +350,16 @@ static bool resume_state(hs_scenario *s, const char *path) {
 // at the frame asked for. False when the state could not be written or its frame was never reached.
 static bool run_saving(hs_scenario *s, FILE *traj, FILE *hands, const run_options *o) {
 	hs_world *world = hs_scenario_world(s);
+	hs_outsel *sel = (hs_outsel *)&o->sel;
+	long frames = hs_scenario_frame_count(s);
 	if (traj) {
 		hs_trajectory_write_header(traj);
-		if (!o->resume)
-			hs_trajectory_write_frame(traj, s);
+		if (!o->resume && hs_outsel_keep(sel, hs_world_frame(world)))
+			hs_trajectory_write_selected(traj, s, sel->selected);
 	}
 	if (hands) {
 		hs_hand_trace_write_header(hands);
-		if (!o->resume)
+		if (!o->resume && hs_outsel_keep(sel, hs_world_frame(world)))
 			hs_hand_trace_write_frame(hands, s);
 	}
 	bool saved = o->save_at < 0;
@@ -340,10 +371,12 @@ static bool run_saving(hs_scenario *s, FILE *traj, FILE *hands, const run_option
 		}
 		if (!hs_scenario_step(s))
 			break;
-		if (traj)
-			hs_trajectory_write_frame(traj, s);
-		if (hands)
+		bool keep = hs_outsel_keep(sel, hs_world_frame(world));
+		if (traj && keep)
+			hs_trajectory_write_selected(traj, s, sel->selected);
+		if (hands && keep)
 			hs_hand_trace_write_frame(hands, s);
+		hs_outsel_progress(sel, hs_world_frame(world), frames);
 	}
 	if (!saved)
 		fprintf(stderr, "handspring: the run ended at frame %ld, before frame %ld: no state written\n",
@@ -383,6 +416,13 @@ static int cmd_run(int argc, char **argv) {
 		fprintf(stderr, "%s\n", err.message);
 		return EXIT_BAD_INPUT;
 	}
+	char why[160];
+	if (!hs_outsel_bind(&o.sel, s, false, why, sizeof why)) {
+		fprintf(stderr, "handspring run: %s\n", why);
+		hs_outsel_free(&o.sel);
+		hs_scenario_destroy(s);
+		return EXIT_BAD_INPUT;
+	}
 	if (o.save_at > hs_scenario_frame_count(s)) {
 		fprintf(stderr, "handspring run: --save-at must be within [0, %ld] (the scenario's frames), got %ld\n",
 		        hs_scenario_frame_count(s), o.save_at);
@@ -410,6 +450,7 @@ static int cmd_run(int argc, char **argv) {
 	output_free(&traj);
 	output_free(&hands);
 	int failed = ok ? print_summary(to_stdout ? stderr : stdout, s, &o) : 0;
+	hs_outsel_free(&o.sel);
 	hs_scenario_destroy(s);
 	return !ok ? EXIT_BAD_INPUT : failed ? EXIT_FAILED : EXIT_PASS;
 }
@@ -468,12 +509,18 @@ static int cmd_list(int argc, char **argv) {
 
 // `all`'s options; -1 to go on, else the exit status.
 static int all_options(int argc, char **argv, const char **dir, const char **out_dir, const char **golden_dir,
-                       const char **hands_dir) {
+                       const char **hands_dir, hs_outsel *sel) {
 	for (int i = 0; i < argc; ++i) {
 		int status = -1;
+		char why[160];
 		if (is_help(argv[i])) {
 			fputs(usage_all, stdout);
 			return EXIT_PASS;
+		}
+		if (hs_outsel_option(sel, argc, argv, &i, why, sizeof why)) {
+			if (why[0])
+				return usage_error("all", usage_all, "%s", why);
+			continue;
 		}
 		if (parse_dir_option(argc, argv, &i, "--dir", dir, &status, "all", usage_all) ||
 		    parse_dir_option(argc, argv, &i, "--out-dir", out_dir, &status, "all", usage_all) ||
@@ -492,7 +539,7 @@ static int all_options(int argc, char **argv, const char **dir, const char **out
 // Runs one loaded scenario writing its trajectory to out_dir and golden_dir and its hands and
 // stylus to hands_dir (any may be NULL); false on a write error (said on stderr).
 static bool all_run_one(hs_scenario *s, const char *name, const char *path, const char *out_dir,
-                        const char *golden_dir, const char *hands_dir) {
+                        const char *golden_dir, const char *hands_dir, hs_outsel *sel) {
 	output outs[3];
 	memset(outs, 0, sizeof outs);
 	const char *dirs[3] = {out_dir, golden_dir, hands_dir};
@@ -513,7 +560,7 @@ static bool all_run_one(hs_scenario *s, const char *name, const char *path, cons
 	}
 	FILE *files[2] = {outs[0].file, outs[1].file};
 	if (io_ok)
-		run_scenario(s, files, 2, outs[2].file);
+		run_scenario(s, files, 2, outs[2].file, sel);
 	for (int k = 0; k < 3; ++k) {
 		if (!output_close(&outs[k], io_ok) && io_ok) {
 			fprintf(stderr, "handspring: cannot write %s: %s\n", outs[k].path, strerror(errno));
@@ -551,7 +598,9 @@ static int all_report(hs_scenario *s, const char *name, int width, FILE *log) {
 
 static int cmd_all(int argc, char **argv) {
 	const char *dir = "scenarios", *out_dir = NULL, *golden_dir = NULL, *hands_dir = NULL;
-	int status = all_options(argc, argv, &dir, &out_dir, &golden_dir, &hands_dir);
+	hs_outsel sel;
+	hs_outsel_init(&sel);
+	int status = all_options(argc, argv, &dir, &out_dir, &golden_dir, &hands_dir, &sel);
 	if (status >= 0)
 		return status;
 	hs_catalog catalog;
@@ -579,7 +628,13 @@ static int cmd_all(int argc, char **argv) {
 		hs_scenario *s = hs_scenario_load(catalog.paths[i], &err);
 		if (!s)
 			fprintf(stderr, "%s\n", err.message);
-		if (!s || !all_run_one(s, name, catalog.paths[i], out_dir, golden_dir, hands_dir)) {
+		char why[160];
+		if (s && !hs_outsel_bind(&sel, s, true, why, sizeof why)) {
+			fprintf(stderr, "handspring all: %s: %s\n", name, why);
+			hs_scenario_destroy(s);
+			s = NULL;
+		}
+		if (!s || !all_run_one(s, name, catalog.paths[i], out_dir, golden_dir, hands_dir, &sel)) {
 			printf("%-*s  %9s  %7s  %11s  %-16s  %s\n", width, name, "-", "-", "-", "-", s ? "WRITE ERROR" : "BAD INPUT");
 			bad++;
 		} else if (all_report(s, name, width, log)) {
@@ -601,7 +656,34 @@ static int cmd_all(int argc, char **argv) {
 	if (golden_dir && bad == 0)
 		printf("goldens written to %s/\n", golden_dir);
 	hs_catalog_free(&catalog);
+	hs_outsel_free(&sel);
 	return bad ? EXIT_BAD_INPUT : failed ? EXIT_FAILED : EXIT_PASS;
+}
+
+// `handspring golden DIR [--golden GDIR]`: `all --dir DIR --golden-dir GDIR` (default: 'golden'
+// beside DIR), what `make golden` does for the catalog.
+static int cmd_golden(int argc, char **argv) {
+	const char *dir = NULL, *gdir = NULL;
+	for (int i = 0; i < argc; ++i) {
+		if (is_help(argv[i])) {
+			fputs(usage_golden, stdout);
+			return EXIT_PASS;
+		}
+		if (strcmp(argv[i], "--golden") == 0 && i + 1 < argc)
+			gdir = argv[++i];
+		else if (argv[i][0] == '-' || dir)
+			return usage_error("golden", usage_golden, argv[i][0] == '-' ? "unknown option '%s'" : "unexpected argument '%s'",
+			                   argv[i]);
+		else
+			dir = argv[i];
+	}
+	if (!dir)
+		return usage_error("golden", usage_golden, "%s", "missing the scenario folder DIR");
+	char *beside = gdir ? NULL : hs_golden_beside(dir);
+	char *args[] = {"--dir", (char *)dir, "--golden-dir", gdir ? (char *)gdir : beside};
+	int status = args[3] ? cmd_all(4, args) : EXIT_BAD_INPUT;
+	free(beside);
+	return status;
 }
 
 static int cmd_sweep(int argc, char **argv) {
@@ -648,5 +730,9 @@ int main(int argc, char **argv) {
 		return cmd_sweep(argc - 2, argv + 2);
 	if (strcmp(command, "view") == 0)
 		return hs_view_main(argc - 2, argv + 2);
+	if (strcmp(command, "check") == 0)
+		return hs_check_main(argc - 2, argv + 2);
+	if (strcmp(command, "golden") == 0)
+		return cmd_golden(argc - 2, argv + 2);
 	return usage_error(NULL, usage_main, "unknown command '%s'", command);
 }

@@ -117,6 +117,9 @@ void hs_catalog_free(hs_catalog *catalog);
 void hs_trajectory_write_header(FILE *out);
 /// Writes the rows of the current frame of a scenario's world (numbers with 17 significant digits).
 void hs_trajectory_write_frame(FILE *out, hs_scenario *scenario);
+/// The same for the objects i with selected[i] != 0 only (selected: one flag per object, in the
+/// order of the file; NULL: every object).
+void hs_trajectory_write_selected(FILE *out, hs_scenario *scenario, const uint8_t *selected);
 
 /// What the hands and the stylus do, one row per thing per frame, the header line
 /// `frame,t,kind,hand,index,x,y,z,u,v,w,flag,object,value`: kind `point` (each hand's check
@@ -129,6 +132,10 @@ void hs_hand_trace_write_header(FILE *out);
 /// Writes the rows of the current frame (hand h = index in the order added, point 0-19 as
 /// hs_world_hand_points; numbers with 17 significant digits).
 void hs_hand_trace_write_frame(FILE *out, hs_scenario *scenario);
+
+/// Absolute tolerance of a golden comparison (`make check`, `handspring check`): room for libm
+/// differences between machines, nothing more.
+#define HS_GOLDEN_TOLERANCE 1e-12
 
 /// Compares a trajectory with its golden (both as written above; lines starting with '#' are
 /// comments). Numbers must agree within `tolerance` (absolute), contact states and row keys exactly.

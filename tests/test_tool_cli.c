@@ -1,0 +1,165 @@
+// test_tool_cli.c — the harness for any folder (issue 13 item 6): `handspring golden DIR` and
+// `handspring check DIR` on a temporary folder, and what `run` writes with --objects, --every,
+// --from, --to and --out -.
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cmocka.h>
+
+typedef struct result {
+	int status;
+	char *out, *err;
+} result;
+
+static char *slurp(FILE *f) {
+	fseek(f, 0, SEEK_END);
+	long n = ftell(f);
+	rewind(f);
+	char *s = malloc((size_t)n + 1);
+	assert_non_null(s);
+	assert_int_equal(fread(s, 1, (size_t)n, f), (size_t)n);
+	s[n] = 0;
+	return s;
+}
+
+// `handspring ARGS...` with stdout and stderr captured.
+static result tool(const char *const *args) {
+	const char *t = getenv("HS_TOOL");
+	const char *argv[24];
+	int n = 0;
+	argv[n++] = t && *t ? t : "build/handspring";
+	for (int i = 0; args[i] && n < 23; ++i)
+		argv[n++] = args[i];
+	argv[n] = NULL;
+	FILE *out = tmpfile(), *err = tmpfile();
+	assert_true(out && err);
+	fflush(stdout);
+	fflush(stderr);
+	pid_t pid = fork();
+	assert_true(pid >= 0);
+	if (pid == 0) {
+		dup2(fileno(out), 1);
+		dup2(fileno(err), 2);
+		execv(argv[0], (char *const *)argv);
+		_exit(127);
+	}
+	int status = 0;
+	assert_int_equal(waitpid(pid, &status, 0), pid);
+	result r = {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(out), slurp(err)};
+	fclose(out);
+	fclose(err);
+	return r;
+}
+
+static void done(result *r) {
+	free(r->out);
+	free(r->err);
+}
+
+static void copy(const char *from, const char *to) {
+	FILE *a = fopen(from, "rb"), *b = fopen(to, "wb");
+	assert_true(a && b);
+	char buf[4096];
+	size_t n;
+	while ((n = fread(buf, 1, sizeof buf, a)) > 0)
+		assert_int_equal(fwrite(buf, 1, n, b), n);
+	fclose(a);
+	fclose(b);
+}
+
+// A user's folder: `golden` writes folder/golden/*.csv beside folder/scenarios, `check` passes;
+// one number of a golden moved by 1e-4 m makes `check` exit 1 naming the frame, object and field;
+// a scenario without a golden is named too.
+static void test_golden_then_check(void **state) {
+	(void)state;
+	char dir[] = "/tmp/hs-cli-XXXXXX";
+	assert_non_null(mkdtemp(dir));
+	char scen[256], gold[256], path[300];
+	snprintf(scen, sizeof scen, "%s/scenarios", dir);
+	snprintf(gold, sizeof gold, "%s/golden", dir);
+	assert_int_equal(mkdir(scen, 0755), 0);
+	snprintf(path, sizeof path, "%s/drop_cube.yaml", scen);
+	copy("scenarios/drop_cube.yaml", path);
+	const char *golden_args[] = {"golden", scen, NULL};
+	result r = tool(golden_args);
+	assert_int_equal(r.status, 0);
+	done(&r);
+	const char *check_args[] = {"check", scen, NULL};
+	r = tool(check_args);
+	assert_int_equal(r.status, 0);
+	assert_non_null(strstr(r.out, "drop_cube"));
+	assert_non_null(strstr(r.out, "1 match, 0 differ"));
+	done(&r);
+	// move frame 1's z by 1e-4 m in the golden
+	snprintf(path, sizeof path, "%s/drop_cube.csv", gold);
+	FILE *f = fopen(path, "r+");
+	assert_non_null(f);
+	char *text = slurp(f);
+	char *z = strstr(text, "\n1,0.016666666666666666,cube,0,0,1.0486374999999999,");
+	assert_non_null(z);
+	memcpy(strstr(z, "1.0486"), "1.0487", 6);
+	rewind(f);
+	fputs(text, f);
+	fclose(f);
+	free(text);
+	r = tool(check_args);
+	assert_int_equal(r.status, 1);
+	assert_non_null(strstr(r.out, "drop_cube: frame 1, object cube, field z"));
+	done(&r);
+	snprintf(path, sizeof path, "%s/throw_block.yaml", scen);
+	copy("scenarios/throw_block.yaml", path);
+	r = tool(check_args);
+	assert_int_equal(r.status, 1);
+	assert_non_null(strstr(r.out, "throw_block.csv missing"));
+	done(&r);
+	char cmd[400];
+	snprintf(cmd, sizeof cmd, "rm -rf '%s'", dir);
+	assert_int_equal(system(cmd), 0);
+}
+
+// --objects cube1,cube3 --every 30 --from 0.5 --to 2 on the seed scene (60 frames/s): frames 30,
+// 60, 90, 120, two rows each; --out - writes them to stdout.
+static void test_run_filters(void **state) {
+	(void)state;
+	const char *args[] = {"run", "scenarios/seed_scene.yaml", "--out", "-", "--objects", "cube1,cube3", "--every", "30",
+	                      "--from", "0.5", "--to", "2", NULL};
+	result r = tool(args);
+	assert_int_equal(r.status, 0);
+	int rows = 0;
+	for (const char *p = r.out; (p = strchr(p, '\n')) && p[1]; ++p)
+		rows++;
+	assert_int_equal(rows, 8);
+	assert_true(strncmp(r.out, "frame,t,object,", 15) == 0);
+	assert_non_null(strstr(r.out, "\n30,0.5,cube1,"));
+	assert_non_null(strstr(r.out, "\n120,2,cube3,"));
+	assert_null(strstr(r.out, "cube2"));
+	assert_null(strstr(r.out, "\n150,"));
+	assert_non_null(strstr(r.err, "PASS")); // the summary on stderr
+	done(&r);
+	const char *bad[][8] = {{"run", "scenarios/seed_scene.yaml", "--objects", "nope", NULL},
+	                        {"run", "scenarios/seed_scene.yaml", "--every", "0", NULL},
+	                        {"run", "scenarios/seed_scene.yaml", "--from", "2", "--to", "1", NULL},
+	                        {"run", "scenarios/seed_scene.yaml", "--from", "-1", NULL}};
+	for (int k = 0; k < 4; ++k) {
+		r = tool(bad[k]);
+		assert_int_equal(r.status, 2);
+		assert_true(strlen(r.err) > 0);
+		done(&r);
+	}
+}
+
+int main(void) {
+	const struct CMUnitTest tests[] = {
+	    cmocka_unit_test(test_golden_then_check),
+	    cmocka_unit_test(test_run_filters),
+	};
+	return cmocka_run_group_tests(tests, NULL, NULL);
+}
