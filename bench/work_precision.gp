@@ -32,7 +32,8 @@ do for [term in 'pngcairo svg'] {
 		set xrange [0.1:1e4]
 		plot for [i=1:5] rows(prob, word(names,i)) using 9:7 with linespoints lw 2 lc i pt 7 ps 0.6 title word(names,i), \
 		     for [i=1:5] bad(prob, word(names,i)) using 9:(1e3) with points lc i pt 2 ps 1.5 notitle, \
-		     edge(prob) using 9:7 with points lc rgb 'black' pt 4 ps 1.8 title 'ω Δt ≥ 2 (explicit edge)'
+		     edge(prob) using 9:7 with points lc rgb 'black' pt 4 ps 1.8 title 'ω Δt ≥ 2 (explicit edge)', \
+		     1/0 with points lc rgb 'black' pt 2 ps 1.5 title 'diverged: drawn at 10^3 m (off the scale)'
 	}
 	unset multiplot
 	unset output

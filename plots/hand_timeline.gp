@@ -23,6 +23,8 @@ summary(f) = system("grep -v '^#' '".f."' | awk -F, 'NR > 1 { if (!($3 in s)) { 
 esc(t) = system("printf '%s' '".t."' | sed 's/_/\\\\_/g'")
 base(s) = system("basename '".s."'")
 state_names = "set ytics ('0 no contact' 0, '1 push at one point' 1, '2 grasp' 2, '3 push at several points' 3)"
+# a spring world reports 2 for the object on the spring (handspring.h): say so
+spring_state_names = "set ytics ('0 not on the spring' 0, '2 on the spring' 2)"
 colors = "#1f77b4 #d62728 #2ca02c #ff7f0e #9467bd #8c564b #e377c2 #7f7f7f #bcbd22 #17becf"
 color(i) = word(colors, (i - 1) % 10 + 1)
 
@@ -68,27 +70,28 @@ do for [s in list] {
         set x2label "t [s]"
         set xlabel "frame"
 
-        set title "(a) hand contact state" . (n > 1 ? " per object (lines offset by 0.04 each so that all show)" : "")
+        spring = s[1:7] eq 'spring/'
+        set title (spring ? "(a) on the spring" : "(a) hand contact state") . (n > 1 ? " per object (lines offset by 0.04 each so that all show)" : "")
         flick = s eq 'hand/flick_pyramid'
         if (flick) {
             set label 11 "frame 24: the index tip pushes at one point (eq. 1-2);\nframe 25: it has lifted off, the pyramid flies on (eq. 3)" at 27, 1.25 font ",10"
         }
         set yrange [-0.3:3.5]
-        eval state_names
+        if (spring) { eval spring_state_names } else { eval state_names }
         set ylabel "state"
         set key top right box opaque
         plot for [i = 1:n] file every n::(i - 1) using 1:($11 + 0.04 * (i - 1)) \
              with steps lw 2 lc rgb color(i) title sprintf("%s: %s", esc(word(objs, i)), sequence(file, word(objs, i)))
 
         unset label 11
-        set title "(b) height of each object's centre G" . (n == 1 ? ", and the angle it has turned since frame 0" : "")
+        set title "(b) height of each object's centre G" . (n == 1 && !spring ? ", and the angle it has turned since frame 0" : "")
         if (flick) {
             set label 12 "tips over its front base edge (§4.2 rule (2)) onto a side face:\nG z = 0.0268 m, turned 180 - atan(2h/b) = 116.57 deg" at 40, 0.032 font ",10"
         }
         set ytics auto
         set autoscale y
         set ylabel "G z [m]"
-        if (n == 1) {
+        if (n == 1 && !spring) { # (a spring world's objects never turn: no torque, §4.2)
             set y2tics
             set ytics nomirror
             set y2label "turned [deg]"
@@ -126,7 +129,7 @@ if (!single) {
             set terminal svg size 1500, 330 * rows enhanced font "Sans,10" background rgb "white"
             set output out.'/hand_timeline_catalog.svg'
         }
-        set multiplot layout rows, cols title "Contact states of the hand catalog (1999 paper, Fig. 12): 0 none, 1 push at one point, 2 grasp, 3 push at several points" font ",12"
+        set multiplot layout rows, cols title "Contact states of the hand catalog (1999 paper, Fig. 12): 0 none, 1 push at one point, 2 grasp, 3 push at several points\n(the i-th object's line is drawn 0.04 (i - 1) higher, so that lines on the same state all show)" font ",12"
         set grid
         set yrange [-0.3:3.6]
         set ytics 0, 1, 3

@@ -4,7 +4,6 @@
 # Data: plots/spring_damping.c (run by `make plots` before this script). Writes spring_damping.png/.svg.
 #   gnuplot -e "traj='build/traj'; out='build/plots'" plots/spring_damping.gp
 if (!exists("out")) out = 'build/plots'
-set encoding utf8
 set datafile separator ","
 set datafile commentschars "#"
 curves = out.'/spring_damping_curves.csv'

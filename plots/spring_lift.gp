@@ -4,7 +4,6 @@
 # Data: plots/spring_lift.c (run by `make plots` before this script). Writes spring_lift.png/.svg.
 #   gnuplot -e "traj='build/traj'; out='build/plots'" plots/spring_lift.gp
 if (!exists("out")) out = 'build/plots'
-set encoding utf8
 set datafile separator ","
 set datafile commentschars "#"
 data = out.'/spring_lift.csv'

@@ -8,7 +8,6 @@
 #   gnuplot -e "traj='build/traj'; out='build/plots'" plots/spring_tracker.gp
 if (!exists("out")) out = 'build/plots'
 if (!exists("traj")) traj = 'build/traj'
-set encoding utf8
 set datafile separator ","
 set datafile commentschars "#"
 data = out.'/spring_tracker.csv'
@@ -16,6 +15,9 @@ ball = traj.'/spring/recorded_throw.csv'
 # the release: the sample whose `release` column is set (2 = throw)
 stats data using ($12 > 0 ? $1 : 1/0) nooutput name "R"
 t_release = R_min
+# the speed axis holds the whole estimate, its overshoot included
+stats data using 9 nooutput name "V"
+v_top = V_max > 1.2 ? 1.08 * V_max : 1.3
 
 do for [k = 1:2] {
     if (k == 1) {
@@ -49,9 +51,9 @@ do for [k = 1:2] {
     unset label 2
     set title "(b) the daemon's speed estimate (quadratic fit over 9 samples) and its rest / motion detection"
     set ylabel "hand speed [m/s]"
-    set yrange [0:1.3]
+    set yrange [0:v_top]
     set y2label "at rest (1) / moving (0)"
-    set y2range [0:1.3]
+    set y2range [0:v_top]
     set y2tics 0, 1, 1
     set key at graph 0.52, graph 0.98 right top box opaque
     plot data using 1:9 with linespoints pt 7 ps 0.5 lw 1.5 lc rgb "#2ca02c" title "estimated speed |v|", \
