@@ -152,9 +152,16 @@ static bool read_angle_list(hs_scenario_parser *p, const yaml_node_t *node, doub
 	return true;
 }
 
-enum { K_T, K_WRIST, K_GRIP, K_RPY, K_QUAT, K_POSTURE, K_SENSORS, K_ANGLES, K_COUNT };
-static const char *const key_keys[K_COUNT] = {"t",    "wrist",   "grip",    "rpy_deg",
-                                              "quat", "posture", "sensors", "angles_deg"};
+enum { K_T, K_WRIST, K_GRIP, K_RPY, K_QUAT, K_POSTURE, K_SENSORS, K_ANGLES, K_PART0, K_COUNT = K_PART0 + 10 };
+// a finger part may be placed instead of the wrist (issue 13: no hidden geometry): tips and bases
+// (check points finger × 4 + 3 and finger × 4)
+static const char *const key_keys[K_COUNT] = {
+    "t",          "wrist",     "grip",       "rpy_deg",    "quat",        "posture",    "sensors",
+    "angles_deg", "thumb_tip", "index_tip",  "middle_tip", "ring_tip",    "little_tip", "thumb_base",
+    "index_base", "middle_base", "ring_base", "little_base"};
+
+// The check point a finger-part key names (K_PART0 + k).
+static int part_point(int k) { return k < 5 ? k * 4 + 3 : (k - 5) * 4; }
 
 static bool read_key(hs_scenario_parser *p, const yaml_node_t *node, const hs_hand_def *def,
                      const hs_hand_key *previous, hs_hand_key *key) {
@@ -177,8 +184,16 @@ static bool read_key(hs_scenario_parser *p, const yaml_node_t *node, const hs_ha
 	for (size_t i = 0; i < sizeof exclusive / sizeof exclusive[0]; ++i)
 		if (!hs_yaml_exclusive(&p->y, &f, key_keys, exclusive[i][0], exclusive[i][1], "give one"))
 			return false;
-	if (!previous && !f.value[K_WRIST] && !f.value[K_GRIP])
-		return hs_yaml_fail(&p->y, node, "the first hand key needs 'wrist' or 'grip'");
+	int placed = (f.value[K_WRIST] != NULL) + (f.value[K_GRIP] != NULL), part = -1;
+	for (int k = 0; k < 10; ++k)
+		if (f.value[K_PART0 + k]) {
+			placed++;
+			part = k;
+		}
+	if (placed > 1)
+		return hs_yaml_fail(&p->y, node, "a hand key places the hand once: give one of 'wrist', 'grip' or a finger part");
+	if (!previous && placed == 0)
+		return hs_yaml_fail(&p->y, node, "the first hand key needs 'wrist', 'grip' or a finger part (e.g. 'index_tip')");
 	// what a key leaves out it keeps from the key before (the first: identity, open hand)
 	key->rot = previous ? previous->rot : hs_quat_identity();
 	key->wrist = previous ? previous->wrist : hs_v3(0, 0, 0);
@@ -211,6 +226,16 @@ static bool read_key(hs_scenario_parser *p, const yaml_node_t *node, const hs_ha
 			sensors[i] = (uint8_t)lround(key->sensors[i]);
 		hs_hand_grip(def, sensors, &center, &axis);
 		key->wrist = hs_sub(grip, hs_quat_rotate(key->rot, center));
+	}
+	if (part >= 0) { // place the wrist so that this finger part lands on the point
+		hs_vec3 target, points[HS_HAND_POINTS], lines[HS_HAND_LINES][2];
+		if (!hs_yaml_bounded_vec3(&p->y, f.value[K_PART0 + part], key_keys[K_PART0 + part], MAX_LENGTH, "m", &target))
+			return false;
+		uint8_t sensors[HS_GLOVE_SENSORS];
+		for (int i = 0; i < HS_GLOVE_SENSORS; ++i)
+			sensors[i] = (uint8_t)lround(key->sensors[i]);
+		hs_hand_kinematics(def, hs_v3(0.0, 0.0, 0.0), key->rot, sensors, points, lines);
+		key->wrist = hs_sub(target, points[part_point(part)]);
 	}
 	return true;
 }

@@ -26,4 +26,11 @@ fig workbench_fig3_pull_push spring/pull_push_floor        0,2,4,8       "Fig. 3
 fig workbench_fig4_wall      spring/pull_into_wall         0,1,2,4       "Fig. 4: the wall stops the object, the spring stretches"
 fig workbench_fig5_world     spring/select_among_three     0,1,2,4       "Fig. 5: a small world, selecting one of three"
 fig workbench_fig7_8_lift    spring/lift_swing_drop        0.5,2,3.5,6.5 "Figs. 7-8: lift, move, drop"
-echo "figures: $n filmstrips in $out"
+# the default hand's check points in the wrist frame (handspring hand): top and side views, for
+# scenarios/README.md (writing a hand scenario needs no hidden geometry)
+"$tool" hand --posture open > "$out/hand_open.csv"
+"$tool" hand --posture grasp --amount 0.05 > "$out/hand_grasp.csv"
+gnuplot -e "out='$out'" scripts/hand_frame.gp
+n=$((n + 1))
+printf 'figures: %-34s %s\n' "hand_wrist_frame.png" "the default hand's check points in the wrist frame"
+echo "figures: $n figures in $out"

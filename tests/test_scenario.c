@@ -572,6 +572,37 @@ static void test_hand_trace_spring(void **state) {
 	hs_scenario_destroy(s);
 }
 
+// A hand key may place a finger part instead of the wrist (issue 13 item 5): `index_tip` puts
+// the index fingertip (check point 7) on the point given, with the key's own posture and the wrist
+// turned; `thumb_base` the thumb's CMC (point 0). Two placements in one key are refused.
+static void test_key_places_finger_part(void **state) {
+	(void)state;
+	hs_scenario *s = load_text("finger_part0.yaml",
+	              "description: index tip placed\ndt: 1/60\nduration: 0.1\n" ONE_CUBE
+	              "hands:\n  - name: h\n    keys:\n"
+	              "      - { t: 0, index_tip: [0.3, 0.2, 0.5], rpy_deg: [0, 0, 90], posture: { fist: 0.3 } }\n"
+	              "      - { t: 0.05, index_tip: [0.3, 0.2, 0.5] }\n"
+	              "      - { t: 0.1, thumb_base: [0.1, 0.1, 0.6] }\n");
+	while (hs_scenario_step(s) && hs_world_frame(hs_scenario_world(s)) < 3) { // t = 0.05 s: the second key
+	}
+	hs_world *w = hs_scenario_world(s);
+	hs_vec3 p[HS_HAND_POINTS];
+	assert_int_equal(hs_world_hand_points(w, hs_world_hand_at(w, 0), p), HS_OK);
+	assert_near(p[7].x, 0.3, 1e-12);
+	assert_near(p[7].y, 0.2, 1e-12);
+	assert_near(p[7].z, 0.5, 1e-12);
+	run_all(s);
+	assert_int_equal(hs_world_hand_points(w, hs_world_hand_at(w, 0), p), HS_OK);
+	assert_near(p[0].x, 0.1, 1e-12);
+	assert_near(p[0].y, 0.1, 1e-12);
+	assert_near(p[0].z, 0.6, 1e-12);
+	hs_scenario_destroy(s);
+	load_error("two_places.yaml",
+	           "description: two\ndt: 1/60\nduration: 0.1\n" ONE_CUBE
+	           "hands:\n  - name: h\n    keys:\n      - { t: 0, wrist: [0, 0, 0.5], index_tip: [0.3, 0.2, 0.5] }\n",
+	           "9: a hand key places the hand once: give one of 'wrist', 'grip' or a finger part");
+}
+
 static bool compare_texts(const char *golden, const char *now, double tolerance, char *why, size_t n) {
 	FILE *g = fmemopen((void *)golden, strlen(golden), "r"), *a = fmemopen((void *)now, strlen(now), "r");
 	assert_non_null(g);
@@ -1553,6 +1584,7 @@ int main(void) {
 	    cmocka_unit_test(test_sweep),
 	    cmocka_unit_test(test_hand_trace_rows),
 	    cmocka_unit_test(test_hand_trace_spring),
+	    cmocka_unit_test_setup_teardown(test_key_places_finger_part, make_temp_dir, remove_temp_dir),
 	};
 	return cmocka_run_group_tests_name("scenario", tests, make_temp_dir, remove_temp_dir);
 }

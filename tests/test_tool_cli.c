@@ -156,10 +156,29 @@ static void test_run_filters(void **state) {
 	}
 }
 
+// `handspring hand`: the open hand's index tip (check point 7) at (0.18, 0.025, 0) m in the wrist
+// frame, 20 named rows after the header; an unknown posture exits 2.
+static void test_hand_points(void **state) {
+	(void)state;
+	const char *args[] = {"hand", NULL};
+	result r = tool(args);
+	assert_int_equal(r.status, 0);
+	assert_non_null(strstr(r.out, "\npoint,name,x,y,z\n"));
+	assert_non_null(strstr(r.out, "\n7,index_tip,0.18,0.025,0\n"));
+	assert_non_null(strstr(r.out, "\n19,little_tip,"));
+	done(&r);
+	const char *bad[] = {"hand", "--posture", "wave", NULL};
+	r = tool(bad);
+	assert_int_equal(r.status, 2);
+	assert_non_null(strstr(r.err, "--posture must be"));
+	done(&r);
+}
+
 int main(void) {
 	const struct CMUnitTest tests[] = {
 	    cmocka_unit_test(test_golden_then_check),
 	    cmocka_unit_test(test_run_filters),
+	    cmocka_unit_test(test_hand_points),
 	};
 	return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -19,6 +19,7 @@
 
 #include "hs_harness.h"
 #include "golden.h"
+#include "hand_cmd.h"
 #include "outsel.h"
 #include "view.h"
 
@@ -32,6 +33,7 @@ static const char *const usage_main =
     "                                                     run one scenario and check its expectations\n"
     "  all [--dir DIR] [--out-dir DIR] [--golden-dir DIR] run every scenario of a catalog\n"
     "  sweep FILE                                         run a scenario's robust matrix (dt x noise seeds)\n"
+    "  hand [--posture P] [--amount A]                    the hand's check points in the wrist frame\n"
     "  check DIR [--golden GDIR]                          compare a folder of scenarios with their goldens\n"
     "  golden DIR [--golden GDIR]                         write a folder's goldens\n"
     "  view FILE [--gif OUT] [--strip OUT --at T,...] [--html OUT]\n"
@@ -730,6 +732,8 @@ int main(int argc, char **argv) {
 		return cmd_sweep(argc - 2, argv + 2);
 	if (strcmp(command, "view") == 0)
 		return hs_view_main(argc - 2, argv + 2);
+	if (strcmp(command, "hand") == 0)
+		return hs_hand_main(argc - 2, argv + 2);
 	if (strcmp(command, "check") == 0)
 		return hs_check_main(argc - 2, argv + 2);
 	if (strcmp(command, "golden") == 0)
