@@ -6,6 +6,7 @@
 
 #include "hand_script.h"
 #include "file_read.h"
+#include "joint_input.h"
 #include "record.h"
 #include "scenario_internal.h"
 #include "scenario_parser.h"
@@ -290,11 +291,26 @@ static bool read_keys(hs_scenario_parser *p, const yaml_node_t *keys, const hs_h
 	return true;
 }
 
-static bool read_hand_record(hs_scenario_parser *p, const yaml_node_t *node, hs_hand_script *script) {
+// The format of a recorded file: its first line's start (a glove file when it names none).
+static hs_joint_format format_of(const char *path) {
+	char first[32] = "";
+	FILE *f = fopen(path, "r");
+	if (f) {
+		if (!fgets(first, sizeof first, f))
+			first[0] = '\0';
+		fclose(f);
+	}
+	return hs_joint_format_of(first);
+}
+
+static bool read_hand_record(hs_scenario_parser *p, const yaml_node_t *node, const hs_hand_def *def,
+                             hs_hand_script *script) {
 	char *full = hs_yaml_sibling_file(&p->y, node, "record");
 	if (!full)
 		return false;
-	bool ok = hs_record_load(full, script, p->y.err);
+	hs_joint_format format = format_of(full);
+	bool ok = format == HS_JOINTS_NONE ? hs_record_load(full, script, p->y.err)
+	                                   : hs_joint_record_load(full, format, def, script, p->y.err);
 	free(full);
 	return ok;
 }
@@ -313,9 +329,10 @@ static bool read_hand(hs_scenario_parser *p, const yaml_node_t *node, int index)
 		return false;
 	hs_hand_script *script = &hands->scripts[index];
 	if (f.value[H_KEYS] ? !read_keys(p, f.value[H_KEYS], &def, script)
-	                    : !read_hand_record(p, f.value[H_RECORD], script))
+	                    : !read_hand_record(p, f.value[H_RECORD], &def, script))
 		return false;
 	hs_status status = HS_OK;
+	hands->defs[index] = def;
 	hands->ids[index] = hs_world_add_hand(p->s->world, &def, &status);
 	if (hands->ids[index].index1 == 0)
 		return hs_yaml_fail(&p->y, node, "hand '%s': cannot add it to the world: %s", hands->names[index],
@@ -340,7 +357,8 @@ bool hs_read_hands(hs_scenario_parser *p, const yaml_node_t *node) {
 	hands->names = calloc((size_t)n, sizeof *hands->names);
 	hands->ids = calloc((size_t)n, sizeof *hands->ids);
 	hands->scripts = calloc((size_t)n, sizeof *hands->scripts);
-	if (!hands->names || !hands->ids || !hands->scripts)
+	hands->defs = calloc((size_t)n, sizeof *hands->defs);
+	if (!hands->names || !hands->ids || !hands->scripts || !hands->defs)
 		return hs_yaml_fail(&p->y, node, "out of memory");
 	hands->count = (int)n;
 	for (int h = 0; h < hands->count; ++h)
@@ -370,5 +388,6 @@ void hs_hands_free(hs_hands *hands) {
 	free(hands->names);
 	free(hands->ids);
 	free(hands->scripts);
+	free(hands->defs);
 	memset(hands, 0, sizeof *hands);
 }

@@ -36,6 +36,7 @@ typedef struct hs_hands {
 	char **names;
 	hs_hand_id *ids;
 	hs_hand_script *scripts;
+	hs_hand_def *defs; // as added to the world
 } hs_hands;
 
 // Gives every hand its pose and glove at time t (the end of the coming frame), with the input

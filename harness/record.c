@@ -49,20 +49,29 @@ static bool read_row(const char *line, const char *path, long number, const char
 	return true;
 }
 
-// What every recorded row must satisfy: time increasing, position bounded, a unit quaternion.
-static bool check_row(const hs_record_rows *rows, int columns, const double *v, const char *path, long number,
-                      hs_error *err) {
+// What every recorded row must satisfy: time increasing, and per the layout (record.h) positions
+// bounded and quaternions of unit norm.
+static bool check_row(const hs_record_rows *rows, int columns, const char *layout, const double *v, const char *path,
+                      long number, hs_error *err) {
 	if (rows->count > 0 && !(v[0] > rows->values[(rows->count - 1) * columns]))
 		return row_error(err, path, number, "time %.17g does not increase (previous sample at %.17g)", v[0],
 		                 rows->values[(rows->count - 1) * columns]);
-	for (int k = 1; k < 4; ++k)
-		if (!(fabs(v[k]) <= MAX_RECORD_POSITION))
+	for (int k = 1; k < columns; ++k) {
+		char kind = layout ? layout[k] : (k < 4 ? 'p' : k == 4 ? 'q' : 'n');
+		if (kind == 'p' && !(fabs(v[k]) <= MAX_RECORD_POSITION))
 			return row_error(err, path, number, "column %d (position) must be within [-1000, 1000] m, got %.17g", k + 1,
 			                 v[k]);
-	double norm;
-	hs_quat q;
-	if (!hs_unit_quat(v + 4, &norm, &q))
-		return row_error(err, path, number, "orientation is not a unit quaternion (norm %.6g)", norm);
+		if (kind == 'q') {
+			double norm;
+			hs_quat q;
+			if (!hs_unit_quat(v + k, &norm, &q))
+				return layout ? row_error(err, path, number,
+				                          "orientation in columns %d-%d is not a unit quaternion (norm %.6g)", k + 1,
+				                          k + 4, norm)
+				              : row_error(err, path, number, "orientation is not a unit quaternion (norm %.6g)", norm);
+			k += 3;
+		}
+	}
 	return true;
 }
 
@@ -101,7 +110,14 @@ static bool reader_failure(hs_line_status status, const char *path, long line, c
 
 bool hs_record_read(const char *path, const char *what, const char *header, const char *shown, int columns,
                     long max_rows, hs_record_rows *rows, hs_error *err) {
+	return hs_record_read_layout(path, what, header, shown, columns, NULL, max_rows, rows, err);
+}
+
+bool hs_record_read_layout(const char *path, const char *what, const char *header, const char *shown, int columns,
+                           const char *layout, long max_rows, hs_record_rows *rows, hs_error *err) {
 	memset(rows, 0, sizeof *rows);
+	if (columns < 1 || columns > HS_RECORD_MAX_COLUMNS)
+		return row_error(err, path, 1, "internal: %d columns", columns);
 	FILE *in = hs_open_input(path);
 	if (!in)
 		return row_error(err, path, 1, "cannot read %s: %s", what, strerror(errno));
@@ -111,7 +127,7 @@ bool hs_record_read(const char *path, const char *what, const char *header, cons
 	bool ok = true;
 	char *line;
 	size_t len;
-	double v[64];
+	double v[HS_RECORD_MAX_COLUMNS];
 	hs_line_status status = HS_LINE_END;
 	while (ok && (status = hs_line_next(&reader, &line, &len)) == HS_LINE_OK) {
 		long number = reader.number;
@@ -131,7 +147,7 @@ bool hs_record_read(const char *path, const char *what, const char *header, cons
 		if (rows->count >= max_rows)
 			ok = row_error(err, path, number, "more than %ld samples", max_rows);
 		else if (read_row(line, path, number, shown, columns, v, err) &&
-		         check_row(rows, columns, v, path, number, err))
+		         check_row(rows, columns, layout, v, path, number, err))
 			ok = append_row(rows, &capacity, columns, v, number) || row_error(err, path, number, "out of memory");
 		else
 			ok = false;

@@ -15,9 +15,16 @@ typedef struct hs_record_rows {
 	long *lines;    // each row's line in the file
 } hs_record_rows;
 
+#define HS_RECORD_MAX_COLUMNS 192
+
 // `what` names the file in messages ("recorded input"); `shown` is how messages write the header.
 bool hs_record_read(const char *path, const char *what, const char *header, const char *shown, int columns,
                     long max_rows, hs_record_rows *rows, hs_error *err);
+// The same with each column's kind in `layout` (one character per column, `columns` long): 't'
+// time (column 1), 'p' a position (within ±1000 m), 'q' the first of a quaternion's four columns
+// (w, x, y, z: unit norm), 'n' any finite number. hs_record_read is the layout "tpppqqqq" then 'n'.
+bool hs_record_read_layout(const char *path, const char *what, const char *header, const char *shown, int columns,
+                           const char *layout, long max_rows, hs_record_rows *rows, hs_error *err);
 void hs_record_rows_free(hs_record_rows *rows);
 
 #endif

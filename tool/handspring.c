@@ -34,6 +34,7 @@ static const char *const usage_main =
     "  all [--dir DIR] [--out-dir DIR] [--golden-dir DIR] run every scenario of a catalog\n"
     "  sweep FILE                                         run a scenario's robust matrix (dt x noise seeds)\n"
     "  hand [--posture P] [--amount A]                    the hand's check points in the wrist frame\n"
+    "  joints FILE --format mediapipe|openxr --out OUT    a scenario's hand as a joint recording\n"
     "  check DIR [--golden GDIR]                          compare a folder of scenarios with their goldens\n"
     "  golden DIR [--golden GDIR]                         write a folder's goldens\n"
     "  view FILE [--gif OUT] [--strip OUT --at T,...] [--html OUT]\n"
@@ -688,6 +689,64 @@ static int cmd_golden(int argc, char **argv) {
 	return status;
 }
 
+static const char *const usage_joints =
+    "usage: handspring joints FILE --format mediapipe|openxr --out OUT.csv [--hand N] [--rate HZ]\n"
+    "Writes hand N (1: the first) of the scenario FILE as a recording of joint positions, one sample\n"
+    "per frame: MediaPipe Hands' 21 landmarks or OpenXR's 26 hand joints (with orientations), the\n"
+    "glove model's check points for the scenario's own input, --rate samples per second (default:\n"
+    "the scenario's frame rate). A hand's 'record:' reads them back.\n"
+    "Exit status: 0 written, 2 bad input.\n";
+
+// `handspring joints`: a scenario's hand as a joint recording (issue 13 item 4; the catalog's).
+static int cmd_joints(int argc, char **argv) {
+	const char *file = NULL, *format = NULL, *out = NULL, *rate_text = NULL;
+	long hand = 1;
+	for (int i = 0; i < argc; ++i) {
+		bool missing = false;
+		const char *h = NULL;
+		if (is_help(argv[i])) {
+			fputs(usage_joints, stdout);
+			return EXIT_PASS;
+		}
+		if (option_value(argc, argv, &i, "--format", &format, &missing) ||
+		    option_value(argc, argv, &i, "--out", &out, &missing) ||
+		    option_value(argc, argv, &i, "--rate", &rate_text, &missing)) {
+			if (missing)
+				return usage_error("joints", usage_joints, "%s needs a value", argv[i]);
+		} else if (option_value(argc, argv, &i, "--hand", &h, &missing)) {
+			if (missing || !parse_frame(h, &hand) || hand < 1)
+				return usage_error("joints", usage_joints, "%s needs a hand number (1, 2, ...)", "--hand");
+		} else if (argv[i][0] == '-' || file) {
+			return usage_error("joints", usage_joints, argv[i][0] == '-' ? "unknown option '%s'" : "unexpected argument '%s'",
+			                   argv[i]);
+		} else {
+			file = argv[i];
+		}
+	}
+	if (!file || !format || !out)
+		return usage_error("joints", usage_joints, "%s", "needs FILE, --format and --out");
+	hs_error err;
+	hs_scenario *s = hs_scenario_load(file, &err);
+	if (!s) {
+		fprintf(stderr, "%s\n", err.message);
+		return EXIT_BAD_INPUT;
+	}
+	output o;
+	bool ok = output_open(&o, out);
+	if (!ok)
+		fprintf(stderr, "handspring: cannot write %s: %s\n", out, strerror(errno));
+	else if (!(ok = hs_scenario_export_joints(s, (int)hand - 1, format,
+	                                          rate_text ? strtod(rate_text, NULL) : 1.0 / hs_scenario_dt(s), o.file, &err)))
+		fprintf(stderr, "%s\n", err.message);
+	if (!output_close(&o, ok) && ok) {
+		fprintf(stderr, "handspring: cannot write %s: %s\n", out, strerror(errno));
+		ok = false;
+	}
+	output_free(&o);
+	hs_scenario_destroy(s);
+	return ok ? EXIT_PASS : EXIT_BAD_INPUT;
+}
+
 static int cmd_sweep(int argc, char **argv) {
 	const char *file = NULL;
 	for (int i = 0; i < argc; ++i) {
@@ -732,6 +791,8 @@ int main(int argc, char **argv) {
 		return cmd_sweep(argc - 2, argv + 2);
 	if (strcmp(command, "view") == 0)
 		return hs_view_main(argc - 2, argv + 2);
+	if (strcmp(command, "joints") == 0)
+		return cmd_joints(argc - 2, argv + 2);
 	if (strcmp(command, "hand") == 0)
 		return hs_hand_main(argc - 2, argv + 2);
 	if (strcmp(command, "check") == 0)
