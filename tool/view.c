@@ -51,7 +51,9 @@ typedef struct view_opts {
 } view_opts;
 
 typedef struct view_run {
-	FILE *data;
+	char dir[64];          // the temporary folder: one data file per frame drawn (gnuplot reads a
+	                       // file from its start for an `index`: one file for all would be quadratic)
+	FILE *data;            // the frame being written
 	long records;          // frames written
 	hs_vec3 lo, hi;        // bounds of everything drawn
 	char (*titles)[160];
@@ -185,11 +187,22 @@ static void record(view_run *v, hs_scenario *s) {
 		v->frames = f;
 		v->capacity = cap;
 	}
+	char path[96];
+	snprintf(path, sizeof path, "%s/r%06ld.dat", v->dir, v->records);
+	if (!(v->data = fopen(path, "w"))) {
+		fprintf(stderr, "handspring view: cannot write %s: %s\n", path, strerror(errno));
+		exit(2);
+	}
 	objects(v, w);
 	hands(v, w);
 	hs_spring_state ss;
 	bool attached;
 	stylus(v, w, &ss, &attached);
+	if (fclose(v->data) != 0) {
+		fprintf(stderr, "handspring view: cannot write %s: %s\n", path, strerror(errno));
+		exit(2);
+	}
+	v->data = NULL;
 	long frame = hs_world_frame(w);
 	char *title = v->titles[v->records];
 	int len = snprintf(title, 160, "t = %.3f s", (double)frame * hs_world_dt(w));
@@ -205,8 +218,10 @@ static void record(view_run *v, hs_scenario *s) {
 	v->frames[v->records++] = frame;
 }
 
-static void splot(FILE *g, const char *data, long r) {
-	long base = r * VIEW_BLOCKS;
+static void splot(FILE *g, const char *dir, long r) {
+	char data[96];
+	snprintf(data, sizeof data, "%s/r%06ld.dat", dir, r);
+	long base = 0;
 	fputs("splot ", g);
 	for (int c = 0; c < VIEW_COLOURS; ++c)
 		for (int s = 0; s < VIEW_SHADES; ++s) {
@@ -448,19 +463,11 @@ int hs_view_main(int argc, char **argv) {
 		hs_scenario_destroy(s);
 		return 2;
 	}
-	char data[64];
-	snprintf(data, sizeof data, "%s/frames.dat", dir);
 	view_run v;
 	memset(&v, 0, sizeof v);
+	snprintf(v.dir, sizeof v.dir, "%s", dir);
 	v.lo = hs_v3(INFINITY, INFINITY, INFINITY);
 	v.hi = hs_v3(-INFINITY, -INFINITY, -INFINITY);
-	v.data = fopen(data, "w");
-	if (!v.data) {
-		fprintf(stderr, "handspring view: cannot write %s: %s\n", data, strerror(errno));
-		rmdir(dir);
-		hs_scenario_destroy(s);
-		return 2;
-	}
 	hs_world *w = hs_scenario_world(s);
 	hs_spring_def sd;
 	if (hs_world_spring_def(w, &sd) == HS_OK && sd.walls.enabled) { // the walls in view
@@ -475,13 +482,14 @@ int hs_view_main(int argc, char **argv) {
 	while (hs_scenario_step(s))
 		if (wanted(&o, hs_world_frame(w), frames, dt))
 			record(&v, s);
-	fclose(v.data);
 	fprintf(stderr, "handspring view: drawing %ld frames with gnuplot\n", v.records);
-	status = draw(&o, &v, data, w, hs_scenario_name(s));
-	if (!getenv("HS_VIEW_KEEP")) { // (debugging: keep the data and the folder)
-		remove(data);
-		rmdir(dir);
+	status = draw(&o, &v, dir, w, hs_scenario_name(s));
+	for (long r = 0; r < v.records; ++r) {
+		char path[96];
+		snprintf(path, sizeof path, "%s/r%06ld.dat", dir, r);
+		remove(path);
 	}
+	rmdir(dir);
 	free(v.titles);
 	free(v.frames);
 	hs_scenario_destroy(s);
