@@ -73,12 +73,15 @@ bool hs_record_load(const char *path, hs_hand_script *script, hs_error *err) {
 			key->sensors[i] = v[8 + i];
 	}
 	hs_record_rows_free(&rows);
-	if (!ok) {
-		free(script->keys);
-		script->keys = NULL;
-		script->key_count = 0;
-	}
+	if (!ok)
+		hs_hand_script_clear(script);
 	return ok;
+}
+
+void hs_hand_script_clear(hs_hand_script *script) {
+	free(script->keys);
+	script->keys = NULL;
+	script->key_count = 0;
 }
 
 static const char *const posture_names[] = {"open", "fist", "pinch", "point", "grasp"};

@@ -26,6 +26,8 @@ typedef struct hs_hand_script {
 // the first key and after the last the nearest key holds.
 void hs_hand_script_sample(const hs_hand_script *script, double t, hs_vec3 *wrist, hs_quat *rot,
                            uint8_t sensors[HS_GLOVE_SENSORS]);
+// Frees a script's keys and leaves it empty (a load that failed half way).
+void hs_hand_script_clear(hs_hand_script *script);
 // Reads a recorded glove+tracker CSV (header t,x,y,z,qw,qx,qy,qz,s0..s17; any rate) into keys.
 // Errors are "PATH:LINE: what is wrong".
 bool hs_record_load(const char *path, hs_hand_script *script, hs_error *err);

@@ -235,11 +235,8 @@ bool hs_joint_record_load(const char *path, hs_joint_format format, const hs_han
 		script->key_count++;
 	}
 	hs_record_rows_free(&rows);
-	if (!ok) {
-		free(script->keys);
-		script->keys = NULL;
-		script->key_count = 0;
-	}
+	if (!ok)
+		hs_hand_script_clear(script);
 	return ok;
 }
 

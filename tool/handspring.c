@@ -781,23 +781,14 @@ int main(int argc, char **argv) {
 		printf("handspring %s\n", HS_VERSION);
 		return EXIT_PASS;
 	}
-	if (strcmp(command, "list") == 0)
-		return cmd_list(argc - 2, argv + 2);
-	if (strcmp(command, "run") == 0)
-		return cmd_run(argc - 2, argv + 2);
-	if (strcmp(command, "all") == 0)
-		return cmd_all(argc - 2, argv + 2);
-	if (strcmp(command, "sweep") == 0)
-		return cmd_sweep(argc - 2, argv + 2);
-	if (strcmp(command, "view") == 0)
-		return hs_view_main(argc - 2, argv + 2);
-	if (strcmp(command, "joints") == 0)
-		return cmd_joints(argc - 2, argv + 2);
-	if (strcmp(command, "hand") == 0)
-		return hs_hand_main(argc - 2, argv + 2);
-	if (strcmp(command, "check") == 0)
-		return hs_check_main(argc - 2, argv + 2);
-	if (strcmp(command, "golden") == 0)
-		return cmd_golden(argc - 2, argv + 2);
+	static const struct {
+		const char *name;
+		int (*run)(int argc, char **argv);
+	} commands[] = {{"list", cmd_list},    {"run", cmd_run},           {"all", cmd_all},
+	                {"sweep", cmd_sweep},  {"view", hs_view_main},     {"joints", cmd_joints},
+	                {"hand", hs_hand_main}, {"check", hs_check_main},  {"golden", cmd_golden}};
+	for (size_t k = 0; k < sizeof commands / sizeof commands[0]; ++k)
+		if (strcmp(command, commands[k].name) == 0)
+			return commands[k].run(argc - 2, argv + 2);
 	return usage_error(NULL, usage_main, "unknown command '%s'", command);
 }

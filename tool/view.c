@@ -34,7 +34,6 @@ const char *const hs_view_usage =
 
 #define VIEW_SHADES 6
 #define VIEW_COLOURS 4 // objects by contact state: none, push, grasp, push at several points
-#define VIEW_BLOCKS (VIEW_COLOURS * VIEW_SHADES + 4) // + hand lines, palm, contacts, stylus
 #define VIEW_MAX_TIMES 16
 
 static const char *const state_rgb[VIEW_COLOURS][2] = { // [state] = {dark, light}
@@ -221,19 +220,17 @@ static void record(view_run *v, hs_scenario *s) {
 static void splot(FILE *g, const char *dir, long r) {
 	char data[96];
 	snprintf(data, sizeof data, "%s/r%06ld.dat", dir, r);
-	long base = 0;
 	fputs("splot ", g);
 	for (int c = 0; c < VIEW_COLOURS; ++c)
 		for (int s = 0; s < VIEW_SHADES; ++s) {
 			int b = c * VIEW_SHADES + s;
-			fprintf(g, "'%s' index %ld with polygons fs solid 1.0 noborder fc rgb mix(%d) notitle, ", data, base + b,
-			        c * VIEW_SHADES + s);
+			fprintf(g, "'%s' index %d with polygons fs solid 1.0 noborder fc rgb mix(%d) notitle, ", data, b, b);
 		}
-	long h = base + VIEW_COLOURS * VIEW_SHADES;
-	fprintf(g, "'%s' index %ld with lines lw 5 lc rgb '#c98e6b' notitle, ", data, h);
-	fprintf(g, "'%s' index %ld with polygons fs solid 1.0 noborder fc rgb '#e0b392' notitle, ", data, h + 1);
-	fprintf(g, "'%s' index %ld using 1:2:3:(col($4)) with points pt 7 ps 1.2 lc rgb variable notitle, ", data, h + 2);
-	fprintf(g, "'%s' index %ld with lines lw 2 lc rgb '#333333' notitle, ", data, h + 3);
+	int h = VIEW_COLOURS * VIEW_SHADES; // then the hand, the palm, the contacts, the stylus
+	fprintf(g, "'%s' index %d with lines lw 5 lc rgb '#c98e6b' notitle, ", data, h);
+	fprintf(g, "'%s' index %d with polygons fs solid 1.0 noborder fc rgb '#e0b392' notitle, ", data, h + 1);
+	fprintf(g, "'%s' index %d using 1:2:3:(col($4)) with points pt 7 ps 1.2 lc rgb variable notitle, ", data, h + 2);
+	fprintf(g, "'%s' index %d with lines lw 2 lc rgb '#333333' notitle, ", data, h + 3);
 	fprintf(g, "floor with lines lw 0.5 lc rgb '#b0b0b0' notitle, walls with lines lw 1.5 lc rgb '#808080' notitle\n");
 }
 
