@@ -11,7 +11,7 @@
 //    metacarpal joints, the palm and the wrist joint are not check points.
 //  - the wrist pose: the rigid motion that best carries the hand definition's thumb CMC and index
 //    and middle MCPs (which no sensor moves with the wrist sensors neutral) onto the recorded ones
-//    (least squares, Kabsch by GSL's SVD); the glove's wrist pitch and yaw stay neutral (the pose
+//    (the rotation between the frames the three span); the glove's wrist pitch and yaw stay neutral (the pose
 //    takes them: positions alone cannot tell them from the tracker's turn).
 //  - the 16 other sensors: the integers (0.5° units) whose kinematics best reach the recorded
 //    check points in the wrist frame (least squares): the first sample by full scans of each
@@ -21,8 +21,6 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-
-#include <gsl/gsl_linalg.h>
 
 #include "joint_input.h"
 #include "record.h"
@@ -146,52 +144,50 @@ static hs_quat quat_of(double m[3][3]) {
 	return hs_quat_normalize(q);
 }
 
+// An orthonormal frame (columns) spanned by three points: a→b, then c's part across it.
+static bool frame_of3(hs_vec3 a, hs_vec3 b, hs_vec3 c, double f[3][3]) {
+	hs_vec3 e1 = hs_sub(b, a), e2 = hs_sub(c, a);
+	if (!(hs_length_sq(e1) > 0.0))
+		return false;
+	e1 = hs_normalize(e1);
+	e2 = hs_sub(e2, hs_scale(e1, hs_dot(e2, e1)));
+	if (!(hs_length_sq(e2) > 0.0))
+		return false;
+	e2 = hs_normalize(e2);
+	hs_vec3 e3 = hs_cross(e1, e2), cols[3] = {e1, e2, e3};
+	for (int k = 0; k < 3; ++k) {
+		f[0][k] = cols[k].x;
+		f[1][k] = cols[k].y;
+		f[2][k] = cols[k].z;
+	}
+	return true;
+}
+
 // The rigid motion (rotation, translation) carrying the definition's thumb CMC and index and
-// middle MCPs (wrist frame) onto the recorded ones, least squares (Kabsch).
+// middle MCPs (wrist frame) onto the recorded ones: the rotation between the frames the three
+// points span (Gram-Schmidt), the translation matching their centroids. Only IEEE operations
+// (no LAPACK-style library), so the same bits on every machine: an SVD fit differed on i386 and
+// aarch64 in the last bits.
 static bool fit_wrist(const hs_hand_def *def, const hs_vec3 world[HS_HAND_POINTS], hs_quat *rot, hs_vec3 *pos) {
 	uint8_t open[HS_GLOVE_SENSORS];
 	hs_hand_posture(def, HS_POSTURE_OPEN, 0.0, open);
 	hs_vec3 local[HS_HAND_POINTS], lines[HS_HAND_LINES][2];
 	hs_hand_kinematics(def, hs_v3(0, 0, 0), hs_quat_identity(), open, local, lines);
+	double fl[3][3], fw[3][3], r[3][3];
+	if (!frame_of3(local[rigid[0]], local[rigid[1]], local[rigid[2]], fl) ||
+	    !frame_of3(world[rigid[0]], world[rigid[1]], world[rigid[2]], fw))
+		return false;
+	for (int i = 0; i < 3; ++i) // R = Fw Flᵀ
+		for (int j = 0; j < 3; ++j)
+			r[i][j] = fw[i][0] * fl[j][0] + fw[i][1] * fl[j][1] + fw[i][2] * fl[j][2];
+	*rot = quat_of(r);
 	hs_vec3 lc = hs_v3(0, 0, 0), wc = hs_v3(0, 0, 0);
 	for (int k = 0; k < 3; ++k) {
 		lc = hs_add(lc, hs_scale(local[rigid[k]], 1.0 / 3.0));
 		wc = hs_add(wc, hs_scale(world[rigid[k]], 1.0 / 3.0));
 	}
-	gsl_matrix *a = gsl_matrix_calloc(3, 3), *v = gsl_matrix_alloc(3, 3);
-	gsl_vector *sv = gsl_vector_alloc(3), *work = gsl_vector_alloc(3);
-	bool ok = a && v && sv && work;
-	for (int k = 0; ok && k < 3; ++k) { // A = Σ (local − lc)(world − wc)ᵀ
-		hs_vec3 l = hs_sub(local[rigid[k]], lc), w = hs_sub(world[rigid[k]], wc);
-		double lv[3] = {l.x, l.y, l.z}, wv[3] = {w.x, w.y, w.z};
-		for (int i = 0; i < 3; ++i)
-			for (int j = 0; j < 3; ++j)
-				gsl_matrix_set(a, (size_t)i, (size_t)j, gsl_matrix_get(a, (size_t)i, (size_t)j) + lv[i] * wv[j]);
-	}
-	ok = ok && gsl_linalg_SV_decomp(a, v, sv, work) == 0; // A = U S Vᵀ (U in a)
-	if (ok) { // R = V diag(1, 1, det) Uᵀ
-		double u[3][3], vv[3][3], r[3][3];
-		for (int i = 0; i < 3; ++i)
-			for (int j = 0; j < 3; ++j) {
-				u[i][j] = gsl_matrix_get(a, (size_t)i, (size_t)j);
-				vv[i][j] = gsl_matrix_get(v, (size_t)i, (size_t)j);
-			}
-		double det = (vv[0][0] * (vv[1][1] * vv[2][2] - vv[1][2] * vv[2][1]) - vv[0][1] * (vv[1][0] * vv[2][2] - vv[1][2] * vv[2][0]) +
-		              vv[0][2] * (vv[1][0] * vv[2][1] - vv[1][1] * vv[2][0])) *
-		             (u[0][0] * (u[1][1] * u[2][2] - u[1][2] * u[2][1]) - u[0][1] * (u[1][0] * u[2][2] - u[1][2] * u[2][0]) +
-		              u[0][2] * (u[1][0] * u[2][1] - u[1][1] * u[2][0]));
-		double d[3] = {1.0, 1.0, det < 0.0 ? -1.0 : 1.0};
-		for (int i = 0; i < 3; ++i)
-			for (int j = 0; j < 3; ++j)
-				r[i][j] = vv[i][0] * d[0] * u[j][0] + vv[i][1] * d[1] * u[j][1] + vv[i][2] * d[2] * u[j][2];
-		*rot = quat_of(r);
-		*pos = hs_sub(wc, hs_quat_rotate(*rot, lc));
-	}
-	gsl_matrix_free(a);
-	gsl_matrix_free(v);
-	gsl_vector_free(sv);
-	gsl_vector_free(work);
-	return ok;
+	*pos = hs_sub(wc, hs_quat_rotate(*rot, lc));
+	return true;
 }
 
 bool hs_joint_record_load(const char *path, hs_joint_format format, const hs_hand_def *def, hs_hand_script *script,
@@ -220,7 +216,8 @@ bool hs_joint_record_load(const char *path, hs_joint_format format, const hs_han
 		}
 		hs_hand_key *key = &script->keys[script->key_count];
 		if (!fit_wrist(def, world, &key->rot, &key->wrist)) {
-			ok = hs_set_error(err, path, (unsigned long)rows.lines[r], "cannot fit the wrist to these joints");
+			ok = hs_set_error(err, path, (unsigned long)rows.lines[r],
+			                  "cannot fit the wrist: the thumb CMC and the index and middle MCPs are in one line");
 			break;
 		}
 		for (int i = 0; i < HS_HAND_POINTS; ++i)
