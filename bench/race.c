@@ -44,6 +44,7 @@ typedef struct race_job {
 } race_job;
 
 // Finger segment g (finger g / 3, segment g % 3): from check point g / 3 · 4 + g % 3 to the next.
+#if defined(HS_BENCH_ODE) || defined(HS_BENCH_MUJOCO)
 static void segment(const bench_race_frame *f, int g, hs_vec3 *a, hs_vec3 *b) {
 	int p = g / 3 * 4 + g % 3;
 	*a = f->points[p];
@@ -65,6 +66,7 @@ static void tally(race_job *job, const bench_race_frame *f) {
 	job->missing += __builtin_popcountll(f->touch & ~job->touch);
 	job->frames_run++;
 }
+#endif // the peers' shared helpers
 
 #ifdef HS_BENCH_ODE
 typedef struct ode_race {
