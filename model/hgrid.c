@@ -6,6 +6,7 @@
 // each object at the level its size fits keeps every cell's share of objects O(1) for any mix.
 // Results are sorted by index, so callers iterate in the order a full scan would: no result
 // depends on the grid (DESIGN.md: determinism; array order).
+#include <limits.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -107,6 +108,15 @@ void hs_hgrid_build(hs_hgrid *g, int n) {
 		g->by_level[fill[g->level[i]]++] = i;
 	for (int b = 0; b < g->buckets; ++b)
 		g->head[b] = -1;
+	hs_hgrid_reset_occupied(g);
+}
+
+void hs_hgrid_reset_occupied(hs_hgrid *g) {
+	for (int l = 0; l < HS_HGRID_LEVELS; ++l)
+		for (int d = 0; d < 3; ++d) {
+			g->occupied[l][0][d] = LONG_MAX;
+			g->occupied[l][1][d] = LONG_MIN;
+		}
 }
 
 // The cell of coordinate v at a level of inverse cell size inv: x ↦ floor(x · inv) is monotonic,
@@ -144,9 +154,12 @@ void hs_hgrid_file(hs_hgrid *g, int i, hs_vec3 centre) {
 	double inv = g->inv[g->level[i]], x[3] = {centre.x, centre.y, centre.z};
 	long c[3];
 	bool same = g->bucket[i] >= 0;
+	long(*occ)[3] = g->occupied[g->level[i]];
 	for (int d = 0; d < g->dims; ++d) {
 		c[d] = cell_coord(x[d], inv);
 		same = same && g->cell[(size_t)i * (size_t)g->dims + (size_t)d] == c[d];
+		occ[0][d] = c[d] < occ[0][d] ? c[d] : occ[0][d];
+		occ[1][d] = c[d] > occ[1][d] ? c[d] : occ[1][d];
 	}
 	if (same)
 		return;
@@ -216,7 +229,11 @@ int hs_hgrid_query(const hs_hgrid *g, hs_vec3 lo, hs_vec3 hi, int *out) {
 		if (cells > (double)count) { // more cells than objects: the level's list (sorted) is cheaper
 			memcpy(out + n, g->by_level + g->first[level], (size_t)count * sizeof *out);
 			n += count;
-		} else {
+		} else { // (the choice above is made on the unclipped range: the same result as before)
+			for (int d = 0; d < g->dims; ++d) { // no object filed outside the occupied cells
+				c0[d] = c0[d] > g->occupied[level][0][d] ? c0[d] : g->occupied[level][0][d];
+				c1[d] = c1[d] < g->occupied[level][1][d] ? c1[d] : g->occupied[level][1][d];
+			}
 			n = visit_cells(g, level, c0, c1, out, n);
 			hs_sort_indices(out + start, n - start);
 		}

@@ -28,6 +28,7 @@ typedef struct hs_hgrid {
 	double inv[HS_HGRID_LEVELS];    // 1/m: its inverse (cells only need a monotonic map, not exact)
 	double reach[HS_HGRID_LEVELS];  // m: largest half-extent filed at each level
 	int first[HS_HGRID_LEVELS + 1]; // level L's objects are by_level[first[L] .. first[L + 1])
+	long occupied[HS_HGRID_LEVELS][2][3]; // cells filed at each level since the last reset: [lo, hi] per axis
 	int *by_level;    // objects by level, in index order within each
 	int *head;        // bucket → first object (-1: none)
 	int *next, *bucket, *level;
@@ -45,6 +46,9 @@ void hs_hgrid_free(hs_hgrid *g);
 void hs_hgrid_build(hs_hgrid *g, int n);
 // Files object i by its centre (again after it moved; a no-op when it stays in its cell).
 void hs_hgrid_file(hs_hgrid *g, int i, hs_vec3 centre);
+// Forgets which cells were filed before; the caller then files every object again. Queries visit
+// only the cells between the lowest and highest filed since (objects on a floor: one layer).
+void hs_hgrid_reset_occupied(hs_hgrid *g);
 // Objects whose bounds (centre ± half-extent) may meet the box [lo, hi], in index order.
 // Returns how many were written to out (capacity long).
 int hs_hgrid_query(const hs_hgrid *g, hs_vec3 lo, hs_vec3 hi, int *out);

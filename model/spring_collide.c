@@ -287,6 +287,7 @@ static void file_all(hs_world *world, hs_spring_system *sys) {
 		hs_hgrid_build(&sys->grid, n);
 		sys->grid_count = n;
 	}
+	hs_hgrid_reset_occupied(&sys->grid);
 	for (int i = 0; i < n; ++i)
 		hs_hgrid_file(&sys->grid, i, box_centre(&sys->geom[i], world->bodies[i].pos));
 }
@@ -522,8 +523,51 @@ static double meeting_of(hs_world *world, const hs_spring_system *sys, int i, in
 	return tau >= 0.0 && tau < 1.0 ? tau : -1.0;
 }
 
-// The meetings of object q with its neighbours r > after (and r != skip) into sys->events, counting
-// those beyond the capacity (answered at the frame's end instead).
+// Event a before event b: by tau, then the pair (a strict order: a pair is listed once at a time).
+static bool before(const hs_spring_event *a, const hs_spring_event *b) {
+	return a->tau < b->tau || (a->tau == b->tau && (a->i < b->i || (a->i == b->i && a->j < b->j)));
+}
+
+static bool stale(const hs_spring_system *sys, const hs_spring_event *e) {
+	return e->vi != sys->version[e->i] || e->vj != sys->version[e->j];
+}
+
+static void sift_up(hs_spring_event *h, int k) {
+	for (int parent; k > 0 && before(&h[k], &h[parent = (k - 1) / 2]); k = parent) {
+		hs_spring_event t = h[k];
+		h[k] = h[parent];
+		h[parent] = t;
+	}
+}
+
+static void sift_down(hs_spring_event *h, int n, int k) {
+	for (int child; (child = 2 * k + 1) < n; k = child) {
+		if (child + 1 < n && before(&h[child + 1], &h[child]))
+			++child;
+		if (!before(&h[child], &h[k]))
+			return;
+		hs_spring_event t = h[k];
+		h[k] = h[child];
+		h[child] = t;
+	}
+}
+
+// Makes room in a full heap by dropping its stale meetings; false when every one is live.
+static bool compact(hs_spring_system *sys) {
+	int kept = 0;
+	for (int e = 0; e < sys->event_count; ++e)
+		if (!stale(sys, &sys->events[e]))
+			sys->events[kept++] = sys->events[e];
+	if (kept == sys->event_count)
+		return false;
+	sys->event_count = kept;
+	for (int k = kept / 2 - 1; k >= 0; --k)
+		sift_down(sys->events, kept, k);
+	return true;
+}
+
+// The meetings of object q with its neighbours r > after (and r != skip) onto the heap, counting
+// those beyond the capacity of live meetings (answered at the frame's end instead).
 static void list_meetings(hs_world *world, hs_spring_system *sys, int q, int after, int skip, double reach) {
 	int count = near_of(world, sys, q, reach);
 	for (int k = 0; k < count; ++k) {
@@ -533,37 +577,27 @@ static void list_meetings(hs_world *world, hs_spring_system *sys, int q, int aft
 		double tau = meeting_of(world, sys, i, j);
 		if (tau < 0.0)
 			continue;
-		if (sys->event_count == sys->event_capacity) {
+		if (sys->event_count == sys->event_capacity && !compact(sys)) {
 			world->counters.dropped_contacts++;
 			continue;
 		}
-		sys->events[sys->event_count++] = (hs_spring_event){i, j, tau};
+		sys->events[sys->event_count] = (hs_spring_event){i, j, tau, sys->version[i], sys->version[j]};
+		sift_up(sys->events, sys->event_count++);
 	}
 }
 
-static void drop_meetings_of(hs_spring_system *sys, int a, int b) {
-	int kept = 0;
-	for (int e = 0; e < sys->event_count; ++e) {
-		hs_spring_event ev = sys->events[e];
-		if (ev.i != a && ev.j != a && ev.i != b && ev.j != b)
-			sys->events[kept++] = ev;
-	}
-	sys->event_count = kept;
-}
-
-// The earliest listed meeting (ties: the lowest pair), removed from the list; false when none.
+// The earliest live meeting (ties: the lowest pair), taken off the heap; false when none. Meetings
+// of an answered object went stale when it was (its version moved on) and are skipped here: the
+// linear scan and removal this replaces made a frame of E meetings O(E²).
 static bool earliest(hs_spring_system *sys, hs_spring_event *out) {
-	if (sys->event_count == 0)
-		return false;
-	int best = 0;
-	for (int e = 1; e < sys->event_count; ++e) {
-		const hs_spring_event *x = &sys->events[e], *y = &sys->events[best];
-		if (x->tau < y->tau || (x->tau == y->tau && (x->i < y->i || (x->i == y->i && x->j < y->j))))
-			best = e;
+	while (sys->event_count > 0) {
+		*out = sys->events[0];
+		sys->events[0] = sys->events[--sys->event_count];
+		sift_down(sys->events, sys->event_count, 0);
+		if (!stale(sys, out))
+			return true;
 	}
-	*out = sys->events[best];
-	sys->events[best] = sys->events[--sys->event_count];
-	return true;
+	return false;
 }
 
 #define HS_SEPARATION_PASSES 8
@@ -607,7 +641,7 @@ static bool end_pass(hs_world *world, hs_spring_system *sys, bool first) {
 				continue;
 			}
 			double low = fmin(world->bodies[i].pos.z, world->bodies[j].pos.z);
-			sys->events[sys->event_count++] = (hs_spring_event){i, j, low};
+			sys->events[sys->event_count++] = (hs_spring_event){i, j, low, 0u, 0u};
 		}
 	}
 	if (sys->event_count > 1)
@@ -658,7 +692,8 @@ void hs_spring_collide(hs_world *world, hs_spring_system *sys) {
 	hs_spring_event ev;
 	for (long budget = 8L * world->object_count; budget > 0 && earliest(sys, &ev); --budget) {
 		answer(world, sys, ev.i, ev.j, ev.tau, false);
-		drop_meetings_of(sys, ev.i, ev.j);
+		sys->version[ev.i]++; // their listed meetings are stale: found again from the new paths
+		sys->version[ev.j]++;
 		list_meetings(world, sys, ev.i, -1, -1, reach);
 		list_meetings(world, sys, ev.j, -1, ev.i, reach);
 	}

@@ -59,6 +59,12 @@ static void mode_step(hs_integrator integrator, double omega, double e0, double 
                       double *e1, double *u1) {
 	switch (integrator) {
 	case HS_INTEGRATOR_EXACT: {
+		if (omega == 0.0) { // no spring on this mode (gravity, friction): e^0 = 1 and φ2(0) = 1/2
+			double b = u0 + omega * e0; // the general case's operations with those values: the same bits
+			*e1 = 1.0 * (e0 + b * t) + a * t * t * 0.5;
+			*u1 = 1.0 * (u0 - omega * b * t) + a * t * 1.0;
+			return;
+		}
 		double x = omega * t, decay = hs_exp(-x), b = u0 + omega * e0;
 		*e1 = decay * (e0 + b * t) + a * t * t * phi2(x);
 		*u1 = decay * (u0 - omega * b * t) + a * t * decay;

@@ -26,6 +26,29 @@ typedef struct frame_ctx {
 	hs_vec3 gravity;
 } frame_ctx;
 
+// Object i's spring parameters, from the cache while its mass is the one they were found for.
+static hs_spring_params params_of(const frame_ctx *fx, int i) {
+	hs_spring_system *sys = fx->sys;
+	double mass = fx->world->bodies[i].mass;
+	if (memcmp(&sys->params_mass[i], &mass, sizeof mass) != 0) {
+		sys->params[i] = hs_spring_params_of(&sys->def, fx->world, mass);
+		sys->params_mass[i] = mass;
+	}
+	return sys->params[i];
+}
+
+// Forgets the cached parameters when the definition or gravity they came from changed.
+static void check_params_cache(const hs_world *world, hs_spring_system *sys) {
+	const hs_spring_def *d = &sys->def;
+	double key[8] = {d->rest_length_ref, d->rest_mass_ref, d->rest_exponent, d->rest_length_min,
+	                 d->rest_length_max, world->def.gravity.x, world->def.gravity.y, world->def.gravity.z};
+	if (memcmp(key, sys->params_key, sizeof key) == 0)
+		return;
+	memcpy(sys->params_key, key, sizeof key);
+	for (int i = 0; i < sys->capacity; ++i)
+		sys->params_mass[i] = NAN;
+}
+
 // What the floor sees of object i's frame.
 static hs_spring_support support_of(const frame_ctx *fx, int i, const hs_spring_params *sp) {
 	const hs_spring_system *sys = fx->sys;
@@ -93,7 +116,7 @@ static void step_body(const frame_ctx *fx, int i) {
 	hs_body *body = &fx->world->bodies[i];
 	const hs_spring_geom *g = &sys->geom[i];
 	bool attached = i == sys->attached;
-	hs_spring_params sp = hs_spring_params_of(&sys->def, fx->world, body->mass);
+	hs_spring_params sp = params_of(fx, i);
 	hs_vec3 p = body->pos, v = body->vel;
 
 	hs_spring_segment sg;
@@ -163,6 +186,7 @@ void hs_spring_step(hs_world *world) {
 		sys->geom[i] = hs_spring_geom_of(world, &world->bodies[i]);
 	sys->geom_count = n;
 
+	check_params_cache(world, sys);
 	frame_ctx fx = {world, sys, world->def.dt, world->def.gravity};
 	double t0 = (double)world->frame * fx.dt, t1 = (double)(world->frame + 1) * fx.dt;
 	sys->stylus_velocity = hs_scale(hs_sub(sys->stylus, sys->stylus_prev), 1.0 / fx.dt);

@@ -6,6 +6,7 @@
 #define HS_SPRING_SYSTEM_H
 
 #include "spring_geom.h"
+#include "spring_params.h"
 #include "tracker.h"
 
 // Touches the resting contacts hold per object (the world's max_objects of them): equal spheres
@@ -30,6 +31,7 @@ typedef struct hs_spring_touch {
 typedef struct hs_spring_event {
 	int i, j;
 	double tau;
+	uint32_t vi, vj; // the objects' versions when it was listed: stale once either is answered
 } hs_spring_event;
 
 // What the resting contacts know of one object in a frame (spring_rest.c).
@@ -59,7 +61,13 @@ struct hs_spring_system {
 	// frame starts (the frame start, or where it was last answered) and at which fraction of it
 	hs_vec3 *path_pos, *path_vel;
 	double *path_t0;
-	hs_spring_event *events; // the meetings still to answer this frame
+	// CACHE: each object's spring parameters (hs_spring_params_of: a power per call), for the mass
+	// params_mass holds (NaN: none); all forgotten when what else they depend on changes
+	hs_spring_params *params;
+	double *params_mass;
+	double params_key[8]; // rest_length_ref, rest_mass_ref, rest_exponent, min, max, gravity
+	hs_spring_event *events; // the meetings still to answer this frame (a heap by tau, i, j)
+	uint32_t *version;       // per object: bumped when it is answered, so its listed meetings go stale
 	uint8_t *moved;          // moved by a separation pass (bit 0: the last, bit 1: this one)
 	bool shock;              // an end pass is separating bottom up (spring_collide.c)
 	int event_count, event_capacity;

@@ -25,6 +25,9 @@ void hs_spring_system_destroy(hs_spring_system *system) {
 	free(system->path_vel);
 	free(system->path_t0);
 	free(system->events);
+	free(system->version);
+	free(system->params);
+	free(system->params_mass);
 	free(system->moved);
 	free(system->active);
 	free(system->rest_index);
@@ -54,12 +57,17 @@ hs_status hs_world_enable_springs(hs_world *world, const hs_spring_def *def) {
 	sys->moved = calloc(cap, sizeof *sys->moved);
 	sys->event_capacity = (int)(HS_SPRING_TOUCHES_PER_OBJECT * cap);
 	sys->events = calloc((size_t)sys->event_capacity, sizeof *sys->events);
+	sys->version = calloc(cap, sizeof *sys->version);
+	sys->params = calloc(cap, sizeof *sys->params);
+	sys->params_mass = calloc(cap, sizeof *sys->params_mass);
 	sys->touch_capacity = (int)(HS_SPRING_TOUCHES_PER_OBJECT * cap);
 	sys->touch = calloc((size_t)sys->touch_capacity, sizeof *sys->touch);
 	sys->active = calloc(cap, sizeof *sys->active);
 	sys->rest_index = malloc(cap * sizeof *sys->rest_index);
 	for (size_t i = 0; sys->rest_index && i < cap; ++i)
 		sys->rest_index[i] = -1;
+	for (size_t i = 0; sys->params_mass && i < cap; ++i)
+		sys->params_mass[i] = NAN; // no parameters cached
 	sys->rest = calloc(cap, sizeof *sys->rest);
 	sys->load = calloc(cap, sizeof *sys->load);
 	sys->held = calloc(cap, sizeof *sys->held);
@@ -67,7 +75,8 @@ hs_status hs_world_enable_springs(hs_world *world, const hs_spring_def *def) {
 	sys->grid_count = -1;
 	if (!sys->geom || !sys->on_floor || !sys->sliding || !sys->separated || !sys->saved_pos || !sys->saved_vel ||
 	    !sys->near || !grid || !sys->touch || !sys->active || !sys->rest_index || !sys->rest || !sys->load ||
-	    !sys->held || !sys->path_pos || !sys->path_vel || !sys->path_t0 || !sys->events || !sys->moved) {
+	    !sys->held || !sys->path_pos || !sys->path_vel || !sys->path_t0 || !sys->events || !sys->version || !sys->params || !sys->params_mass ||
+	    !sys->moved) {
 		hs_spring_system_destroy(sys);
 		return HS_ERR_NO_MEMORY;
 	}
