@@ -122,12 +122,13 @@ void hs_hgrid_reset_occupied(hs_hgrid *g) {
 // The cell of coordinate v at a level of inverse cell size inv: x ↦ floor(x · inv) is monotonic,
 // all filing and queries need (a centre within a query's range lies in one of its cells).
 static long cell_coord(double v, double inv) {
-	double q = floor(v * inv);
-	if (!(q > -HS_HGRID_CLAMP))
-		q = -HS_HGRID_CLAMP;
-	if (q > HS_HGRID_CLAMP)
-		q = HS_HGRID_CLAMP;
-	return (long)q;
+	double x = v * inv;
+	if (!(x > -HS_HGRID_CLAMP))
+		x = -HS_HGRID_CLAMP;
+	if (x > HS_HGRID_CLAMP)
+		x = HS_HGRID_CLAMP;
+	long q = (long)x; // floor without a library call: truncation, one less below zero
+	return q - (x < (double)q ? 1 : 0);
 }
 
 static int bucket_of(const hs_hgrid *g, int level, const long *c) {

@@ -26,6 +26,7 @@
 
 #include "collide.h"
 #include "spring_collide.h"
+#include "spring_near.h"
 #include "spring_rest.h"
 
 // A sphere (centre c, radius r) against the box lo..hi in the same frame: normal from the sphere
@@ -259,72 +260,25 @@ static void separate(hs_world *world, const hs_spring_system *sys, int i, int j,
 	b->pos = hs_add(b->pos, db);
 }
 
-// m added around each bounding box in the broad phase: far above rounding and libccd's touch
-// margins, so it only ever lets through pairs the exact test then rejects.
-static double margin_of(const hs_spring_geom *g, hs_vec3 p) {
-	return 1e-6 + 1e-9 * (fabs(p.x) + fabs(p.y) + fabs(p.z) + g->hi.x - g->lo.x + g->hi.y - g->lo.y + g->hi.z - g->lo.z);
-}
-
 static bool boxes_meet(const hs_spring_geom *ga, hs_vec3 pa, const hs_spring_geom *gb, hs_vec3 pb, double m) {
 	return pa.x + ga->lo.x - m <= pb.x + gb->hi.x && pb.x + gb->lo.x <= pa.x + ga->hi.x + m &&
 	       pa.y + ga->lo.y - m <= pb.y + gb->hi.y && pb.y + gb->lo.y <= pa.y + ga->hi.y + m &&
 	       pa.z + ga->lo.z - m <= pb.z + gb->hi.z && pb.z + gb->lo.z <= pa.z + ga->hi.z + m;
 }
 
-static hs_vec3 box_centre(const hs_spring_geom *g, hs_vec3 p) {
-	return hs_add(p, hs_scale(hs_add(g->lo, g->hi), 0.5));
-}
-
-// Files every object in the broad phase by its bounding box's centre; levels from the boxes'
-// half-extents, assigned again when objects were added (or the geometry was rebuilt).
-static void file_all(hs_world *world, hs_spring_system *sys) {
-	int n = world->object_count;
-	if (sys->grid_count != n) {
-		for (int i = 0; i < n; ++i) {
-			hs_vec3 w = hs_sub(sys->geom[i].hi, sys->geom[i].lo);
-			sys->grid.half[i] = 0.5 * fmax(w.x, fmax(w.y, w.z));
-		}
-		hs_hgrid_build(&sys->grid, n);
-		sys->grid_count = n;
-	}
-	hs_hgrid_reset_occupied(&sys->grid);
-	for (int i = 0; i < n; ++i)
-		hs_hgrid_file(&sys->grid, i, box_centre(&sys->geom[i], world->bodies[i].pos));
-}
-
-// Objects whose bounds may meet object i's box (its margin included), or its path through the frame
-// grown by `reach` (the farthest any object moved: where another's path may cross it), in index
-// order.
-static int near_of(const hs_world *world, hs_spring_system *sys, int i, double reach) {
-	if (sys->all_pairs) {
-		for (int j = 0; j < world->object_count; ++j)
-			sys->near[j] = j;
-		return world->object_count;
-	}
-	const hs_spring_geom *g = &sys->geom[i];
-	hs_vec3 p = world->bodies[i].pos, s = sys->path_pos[i];
-	double m = margin_of(g, p);
-	hs_vec3 lo = hs_add(p, hs_sub(g->lo, hs_v3(m, m, m))), hi = hs_add(p, hs_add(g->hi, hs_v3(m, m, m)));
-	if (reach > 0.0) {
-		lo = hs_v3(fmin(lo.x, s.x + g->lo.x) - reach, fmin(lo.y, s.y + g->lo.y) - reach, fmin(lo.z, s.z + g->lo.z) - reach);
-		hi = hs_v3(fmax(hi.x, s.x + g->hi.x) + reach, fmax(hi.y, s.y + g->hi.y) + reach, fmax(hi.z, s.z + g->hi.z) + reach);
-	}
-	return hs_hgrid_query(&sys->grid, lo, hi, sys->near);
-}
-
-
 void hs_spring_find_touches(hs_world *world, hs_spring_system *sys, double gap) {
-	file_all(world, sys);
+	hs_spring_file_all(world, sys);
 	sys->touch_count = 0;
 	const hs_spring_geom *geom = sys->geom;
 	for (int i = 0; i < world->object_count; ++i) {
 		hs_vec3 pa = world->bodies[i].pos;
-		int count = near_of(world, sys, i, 0.0);
+		const int *near;
+		int count = hs_spring_near(world, sys, i, 0.0, &near);
 		for (int k = 0; k < count; ++k) {
-			int j = sys->near[k];
+			int j = near[k];
 			hs_vec3 pb = world->bodies[j].pos, n;
 			double depth;
-			if (j <= i || !boxes_meet(&geom[i], pa, &geom[j], pb, margin_of(&geom[i], pa) + margin_of(&geom[j], pb)) ||
+			if (j <= i || !boxes_meet(&geom[i], pa, &geom[j], pb, hs_spring_margin(&geom[i], pa) + hs_spring_margin(&geom[j], pb)) ||
 			    !hs_spring_contact_within(world, &geom[i], pa, &geom[j], pb, gap, &n, &depth))
 				continue;
 			if (sys->touch_count == sys->touch_capacity) {
@@ -504,8 +458,8 @@ static bool answer(hs_world *world, hs_spring_system *sys, int i, int j, double 
 		}
 	}
 	sys->separated[i] = sys->separated[j] = 1;
-	hs_hgrid_file(&sys->grid, i, box_centre(ga, a->pos));
-	hs_hgrid_file(&sys->grid, j, box_centre(gb, b->pos));
+	hs_spring_refile(world, sys, i);
+	hs_spring_refile(world, sys, j);
 	return true;
 }
 
@@ -517,7 +471,7 @@ static double meeting_of(hs_world *world, const hs_spring_system *sys, int i, in
 	const hs_spring_geom *ga = &sys->geom[i], *gb = &sys->geom[j];
 	hs_vec3 pa = world->bodies[i].pos, pb = world->bodies[j].pos, n;
 	double depth;
-	bool end_meets = boxes_meet(ga, pa, gb, pb, margin_of(ga, pa) + margin_of(gb, pb)) &&
+	bool end_meets = boxes_meet(ga, pa, gb, pb, hs_spring_margin(ga, pa) + hs_spring_margin(gb, pb)) &&
 	                 hs_spring_contact(world, ga, pa, gb, pb, &n, &depth);
 	double tau = first_meeting(world, sys, i, j, end_meets);
 	return tau >= 0.0 && tau < 1.0 ? tau : -1.0;
@@ -569,9 +523,10 @@ static bool compact(hs_spring_system *sys) {
 // The meetings of object q with its neighbours r > after (and r != skip) onto the heap, counting
 // those beyond the capacity of live meetings (answered at the frame's end instead).
 static void list_meetings(hs_world *world, hs_spring_system *sys, int q, int after, int skip, double reach) {
-	int count = near_of(world, sys, q, reach);
+	const int *near;
+	int count = hs_spring_near(world, sys, q, reach, &near);
 	for (int k = 0; k < count; ++k) {
-		int r = sys->near[k], i = q < r ? q : r, j = q < r ? r : q;
+		int r = near[k], i = q < r ? q : r, j = q < r ? r : q;
 		if (r == q || r <= after || r == skip)
 			continue;
 		double tau = meeting_of(world, sys, i, j);
@@ -629,12 +584,13 @@ static bool end_pass(hs_world *world, hs_spring_system *sys, bool first) {
 	for (int q = 0; q < world->object_count; ++q) {
 		if (!first && !(mv[q] & 1u))
 			continue;
-		int count = near_of(world, sys, q, 0.0);
+		const int *near;
+		int count = hs_spring_near(world, sys, q, 0.0, &near);
 		for (int k = 0; k < count; ++k) {
-			int r = sys->near[k], i = q < r ? q : r, j = q < r ? r : q;
+			int r = near[k], i = q < r ? q : r, j = q < r ? r : q;
 			if (r == q || (first && r < q) || (!first && r < q && (mv[r] & 1u)) || (unmoved(world, sys, i) && unmoved(world, sys, j)) ||
 			    !boxes_meet(&geom[i], world->bodies[i].pos, &geom[j], world->bodies[j].pos,
-			                margin_of(&geom[i], world->bodies[i].pos) + margin_of(&geom[j], world->bodies[j].pos)))
+			                hs_spring_margin(&geom[i], world->bodies[i].pos) + hs_spring_margin(&geom[j], world->bodies[j].pos)))
 				continue; // (a pair of two movers is met from the lower index)
 			if (sys->event_count == sys->event_capacity) {
 				world->counters.dropped_contacts++;
@@ -682,7 +638,7 @@ void hs_spring_collide(hs_world *world, hs_spring_system *sys) {
 		sys->path_vel[i] = sys->saved_vel[i];
 		sys->path_t0[i] = 0.0;
 	}
-	file_all(world, sys);
+	hs_spring_file_all(world, sys);
 	// Meetings in the order of time (no tunnelling, issue 11): the earliest is answered, then the
 	// meetings of its two objects are found again from their new paths; at most 8 per object and
 	// frame (a pile in a wedge could bounce on), the rest are answered where the frame leaves them.

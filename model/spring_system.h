@@ -13,6 +13,7 @@
 // packed closest have 6 per object (12 neighbours, each shared); beyond, a frame counts the
 // touches it had no room for in counters.dropped_contacts and answers them as collisions.
 #define HS_SPRING_TOUCHES_PER_OBJECT 8
+#define HS_SPRING_NEAR_PER_OBJECT 32 // neighbour-list entries per object (beyond: the grid is asked)
 
 // Two objects touching at the frame start (spring_rest.c): within floor_tolerance of each other.
 typedef struct hs_spring_touch {
@@ -46,6 +47,13 @@ typedef struct hs_spring_rest_body {
 	uint8_t sliding; // on the floor and moving: sliding friction
 } hs_spring_rest_body;
 
+// The neighbour lists' state (spring_near.c).
+typedef enum hs_near_state {
+	HS_NEAR_STALE = 0, // to be made at the next query
+	HS_NEAR_LISTS = 1, // good: queries answered from them
+	HS_NEAR_GRID = 2   // an object went beyond the skin in this phase: the grid answers until the next
+} hs_near_state;
+
 struct hs_spring_system {
 	hs_spring_def def;
 	hs_tracker tracker;
@@ -76,6 +84,15 @@ struct hs_spring_system {
 	hs_hgrid grid;
 	int grid_count;
 	int *near;
+	// CACHE: neighbour lists (spring_near.c): object q's candidates nb[nb_start[q] .. nb_start[q + 1]),
+	// found for its box nb_lo .. nb_hi with the objects at nb_pos; good while no object moved more
+	// than nb_skin from there and a query's box stays within nb_skin of q's
+	int *nb_start, *nb;
+	hs_vec3 *box_lo, *box_hi; // each object's bounding box where it was last filed
+	int nb_capacity;
+	hs_vec3 *nb_pos, *nb_lo, *nb_hi;
+	double nb_skin, nb_margin; // m: the skin; the largest margin when the lists were made
+	uint8_t nb_state; // hs_near_state
 	// SCRATCH of the resting contacts (spring_rest.c), found again every frame from the state:
 	// touches in ascending (a, b), the objects in any (active, ascending), their forces
 	hs_spring_touch *touch;

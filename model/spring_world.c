@@ -26,6 +26,13 @@ void hs_spring_system_destroy(hs_spring_system *system) {
 	free(system->path_t0);
 	free(system->events);
 	free(system->version);
+	free(system->nb);
+	free(system->nb_start);
+	free(system->nb_pos);
+	free(system->box_lo);
+	free(system->box_hi);
+	free(system->nb_lo);
+	free(system->nb_hi);
 	free(system->params);
 	free(system->params_mass);
 	free(system->moved);
@@ -51,6 +58,14 @@ hs_status hs_world_enable_springs(hs_world *world, const hs_spring_def *def) {
 	sys->saved_pos = calloc(cap, sizeof *sys->saved_pos);
 	sys->saved_vel = calloc(cap, sizeof *sys->saved_vel);
 	sys->near = calloc(cap, sizeof *sys->near);
+	sys->nb_capacity = (int)(HS_SPRING_NEAR_PER_OBJECT * cap);
+	sys->nb = calloc((size_t)sys->nb_capacity, sizeof *sys->nb);
+	sys->nb_start = calloc(cap + 1, sizeof *sys->nb_start);
+	sys->nb_pos = calloc(cap, sizeof *sys->nb_pos);
+	sys->box_lo = calloc(cap, sizeof *sys->box_lo);
+	sys->box_hi = calloc(cap, sizeof *sys->box_hi);
+	sys->nb_lo = calloc(cap, sizeof *sys->nb_lo);
+	sys->nb_hi = calloc(cap, sizeof *sys->nb_hi);
 	sys->path_pos = calloc(cap, sizeof *sys->path_pos);
 	sys->path_vel = calloc(cap, sizeof *sys->path_vel);
 	sys->path_t0 = calloc(cap, sizeof *sys->path_t0);
@@ -74,7 +89,7 @@ hs_status hs_world_enable_springs(hs_world *world, const hs_spring_def *def) {
 	bool grid = hs_hgrid_alloc(&sys->grid, (int)cap, 3);
 	sys->grid_count = -1;
 	if (!sys->geom || !sys->on_floor || !sys->sliding || !sys->separated || !sys->saved_pos || !sys->saved_vel ||
-	    !sys->near || !grid || !sys->touch || !sys->active || !sys->rest_index || !sys->rest || !sys->load ||
+	    !sys->near || !sys->nb || !sys->nb_start || !sys->nb_pos || !sys->box_lo || !sys->box_hi || !sys->nb_lo || !sys->nb_hi || !grid || !sys->touch || !sys->active || !sys->rest_index || !sys->rest || !sys->load ||
 	    !sys->held || !sys->path_pos || !sys->path_vel || !sys->path_t0 || !sys->events || !sys->version || !sys->params || !sys->params_mass ||
 	    !sys->moved) {
 		hs_spring_system_destroy(sys);
