@@ -217,7 +217,35 @@ static hs_vec3 free_part(const hs_world *world, const hs_spring_system *sys, int
 // contact at rest) goes only as far as that pays; an impact's, or a deeper one, goes all the way
 // (objects do not pass through each other), and test_spring_rest's seeded closed box measures
 // that energy still never rises (issue 11).
+// The way off the walls both objects of a pair touch and that n runs along (half a unit per
+// wall, into the room): zero when there is none.
+static hs_vec3 off_shared_walls(const hs_world *world, const hs_spring_system *sys, int i, int j, hs_vec3 n) {
+	static const hs_vec3 inward[4] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}};
+	const hs_spring_walls *wl = &sys->def.walls;
+	hs_vec3 off = hs_v3(0.0, 0.0, 0.0);
+	if (!wl->enabled)
+		return off;
+	double tol = world->def.floor_tolerance;
+	unsigned both = 15u;
+	for (int k = 0; k < 2; ++k) {
+		const hs_spring_geom *g = &sys->geom[k ? j : i];
+		hs_vec3 p = world->bodies[k ? j : i].pos;
+		both &= (p.x + g->lo.x <= wl->x_min + tol ? 1u : 0u) | (p.x + g->hi.x >= wl->x_max - tol ? 2u : 0u) |
+		        (p.y + g->lo.y <= wl->y_min + tol ? 4u : 0u) | (p.y + g->hi.y >= wl->y_max - tol ? 8u : 0u);
+	}
+	for (int q = 0; q < 4; ++q)
+		if ((both >> q & 1u) && fabs(hs_dot(n, inward[q])) < 1e-9)
+			off = hs_mul_add(off, 0.5, inward[q]);
+	return off;
+}
+
 #define HS_DRIFT 1e-4 // m
+#define HS_SEPARATE_REACH 2.0 // depths: the farthest a separation moves one object
+
+static hs_vec3 within_reach(hs_vec3 d, double reach) {
+	double len = hs_length(d);
+	return len > reach ? hs_scale(d, reach / len) : d;
+}
 static void separate(hs_world *world, const hs_spring_system *sys, int i, int j, hs_vec3 n, double depth,
                      bool resting) {
 	if (!(depth > 0.0))
@@ -226,6 +254,11 @@ static void separate(hs_world *world, const hs_spring_system *sys, int i, int j,
 	// a resting pair where one has not moved: the other's doing (both still: shared)
 	bool hold_a = resting && !still(world, sys, j), hold_b = resting && !still(world, sys, i);
 	hs_vec3 ua = free_part(world, sys, i, hs_neg(n), hold_a), ub = free_part(world, sys, j, n, hold_b);
+	// a pair in a line along a wall both touch (a row of balls against it, more than fit): parted
+	// along the line, the row's overlap only moves on to the next pair and back (a ball ended
+	// inside another); b leaves the line, off the wall into the room
+	if (hs_dot(ub, ub) > 0.0)
+		ub = hs_add(ub, off_shared_walls(world, sys, i, j, n));
 	if (sys->shock) { // shock propagation (end passes, bottom up): the lower one is not pushed down
 		hs_vec3 *down = world->bodies[i].pos.z <= world->bodies[j].pos.z ? &ua : &ub;
 		if (down->z < 0.0)
@@ -244,6 +277,11 @@ static void separate(hs_world *world, const hs_spring_system *sys, int i, int j,
 		double lam = depth / den;
 		da = hs_scale(ua, lam * wa * ga);
 		db = hs_scale(ub, lam * wb * gb);
+		// a side free to move only nearly across n (an object wedged by the floor and walls) would
+		// travel far for little separation (a ball in a corner was thrown 0.3 m across the box in
+		// one frame): no side moves more than HS_SEPARATE_REACH depths; what is left stays a touch
+		da = within_reach(da, HS_SEPARATE_REACH * depth);
+		db = within_reach(db, HS_SEPARATE_REACH * depth);
 	}
 	hs_vec3 g = world->def.gravity;
 	double lift = -a->mass * hs_dot(g, da) - b->mass * hs_dot(g, db); // J of potential energy
