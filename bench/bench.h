@@ -38,6 +38,12 @@ typedef void (*bench_step_fn)(void *state, long frames);
 /// number of steps. Returns seconds per step.
 bench_stats bench_measure(bench_step_fn step, void *state, const bench_opts *opts);
 
+/// The same as bench_measure for two cases at once, their timed batches interleaved (a, b, a, b, ...)
+/// so that whatever else the machine runs slows both alike. Returns the median over the repeats of
+/// a's time over b's in the same repeat: the stable figure on a busy machine.
+double bench_measure_pair(bench_step_fn step_a, void *a, bench_step_fn step_b, void *b, const bench_opts *opts,
+                          bench_stats *out_a, bench_stats *out_b);
+
 /// Median of n values (sorts a copy; n ≤ 64).
 double bench_median(const double *values, int n);
 
@@ -151,6 +157,48 @@ void bench_race_record(bench_race_frame frames[BENCH_PATH_FRAMES], double *finge
 /// The honest frame (the seed scene on noisy glove input, wrist turning, hash every frame) timed.
 bench_stats bench_honest_measure(const bench_opts *opts);
 void bench_race(const bench_opts *opts, bench_shared *shared); // issue 12, item 4
+
+// ---------------------------------------------------------------------------------------------
+/// Scaling rows of the honest frame (issue 12, item 3; bench/hand_scaling.c): cost per frame against
+/// faces, grasped objects, hands and untouched objects, each against the honest frame in the same run.
+void bench_hand_scaling(const bench_opts *opts, bench_shared *shared);
+/// `--profile-scaling ROW,VALUE,FRAMES` (ROW faces, grasped, hands or untouched): one row's scene
+/// alone, for callgrind --toggle-collect=hsc_profiled_frames.
+void bench_profile_scaling(const char *spec);
+
+/// The shapes of the frame-rate scenes: 5 cm across; the balls are UV polyhedra (bench_uv_ball).
+typedef enum bench_shape {
+	BENCH_SHAPE_CUBE = 0,     ///< 6 faces, 12 edges
+	BENCH_SHAPE_ELLIPSOID,    ///< the paper's 32 faces, 56 edges (8 slices, 4 stacks)
+	BENCH_SHAPE_POLY128,      ///< 128 faces (16 slices, 8 stacks)
+	BENCH_SHAPE_POLY512,      ///< 512 faces (32 slices, 16 stacks)
+	BENCH_SHAPES
+} bench_shape;
+/// A ball of radius r (m) as a convex UV polyhedron of slices × stacks faces (triangle fans at the
+/// poles, planar trapezoids between), built through hs_shape_polyhedron.
+hs_shape *bench_uv_ball(int slices, int stacks, double r, hs_status *status);
+
+/// The honest frame's scene (bench/frame_rate.c) with `objects` objects of `shape`, the first two
+/// grasped; objects beyond the first row start `far_rows` rows further back (out of the hand's
+/// reach). NULL when no grasp pose was found for the shape.
+typedef struct fr_scene bench_scene;
+bench_scene *bench_honest_scene(bench_shape shape, int objects, int far_rows);
+void bench_scene_step(void *scene, long frames);
+/// Hash the state every frame (the default) or not (to see what the hash costs).
+void bench_scene_hash(bench_scene *scene, bool on);
+/// Frames with a grasp lost, untouched objects touched or awake now, and the scene's checksum.
+void bench_scene_report(const bench_scene *scene, long *lost, int *stray, uint64_t *checksum);
+void bench_scene_destroy(bench_scene *scene);
+/// The seed of the honest frame's glove noise (other hands take their own).
+#define BENCH_HONEST_SEED 0x9E3779B97F4A7C15ull
+/// The honest frame's input for one loop: the reading `held` with seeded uniform noise of ±4 units
+/// on every sensor, and the wrist turning by up to 2.5° about x and y.
+void bench_honest_readings(const uint8_t held[HS_GLOVE_SENSORS], uint64_t seed,
+                           uint8_t noisy[BENCH_PATH_FRAMES][HS_GLOVE_SENSORS], hs_quat turns[BENCH_PATH_FRAMES]);
+/// The honest frame's hand for 1 or 2 cubes (a pair along x) resting with centroid `centroid`: the
+/// wrist at the start of the loop and the squeezed posture the noise is drawn around. False when
+/// the pose search found no grasp.
+bool bench_honest_hand(int touched, hs_vec3 centroid, hs_vec3 *wrist, uint8_t held[HS_GLOVE_SENSORS]);
 
 
 #endif

@@ -9,6 +9,9 @@
 //                                 -paper: the paper's contact rule; callgrind
 //                                 --toggle-collect=fr_profiled_frames)
 //   hs_bench --profile-collide KIND,FRAMES[,N]   (box, hand, hand+box, spring, spring+box)
+//   hs_bench --profile-scaling ROW,VALUE[,FRAMES] (one point of the honest frame's scaling rows: faces
+//                                 6|32|128|512, grasped 0|1|2|5|10, hands 1|2|4, untouched[-nohash]
+//                                 10|100|1000|10000; callgrind --toggle-collect=hsc_profiled_frames)
 //
 // Progress goes to stderr, the tables and the closing summary to stdout, CSV files to DIR
 // (default build/bench), from which bench/*.gp draw the plots. Benchmarks report: the exit status
@@ -35,6 +38,8 @@ static const bench_section sections[] = {
     {"peers", "item 5: ODE and MuJoCo on the seed scene", bench_peers},
     {"collide", "item 6: collisions that scale (issue 11)", bench_collide},
     {"race", "issue 12 item 4: contact generation only, handspring against ODE and MuJoCo", bench_race},
+    {"scaling", "issue 12 item 3: the honest frame against faces, grasped objects, hands, untouched objects",
+     bench_hand_scaling},
 };
 #define N_SECTIONS ((int)(sizeof sections / sizeof sections[0]))
 
@@ -73,6 +78,9 @@ int main(int argc, char **argv) {
 		} else if (strcmp(argv[i], "--profile-seed-noskip") == 0 && i + 1 < argc) {
 			const char *comma = strchr(argv[i + 1], ',');
 			bench_profile_seed(atol(argv[i + 1]), comma ? atoi(comma + 1) : 10, false, false, false);
+			return 0;
+		} else if (strcmp(argv[i], "--profile-scaling") == 0 && i + 1 < argc) {
+			bench_profile_scaling(argv[i + 1]);
 			return 0;
 		} else if (strcmp(argv[i], "--profile-collide") == 0 && i + 1 < argc) {
 			bench_profile_collide(argv[i + 1]);

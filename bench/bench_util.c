@@ -30,11 +30,9 @@ double bench_median(const double *values, int n) {
 	return n % 2 ? copy[n / 2] : 0.5 * (copy[n / 2 - 1] + copy[n / 2]);
 }
 
-bench_stats bench_measure(bench_step_fn step, void *state, const bench_opts *opts) {
-	bench_stats st;
-	memset(&st, 0, sizeof st);
-	// warm-up: double the batch until it takes a quarter of the target (caches, branch predictors,
-	// page faults of the first touches all happen here), then size the batch to the target
+// Warm-up: double the batch until it takes a quarter of the target (caches, branch predictors, page
+// faults of the first touches all happen here); returns the batch that takes about batch_s.
+static long warm_up(bench_step_fn step, void *state, const bench_opts *opts) {
 	long n = 16;
 	double per = 0.0;
 	for (;;) {
@@ -47,14 +45,13 @@ bench_stats bench_measure(bench_step_fn step, void *state, const bench_opts *opt
 		n *= 2;
 	}
 	long batch = per > 0.0 ? (long)(opts->batch_s / per) : n;
-	batch = batch < 16 ? 16 : batch;
-	double times[64];
-	int reps = opts->reps < 5 ? 5 : (opts->reps > 64 ? 64 : opts->reps);
-	for (int r = 0; r < reps; ++r) {
-		double t0 = bench_now();
-		step(state, batch);
-		times[r] = (bench_now() - t0) / (double)batch;
-	}
+	return batch < 16 ? 16 : batch;
+}
+
+static int reps_of(const bench_opts *opts) { return opts->reps < 5 ? 5 : (opts->reps > 64 ? 64 : opts->reps); }
+
+static bench_stats stats_of(const double *times, int reps, long batch) {
+	bench_stats st;
 	st.median = bench_median(times, reps);
 	st.min = st.max = times[0];
 	for (int r = 1; r < reps; ++r) {
@@ -64,6 +61,36 @@ bench_stats bench_measure(bench_step_fn step, void *state, const bench_opts *opt
 	st.steps = batch;
 	st.reps = reps;
 	return st;
+}
+
+static double time_batch(bench_step_fn step, void *state, long batch) {
+	double t0 = bench_now();
+	step(state, batch);
+	return (bench_now() - t0) / (double)batch;
+}
+
+bench_stats bench_measure(bench_step_fn step, void *state, const bench_opts *opts) {
+	long batch = warm_up(step, state, opts);
+	double times[64];
+	int reps = reps_of(opts);
+	for (int r = 0; r < reps; ++r)
+		times[r] = time_batch(step, state, batch);
+	return stats_of(times, reps, batch);
+}
+
+double bench_measure_pair(bench_step_fn step_a, void *a, bench_step_fn step_b, void *b, const bench_opts *opts,
+                          bench_stats *out_a, bench_stats *out_b) {
+	long batch_a = warm_up(step_a, a, opts), batch_b = warm_up(step_b, b, opts);
+	double times_a[64], times_b[64], ratios[64];
+	int reps = reps_of(opts);
+	for (int r = 0; r < reps; ++r) {
+		times_a[r] = time_batch(step_a, a, batch_a);
+		times_b[r] = time_batch(step_b, b, batch_b);
+		ratios[r] = times_a[r] / times_b[r];
+	}
+	*out_a = stats_of(times_a, reps, batch_a);
+	*out_b = stats_of(times_b, reps, batch_b);
+	return bench_median(ratios, reps);
 }
 
 void bench_progress(const char *fmt, ...) {
