@@ -162,8 +162,8 @@ void bench_race(const bench_opts *opts, bench_shared *shared); // issue 12, item
 /// Scaling rows of the honest frame (issue 12, item 3; bench/hand_scaling.c): cost per frame against
 /// faces, grasped objects, hands and untouched objects, each against the honest frame in the same run.
 void bench_hand_scaling(const bench_opts *opts, bench_shared *shared);
-/// `--profile-scaling ROW,VALUE,FRAMES` (ROW faces, grasped, hands or untouched): one row's scene
-/// alone, for callgrind --toggle-collect=hsc_profiled_frames.
+/// `--profile-scaling ROW,VALUE[,FRAMES]` (ROW faces, grasped, hands, untouched or untouched-nohash;
+/// FRAMES 600 by default): one point's scene alone, for callgrind --toggle-collect=hsc_profiled_frames.
 void bench_profile_scaling(const char *spec);
 
 /// The shapes of the frame-rate scenes: 5 cm across; the balls are UV polyhedra (bench_uv_ball).
