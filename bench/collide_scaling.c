@@ -2,7 +2,7 @@
 // cost as a world grows, and what one huge object among small ones costs, in both models.
 //
 //  - Spring walled box: N spheres (r = 5 cm, 1 kg-ish) on the floor of a frictionless walled box,
-//    15 cm apart, each sliding at up to 1 m/s in a fixed pseudo-random direction: an elastic gas
+//    one per (15 cm)² of its floor, each sliding at up to 1 m/s in a fixed pseudo-random direction: an elastic gas
 //    of spheres (restitution 1). µs per frame and per object; a broad phase makes µs per object flat.
 //  - Mixed sizes: 4000 cubes of 5 cm falling from 0.5 m on a 10 cm grid, alone and with one
 //    400 m × 400 m × 1 m box beside them, in the hand model (skip_work on) and the spring model.
@@ -63,7 +63,10 @@ static int side_of(int n) {
 	return side;
 }
 
-// The walled box of n spheres.
+// The walled box of n spheres, one per CS_GAP² of floor at every n (the box's side is √n · CS_GAP,
+// the spheres on a lattice of side_of(n) columns across it): the same gas, as dense, whatever n.
+// (A box of side_of(n) cells held 10 spheres in 16 cells and 1000 in 1024: the small box's gas was
+// thinner and its spheres met a tenth as often.)
 static hs_world *spring_box(int n) {
 	hs_world_def wd = hs_default_world_def();
 	wd.dt = BENCH_DT;
@@ -77,14 +80,15 @@ static hs_world *spring_box(int n) {
 	sd.friction_static = sd.friction_sliding = 0.0;
 	sd.walls.enabled = true;
 	sd.walls.x_min = sd.walls.y_min = 0.0;
-	sd.walls.x_max = sd.walls.y_max = side * CS_GAP;
+	double room = sqrt((double)n) * CS_GAP, step = room / side;
+	sd.walls.x_max = sd.walls.y_max = room;
 	if ((st = hs_world_enable_springs(w, &sd)) != HS_OK)
 		die("springs", st);
 	hs_shape_id ball = add_shape(w, hs_shape_sphere(CS_RADIUS, &st), st);
 	uint64_t seed = 12345;
 	for (int k = 0; k < n; ++k) {
 		double vx = next_unit(&seed), vy = next_unit(&seed);
-		hs_vec3 p = hs_v3((k % side + 0.5) * CS_GAP, (k / side + 0.5) * CS_GAP, CS_RADIUS);
+		hs_vec3 p = hs_v3((k % side + 0.5) * step, (k / side + 0.5) * step, CS_RADIUS);
 		add_object(w, ball, p, hs_v3(vx, vy, 0.0));
 	}
 	return w;
