@@ -14,9 +14,8 @@ bool hs_spring_contact_within(const hs_world *world, const hs_spring_geom *ga, h
                      hs_vec3 pb, double gap, hs_vec3 *n, double *depth);
 // Every pair of objects within `gap` of each other where they are now, into sys->touch in ascending
 // (a, b) (normal and depth set, the rest zero), through the broad phase.
-// Pairs apart by more than `gap` but within `reach` come too, their distance in `apart` (> 0).
-void hs_spring_find_touches(hs_world *world, hs_spring_system *sys, double gap, double reach);
-// True when (a, b), a < b, is among sys->touch, within the gap.
+void hs_spring_find_touches(hs_world *world, hs_spring_system *sys, double gap);
+// True when (a, b), a < b, is among sys->touch.
 bool hs_spring_touching(const hs_spring_system *sys, int a, int b);
 // Every overlapping pair of the world's objects (array order, shapes in sys->geom, found through
 // the broad phase sys->grid) exchanges an impulse of restitution sys->def.restitution along the

@@ -11,10 +11,6 @@
 //    within the frame) — found together by projected Gauss–Seidel, then applied through the frame
 //    as constant forces. The objects' own steps find the floor's and walls' share again.
 //  - Two objects touch when their true shapes lie within floor_tolerance (the floor's tolerance).
-//    A pair further apart, one supporting the other (|n_z| ≥ 1/2), within a frame's fall from rest
-//    (g dt²/2) and not approaching, is a touch to come: its forces let it close the gap within the
-//    frame and no more (a speculative contact), so a pile's upper objects left a little above their
-//    supports land on them instead of falling a whole frame into them (jitter at 12 frames/s).
 //  - Touching objects still approaching at the frame start first exchange impulses, pair by pair
 //    until none approaches: the pair's restitution, none below HS_REST_BOUNCE_SPEED (5 cm/s: a
 //    resting push, which an object the floor's static friction holds takes without moving); the
@@ -125,8 +121,8 @@ static void approach_impulses(hs_world *world, hs_spring_system *sys) {
 			hs_spring_touch *c = &sys->touch[t];
 			hs_body *a = &world->bodies[c->a], *b = &world->bodies[c->b];
 			double vn = hs_dot(hs_sub(b->vel, a->vel), c->n);
-			if (!(vn < -HS_REST_APPROACH) || c->apart > 0.0)
-				continue; // (a pair still apart that meets is the collisions' to answer)
+			if (!(vn < -HS_REST_APPROACH))
+				continue;
 			bool impact = -vn > HS_REST_BOUNCE_SPEED;
 			hs_spring_pair_impulse(world, sys, c->a, c->b, c->n, impact ? c->e : 0.0, !impact);
 			any = true;
@@ -194,14 +190,7 @@ static void prepare(hs_world *world, hs_spring_system *sys, double dt) {
 		hs_spring_touch *c = &sys->touch[t];
 		const hs_body *a = &world->bodies[c->a], *b = &world->bodies[c->b];
 		hs_vec3 v = hs_sub(b->vel, a->vel);
-		double vn = hs_dot(v, c->n);
-		if (c->apart > 0.0) { // a touch to come: it may close the gap within the frame, no more
-			c->open = vn < -HS_REST_APPROACH; // (approaching: the collisions answer it)
-			c->bound = -2.0 * (c->apart + fmax(vn, 0.0) * dt) / (dt * dt);
-		} else {
-			c->open = vn > HS_REST_APPROACH && !closes(world, sys, c, dt);
-			c->bound = 0.0;
-		}
+		c->open = hs_dot(v, c->n) > HS_REST_APPROACH && !closes(world, sys, c, dt);
 		hs_vec3 vt = hs_mul_add(v, -hs_dot(v, c->n), c->n);
 		double s = hs_length(vt);
 		c->slide = s > HS_REST_STICK_SPEED ? hs_scale(vt, 1.0 / s) : hs_v3(0.0, 0.0, 0.0);
@@ -266,7 +255,7 @@ static double sweep_touches(hs_world *world, hs_spring_system *sys, double dt) {
 			continue;
 		hs_spring_rest_body *ra = &sys->rest[sys->rest_index[c->a]], *rb = &sys->rest[sys->rest_index[c->b]];
 		double wa = 1.0 / world->bodies[c->a].mass, wb = 1.0 / world->bodies[c->b].mass;
-		double n = fmax(0.0, c->normal - c->mass * (hs_dot(hs_sub(rb->acc, ra->acc), c->n) - c->bound));
+		double n = fmax(0.0, c->normal - c->mass * hs_dot(hs_sub(rb->acc, ra->acc), c->n));
 		double dn = n - c->normal;
 		ra->acc = hs_mul_add(ra->acc, -dn * wa, c->n);
 		rb->acc = hs_mul_add(rb->acc, dn * wb, c->n);
@@ -312,10 +301,7 @@ void hs_spring_rest(hs_world *world, hs_spring_system *sys) {
 		memset(sys->load, 0, (size_t)n * sizeof *sys->load);
 		memset(sys->held, 0, (size_t)n);
 	}
-	// pairs apart by less than a frame's fall from rest come too (touches to come): at 12 frames/s
-	// an object of a pile left a millimetre above its support fell 3.4 cm into it every frame
-	double fall = 0.5 * hs_length(world->def.gravity) * dt * dt;
-	hs_spring_find_touches(world, sys, world->def.floor_tolerance, world->def.floor_tolerance + fall);
+	hs_spring_find_touches(world, sys, world->def.floor_tolerance);
 	collect_active(world, sys);
 	if (sys->touch_count == 0)
 		return;
@@ -343,7 +329,7 @@ void hs_spring_rest(hs_world *world, hs_spring_system *sys) {
 	}
 	for (int t = 0; t < sys->touch_count; ++t) { // an object sliding on another, or deep in it, is not held
 		const hs_spring_touch *c = &sys->touch[t];
-		if (!(c->apart > 0.0) && (hs_length_sq(c->slide) > 0.0 || c->depth > world->def.floor_tolerance))
+		if (hs_length_sq(c->slide) > 0.0 || c->depth > world->def.floor_tolerance)
 			sys->held[c->a] = sys->held[c->b] = 2;
 	}
 	for (int k = 0; k < sys->active_count; ++k) {

@@ -21,8 +21,6 @@ typedef struct hs_spring_touch {
 	hs_vec3 n;       // unit normal from a to b
 	hs_vec3 slide;   // unit direction of b's sliding on a at the frame start; zero: sticking
 	double depth;    // m: overlap (negative: apart by less than the gap)
-	double apart;    // m: > 0 for a pair not yet touching, this far apart (a touch to come)
-	double bound;    // m/s²: least relative acceleration along n the forces allow (0 for a touch)
 	double mass;     // kg: 1 / (1/m_a + 1/m_b)
 	double e;        // restitution of the pair: the smaller of the two objects'
 	double normal;   // N: normal force on b (on a: its opposite)
