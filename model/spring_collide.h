@@ -8,8 +8,8 @@
 // depth (m) of the true shapes' overlap; false when they do not meet.
 bool hs_spring_contact(const hs_world *world, const hs_spring_geom *ga, hs_vec3 pa, const hs_spring_geom *gb,
                        hs_vec3 pb, hs_vec3 *n, double *depth);
-// As hs_spring_contact, for shapes within `gap` (m) of each other: *depth is the overlap less the
-// gap, negative for shapes apart by less than it.
+// As hs_spring_contact, for shapes within `gap` (m) of each other: *depth is their overlap,
+// negative for shapes apart (by less than the gap), for every kind of pair.
 bool hs_spring_contact_within(const hs_world *world, const hs_spring_geom *ga, hs_vec3 pa, const hs_spring_geom *gb,
                      hs_vec3 pb, double gap, hs_vec3 *n, double *depth);
 // Every pair of objects within `gap` of each other where they are now, into sys->touch in ascending

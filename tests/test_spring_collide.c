@@ -279,10 +279,40 @@ static void test_broad_phase_same_bits(void **state) {
 	assert_true(steps > 90L * 300L); // balls met within frames
 }
 
+// hs_spring_contact_within's depth is the shapes' overlap, negative when they are apart, for every
+// kind of pair (sphere-sphere, axis box-box, turned box-box, sphere-box): two shapes apart by 1 mm
+// asked with a 3 mm gap give -1 mm; apart by 4 mm, none. (Its comment said "the overlap less the
+// gap"; code written to that comment once held balls up to 3.4 cm apart as touching.)
+static void test_within_depth_is_overlap(void **state) {
+	(void)state;
+	hs_status st;
+	struct {
+		hs_shape *a, *b;
+		hs_quat rb;
+	} kinds[4] = {
+	    {hs_shape_sphere(0.05, &st), hs_shape_sphere(0.05, &st), {1, 0, 0, 0}},
+	    {hs_shape_box(hs_v3(0.1, 0.1, 0.1), &st), hs_shape_box(hs_v3(0.1, 0.1, 0.1), &st), {1, 0, 0, 0}},
+	    {hs_shape_box(hs_v3(0.1, 0.1, 0.1), &st), hs_shape_box(hs_v3(0.1, 0.1, 0.1), &st), {1, 0, 0, 0}},
+	    {hs_shape_sphere(0.05, &st), hs_shape_box(hs_v3(0.1, 0.1, 0.1), &st), {1, 0, 0, 0}},
+	};
+	kinds[2].rb = about_z(HS_PI / 2.0); // a turned box (its own orientation), the same extent along x
+	for (int k = 0; k < 4; ++k) {
+		pair p = make_pair(kinds[k].a, hs_quat_identity(), kinds[k].b, kinds[k].rb);
+		hs_vec3 n;
+		double depth;
+		assert_true(hs_spring_contact_within(p.world, &p.ga, hs_v3(0, 0, 0), &p.gb, hs_v3(0.101, 0, 0), 3e-3, &n, &depth));
+		assert_near(depth, -1e-3, 1e-12);
+		assert_vec3_near(n, hs_v3(1, 0, 0), 1e-12);
+		assert_false(hs_spring_contact_within(p.world, &p.ga, hs_v3(0, 0, 0), &p.gb, hs_v3(0.104, 0, 0), 3e-3, &n, &depth));
+		hs_world_destroy(p.world);
+	}
+}
+
 int main(void) {
 	const struct CMUnitTest tests[] = {
 	    cmocka_unit_test(test_sphere_rotated_rod),
 	    cmocka_unit_test(test_box_box_separating_axes),
+	    cmocka_unit_test(test_within_depth_is_overlap),
 	    cmocka_unit_test(test_pyramid_sphere_libccd),
 	    cmocka_unit_test(test_ball_passes_rotated_rod),
 	    cmocka_unit_test(test_broad_phase_same_bits),
