@@ -610,6 +610,13 @@ static int by_height(const void *x, const void *y) {
 	return (a->j > b->j) - (a->j < b->j);
 }
 
+static bool in_order(const hs_spring_event *e, int n) {
+	for (int k = 1; k < n; ++k)
+		if (by_height(&e[k - 1], &e[k]) > 0)
+			return false;
+	return true;
+}
+
 // One pass over the overlapping pairs where the frame leaves them, bottom up (shock propagation,
 // Guendelman et al. 2003: a separation never pushes the lower object of a pair down, so a column
 // of overlapping objects comes apart in one pass): the first pass over every pair, later ones over
@@ -638,7 +645,7 @@ static bool end_pass(hs_world *world, hs_spring_system *sys, bool first) {
 			sys->events[sys->event_count++] = (hs_spring_event){i, j, low, 0u, 0u};
 		}
 	}
-	if (sys->event_count > 1)
+	if (!in_order(sys->events, sys->event_count)) // (often already: objects on one floor, met in index order)
 		qsort(sys->events, (size_t)sys->event_count, sizeof *sys->events, by_height);
 	bool moved = false;
 	sys->shock = true;
