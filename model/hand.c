@@ -133,10 +133,15 @@ static hs_quat exact_rotation(hs_vec3 axis, double c, double sign) {
 // A joint rotation by a runtime angle. The volatile round trip keeps the compiler from folding
 // sin/cos of an angle it can see as a constant (e.g. a posture's fixed sensor value) with its own
 // correctly rounded arithmetic, which libm at run time need not match in the last bit.
-static hs_quat joint_rotation(hs_vec3 axis, double angle) {
+static hs_half_turn half_turn(double angle) {
 	volatile double opaque = angle;
-	return hs_quat_from_axis_angle(axis, opaque);
+	double h = 0.5 * opaque; // as hs_quat_from_axis_angle
+	hs_half_turn t = {hs_sin(h), hs_cos(h)};
+	return t;
 }
+// hs_quat_from_axis_angle from the half angle's sine and cosine: the same operations
+static hs_quat turn_about(hs_vec3 axis, hs_half_turn t) { return hs_q(t.c, axis.x * t.s, axis.y * t.s, axis.z * t.s); }
+static hs_quat joint_rotation(hs_vec3 axis, double angle) { return turn_about(axis, half_turn(angle)); }
 
 // Thumb design (not sensed; the paper's Fig. 1 leaves it open). At zero sensors the thumb's
 // metacarpal points along x turned 22.6° toward +y (cos = 12/13) about the palm z, and tilted
@@ -167,61 +172,106 @@ typedef struct hand_pose {
 	hs_quat segment[15]; // finger × 3 + segment: x along the bone, z toward the back (nail)
 } hand_pose;
 
+// What the kinematics of one reading reads: its angles, and the glove table (NULL: the sines
+// are computed) with the reading it is indexed by.
+typedef struct reading {
+	const hs_hand_def *def;
+	hs_hand_joints j;
+	const hs_glove_table *table;
+	const uint8_t *v;
+} reading;
+
+// The half turn of a joint angle: the table's row at the sensor's value, or computed.
+static hs_half_turn turn_of(const reading *r, int row, int sensor, double angle) {
+	return r->table ? r->table->rows[row][r->v[sensor]] : half_turn(angle);
+}
+
 // Points and frames of one chain from its base frame `q` and its three flexions; the first
-// flexion (thumb: none, the metacarpal is rigid in its base frame) is in flex[0].
-static void chain(const hs_hand_def *def, int f, hs_vec3 base, hs_quat q, const double flex[3], hand_pose *out) {
+// flexion (thumb: none, the metacarpal is rigid in its base frame) is in flex[0], and turn[s] is
+// its half turn (read only where the flexion is not 0).
+static void chain(const hs_hand_def *def, int f, hs_vec3 base, hs_quat q, const double flex[3],
+                  const hs_half_turn turn[3], hand_pose *out) {
 	hs_vec3 p = base;
 	out->points[f * 4] = p;
 	for (int s = 0; s < 3; s++) {
 		if (flex[s] != 0.0)
-			q = hs_quat_mul(q, joint_rotation(Y_AXIS, flex[s]));
+			q = hs_quat_mul(q, turn_about(Y_AXIS, turn[s]));
 		out->segment[f * 3 + s] = q;
 		p = hs_add(p, hs_quat_rotate(q, hs_v3(def->segment_length[f][s], 0.0, 0.0)));
 		out->points[f * 4 + s + 1] = p;
 	}
 }
 
-static void thumb_pose(const hs_hand_def *def, const hs_hand_joints *j, hand_pose *out) {
-	hs_quat q = hs_quat_mul(thumb_splay(), joint_rotation(Z_AXIS, j->thumb_abduction));
-	q = hs_quat_mul(q, thumb_tilt_and_nail());
-	q = hs_quat_mul(q, joint_rotation(X_AXIS, j->thumb_roll));
-	const double flex[3] = {0.0, j->thumb_mcp, j->thumb_ip};
-	chain(def, 0, def->base[0], q, flex, out);
+// The half turn of a flexion, looked up only when it turns.
+static hs_half_turn flex_turn(const reading *r, int row, int sensor, double angle) {
+	hs_half_turn none = {0.0, 1.0};
+	return angle != 0.0 ? turn_of(r, row, sensor, angle) : none;
 }
 
-static void finger_pose(const hs_hand_def *def, const hs_hand_joints *j, int k, hand_pose *out) {
-	int f = k + 1; // k: 0 index .. 3 little
-	// abduction about the palm z at the MCP: middle fixed, index toward +y, ring and little toward −y
-	double spread = 0.0;
+static void thumb_pose(const reading *r, hand_pose *out) {
+	const hs_hand_joints *j = &r->j;
+	hs_quat q = hs_quat_mul(thumb_splay(), turn_about(Z_AXIS, turn_of(r, HS_GLOVE_UNIT, HS_SENSOR_THUMB_ABDUCTION,
+	                                                                      j->thumb_abduction)));
+	q = hs_quat_mul(q, thumb_tilt_and_nail());
+	q = hs_quat_mul(q, turn_about(X_AXIS, turn_of(r, HS_GLOVE_UNIT, HS_SENSOR_THUMB_ROLL, j->thumb_roll)));
+	const double flex[3] = {0.0, j->thumb_mcp, j->thumb_ip};
+	const hs_half_turn turn[3] = {{0.0, 1.0},
+	                              flex_turn(r, HS_GLOVE_UNIT, HS_SENSOR_THUMB_MCP, j->thumb_mcp),
+	                              flex_turn(r, HS_GLOVE_UNIT, HS_SENSOR_THUMB_IP, j->thumb_ip)};
+	chain(r->def, 0, r->def->base[0], q, flex, turn, out);
+}
+
+// The half turn of finger k's abduction about the palm z at its MCP: middle fixed, index toward
+// +y, ring and little toward −y. *spread: the angle.
+static hs_half_turn spread_turn(const reading *r, int k, double *spread) {
+	const hs_hand_joints *j = &r->j;
+	*spread = 0.0;
 	if (k == 0)
-		spread = j->abduction[0];
+		*spread = j->abduction[0];
 	else if (k == 2)
-		spread = -j->abduction[1];
+		*spread = -j->abduction[1];
 	else if (k == 3)
-		spread = -(j->abduction[1] + j->abduction[2]);
-	hs_quat q = joint_rotation(Z_AXIS, spread);
+		*spread = -(j->abduction[1] + j->abduction[2]);
+	if (k == 3) // the sum of two readings: no row
+		return half_turn(*spread);
+	if (k == 1) // the angle 0: the row's value 0 (0 × 0.5°)
+		return r->table ? r->table->rows[HS_GLOVE_UNIT][0] : half_turn(*spread);
+	return k == 0 ? turn_of(r, HS_GLOVE_UNIT, HS_SENSOR_INDEX_MIDDLE_ABDUCTION, *spread)
+	              : turn_of(r, HS_GLOVE_MINUS, HS_SENSOR_MIDDLE_RING_ABDUCTION, *spread);
+}
+
+static void finger_pose(const reading *r, int k, hand_pose *out) {
+	const hs_hand_def *def = r->def;
+	const hs_hand_joints *j = &r->j;
+	int f = k + 1; // k: 0 index .. 3 little
+	double spread;
+	hs_quat q = turn_about(Z_AXIS, spread_turn(r, k, &spread));
 	hs_vec3 base = def->base[f];
 	double arch = ARCH_SHARE[k] * j->palm_arch;
 	if (arch != 0.0) {
 		// positive roll about x moves a base on the −y side of the pivot toward −z (the palm)
-		hs_quat roll = joint_rotation(X_AXIS, arch);
+		hs_quat roll = turn_about(X_AXIS, turn_of(r, k == 3 ? HS_GLOVE_UNIT : HS_GLOVE_HALF, HS_SENSOR_PALM_ARCH, arch));
 		hs_vec3 pivot = hs_v3(base.x, def->base[2].y, def->base[2].z);
 		base = hs_add(pivot, hs_quat_rotate(roll, hs_sub(base, pivot)));
 		q = hs_quat_mul(roll, q);
 	}
 	const double flex[3] = {j->mcp[k], j->pip[k], j->dip[k]};
-	chain(def, f, base, q, flex, out);
+	int mcp = HS_SENSOR_INDEX_MCP + 2 * k, pip = HS_SENSOR_INDEX_PIP + 2 * k;
+	const hs_half_turn turn[3] = {flex_turn(r, HS_GLOVE_UNIT, mcp, flex[0]), flex_turn(r, HS_GLOVE_UNIT, pip, flex[1]),
+	                              flex_turn(r, HS_GLOVE_DIP, pip, flex[2])};
+	chain(def, f, base, q, flex, turn, out);
 }
 
 // the whole hand in the wrist frame of a right hand
-static void hand_pose_wrist(const hs_hand_def *def, const hs_hand_joints *j, hand_pose *out) {
-	thumb_pose(def, j, out);
+static void hand_pose_wrist(const reading *r, hand_pose *out) {
+	const hs_hand_joints *j = &r->j;
+	thumb_pose(r, out);
 	for (int k = 0; k < 4; k++)
-		finger_pose(def, j, k, out);
+		finger_pose(r, k, out);
 	if (j->wrist_pitch == 0.0 && j->wrist_yaw == 0.0)
 		return; // palm frame = wrist frame
-	hs_quat palm = hs_quat_mul(joint_rotation(Z_AXIS, j->wrist_yaw),
-	                           joint_rotation(Y_AXIS, j->wrist_pitch));
+	hs_quat palm = hs_quat_mul(turn_about(Z_AXIS, turn_of(r, HS_GLOVE_WRIST, HS_SENSOR_WRIST_YAW, j->wrist_yaw)),
+	                           turn_about(Y_AXIS, turn_of(r, HS_GLOVE_WRIST, HS_SENSOR_WRIST_PITCH, j->wrist_pitch)));
 	for (int i = 0; i < HS_HAND_POINTS; i++)
 		out->points[i] = hs_quat_rotate(palm, out->points[i]);
 	for (int s = 0; s < 15; s++)
@@ -230,17 +280,29 @@ static void hand_pose_wrist(const hs_hand_def *def, const hs_hand_joints *j, han
 
 static hs_vec3 mirror_if(bool left, hs_vec3 v) { return left ? hs_v3(v.x, -v.y, v.z) : v; }
 
-void hs_hand_local_shape(const hs_hand_def *def, const uint8_t sensors[HS_GLOVE_SENSORS],
-                         hs_vec3 points[HS_HAND_POINTS], hs_vec3 lines[HS_HAND_LINES][2]) {
-	hs_hand_joints j = hs_hand_joints_from_sensors(def, sensors);
+void hs_glove_table_build(const hs_hand_def *def, hs_glove_table *table) {
+	for (int v = 0; v < 256; ++v) { // each angle as hs_hand_joints_from_sensors and the poses form it
+		double a = (double)v * HS_RAD_PER_UNIT;
+		table->rows[HS_GLOVE_UNIT][v] = half_turn(a);
+		table->rows[HS_GLOVE_MINUS][v] = half_turn(-a);
+		table->rows[HS_GLOVE_HALF][v] = half_turn(ARCH_SHARE[2] * a);
+		table->rows[HS_GLOVE_DIP][v] = half_turn(def->dip_per_pip * a);
+		table->rows[HS_GLOVE_WRIST][v] = half_turn(((double)v - HS_WRIST_ZERO) * HS_RAD_PER_UNIT);
+	}
+}
+
+void hs_hand_local_shape_with(const hs_hand_def *def, const hs_glove_table *table,
+                              const uint8_t sensors[HS_GLOVE_SENSORS], hs_vec3 points[HS_HAND_POINTS],
+                              hs_vec3 lines[HS_HAND_LINES][2]) {
+	reading r = {def, hs_hand_joints_from_sensors(def, sensors), table, sensors};
 	hand_pose pose;
-	hand_pose_wrist(def, &j, &pose);
+	hand_pose_wrist(&r, &pose);
 	for (int i = 0; i < HS_HAND_POINTS; i++)
 		points[i] = mirror_if(def->left, pose.points[i]);
 	// check lines (§3.1): the 4 long edges of a square prism around each segment, edge e offset
 	// from the axis by r along the segment's local +y, −y, +z, −z
-	double r = def->finger_radius;
-	const hs_vec3 offsets[4] = {{0.0, r, 0.0}, {0.0, -r, 0.0}, {0.0, 0.0, r}, {0.0, 0.0, -r}};
+	double rad = def->finger_radius;
+	const hs_vec3 offsets[4] = {{0.0, rad, 0.0}, {0.0, -rad, 0.0}, {0.0, 0.0, rad}, {0.0, 0.0, -rad}};
 	for (int s = 0; s < 15; s++) {
 		int f = s / 3, k = s % 3;
 		hs_vec3 a = pose.points[f * 4 + k], b = pose.points[f * 4 + k + 1];
@@ -250,6 +312,11 @@ void hs_hand_local_shape(const hs_hand_def *def, const uint8_t sensors[HS_GLOVE_
 			lines[s * 4 + e][1] = mirror_if(def->left, hs_add(b, off));
 		}
 	}
+}
+
+void hs_hand_local_shape(const hs_hand_def *def, const uint8_t sensors[HS_GLOVE_SENSORS],
+                         hs_vec3 points[HS_HAND_POINTS], hs_vec3 lines[HS_HAND_LINES][2]) {
+	hs_hand_local_shape_with(def, NULL, sensors, points, lines);
 }
 
 void hs_hand_place(const hs_vec3 local_points[HS_HAND_POINTS], const hs_vec3 local_lines[HS_HAND_LINES][2],
@@ -301,7 +368,7 @@ static void local_bounds(const hs_vec3 points[HS_HAND_POINTS], const hs_vec3 lin
 }
 
 void hs_hand_update_shape(hs_hand *hand) {
-	hs_hand_local_shape(&hand->def, hand->sensors, hand->local_points, hand->local_lines);
+	hs_hand_local_shape_with(&hand->def, &hand->glove, hand->sensors, hand->local_points, hand->local_lines);
 	local_bounds(hand->local_points, (const hs_vec3(*)[2])hand->local_lines, &hand->local_center, &hand->local_radius);
 }
 
@@ -359,7 +426,7 @@ void hs_hand_refresh(hs_hand *hand) {
 		return;
 	}
 	// the previous points and bounds: the same calls that placed them, on the previous reading
-	hs_hand_local_shape(&hand->def, hand->prev_sensors, hand->local_points, hand->local_lines);
+	hs_hand_local_shape_with(&hand->def, &hand->glove, hand->prev_sensors, hand->local_points, hand->local_lines);
 	hs_hand_place(hand->local_points, (const hs_vec3(*)[2])hand->local_lines, hand->prev_wrist_pos,
 	              hand->prev_wrist_rot, hand->prev_points, hand->prev_lines);
 	local_bounds(hand->local_points, (const hs_vec3(*)[2])hand->local_lines, &hand->local_center, &hand->local_radius);
@@ -424,16 +491,16 @@ static bool def_is_valid(const hs_hand_def *def) {
 }
 
 static hs_vec3 right_hand_point(const hs_hand_def *def, const uint8_t s[HS_GLOVE_SENSORS], int i) {
-	hs_hand_joints j = hs_hand_joints_from_sensors(def, s);
+	reading r = {def, hs_hand_joints_from_sensors(def, s), NULL, s};
 	hand_pose pose;
-	hand_pose_wrist(def, &j, &pose);
+	hand_pose_wrist(&r, &pose);
 	return pose.points[i];
 }
 
 static hs_vec3 thumb_tip(const hs_hand_def *def, const uint8_t s[HS_GLOVE_SENSORS]) {
-	hs_hand_joints j = hs_hand_joints_from_sensors(def, s);
+	reading r = {def, hs_hand_joints_from_sensors(def, s), NULL, s};
 	hand_pose pose;
-	thumb_pose(def, &j, &pose);
+	thumb_pose(&r, &pose);
 	return pose.points[3];
 }
 

@@ -16,6 +16,20 @@
 // Wrist poses kept beyond the last step's (for a release's velocity, manipulate.c).
 #define HS_HAND_OLDER 7
 
+// The sine and cosine of half a joint angle (what hs_quat_from_axis_angle computes).
+typedef struct hs_half_turn {
+	double s, c;
+} hs_half_turn;
+
+// The glove table's rows: for sensor value v, the half turn of v × 0.5° (flexions, roll, thumb
+// and index abduction, the palm arch), of −v × 0.5° (the ring finger's spread), of half that (the
+// ring finger's share of the arch), of dip_per_pip × v × 0.5° (a DIP from its PIP's sensor) and of
+// (v − 128) × 0.5° (the wrist).
+enum { HS_GLOVE_UNIT, HS_GLOVE_MINUS, HS_GLOVE_HALF, HS_GLOVE_DIP, HS_GLOVE_WRIST, HS_GLOVE_ROWS };
+typedef struct hs_glove_table {
+	hs_half_turn rows[HS_GLOVE_ROWS][256];
+} hs_glove_table;
+
 // A hand of a world. MODEL: `def`. STATE (state.c's hand_io lists them): the wrist pose and
 // sensors now and at the end of the last step, `placed`, the touch masks. CACHES, rebuilt from the state after a
 // load (hs_hand_refresh): the check points and lines now and one frame ago (the kinematics of
@@ -70,11 +84,20 @@ typedef struct hs_hand {
 	hs_vec3 path_lines[HS_HAND_PATH_MAX - 1][HS_HAND_LINES][2];
 	hs_vec3 sweep_center;
 	double sweep_radius;
+	// model cache, built with the hand (hs_glove_table_build): a new reading's kinematics looks its
+	// sines up, the same values the sines of its angles give
+	hs_glove_table glove;
 } hs_hand;
 
 // The hand's shape in its wrist frame (depends on the sensors only) and its placement.
 void hs_hand_local_shape(const hs_hand_def *def, const uint8_t sensors[HS_GLOVE_SENSORS],
                          hs_vec3 points[HS_HAND_POINTS], hs_vec3 lines[HS_HAND_LINES][2]);
+// The same from the glove table of `def` (NULL: the sines computed): the same bits.
+void hs_hand_local_shape_with(const hs_hand_def *def, const hs_glove_table *table,
+                              const uint8_t sensors[HS_GLOVE_SENSORS], hs_vec3 points[HS_HAND_POINTS],
+                              hs_vec3 lines[HS_HAND_LINES][2]);
+// Fills the glove table of a hand definition (once, when the hand is built).
+void hs_glove_table_build(const hs_hand_def *def, hs_glove_table *table);
 void hs_hand_place(const hs_vec3 local_points[HS_HAND_POINTS], const hs_vec3 local_lines[HS_HAND_LINES][2],
                    hs_vec3 wrist_position, hs_quat wrist_orientation, hs_vec3 points[HS_HAND_POINTS],
                    hs_vec3 lines[HS_HAND_LINES][2]);

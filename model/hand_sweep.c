@@ -77,7 +77,7 @@ static void place_between(hs_hand *hand, int k, int steps) {
 		sensors[i] = (uint8_t)(((int)hand->prev_sensors[i] * (steps - k) + (int)hand->sensors[i] * k + steps / 2) / steps);
 	double t = (double)k / steps;
 	hs_vec3 local_points[HS_HAND_POINTS], local_lines[HS_HAND_LINES][2];
-	hs_hand_local_shape(&hand->def, sensors, local_points, local_lines);
+	hs_hand_local_shape_with(&hand->def, &hand->glove, sensors, local_points, local_lines);
 	hs_hand_place(local_points, (const hs_vec3(*)[2])local_lines, hs_lerp(hand->prev_wrist_pos, hand->wrist_pos, t),
 	              hs_quat_slerp(hand->prev_wrist_rot, hand->wrist_rot, t), hand->path_points[k - 1],
 	              hand->path_lines[k - 1]);

@@ -423,6 +423,7 @@ hs_hand_id hs_world_add_hand(hs_world *world, const hs_hand_def *def, hs_status 
 	hs_hand *hand = &world->hands[world->hand_count];
 	memset(hand, 0, sizeof *hand);
 	hand->def = *def;
+	hs_glove_table_build(&hand->def, &hand->glove);
 	hand->wrist_rot = hand->prev_wrist_rot = hs_quat_identity();
 	for (int k = 0; k < HS_HAND_OLDER; ++k) // not yet reached: a unit rotation, as a state file must hold
 		hand->older_rot[k] = hs_quat_identity();
