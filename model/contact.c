@@ -53,10 +53,16 @@ static int nearest_face(const hs_shape *shape, const hs_part *part, hs_vec3 p) {
 	return best;
 }
 
-static int edge_between(const hs_shape *shape, const hs_part *part, int f1, int f2) {
-	for (int e = part->first_edge; e < part->first_edge + part->edge_count; ++e) {
+// The part's first edge (in index order) between faces f1 and f2, or -1: among f1's own edges
+// (hs_face_edges), a cost that does not grow with the part's face count.
+static int edge_between(const hs_world *world, int shape_index, const hs_part *part, int f1, int f2) {
+	const hs_shape *shape = &world->shapes[shape_index];
+	const hs_face_edges *index = &world->face_edges[shape_index];
+	for (int k = index->first[f1]; k < index->first[f1 + 1]; ++k) {
+		int e = index->edges[k];
 		const hs_edge *edge = &shape->edges[e];
-		if ((edge->faces[0] == f1 && edge->faces[1] == f2) || (edge->faces[0] == f2 && edge->faces[1] == f1))
+		if (e >= part->first_edge && e < part->first_edge + part->edge_count &&
+		    ((edge->faces[0] == f1 && edge->faces[1] == f2) || (edge->faces[0] == f2 && edge->faces[1] == f1)))
 			return e;
 	}
 	return -1;
@@ -299,7 +305,7 @@ static void detect_points(hs_world *world, int object, int h, const hs_part *par
 static void line_across(hs_world *world, int object, int h, int j, const hs_part *part, const frame *body,
                         hs_vec3 p0, hs_vec3 p1, hs_clip c, const hs_vec3 *d) {
 	const hs_shape *shape = &world->shapes[world->bodies[object].shape];
-	int feature = edge_between(shape, part, c.face_in, c.face_out);
+	int feature = edge_between(world, world->bodies[object].shape, part, c.face_in, c.face_out);
 	bool edge = feature >= 0;
 	hs_vec3 point, normal;
 	if (edge) {

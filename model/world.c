@@ -85,6 +85,7 @@ hs_world *hs_world_create(const hs_world_def *def, hs_status *status) {
 	world->first_fault_object = -1;
 	world->grasp_limit = hs_grasp_limit(def->grasp_threshold_deg);
 	world->shapes = calloc((size_t)def->max_shapes, sizeof *world->shapes);
+	world->face_edges = calloc((size_t)def->max_shapes, sizeof *world->face_edges);
 	size_t objects = def->max_objects > 0 ? (size_t)def->max_objects : 1;
 	world->bodies = calloc(objects, sizeof *world->bodies);
 	world->queue = calloc(objects, sizeof *world->queue);
@@ -97,7 +98,7 @@ hs_world *hs_world_create(const hs_world_def *def, hs_status *status) {
 	world->near = calloc(objects, sizeof *world->near);
 	world->awake = calloc(objects, sizeof *world->awake);
 	world->awake_flag = calloc(objects, sizeof *world->awake_flag);
-	if (!world->shapes || !world->bodies || !world->queue || !world->hands || !world->contacts || !grid ||
+	if (!world->shapes || !world->face_edges || !world->bodies || !world->queue || !world->hands || !world->contacts || !grid ||
 	    !world->candidates || !world->near || !world->awake || !world->awake_flag) {
 		hs_world_destroy(world);
 		set_status(status, HS_ERR_NO_MEMORY);
@@ -119,9 +120,13 @@ void hs_world_destroy(hs_world *world) {
 	if (!world)
 		return;
 	hs_spring_system_destroy(world->spring);
-	for (int i = 0; i < world->shape_count; ++i)
+	for (int i = 0; i < world->shape_count; ++i) {
 		free_shape_arrays(&world->shapes[i]);
+		free(world->face_edges[i].first);
+		free(world->face_edges[i].edges);
+	}
 	free(world->shapes);
+	free(world->face_edges);
 	free(world->bodies);
 	free(world->queue);
 	free(world->hands);
@@ -162,6 +167,35 @@ static bool copy_shape(hs_shape *dst, const hs_shape *src) {
 	return true;
 }
 
+static bool face_in_range(const hs_shape *shape, int f) { return f >= 0 && f < shape->face_count; }
+
+// The shape's edges listed by face (hs_face_edges): counted, then filled in edge order.
+static bool index_face_edges(const hs_shape *shape, hs_face_edges *out) {
+	out->first = calloc((size_t)shape->face_count + 1, sizeof *out->first);
+	out->edges = malloc((size_t)(2 * shape->edge_count > 0 ? 2 * shape->edge_count : 1) * sizeof *out->edges);
+	if (!out->first || !out->edges) {
+		free(out->first);
+		free(out->edges);
+		out->first = out->edges = NULL;
+		return false;
+	}
+	for (int e = 0; e < shape->edge_count; ++e)
+		for (int k = 0; k < 2; ++k)
+			if (face_in_range(shape, shape->edges[e].faces[k]))
+				out->first[shape->edges[e].faces[k] + 1]++;
+	for (int f = 0; f < shape->face_count; ++f)
+		out->first[f + 1] += out->first[f];
+	int *fill = out->first; // advanced per face while filling, then moved back
+	for (int e = 0; e < shape->edge_count; ++e)
+		for (int k = 0; k < 2; ++k)
+			if (face_in_range(shape, shape->edges[e].faces[k]))
+				out->edges[fill[shape->edges[e].faces[k]]++] = e;
+	for (int f = shape->face_count; f > 0; --f)
+		fill[f] = fill[f - 1];
+	fill[0] = 0;
+	return true;
+}
+
 // Scratch for the floor test sized for the largest shape (room for a closing hull point).
 static bool reserve_scratch(hs_world *world, int vertex_count) {
 	if (vertex_count <= world->scratch_capacity)
@@ -192,7 +226,13 @@ hs_shape_id hs_world_add_shape(hs_world *world, const hs_shape *shape, hs_status
 		set_status(status, HS_ERR_CAPACITY);
 		return none;
 	}
-	if (!reserve_scratch(world, shape->vertex_count) || !copy_shape(&world->shapes[world->shape_count], shape)) {
+	hs_shape *copy = &world->shapes[world->shape_count];
+	if (!reserve_scratch(world, shape->vertex_count) || !copy_shape(copy, shape)) {
+		set_status(status, HS_ERR_NO_MEMORY);
+		return none;
+	}
+	if (!index_face_edges(copy, &world->face_edges[world->shape_count])) {
+		free_shape_arrays(copy);
 		set_status(status, HS_ERR_NO_MEMORY);
 		return none;
 	}

@@ -18,11 +18,19 @@
 // from model and state; invalidated or rebuilt after a load) or SCRATCH (per call, never read
 // before it is written in the same step). Work counters other than numeric_faults are outside
 // the state: they count what was done, not what will happen.
+// A shape's edges by face: face f's are edges[first[f] .. first[f + 1]), in index order, so the
+// edge between two faces is found among one face's few edges, not by a scan of every edge.
+typedef struct hs_face_edges {
+	int *first; // face_count + 1
+	int *edges; // 2 x edge_count
+} hs_face_edges;
+
 struct hs_world {
 	hs_world_def def;   // MODEL
 	uint16_t tag;       // MODEL: this world's tag in its handles (never 0)
 	int shape_count;    // MODEL
 	hs_shape *shapes;   // MODEL: deep copies, def.max_shapes of them
+	hs_face_edges *face_edges; // MODEL: each shape's edges by face (contact.c), built with its copy
 	int object_count;   // MODEL
 	hs_body *bodies;    // STATE (but shape, mass), def.max_objects of them
 	int hand_count;     // MODEL
