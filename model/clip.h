@@ -15,6 +15,9 @@ typedef struct hs_clip {
 	bool hit;
 } hs_clip;
 
+// When it misses (hit false) the other fields are not final: it stops at the face that shows it.
 hs_clip hs_clip_segment(const hs_shape *shape, const hs_part *part, hs_vec3 a, hs_vec3 b, double grow);
+// The same over every face: the fields as the whole loop leaves them, also on a miss.
+hs_clip hs_clip_segment_all(const hs_shape *shape, const hs_part *part, hs_vec3 a, hs_vec3 b, double grow);
 
 #endif

@@ -206,7 +206,7 @@ static bool path_enters(const hs_shape *shape, const hs_part *part, const hs_han
 static void paper_point(hs_world *world, int object, int h, int i, const hs_part *part, const frame *body,
                         hs_vec3 a, hs_vec3 b, double grow) {
 	const hs_shape *shape = &world->shapes[world->bodies[object].shape];
-	hs_clip c = hs_clip_segment(shape, part, a, b, grow);
+	hs_clip c = hs_clip_segment_all(shape, part, a, b, grow); // face_in read on a miss too
 	if (c.face_in >= 0) {
 		push_contact(world, object, h, i, false, c.face_in, body, hs_lerp(a, b, c.t_in), shape->faces[c.face_in].normal,
 		             b, c.t_in);
