@@ -502,10 +502,11 @@ static void detect_lines(hs_world *world, int object, int h, const hs_part *part
 		    (!swept || moved || !line_path_near(hand, j, steps, center, r)))
 			continue;
 		hs_vec3 p[2] = {to_body(body, l[0]), to_body(body, l[1])};
-		hs_vec3 q0[2] = {to_body(before, m[0]), to_body(before, m[1])};
-		if (swept && (end_touches(world, touching, j, shape, part, p) ||
-		              end_touches(world, hand->touch_points, j, shape, part, q0)))
-			continue; // beside a touching check point, at the frame's end or its start
+		if (swept && end_touches(world, touching, j, shape, part, p))
+			continue; // beside a touching check point at the frame's end
+		hs_vec3 q[2] = {to_body(before, m[0]), to_body(before, m[1])}; // the line a frame ago
+		if (swept && end_touches(world, hand->touch_points, j, shape, part, q))
+			continue; // or at its start
 		if (swept && (hand->embed_lines >> j & 1u)) { // started inside: touches nothing until clear
 			if (hs_clip_segment(shape, part, p[0], p[1], 2.0 * world->def.grasp_release_mm * 1e-3).hit)
 				world->hands[h].embed_lines_next |= (uint64_t)1 << j;
@@ -523,7 +524,6 @@ static void detect_lines(hs_world *world, int object, int h, const hs_part *part
 			line_across(world, object, h, j, part, body, p[0], p[1], c, NULL);
 			continue;
 		}
-		hs_vec3 q[2] = {to_body(before, m[0]), to_body(before, m[1])};
 		if (!hs_clip_segment(shape, part, q[0], q[1], grow).hit) { // reached it this frame
 			line_across(world, object, h, j, part, body, p[0], p[1], c, NULL);
 		} else if (grow > 0.0 || (hand->touch_lines >> j & 1u) || line_came_onto(world, object, part, m, grow)) {
