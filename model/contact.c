@@ -442,18 +442,32 @@ static void swept_path(hs_world *world, int object, int h, int j, const hs_part 
 	}
 }
 
-// True when check line j's path through the frame may come within r of c: the bounding sphere of
-// each piece's quad.
+// True when the quad a segment sweeps from m0-m1 to l0-l1 may come within r of c: its bounding
+// sphere about the corners' mean.
+static bool quad_near(hs_vec3 m0, hs_vec3 m1, hs_vec3 l0, hs_vec3 l1, hs_vec3 c, double r) {
+	hs_vec3 mid = hs_scale(hs_add(hs_add(m0, m1), hs_add(l0, l1)), 0.25);
+	double rad = sqrt(fmax(fmax(hs_length_sq(hs_sub(m0, mid)), hs_length_sq(hs_sub(m1, mid))),
+	                       fmax(hs_length_sq(hs_sub(l0, mid)), hs_length_sq(hs_sub(l1, mid)))));
+	return hs_length_sq(hs_sub(c, mid)) <= (r + rad) * (r + rad);
+}
+
+// True when check line j's path through the frame may come within r of c: each piece's quad.
 static bool line_path_near(const hs_hand *hand, int j, int steps, hs_vec3 c, double r) {
 	for (int k = 0; k < steps; ++k) {
 		const hs_vec3 *m = k == 0 ? hand->prev_lines[j] : hand->path_lines[k - 1][j];
 		const hs_vec3 *l = k + 1 == steps ? hand->lines[j] : hand->path_lines[k][j];
-		hs_vec3 mid = hs_scale(hs_add(hs_add(m[0], m[1]), hs_add(l[0], l[1])), 0.25);
-		double rad = sqrt(fmax(fmax(hs_length_sq(hs_sub(m[0], mid)), hs_length_sq(hs_sub(m[1], mid))),
-		                       fmax(hs_length_sq(hs_sub(l[0], mid)), hs_length_sq(hs_sub(l[1], mid)))));
-		if (hs_length_sq(hs_sub(c, mid)) <= (r + rad) * (r + rad))
+		if (quad_near(m[0], m[1], l[0], l[1], c, r))
 			return true;
 	}
+	return false;
+}
+
+// The same for the axis of a finger segment, check points a to a + 1.
+static bool axis_path_near(const hs_hand *hand, int a, int steps, hs_vec3 c, double r) {
+	for (int k = 0; k < steps; ++k)
+		if (quad_near(path_point(hand, a, k, steps), path_point(hand, a + 1, k, steps), path_point(hand, a, k + 1, steps),
+		              path_point(hand, a + 1, k + 1, steps), c, r))
+			return true;
 	return false;
 }
 
@@ -484,16 +498,19 @@ static void detect_lines(hs_world *world, int object, int h, const hs_part *part
 	double r = part->radius + grow;
 	bool paper = world->def.paper_contacts, swept = grow == 0.0 && !paper;
 	int steps = moved ? 1 : hand->path_steps; // a held object moves with the hand: chords suffice
-	// a finger segment's 4 check lines lie finger_radius from its axis (joint to joint): when the
-	// axis is further than r + finger_radius from the part (and the lines' paths do not count), all
-	// four are, and none is tested one by one (the same lines culled, fewer distances taken)
-	bool by_segment = cull && (!swept || moved);
-	double rs = r + hand->def.finger_radius + 1e-9;
+	// a finger segment's 4 check lines lie finger_radius from its axis (joint to joint), at every
+	// point of the path: when the axis is further than r + finger_radius from the part, all four
+	// are, and none is tested one by one (the same lines culled, fewer distances taken). Where the
+	// paths count, a line's piece of path has its corners' mean within finger_radius of the axis'
+	// and its sphere at most 2 finger_radius wider: when the axis' misses r + 3 finger_radius, the
+	// lines' miss r.
+	double rs = r + hand->def.finger_radius + 1e-9, rp = r + 3.0 * hand->def.finger_radius + 1e-9;
 	for (int j = 0; j < HS_HAND_LINES; ++j) {
 		const hs_vec3 *l = hand->lines[j], *m = hand->prev_lines[j];
-		if (by_segment && j % 4 == 0) {
-			int f = j / 12, k = j / 4 % 3;
-			if (segment_distance_sq(center, hand->points[4 * f + k], hand->points[4 * f + k + 1]) > rs * rs) {
+		if (cull && j % 4 == 0) {
+			int a = j / 12 * 4 + j / 4 % 3; // the segment's first check point
+			if (segment_distance_sq(center, hand->points[a], hand->points[a + 1]) > rs * rs &&
+			    (!swept || moved || !axis_path_near(hand, a, steps, center, rp))) {
 				j += 3; // the segment's other three lines too
 				continue;
 			}
