@@ -477,9 +477,8 @@ static bool axis_path_near(const hs_hand *hand, int a, int steps, hs_vec3 c, dou
 // the frame or at its start (a finger lifting off sweeps its side past the face it leaves): a fingertip resting on a top face 1 cm from its edge, its prism's
 // side 2 mm from the edge, swept that side across the edge under glove noise (±6 mm a frame) and
 // pushed the object sideways while the tip itself held still.
-static bool end_touches(const hs_world *world, uint32_t touching, int j, const hs_shape *shape, const hs_part *part,
-                        const hs_vec3 p[2]) {
-	int s = j / 4, point = s / 3 * 4 + s % 3; // line j runs beside check points point and point + 1
+static bool end_touches(const hs_world *world, uint32_t touching, int point, const hs_shape *shape,
+                        const hs_part *part, const hs_vec3 p[2]) { // the line runs beside point and point + 1
 	double margin = world->def.grasp_release_mm * 1e-3;
 	for (int k = 0; k < 2; ++k)
 		if ((touching >> (point + k) & 1u) && inside_part(shape, part, p[k], margin))
@@ -504,25 +503,30 @@ static void detect_lines(hs_world *world, int object, int h, const hs_part *part
 	// paths count, a line's piece of path has its corners' mean within finger_radius of the axis'
 	// and its sphere at most 2 finger_radius wider: when the axis' misses r + 3 finger_radius, the
 	// lines' miss r.
-	double rs = r + hand->def.finger_radius + 1e-9, rp = r + 3.0 * hand->def.finger_radius + 1e-9;
+	// An axis within r - finger_radius has all four lines within r: none is tested alone.
+	double rs = r + hand->def.finger_radius + 1e-9, rp = r + 3.0 * hand->def.finger_radius + 1e-9,
+	       ri = r - hand->def.finger_radius - 1e-9;
+	int a = 0;             // the first check point of line j's segment
+	bool all_near = false; // the segment's lines are all within r now
 	for (int j = 0; j < HS_HAND_LINES; ++j) {
 		const hs_vec3 *l = hand->lines[j], *m = hand->prev_lines[j];
-		if (cull && j % 4 == 0) {
-			int a = j / 12 * 4 + j / 4 % 3; // the segment's first check point
-			if (segment_distance_sq(center, hand->points[a], hand->points[a + 1]) > rs * rs &&
-			    (!swept || moved || !axis_path_near(hand, a, steps, center, rp))) {
+		if (j % 4 == 0) {
+			a = j / 12 * 4 + j / 4 % 3;
+			double d = cull ? segment_distance_sq(center, hand->points[a], hand->points[a + 1]) : 0.0;
+			if (cull && d > rs * rs && (!swept || moved || !axis_path_near(hand, a, steps, center, rp))) {
 				j += 3; // the segment's other three lines too
 				continue;
 			}
+			all_near = ri > 0.0 && d <= ri * ri;
 		}
-		if (cull && segment_distance_sq(center, l[0], l[1]) > r * r &&
+		if (cull && !all_near && segment_distance_sq(center, l[0], l[1]) > r * r &&
 		    (!swept || moved || !line_path_near(hand, j, steps, center, r)))
 			continue;
 		hs_vec3 p[2] = {to_body(body, l[0]), to_body(body, l[1])};
-		if (swept && end_touches(world, touching, j, shape, part, p))
+		if (swept && end_touches(world, touching, a, shape, part, p))
 			continue; // beside a touching check point at the frame's end
 		hs_vec3 q[2] = {to_body(before, m[0]), to_body(before, m[1])}; // the line a frame ago
-		if (swept && end_touches(world, hand->touch_points, j, shape, part, q))
+		if (swept && end_touches(world, hand->touch_points, a, shape, part, q))
 			continue; // or at its start
 		if (swept && (hand->embed_lines >> j & 1u)) { // started inside: touches nothing until clear
 			if (hs_clip_segment(shape, part, p[0], p[1], 2.0 * world->def.grasp_release_mm * 1e-3).hit)
