@@ -238,11 +238,11 @@ static void detect_points(hs_world *world, int object, int h, const hs_part *par
 		if (cull && hs_length_sq(hs_sub(hand->points[i], center)) > r_sq &&
 		    (!swept || moved || !path_near(hand, i, steps, center, r_sq)))
 			continue;
-		hs_vec3 b = to_body(body, hand->points[i]), a = to_body(before, hand->prev_points[i]);
+		hs_vec3 b = to_body(body, hand->points[i]);
 		bool inside = inside_part(shape, part, b, grow);
 		if (paper) {
 			if (inside)
-				paper_point(world, object, h, i, part, body, a, b, grow);
+				paper_point(world, object, h, i, part, body, to_body(before, hand->prev_points[i]), b, grow);
 			continue;
 		}
 		bool touched = swept && (hand->touch_points >> i & 1u);
@@ -264,6 +264,7 @@ static void detect_points(hs_world *world, int object, int h, const hs_part *par
 		}
 		if (!inside && (!swept || moved))
 			continue; // a held object moves with the hand: nothing passes through it unseen
+		hs_vec3 a = to_body(before, hand->prev_points[i]); // where it was
 		hs_clip c;
 		hs_vec3 from, to;
 		bool entered;
@@ -638,15 +639,24 @@ static int keep_hovering(hs_world *world, int first, int n) {
 	return kept - first;
 }
 
+static bool hand_near(const hs_world *world, const hs_body *body, const hs_hand *hand, double grow) {
+	double reach = world->shapes[body->shape].radius + grow + hand->sweep_radius;
+	return !world->def.skip_work || hs_length_sq(hs_sub(body->pos, hand->sweep_center)) <= reach * reach;
+}
+
 int hs_contact_detect_grown(hs_world *world, int object, const hs_body *before, double grow) {
 	int first = world->contact_count;
 	const hs_body *body = &world->bodies[object];
 	const hs_shape *shape = &world->shapes[body->shape];
+	int h = 0; // the first hand near the object: only then are its poses made matrices
+	while (h < world->hand_count && !hand_near(world, body, &world->hands[h], grow))
+		++h;
+	if (h == world->hand_count)
+		return 0;
 	frame now = frame_of(body), then = before ? frame_of(before) : now;
-	for (int h = 0; h < world->hand_count; ++h) {
+	for (; h < world->hand_count; ++h) {
 		const hs_hand *hand = &world->hands[h];
-		double reach = world->shapes[body->shape].radius + grow + hand->sweep_radius;
-		if (world->def.skip_work && hs_length_sq(hs_sub(body->pos, hand->sweep_center)) > reach * reach)
+		if (!hand_near(world, body, hand, grow))
 			continue; // bounding-volume rejection before the narrow tests (Fig. 2)
 		if (grow == 0.0) // the grown test repeats a held object's: counted once
 			world->counters.hand_tests++;
