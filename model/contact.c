@@ -18,6 +18,14 @@
 // 90 deg case (two adjoining cube faces) and two builds could disagree (DESIGN.md).
 #define HS_GRASP_EPS 1e-9
 
+// The per-line distance tests, inlined: called apart, their vectors (passed by value) went through
+// the stack on every call.
+#if defined(__GNUC__)
+#define HS_FORCE_INLINE inline __attribute__((always_inline))
+#else
+#define HS_FORCE_INLINE inline
+#endif
+
 // An object's pose as a position and a rotation matrix: detection moves up to 140 hand points
 // into each object's frame every frame.
 typedef struct frame {
@@ -118,7 +126,7 @@ static void push_contact(hs_world *world, int object, int hand, int part, bool e
 }
 
 // Squared distance from c to the segment p0-p1.
-static double segment_distance_sq(hs_vec3 c, hs_vec3 p0, hs_vec3 p1) {
+static HS_FORCE_INLINE double segment_distance_sq(hs_vec3 c, hs_vec3 p0, hs_vec3 p1) {
 	return hs_length_sq(hs_sub(hs_segment_closest(p0, p1, c), c));
 }
 
@@ -443,12 +451,15 @@ static void swept_path(hs_world *world, int object, int h, int j, const hs_part 
 	}
 }
 
+// fmax(a, b), NaN included, without the library call
+static double larger(double a, double b) { return a >= b || b != b ? a : b; }
+
 // True when the quad a segment sweeps from m0-m1 to l0-l1 may come within r of c: its bounding
 // sphere about the corners' mean.
-static bool quad_near(hs_vec3 m0, hs_vec3 m1, hs_vec3 l0, hs_vec3 l1, hs_vec3 c, double r) {
+static HS_FORCE_INLINE bool quad_near(hs_vec3 m0, hs_vec3 m1, hs_vec3 l0, hs_vec3 l1, hs_vec3 c, double r) {
 	hs_vec3 mid = hs_scale(hs_add(hs_add(m0, m1), hs_add(l0, l1)), 0.25);
-	double rad = sqrt(fmax(fmax(hs_length_sq(hs_sub(m0, mid)), hs_length_sq(hs_sub(m1, mid))),
-	                       fmax(hs_length_sq(hs_sub(l0, mid)), hs_length_sq(hs_sub(l1, mid)))));
+	double rad = sqrt(larger(larger(hs_length_sq(hs_sub(m0, mid)), hs_length_sq(hs_sub(m1, mid))),
+	                         larger(hs_length_sq(hs_sub(l0, mid)), hs_length_sq(hs_sub(l1, mid)))));
 	return hs_length_sq(hs_sub(c, mid)) <= (r + rad) * (r + rad);
 }
 
