@@ -23,6 +23,10 @@
 
 #include "hand_internal.h"
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 // rad per sensor unit: 0.5° (paper §5.1)
 #define HS_RAD_PER_UNIT (HS_PI / 360.0)
 // sensor units per rad
@@ -319,17 +323,42 @@ void hs_hand_local_shape(const hs_hand_def *def, const uint8_t sensors[HS_GLOVE_
 	hs_hand_local_shape_with(def, NULL, sensors, points, lines);
 }
 
+// out[i] = w + m v[i] for n vectors: hs_add(w, hs_mat3_mul(m, v[i])). With SSE2, two vectors at a
+// time, one in each lane: each lane does that expression's products and sums in its order, so the
+// bits are the same (no fused multiply-add: -ffp-contract=off).
+static void place_vectors(hs_mat3 m, hs_vec3 w, const hs_vec3 *v, hs_vec3 *out, int n) {
+	int i = 0;
+#if defined(__SSE2__)
+	const __m128d r0x = _mm_set1_pd(m.r0.x), r0y = _mm_set1_pd(m.r0.y), r0z = _mm_set1_pd(m.r0.z);
+	const __m128d r1x = _mm_set1_pd(m.r1.x), r1y = _mm_set1_pd(m.r1.y), r1z = _mm_set1_pd(m.r1.z);
+	const __m128d r2x = _mm_set1_pd(m.r2.x), r2y = _mm_set1_pd(m.r2.y), r2z = _mm_set1_pd(m.r2.z);
+	const __m128d wx = _mm_set1_pd(w.x), wy = _mm_set1_pd(w.y), wz = _mm_set1_pd(w.z);
+	for (; i + 1 < n; i += 2) {
+		__m128d x = _mm_set_pd(v[i + 1].x, v[i].x), y = _mm_set_pd(v[i + 1].y, v[i].y),
+		        z = _mm_set_pd(v[i + 1].z, v[i].z);
+		__m128d ox = _mm_add_pd(wx, _mm_add_pd(_mm_add_pd(_mm_mul_pd(r0x, x), _mm_mul_pd(r0y, y)), _mm_mul_pd(r0z, z)));
+		__m128d oy = _mm_add_pd(wy, _mm_add_pd(_mm_add_pd(_mm_mul_pd(r1x, x), _mm_mul_pd(r1y, y)), _mm_mul_pd(r1z, z)));
+		__m128d oz = _mm_add_pd(wz, _mm_add_pd(_mm_add_pd(_mm_mul_pd(r2x, x), _mm_mul_pd(r2y, y)), _mm_mul_pd(r2z, z)));
+		_mm_storel_pd(&out[i].x, ox);
+		_mm_storel_pd(&out[i].y, oy);
+		_mm_storel_pd(&out[i].z, oz);
+		_mm_storeh_pd(&out[i + 1].x, ox);
+		_mm_storeh_pd(&out[i + 1].y, oy);
+		_mm_storeh_pd(&out[i + 1].z, oz);
+	}
+#endif
+	for (; i < n; i++)
+		out[i] = hs_add(w, hs_mat3_mul(m, v[i]));
+}
+
 void hs_hand_place(const hs_vec3 local_points[HS_HAND_POINTS], const hs_vec3 local_lines[HS_HAND_LINES][2],
                    hs_vec3 wrist_position, hs_quat wrist_orientation, hs_vec3 points[HS_HAND_POINTS],
                    hs_vec3 lines[HS_HAND_LINES][2]) {
 	hs_mat3 m = hs_mat3_from_quat(wrist_orientation); // 140 vectors, one orientation
 	if (points != NULL)
-		for (int i = 0; i < HS_HAND_POINTS; i++)
-			points[i] = hs_add(wrist_position, hs_mat3_mul(m, local_points[i]));
+		place_vectors(m, wrist_position, local_points, points, HS_HAND_POINTS);
 	if (lines != NULL)
-		for (int j = 0; j < HS_HAND_LINES; j++)
-			for (int t = 0; t < 2; t++)
-				lines[j][t] = hs_add(wrist_position, hs_mat3_mul(m, local_lines[j][t]));
+		place_vectors(m, wrist_position, &local_lines[0][0], &lines[0][0], 2 * HS_HAND_LINES);
 }
 
 void hs_hand_kinematics(const hs_hand_def *def, hs_vec3 wrist_position, hs_quat wrist_orientation,
