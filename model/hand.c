@@ -284,6 +284,36 @@ static void hand_pose_wrist(const reading *r, hand_pose *out) {
 
 static hs_vec3 mirror_if(bool left, hs_vec3 v) { return left ? hs_v3(v.x, -v.y, v.z) : v; }
 
+// out[e] = hs_quat_rotate(q, v[e]) for the 4 offsets. With SSE2, two at a time, one per lane:
+// each lane does hs_quat_rotate's products and sums in its order (the same bits).
+static void rotate_offsets(hs_quat q, const hs_vec3 v[4], hs_vec3 out[4]) {
+	int e = 0;
+#if defined(__SSE2__)
+	const __m128d ux = _mm_set1_pd(q.x), uy = _mm_set1_pd(q.y), uz = _mm_set1_pd(q.z), w = _mm_set1_pd(q.w),
+	              two = _mm_set1_pd(2.0);
+	for (; e < 4; e += 2) {
+		__m128d vx = _mm_set_pd(v[e + 1].x, v[e].x), vy = _mm_set_pd(v[e + 1].y, v[e].y),
+		        vz = _mm_set_pd(v[e + 1].z, v[e].z);
+		// t = 2 (u x v)
+		__m128d tx = _mm_mul_pd(_mm_sub_pd(_mm_mul_pd(uy, vz), _mm_mul_pd(uz, vy)), two);
+		__m128d ty = _mm_mul_pd(_mm_sub_pd(_mm_mul_pd(uz, vx), _mm_mul_pd(ux, vz)), two);
+		__m128d tz = _mm_mul_pd(_mm_sub_pd(_mm_mul_pd(ux, vy), _mm_mul_pd(uy, vx)), two);
+		// (v + w t) + u x t
+		__m128d ox = _mm_add_pd(_mm_add_pd(vx, _mm_mul_pd(tx, w)), _mm_sub_pd(_mm_mul_pd(uy, tz), _mm_mul_pd(uz, ty)));
+		__m128d oy = _mm_add_pd(_mm_add_pd(vy, _mm_mul_pd(ty, w)), _mm_sub_pd(_mm_mul_pd(uz, tx), _mm_mul_pd(ux, tz)));
+		__m128d oz = _mm_add_pd(_mm_add_pd(vz, _mm_mul_pd(tz, w)), _mm_sub_pd(_mm_mul_pd(ux, ty), _mm_mul_pd(uy, tx)));
+		_mm_storel_pd(&out[e].x, ox);
+		_mm_storel_pd(&out[e].y, oy);
+		_mm_storel_pd(&out[e].z, oz);
+		_mm_storeh_pd(&out[e + 1].x, ox);
+		_mm_storeh_pd(&out[e + 1].y, oy);
+		_mm_storeh_pd(&out[e + 1].z, oz);
+	}
+#endif
+	for (; e < 4; e++)
+		out[e] = hs_quat_rotate(q, v[e]);
+}
+
 void hs_glove_table_build(const hs_hand_def *def, hs_glove_table *table) {
 	for (int v = 0; v < 256; ++v) { // each angle as hs_hand_joints_from_sensors and the poses form it
 		double a = (double)v * HS_RAD_PER_UNIT;
@@ -309,11 +339,11 @@ void hs_hand_local_shape_with(const hs_hand_def *def, const hs_glove_table *tabl
 	const hs_vec3 offsets[4] = {{0.0, rad, 0.0}, {0.0, -rad, 0.0}, {0.0, 0.0, rad}, {0.0, 0.0, -rad}};
 	for (int s = 0; s < 15; s++) {
 		int f = s / 3, k = s % 3;
-		hs_vec3 a = pose.points[f * 4 + k], b = pose.points[f * 4 + k + 1];
+		hs_vec3 a = pose.points[f * 4 + k], b = pose.points[f * 4 + k + 1], off[4];
+		rotate_offsets(pose.segment[s], offsets, off);
 		for (int e = 0; e < 4; e++) {
-			hs_vec3 off = hs_quat_rotate(pose.segment[s], offsets[e]);
-			lines[s * 4 + e][0] = mirror_if(def->left, hs_add(a, off));
-			lines[s * 4 + e][1] = mirror_if(def->left, hs_add(b, off));
+			lines[s * 4 + e][0] = mirror_if(def->left, hs_add(a, off[e]));
+			lines[s * 4 + e][1] = mirror_if(def->left, hs_add(b, off[e]));
 		}
 	}
 }
