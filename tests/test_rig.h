@@ -10,8 +10,8 @@
 #define RIG_FAR hs_v3(100, 100, 100)
 
 // The world of `def` with one object of `shape` (destroyed here) at `position` and one hand,
-// placed, its parts at RIG_FAR, its bounding sphere about `hand_center` so large that the
-// bounding test never decides (it is not what these tests are about).
+// placed, its parts at RIG_FAR, its bounding sphere about `hand_center` and its finger radius so
+// large that the bounding tests never decide (they are not what these tests are about).
 static inline hs_world *rig_world(const hs_world_def *def, hs_shape *shape, hs_vec3 position, hs_vec3 hand_center) {
 	hs_world *w = hs_world_create(def, NULL);
 	assert_non_null(w);
@@ -30,6 +30,9 @@ static inline hs_world *rig_world(const hs_world_def *def, hs_shape *shape, hs_v
 	hand->center = hand->prev_center = hand->sweep_center = hand_center;
 	hand->radius = hand->prev_radius = hand->sweep_radius = 1000;
 	hand->path_steps = 1; // straight paths: hs_hand_sweep (run by hs_manipulate) keeps it so
+	// the tests place lines without their segment's check points (a hand's lie finger_radius from
+	// them, which contact.c's per-segment culling relies on): a radius so large that it never decides
+	hand->def.finger_radius = 1000;
 	hand->placed = true;
 	return w;
 }
