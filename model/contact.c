@@ -14,6 +14,10 @@
 #include "contact.h"
 #include "push.h"
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 // Grasp when n_i · n_j <= cos(threshold) + eps: with a bare comparison rounding would decide the
 // 90 deg case (two adjoining cube faces) and two builds could disagree (DESIGN.md).
 #define HS_GRASP_EPS 1e-9
@@ -38,6 +42,31 @@ static frame frame_of(const hs_body *body) {
 	return f;
 }
 static hs_vec3 to_body(const frame *f, hs_vec3 p) { return hs_mat3_tmul(f->rot, hs_sub(p, f->pos)); }
+// Both ends of a line: out[k] = to_body(f, p[k]). With SSE2 one end per lane, each doing
+// to_body's subtractions, products and sums in its order (the same bits).
+static void line_to_body(const frame *f, const hs_vec3 p[2], hs_vec3 out[2]) {
+#if defined(__SSE2__)
+	const hs_mat3 *m = &f->rot;
+	__m128d vx = _mm_sub_pd(_mm_set_pd(p[1].x, p[0].x), _mm_set1_pd(f->pos.x));
+	__m128d vy = _mm_sub_pd(_mm_set_pd(p[1].y, p[0].y), _mm_set1_pd(f->pos.y));
+	__m128d vz = _mm_sub_pd(_mm_set_pd(p[1].z, p[0].z), _mm_set1_pd(f->pos.z));
+	__m128d ox = _mm_add_pd(_mm_add_pd(_mm_mul_pd(_mm_set1_pd(m->r0.x), vx), _mm_mul_pd(_mm_set1_pd(m->r1.x), vy)),
+	                        _mm_mul_pd(_mm_set1_pd(m->r2.x), vz));
+	__m128d oy = _mm_add_pd(_mm_add_pd(_mm_mul_pd(_mm_set1_pd(m->r0.y), vx), _mm_mul_pd(_mm_set1_pd(m->r1.y), vy)),
+	                        _mm_mul_pd(_mm_set1_pd(m->r2.y), vz));
+	__m128d oz = _mm_add_pd(_mm_add_pd(_mm_mul_pd(_mm_set1_pd(m->r0.z), vx), _mm_mul_pd(_mm_set1_pd(m->r1.z), vy)),
+	                        _mm_mul_pd(_mm_set1_pd(m->r2.z), vz));
+	_mm_storel_pd(&out[0].x, ox);
+	_mm_storel_pd(&out[0].y, oy);
+	_mm_storel_pd(&out[0].z, oz);
+	_mm_storeh_pd(&out[1].x, ox);
+	_mm_storeh_pd(&out[1].y, oy);
+	_mm_storeh_pd(&out[1].z, oz);
+#else
+	out[0] = to_body(f, p[0]);
+	out[1] = to_body(f, p[1]);
+#endif
+}
 static hs_vec3 to_world(const frame *f, hs_vec3 p) { return hs_add(f->pos, hs_mat3_mul(f->rot, p)); }
 
 // Inside the part grown by `grow` (m; 0: the part itself).
@@ -534,10 +563,12 @@ static void detect_lines(hs_world *world, int object, int h, const hs_part *part
 		if (cull && !all_near && segment_distance_sq(center, l[0], l[1]) > r * r &&
 		    (!swept || moved || !line_path_near(hand, j, steps, center, r)))
 			continue;
-		hs_vec3 p[2] = {to_body(body, l[0]), to_body(body, l[1])};
+		hs_vec3 p[2];
+		line_to_body(body, l, p);
 		if (swept && end_touches(world, touching, a, shape, part, p))
 			continue; // beside a touching check point at the frame's end
-		hs_vec3 q[2] = {to_body(before, m[0]), to_body(before, m[1])}; // the line a frame ago
+		hs_vec3 q[2]; // the line a frame ago
+		line_to_body(before, m, q);
 		if (swept && end_touches(world, hand->touch_points, a, shape, part, q))
 			continue; // or at its start
 		if (swept && (hand->embed_lines >> j & 1u)) { // started inside: touches nothing until clear
