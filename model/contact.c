@@ -512,6 +512,9 @@ static bool axis_path_near(const hs_hand *hand, int a, int steps, hs_vec3 c, dou
 	return false;
 }
 
+// The first check point of finger segment s (finger s / 3, segment s % 3): 4 (s / 3) + s % 3.
+static const int SEGMENT_FIRST_POINT[15] = {0, 1, 2, 4, 5, 6, 8, 9, 10, 12, 13, 14, 16, 17, 18};
+
 // A line with an end inside the part is the check points' business (detect_lines); so is one
 // with an end off the surface by less than grasp_release_mm at a check point that touches (it
 // touched last frame, the hysteresis of detect_points, or touches the part now), at the end of
@@ -552,7 +555,7 @@ static void detect_lines(hs_world *world, int object, int h, const hs_part *part
 	for (int j = 0; j < HS_HAND_LINES; ++j) {
 		const hs_vec3 *l = hand->lines[j], *m = hand->prev_lines[j];
 		if (j % 4 == 0) {
-			a = j / 12 * 4 + j / 4 % 3;
+			a = SEGMENT_FIRST_POINT[j / 4];
 			double d = cull ? segment_distance_sq(center, hand->points[a], hand->points[a + 1]) : 0.0;
 			if (cull && d > rs * rs && (!swept || moved || !axis_path_near(hand, a, steps, center, rp))) {
 				j += 3; // the segment's other three lines too
