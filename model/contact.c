@@ -22,6 +22,10 @@
 // 90 deg case (two adjoining cube faces) and two builds could disagree (DESIGN.md).
 #define HS_GRASP_EPS 1e-9
 
+// m: what the bounds that test a finger segment for its four lines add for rounding, far above it
+// for coordinates up to HS_MAX_COORDINATE (1e6 m, where a double's step is 1.2e-10 m)
+#define HS_CULL_SLACK 1e-6
+
 // The per-line distance tests, inlined: called apart, their vectors (passed by value) went through
 // the stack on every call.
 #if defined(__GNUC__)
@@ -530,6 +534,16 @@ static bool end_touches(const hs_world *world, uint32_t touching, int point, con
 	return false;
 }
 
+// True when check point a or a + 1 touches (`touching`) and lies inside the part grown by `grow`
+// now (the check points of a segment's line ends, end_touches).
+static bool ends_deep(const hs_hand *hand, uint32_t touching, int a, const frame *body, const hs_shape *shape,
+                      const hs_part *part, double grow) {
+	for (int k = 0; k < 2; ++k)
+		if ((touching >> (a + k) & 1u) && inside_part(shape, part, to_body(body, hand->points[a + k]), grow))
+			return true;
+	return false;
+}
+
 // (B) check lines against the part: across it now (reached it this frame, sunk in, or across it
 // since before it touched anything, as the check points in detect_points), or swept across it
 // during the frame. A line with an end inside is the check points' business.
@@ -548,8 +562,11 @@ static void detect_lines(hs_world *world, int object, int h, const hs_part *part
 	// and its sphere at most 2 finger_radius wider: when the axis' misses r + 3 finger_radius, the
 	// lines' miss r.
 	// An axis within r - finger_radius has all four lines within r: none is tested alone.
-	double rs = r + hand->def.finger_radius + 1e-9, rp = r + 3.0 * hand->def.finger_radius + 1e-9,
-	       ri = r - hand->def.finger_radius - 1e-9;
+	double rf = hand->def.finger_radius, rs = r + rf + HS_CULL_SLACK, rp = r + 3.0 * rf + HS_CULL_SLACK,
+	       ri = r - rf - HS_CULL_SLACK;
+	// A touching check point inside the part grown by margin - finger_radius has the segment's line
+	// ends beside it inside the part grown by the margin: end_touches holds for all four lines.
+	double deep = world->def.grasp_release_mm * 1e-3 - rf - HS_CULL_SLACK;
 	int a = 0;             // the first check point of line j's segment
 	bool all_near = false; // the segment's lines are all within r now
 	for (int j = 0; j < HS_HAND_LINES; ++j) {
@@ -562,6 +579,10 @@ static void detect_lines(hs_world *world, int object, int h, const hs_part *part
 				continue;
 			}
 			all_near = ri > 0.0 && d <= ri * ri;
+			if (swept && ends_deep(hand, touching, a, body, shape, part, deep)) {
+				j += 3; // every line of the segment is beside a touching point (end_touches)
+				continue;
+			}
 		}
 		if (cull && !all_near && segment_distance_sq(center, l[0], l[1]) > r * r &&
 		    (!swept || moved || !line_path_near(hand, j, steps, center, r)))
