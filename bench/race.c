@@ -43,7 +43,6 @@ typedef struct race_job {
 	uint64_t touch; // this frame's pairs
 } race_job;
 
-#if defined(HS_BENCH_ODE) || defined(HS_BENCH_MUJOCO) // only the peers use it: built without them, unused
 // Finger segment g (finger g / 3, segment g % 3): from check point g / 3 · 4 + g % 3 to the next.
 #if defined(HS_BENCH_ODE) || defined(HS_BENCH_MUJOCO)
 static void segment(const bench_race_frame *f, int g, hs_vec3 *a, hs_vec3 *b) {
@@ -59,7 +58,6 @@ static hs_quat z_to(hs_vec3 d) {
 		return hs_quat_from_axis_angle(hs_v3(1, 0, 0), HS_PI);
 	return hs_quat_normalize((hs_quat){w, -d.y, d.x, 0.0}); // (1 + z·d, z × d)
 }
-#endif
 
 static void tally(race_job *job, const bench_race_frame *f) {
 	job->touches += __builtin_popcountll(job->touch);
