@@ -156,6 +156,21 @@ static void test_run_filters(void **state) {
 	}
 }
 
+// An output that is not a regular file is written in place: `--out /dev/null` used to write
+// /dev/null.tmp and rename it over /dev/null, which as root left a regular file there (and as
+// any other user failed). /dev/null must still be a character device afterwards.
+static void test_out_to_device(void **state) {
+	(void)state;
+	const char *args[] = {"run", "scenarios/seed_scene.yaml", "--out", "/dev/null", NULL};
+	result r = tool(args);
+	assert_int_equal(r.status, 0);
+	done(&r);
+	struct stat st;
+	assert_int_equal(stat("/dev/null", &st), 0);
+	assert_true(S_ISCHR(st.st_mode));
+	assert_int_equal(stat("/dev/null.tmp", &st), -1);
+}
+
 // `handspring hand`: the open hand's index tip (check point 7) at (0.18, 0.025, 0) m in the wrist
 // frame, 20 named rows after the header; an unknown posture exits 2.
 static void test_hand_points(void **state) {
@@ -178,6 +193,7 @@ int main(void) {
 	const struct CMUnitTest tests[] = {
 	    cmocka_unit_test(test_golden_then_check),
 	    cmocka_unit_test(test_run_filters),
+	    cmocka_unit_test(test_out_to_device),
 	    cmocka_unit_test(test_hand_points),
 	};
 	return cmocka_run_group_tests(tests, NULL, NULL);

@@ -157,20 +157,30 @@ static char *join_csv(const char *dir, const char *name) {
 }
 
 // An output file written under a temporary name and renamed when complete, so that an
-// interrupted run never leaves a half-written golden behind.
+// interrupted run never leaves a half-written golden behind. A path that exists and is not a
+// regular file (/dev/null, a pipe) is written in place: renaming over it replaced /dev/null with
+// a regular file when run as root (tests/resume_catalog.sh's --out /dev/null did, and apt then
+// failed on the machine).
 typedef struct output {
-	char *path, *temp;
+	char *path, *temp; // temp NULL: written in place
 	FILE *file;
 } output;
 
 static bool output_open(output *o, const char *path) {
 	memset(o, 0, sizeof *o);
-	size_t n = strlen(path) + 5;
 	o->path = malloc(strlen(path) + 1);
-	o->temp = malloc(n);
-	if (!o->path || !o->temp)
+	if (!o->path)
 		return false;
 	strcpy(o->path, path);
+	struct stat st;
+	if (stat(path, &st) == 0 && !S_ISREG(st.st_mode)) {
+		o->file = fopen(path, "w");
+		return o->file != NULL;
+	}
+	size_t n = strlen(path) + 5;
+	o->temp = malloc(n);
+	if (!o->temp)
+		return false;
 	snprintf(o->temp, n, "%s.tmp", path);
 	if (!make_parent_dirs(path))
 		return false;
@@ -185,9 +195,9 @@ static bool output_close(output *o, bool keep) {
 		ok = !ferror(o->file);
 		ok = fclose(o->file) == 0 && ok;
 		o->file = NULL;
-		if (ok && keep)
+		if (ok && keep && o->temp)
 			ok = rename(o->temp, o->path) == 0;
-		if (!ok || !keep)
+		if ((!ok || !keep) && o->temp)
 			remove(o->temp);
 	}
 	return ok;
