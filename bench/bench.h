@@ -47,6 +47,10 @@ double bench_measure_pair(bench_step_fn step_a, void *a, bench_step_fn step_b, v
 /// Median of n values (sorts a copy; n ≤ 64).
 double bench_median(const double *values, int n);
 
+/// A profiling flag's "NAME,FIRST[,SECOND]": NAME into name (size bytes, cut short), *first and
+/// *second at the text after each comma (NULL when absent).
+void bench_split_spec(const char *spec, char *name, size_t size, const char **first, const char **second);
+
 /// Progress and notes go to stderr, tables to stdout.
 void bench_progress(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
 

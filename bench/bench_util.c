@@ -318,3 +318,15 @@ double bench_crossing_x(const double *x, const double *z, int n, double plane) {
 	double ax = 0.5 * (x0 - 2.0 * x1 + x2), bx = 0.5 * (x0 - 4.0 * x1 + 3.0 * x2);
 	return ax * s * s + bx * s + x2;
 }
+
+void bench_split_spec(const char *spec, char *name, size_t size, const char **first, const char **second) {
+	const char *comma = strchr(spec, ',');
+	size_t len = comma ? (size_t)(comma - spec) : strlen(spec);
+	len = len < size - 1 ? len : size - 1;
+	memcpy(name, spec, len);
+	name[len] = 0;
+	*first = comma ? comma + 1 : NULL;
+	*second = comma ? strchr(comma + 1, ',') : NULL;
+	if (*second)
+		++*second;
+}

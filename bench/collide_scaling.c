@@ -212,18 +212,11 @@ void bench_collide(const bench_opts *opts, bench_shared *shared) {
 // after 30 frames of warm-up), hand, hand+box, spring, spring+box (the mixed-size worlds),
 // hand-pile (the 4000 cubes of `hand` all in one place).
 void bench_profile_collide(const char *spec) {
-	char kind[16] = {0};
-	long frames = 1;
-	int n = 100;
-	const char *comma = strchr(spec, ',');
-	size_t len = comma ? (size_t)(comma - spec) : strlen(spec);
-	memcpy(kind, spec, len < sizeof kind - 1 ? len : sizeof kind - 1);
-	if (comma) {
-		frames = atol(comma + 1);
-		const char *c2 = strchr(comma + 1, ',');
-		if (c2)
-			n = atoi(c2 + 1);
-	}
+	char kind[16];
+	const char *first, *second;
+	bench_split_spec(spec, kind, sizeof kind, &first, &second);
+	long frames = first ? atol(first) : 1;
+	int n = second ? atoi(second) : 100;
 	hs_world *w;
 	if (strcmp(kind, "box") == 0) {
 		w = spring_box(n);

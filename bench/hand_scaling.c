@@ -444,18 +444,11 @@ __attribute__((noinline)) void hsc_profiled_frames(const hsc_case *c, long frame
 void hsc_profiled_frames(const hsc_case *c, long frames) { case_step(c)(case_state(c), frames); }
 
 void bench_profile_scaling(const char *spec) {
-	char name[32] = {0};
-	int value = 0;
-	long frames = 600;
-	const char *comma = strchr(spec, ',');
-	size_t len = comma ? (size_t)(comma - spec) : strlen(spec);
-	memcpy(name, spec, len < sizeof name - 1 ? len : sizeof name - 1);
-	if (comma) {
-		value = atoi(comma + 1);
-		const char *c2 = strchr(comma + 1, ',');
-		if (c2)
-			frames = atol(c2 + 1);
-	}
+	char name[32];
+	const char *first, *second;
+	bench_split_spec(spec, name, sizeof name, &first, &second);
+	int value = first ? atoi(first) : 0;
+	long frames = second ? atol(second) : 600;
 	int row = 0;
 	while (row < HSC_ROWS && strcmp(name, row_names[row]) != 0)
 		++row;
