@@ -14,9 +14,7 @@
 #include "contact.h"
 #include "push.h"
 
-#if defined(__SSE2__)
-#include <emmintrin.h>
-#endif
+#include "lanes2.h"
 
 // Grasp when n_i · n_j <= cos(threshold) + eps: with a bare comparison rounding would decide the
 // 90 deg case (two adjoining cube faces) and two builds could disagree (DESIGN.md).
@@ -51,21 +49,17 @@ static hs_vec3 to_body(const frame *f, hs_vec3 p) { return hs_mat3_tmul(f->rot, 
 static void line_to_body(const frame *f, const hs_vec3 p[2], hs_vec3 out[2]) {
 #if defined(__SSE2__)
 	const hs_mat3 *m = &f->rot;
-	__m128d vx = _mm_sub_pd(_mm_set_pd(p[1].x, p[0].x), _mm_set1_pd(f->pos.x));
-	__m128d vy = _mm_sub_pd(_mm_set_pd(p[1].y, p[0].y), _mm_set1_pd(f->pos.y));
-	__m128d vz = _mm_sub_pd(_mm_set_pd(p[1].z, p[0].z), _mm_set1_pd(f->pos.z));
+	hs_lanes2 in = hs_lanes2_load(&p[0], &p[1]);
+	__m128d vx = _mm_sub_pd(in.x, _mm_set1_pd(f->pos.x));
+	__m128d vy = _mm_sub_pd(in.y, _mm_set1_pd(f->pos.y));
+	__m128d vz = _mm_sub_pd(in.z, _mm_set1_pd(f->pos.z));
 	__m128d ox = _mm_add_pd(_mm_add_pd(_mm_mul_pd(_mm_set1_pd(m->r0.x), vx), _mm_mul_pd(_mm_set1_pd(m->r1.x), vy)),
 	                        _mm_mul_pd(_mm_set1_pd(m->r2.x), vz));
 	__m128d oy = _mm_add_pd(_mm_add_pd(_mm_mul_pd(_mm_set1_pd(m->r0.y), vx), _mm_mul_pd(_mm_set1_pd(m->r1.y), vy)),
 	                        _mm_mul_pd(_mm_set1_pd(m->r2.y), vz));
 	__m128d oz = _mm_add_pd(_mm_add_pd(_mm_mul_pd(_mm_set1_pd(m->r0.z), vx), _mm_mul_pd(_mm_set1_pd(m->r1.z), vy)),
 	                        _mm_mul_pd(_mm_set1_pd(m->r2.z), vz));
-	_mm_storel_pd(&out[0].x, ox);
-	_mm_storel_pd(&out[0].y, oy);
-	_mm_storel_pd(&out[0].z, oz);
-	_mm_storeh_pd(&out[1].x, ox);
-	_mm_storeh_pd(&out[1].y, oy);
-	_mm_storeh_pd(&out[1].z, oz);
+	hs_lanes2_store((hs_lanes2){ox, oy, oz}, &out[0], &out[1]);
 #else
 	out[0] = to_body(f, p[0]);
 	out[1] = to_body(f, p[1]);

@@ -23,9 +23,7 @@
 
 #include "hand_internal.h"
 
-#if defined(__SSE2__)
-#include <emmintrin.h>
-#endif
+#include "lanes2.h"
 
 // rad per sensor unit: 0.5° (paper §5.1)
 #define HS_RAD_PER_UNIT (HS_PI / 360.0)
@@ -292,8 +290,8 @@ static void rotate_offsets(hs_quat q, const hs_vec3 v[4], hs_vec3 out[4]) {
 	const __m128d ux = _mm_set1_pd(q.x), uy = _mm_set1_pd(q.y), uz = _mm_set1_pd(q.z), w = _mm_set1_pd(q.w),
 	              two = _mm_set1_pd(2.0);
 	for (; e < 4; e += 2) {
-		__m128d vx = _mm_set_pd(v[e + 1].x, v[e].x), vy = _mm_set_pd(v[e + 1].y, v[e].y),
-		        vz = _mm_set_pd(v[e + 1].z, v[e].z);
+		hs_lanes2 in = hs_lanes2_load(&v[e], &v[e + 1]);
+		__m128d vx = in.x, vy = in.y, vz = in.z;
 		// t = 2 (u x v)
 		__m128d tx = _mm_mul_pd(_mm_sub_pd(_mm_mul_pd(uy, vz), _mm_mul_pd(uz, vy)), two);
 		__m128d ty = _mm_mul_pd(_mm_sub_pd(_mm_mul_pd(uz, vx), _mm_mul_pd(ux, vz)), two);
@@ -302,12 +300,7 @@ static void rotate_offsets(hs_quat q, const hs_vec3 v[4], hs_vec3 out[4]) {
 		__m128d ox = _mm_add_pd(_mm_add_pd(vx, _mm_mul_pd(tx, w)), _mm_sub_pd(_mm_mul_pd(uy, tz), _mm_mul_pd(uz, ty)));
 		__m128d oy = _mm_add_pd(_mm_add_pd(vy, _mm_mul_pd(ty, w)), _mm_sub_pd(_mm_mul_pd(uz, tx), _mm_mul_pd(ux, tz)));
 		__m128d oz = _mm_add_pd(_mm_add_pd(vz, _mm_mul_pd(tz, w)), _mm_sub_pd(_mm_mul_pd(ux, ty), _mm_mul_pd(uy, tx)));
-		_mm_storel_pd(&out[e].x, ox);
-		_mm_storel_pd(&out[e].y, oy);
-		_mm_storel_pd(&out[e].z, oz);
-		_mm_storeh_pd(&out[e + 1].x, ox);
-		_mm_storeh_pd(&out[e + 1].y, oy);
-		_mm_storeh_pd(&out[e + 1].z, oz);
+		hs_lanes2_store((hs_lanes2){ox, oy, oz}, &out[e], &out[e + 1]);
 	}
 #endif
 	for (; e < 4; e++)
@@ -364,17 +357,12 @@ static void place_vectors(hs_mat3 m, hs_vec3 w, const hs_vec3 *v, hs_vec3 *out, 
 	const __m128d r2x = _mm_set1_pd(m.r2.x), r2y = _mm_set1_pd(m.r2.y), r2z = _mm_set1_pd(m.r2.z);
 	const __m128d wx = _mm_set1_pd(w.x), wy = _mm_set1_pd(w.y), wz = _mm_set1_pd(w.z);
 	for (; i + 1 < n; i += 2) {
-		__m128d x = _mm_set_pd(v[i + 1].x, v[i].x), y = _mm_set_pd(v[i + 1].y, v[i].y),
-		        z = _mm_set_pd(v[i + 1].z, v[i].z);
+		hs_lanes2 in = hs_lanes2_load(&v[i], &v[i + 1]);
+		__m128d x = in.x, y = in.y, z = in.z;
 		__m128d ox = _mm_add_pd(wx, _mm_add_pd(_mm_add_pd(_mm_mul_pd(r0x, x), _mm_mul_pd(r0y, y)), _mm_mul_pd(r0z, z)));
 		__m128d oy = _mm_add_pd(wy, _mm_add_pd(_mm_add_pd(_mm_mul_pd(r1x, x), _mm_mul_pd(r1y, y)), _mm_mul_pd(r1z, z)));
 		__m128d oz = _mm_add_pd(wz, _mm_add_pd(_mm_add_pd(_mm_mul_pd(r2x, x), _mm_mul_pd(r2y, y)), _mm_mul_pd(r2z, z)));
-		_mm_storel_pd(&out[i].x, ox);
-		_mm_storel_pd(&out[i].y, oy);
-		_mm_storel_pd(&out[i].z, oz);
-		_mm_storeh_pd(&out[i + 1].x, ox);
-		_mm_storeh_pd(&out[i + 1].y, oy);
-		_mm_storeh_pd(&out[i + 1].z, oz);
+		hs_lanes2_store((hs_lanes2){ox, oy, oz}, &out[i], &out[i + 1]);
 	}
 #endif
 	for (; i < n; i++)
@@ -413,8 +401,8 @@ static double farthest_sq(hs_vec3 c, const hs_vec3 *v, int n, double r_sq) {
 	const __m128d cx = _mm_set1_pd(c.x), cy = _mm_set1_pd(c.y), cz = _mm_set1_pd(c.z);
 	__m128d most = _mm_set1_pd(r_sq);
 	for (; i + 1 < n; i += 2) {
-		__m128d dx = _mm_sub_pd(_mm_set_pd(v[i + 1].x, v[i].x), cx), dy = _mm_sub_pd(_mm_set_pd(v[i + 1].y, v[i].y), cy),
-		        dz = _mm_sub_pd(_mm_set_pd(v[i + 1].z, v[i].z), cz);
+		hs_lanes2 in = hs_lanes2_load(&v[i], &v[i + 1]);
+		__m128d dx = _mm_sub_pd(in.x, cx), dy = _mm_sub_pd(in.y, cy), dz = _mm_sub_pd(in.z, cz);
 		__m128d d = _mm_add_pd(_mm_add_pd(_mm_mul_pd(dx, dx), _mm_mul_pd(dy, dy)), _mm_mul_pd(dz, dz));
 		most = _mm_max_pd(d, most); // d > most ? d : most, lane by lane (NaN: most)
 	}

@@ -26,6 +26,7 @@
 
 #include "collide.h"
 #include "spring_collide.h"
+#include "spring_contact.h"
 #include "spring_near.h"
 #include "spring_rest.h"
 
@@ -220,22 +221,14 @@ static hs_vec3 free_part(const hs_world *world, const hs_spring_system *sys, int
 // The way off the walls both objects of a pair touch and that n runs along (half a unit per
 // wall, into the room): zero when there is none.
 static hs_vec3 off_shared_walls(const hs_world *world, const hs_spring_system *sys, int i, int j, hs_vec3 n) {
-	static const hs_vec3 inward[4] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}};
 	const hs_spring_walls *wl = &sys->def.walls;
-	hs_vec3 off = hs_v3(0.0, 0.0, 0.0);
-	if (!wl->enabled)
-		return off;
 	double tol = world->def.floor_tolerance;
-	unsigned both = 15u;
-	for (int k = 0; k < 2; ++k) {
-		const hs_spring_geom *g = &sys->geom[k ? j : i];
-		hs_vec3 p = world->bodies[k ? j : i].pos;
-		both &= (p.x + g->lo.x <= wl->x_min + tol ? 1u : 0u) | (p.x + g->hi.x >= wl->x_max - tol ? 2u : 0u) |
-		        (p.y + g->lo.y <= wl->y_min + tol ? 4u : 0u) | (p.y + g->hi.y >= wl->y_max - tol ? 8u : 0u);
-	}
+	unsigned both = hs_spring_walls_near(wl, &sys->geom[i], world->bodies[i].pos, tol) &
+	                hs_spring_walls_near(wl, &sys->geom[j], world->bodies[j].pos, tol);
+	hs_vec3 off = hs_v3(0.0, 0.0, 0.0);
 	for (int q = 0; q < 4; ++q)
-		if ((both >> q & 1u) && fabs(hs_dot(n, inward[q])) < 1e-9)
-			off = hs_mul_add(off, 0.5, inward[q]);
+		if ((both >> q & 1u) && fabs(hs_dot(n, hs_spring_wall_normal(q))) < 1e-9)
+			off = hs_mul_add(off, 0.5, hs_spring_wall_normal(q));
 	return off;
 }
 
@@ -515,10 +508,18 @@ static double meeting_of(hs_world *world, const hs_spring_system *sys, int i, in
 	return tau >= 0.0 && tau < 1.0 ? tau : -1.0;
 }
 
-// Event a before event b: by tau, then the pair (a strict order: a pair is listed once at a time).
-static bool before(const hs_spring_event *a, const hs_spring_event *b) {
-	return a->tau < b->tau || (a->tau == b->tau && (a->i < b->i || (a->i == b->i && a->j < b->j)));
+// Events by tau (the meetings: their fraction of the frame; the end passes: the height of the pair's
+// lower object), then the pair: a strict order, a pair being listed once at a time (qsort's form).
+static int event_order(const void *x, const void *y) {
+	const hs_spring_event *a = x, *b = y;
+	if (a->tau != b->tau)
+		return a->tau < b->tau ? -1 : 1;
+	if (a->i != b->i)
+		return a->i < b->i ? -1 : 1;
+	return (a->j > b->j) - (a->j < b->j);
 }
+
+static bool before(const hs_spring_event *a, const hs_spring_event *b) { return event_order(a, b) < 0; }
 
 static bool stale(const hs_spring_system *sys, const hs_spring_event *e) {
 	return e->vi != sys->version[e->i] || e->vj != sys->version[e->j];
@@ -600,19 +601,10 @@ static bool unmoved(const hs_world *world, const hs_spring_system *sys, int i) {
 	return sys->held[i] && memcmp(&world->bodies[i].pos, &sys->saved_pos[i], sizeof(hs_vec3)) == 0;
 }
 
-// Pairs for an end pass: by the height of the lower object's G, then index.
-static int by_height(const void *x, const void *y) {
-	const hs_spring_event *a = x, *b = y;
-	if (a->tau != b->tau)
-		return a->tau < b->tau ? -1 : 1;
-	if (a->i != b->i)
-		return a->i < b->i ? -1 : 1;
-	return (a->j > b->j) - (a->j < b->j);
-}
 
 static bool in_order(const hs_spring_event *e, int n) {
 	for (int k = 1; k < n; ++k)
-		if (by_height(&e[k - 1], &e[k]) > 0)
+		if (event_order(&e[k - 1], &e[k]) > 0)
 			return false;
 	return true;
 }
@@ -646,7 +638,7 @@ static bool end_pass(hs_world *world, hs_spring_system *sys, bool first) {
 		}
 	}
 	if (!in_order(sys->events, sys->event_count)) // (often already: objects on one floor, met in index order)
-		qsort(sys->events, (size_t)sys->event_count, sizeof *sys->events, by_height);
+		qsort(sys->events, (size_t)sys->event_count, sizeof *sys->events, event_order);
 	bool moved = false;
 	sys->shock = true;
 	for (int e = 0; e < sys->event_count; ++e) {

@@ -41,6 +41,18 @@ void hs_spring_wall_block(const hs_spring_walls *wl, const hs_spring_geom *g, hs
 		vec->y = 0.0;
 }
 
+hs_vec3 hs_spring_wall_normal(int k) {
+	static const hs_vec3 n[4] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}};
+	return n[k];
+}
+
+unsigned hs_spring_walls_near(const hs_spring_walls *wl, const hs_spring_geom *g, hs_vec3 p, double tol) {
+	if (!wl->enabled)
+		return 0u;
+	return (p.x + g->lo.x <= wl->x_min + tol ? 1u : 0u) | (p.x + g->hi.x >= wl->x_max - tol ? 2u : 0u) |
+	       (p.y + g->lo.y <= wl->y_min + tol ? 4u : 0u) | (p.y + g->hi.y >= wl->y_max - tol ? 8u : 0u);
+}
+
 void hs_spring_wall_project(const hs_spring_walls *wl, const hs_spring_geom *g, hs_vec3 *p, hs_vec3 *vel) {
 	if (!wl->enabled)
 		return;

@@ -23,6 +23,10 @@ typedef struct hs_spring_support {
 	const hs_vec3 *load;        // N: the force of the objects it touches (spring_rest.c), NULL when none
 } hs_spring_support;
 
+// Wall k (x_min, x_max, y_min, y_max): its normal into the room.
+hs_vec3 hs_spring_wall_normal(int k);
+// The walls the object (G at p) touches within tol: bit k for wall k (0 when walls are off).
+unsigned hs_spring_walls_near(const hs_spring_walls *walls, const hs_spring_geom *g, hs_vec3 p, double tol);
 // Removes the components of `vec` that push into a wall the object (G at p) touches within tol.
 void hs_spring_wall_block(const hs_spring_walls *walls, const hs_spring_geom *g, hs_vec3 p, double tol,
                           hs_vec3 *vec);

@@ -24,6 +24,16 @@ static bool within(hs_vec3 a, hs_vec3 b, double d) {
 	return fabs(a.x - b.x) <= d && fabs(a.y - b.y) <= d && fabs(a.z - b.z) <= d;
 }
 
+// Files object i where it is now (grid and bounding box); false when the lists are good but it
+// moved beyond their skin.
+static bool file_one(const hs_world *world, hs_spring_system *sys, int i) {
+	hs_vec3 p = world->bodies[i].pos;
+	hs_hgrid_file(&sys->grid, i, box_centre(&sys->geom[i], p));
+	sys->box_lo[i] = hs_add(p, sys->geom[i].lo);
+	sys->box_hi[i] = hs_add(p, sys->geom[i].hi);
+	return sys->nb_state != HS_NEAR_LISTS || within(p, sys->nb_pos[i], sys->nb_skin);
+}
+
 void hs_spring_file_all(hs_world *world, hs_spring_system *sys) {
 	int n = world->object_count;
 	if (sys->grid_count != n) {
@@ -39,22 +49,13 @@ void hs_spring_file_all(hs_world *world, hs_spring_system *sys) {
 	if (sys->nb_state == HS_NEAR_GRID) // a new phase: the lists may be made again
 		sys->nb_state = HS_NEAR_STALE;
 	hs_hgrid_reset_occupied(&sys->grid);
-	for (int i = 0; i < n; ++i) {
-		hs_vec3 p = world->bodies[i].pos;
-		hs_hgrid_file(&sys->grid, i, box_centre(&sys->geom[i], p));
-		sys->box_lo[i] = hs_add(p, sys->geom[i].lo);
-		sys->box_hi[i] = hs_add(p, sys->geom[i].hi);
-		if (sys->nb_state == HS_NEAR_LISTS && !within(p, sys->nb_pos[i], sys->nb_skin))
+	for (int i = 0; i < n; ++i)
+		if (!file_one(world, sys, i))
 			sys->nb_state = HS_NEAR_STALE;
-	}
 }
 
 void hs_spring_refile(hs_world *world, hs_spring_system *sys, int i) {
-	hs_vec3 p = world->bodies[i].pos;
-	hs_hgrid_file(&sys->grid, i, box_centre(&sys->geom[i], p));
-	sys->box_lo[i] = hs_add(p, sys->geom[i].lo);
-	sys->box_hi[i] = hs_add(p, sys->geom[i].hi);
-	if (sys->nb_state == HS_NEAR_LISTS && !within(p, sys->nb_pos[i], sys->nb_skin))
+	if (!file_one(world, sys, i))
 		sys->nb_state = HS_NEAR_GRID; // the grid until the next phase: no rebuild per answered pair
 }
 

@@ -21,6 +21,7 @@
 #include <string.h>
 
 #include "spring_collide.h"
+#include "spring_contact.h"
 #include "spring_params.h"
 #include "spring_rest.h"
 
@@ -37,19 +38,6 @@ double hs_spring_pair_restitution(const hs_world *world, const hs_spring_system 
 	ea = ea < 0.0 ? sys->def.restitution : ea;
 	eb = eb < 0.0 ? sys->def.restitution : eb;
 	return fmin(ea, eb);
-}
-
-// Wall k (x_min, x_max, y_min, y_max): its normal into the room.
-static hs_vec3 wall_normal(int k) {
-	static const hs_vec3 n[4] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}};
-	return n[k];
-}
-
-static unsigned walls_near(const hs_spring_walls *wl, const hs_spring_geom *g, hs_vec3 p, double tol) {
-	if (!wl->enabled)
-		return 0u;
-	return (p.x + g->lo.x <= wl->x_min + tol ? 1u : 0u) | (p.x + g->hi.x >= wl->x_max - tol ? 2u : 0u) |
-	       (p.y + g->lo.y <= wl->y_min + tol ? 4u : 0u) | (p.y + g->hi.y >= wl->y_max - tol ? 8u : 0u);
 }
 
 // The objects in any touch, ascending, with their place in sys->active.
@@ -108,9 +96,9 @@ static void approach_impulses(hs_world *world, hs_spring_system *sys) {
 				b->vel.z = 0.0; // the floor absorbs (§4.4 drop)
 				any = true;
 			}
-			unsigned w = walls_near(&sys->def.walls, &sys->geom[i], b->pos, tol);
+			unsigned w = hs_spring_walls_near(&sys->def.walls, &sys->geom[i], b->pos, tol);
 			for (int q = 0; q < 4; ++q) {
-				hs_vec3 n = wall_normal(q);
+				hs_vec3 n = hs_spring_wall_normal(q);
 				if ((w >> q & 1u) && hs_dot(b->vel, n) < 0.0) {
 					b->vel = hs_mul_add(b->vel, -hs_dot(b->vel, n), n); // and so do the walls
 					any = true;
@@ -180,9 +168,9 @@ static void prepare(hs_world *world, hs_spring_system *sys, double dt) {
 		r->acc = hs_scale(r->force, 1.0 / b->mass);
 		r->floor = b->pos.z <= -sys->geom[i].lo.z + tol && b->vel.z <= 0.0;
 		r->sliding = r->floor && hs_length(hs_v3(b->vel.x, b->vel.y, 0.0)) > HS_REST_STICK_SPEED;
-		unsigned w = walls_near(&sys->def.walls, &sys->geom[i], b->pos, tol);
+		unsigned w = hs_spring_walls_near(&sys->def.walls, &sys->geom[i], b->pos, tol);
 		for (int q = 0; q < 4; ++q) // a wall it leaves pushes no more
-			if (hs_dot(b->vel, wall_normal(q)) > HS_REST_APPROACH)
+			if (hs_dot(b->vel, hs_spring_wall_normal(q)) > HS_REST_APPROACH)
 				w &= ~(1u << q);
 		r->walls = (uint8_t)w;
 	}
@@ -235,7 +223,7 @@ static double sweep_bodies(hs_world *world, hs_spring_system *sys, double dt) {
 		for (int q = 0; q < 4; ++q) {
 			if (!((unsigned)r->walls >> q & 1u))
 				continue;
-			hs_vec3 wn = wall_normal(q);
+			hs_vec3 wn = hs_spring_wall_normal(q);
 			double n = fmax(0.0, r->wall[q] - m * hs_dot(r->acc, wn));
 			r->acc = hs_mul_add(r->acc, (n - r->wall[q]) / m, wn);
 			change = fmax(change, fabs(n - r->wall[q]));

@@ -71,14 +71,8 @@ static hs_spring_support support_of(const frame_ctx *fx, int i, const hs_spring_
 
 // The walls (x: bit 0, y: bit 1) object i at p touches, at most floor_tolerance away.
 static unsigned walls_touched(const hs_spring_walls *wl, const hs_spring_geom *g, hs_vec3 p, double tol) {
-	if (!wl->enabled)
-		return 0u;
-	unsigned bits = 0u;
-	if (p.x + g->lo.x <= wl->x_min + tol || p.x + g->hi.x >= wl->x_max - tol)
-		bits |= 1u;
-	if (p.y + g->lo.y <= wl->y_min + tol || p.y + g->hi.y >= wl->y_max - tol)
-		bits |= 2u;
-	return bits;
+	unsigned w = hs_spring_walls_near(wl, g, p, tol);
+	return (w & 3u ? 1u : 0u) | (w & 12u ? 2u : 0u);
 }
 
 // A frame in the air. An attached object that touches a wall at the frame start and that the
