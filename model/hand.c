@@ -461,17 +461,28 @@ void hs_hand_keep_previous(hs_hand *hand) {
 void hs_hand_age_wrist(hs_hand *hand) {
 	if (!hand->placed)
 		return;
-	memmove(&hand->older_pos[1], &hand->older_pos[0], (HS_HAND_OLDER - 1) * sizeof hand->older_pos[0]);
-	memmove(&hand->older_rot[1], &hand->older_rot[0], (HS_HAND_OLDER - 1) * sizeof hand->older_rot[0]);
+	size_t keep = (size_t)(hand->older_capacity - 1);
+	memmove(&hand->older_pos[1], &hand->older_pos[0], keep * sizeof hand->older_pos[0]);
+	memmove(&hand->older_rot[1], &hand->older_rot[0], keep * sizeof hand->older_rot[0]);
 	hand->older_pos[0] = hand->prev_wrist_pos;
 	hand->older_rot[0] = hand->prev_wrist_rot;
-	if (hand->older_count < HS_HAND_OLDER)
+	if (hand->older_count < hand->older_capacity)
 		hand->older_count++;
 }
 
 void hs_hand_past_wrist(const hs_hand *hand, int frames, hs_vec3 *pos, hs_quat *rot) {
 	*pos = frames == 0 ? hand->wrist_pos : frames == 1 ? hand->prev_wrist_pos : hand->older_pos[frames - 2];
 	*rot = frames == 0 ? hand->wrist_rot : frames == 1 ? hand->prev_wrist_rot : hand->older_rot[frames - 2];
+}
+
+int hs_release_window_frames(double window_s, double dt) {
+	double n = floor(window_s / dt + 0.5);
+	return n < 1.0 ? 1 : n > HS_MAX_RELEASE_FRAMES ? HS_MAX_RELEASE_FRAMES : (int)n;
+}
+
+int hs_hand_older_capacity(double window_s, double dt) {
+	int n = hs_release_window_frames(window_s, dt) - 1;
+	return n > HS_HAND_OLDER ? n : HS_HAND_OLDER;
 }
 
 void hs_hand_refresh(hs_hand *hand) {

@@ -13,8 +13,11 @@
 #define HS_HAND_PATH_DEG 10.0
 #define HS_HAND_PATH_MAX 8
 
-// Wrist poses kept beyond the last step's (for a release's velocity, manipulate.c).
+// Wrist poses kept beyond the last step's (for a release's velocity, manipulate.c): at least
+// HS_HAND_OLDER (the default 50 ms window needs 5 at 120 frames/s), more when the world's
+// release_window_s needs them (hs_hand.older_capacity), at most HS_HAND_OLDER_MAX.
 #define HS_HAND_OLDER 7
+#define HS_HAND_OLDER_MAX (HS_MAX_RELEASE_FRAMES - 1)
 
 // The sine and cosine of half a joint angle (what hs_quat_from_axis_angle computes).
 typedef struct hs_half_turn {
@@ -45,10 +48,13 @@ typedef struct hs_hand {
 	uint8_t prev_sensors[HS_GLOVE_SENSORS];
 	bool placed; // set at least once: before that its previous points are its current ones
 	// the wrist poses at the ends of the steps before the last one, newest first (older_pos[0]: two
-	// frames ago), older_count of them: a release takes the hand's motion over its last frames
+	// frames ago), older_count of them: a release takes the hand's motion over its last frames.
+	// MODEL: older_capacity, how many are kept (hs_hand_older_capacity of the world's definition);
+	// the state holds that many, the rest of the arrays is unused
+	int older_capacity;
 	int older_count;
-	hs_vec3 older_pos[HS_HAND_OLDER];
-	hs_quat older_rot[HS_HAND_OLDER];
+	hs_vec3 older_pos[HS_HAND_OLDER_MAX];
+	hs_quat older_rot[HS_HAND_OLDER_MAX];
 	// which check points (bit i) and check lines (bit j) touched an object at the end of the last
 	// step: a part found inside an object it did not reach this frame is in contact only if it
 	// touched before (rectification, contact.c); else it started inside and touches nothing
@@ -112,6 +118,12 @@ void hs_hand_age_wrist(hs_hand *hand);
 // The wrist pose `frames` steps before this frame's (0: this frame's, 1: the previous one), 0 ≤
 // frames ≤ older_count + 1.
 void hs_hand_past_wrist(const hs_hand *hand, int frames, hs_vec3 *pos, hs_quat *rot);
+// How many frames a release's velocity is taken over for a window of `window_s` at `dt`: the
+// nearest whole number, at least 1, at most HS_MAX_RELEASE_FRAMES.
+int hs_release_window_frames(double window_s, double dt);
+// The older wrist poses a hand keeps for that window: its frames less one (the pose a frame back
+// is prev_wrist), at least HS_HAND_OLDER.
+int hs_hand_older_capacity(double window_s, double dt);
 // Rebuilds every cache from the state alone (after hs_world_load_state).
 void hs_hand_refresh(hs_hand *hand);
 

@@ -139,23 +139,54 @@ static void carry_along(hs_world *world, int moved, int current, rigid_move m) {
 	}
 }
 
-// How many of the hand's last frames a release's velocity is taken over: HS_RELEASE_S of them (1 at
-// 12-17 frames/s, 3 at 60, 6 at 120), at most the wrist poses it has. Over one frame at 120
-// frames/s the tracker's noise alone (0.76 mm) made a hand opening in place release the object at
-// up to 0.2 m/s and 30 deg/s: a pair let go 0.1 m up landed 3 cm off (docs/model.md §4 "Release").
-#define HS_RELEASE_S 0.05
-static int release_frames(const hs_hand *hand, double dt) {
-	double n = floor(HS_RELEASE_S / dt + 0.5);
+// How many of the hand's last frames a release's velocity is taken over: round(release_window_s /
+// dt) of them (the default 50 ms: 1 at 12-17 frames/s, 3 at 60, 6 at 120), at most the wrist poses
+// it has. Over one frame at 120 frames/s the tracker's noise alone (0.76 mm) made a hand opening in
+// place release the object at up to 0.2 m/s and 30 deg/s: a pair let go 0.1 m up landed 3 cm off
+// (docs/model.md §4 "Release").
+static int release_frames(const hs_world *world, const hs_hand *hand) {
+	int n = hs_release_window_frames(world->def.release_window_s, world->def.dt);
 	int most = hand->older_count + 1;
-	return n < 1.0 ? 1 : n > (double)most ? most : (int)n;
+	return n > most ? most : n;
+}
+
+// Where the wrist carried the object `frames` frames before this frame's end.
+static hs_vec3 held_then(const hs_body *body, const hs_hand *hand, int frames) {
+	hs_vec3 pos;
+	hs_quat rot;
+	hs_hand_past_wrist(hand, frames, &pos, &rot);
+	return hs_add(pos, hs_quat_rotate(rot, body->grip_pos));
+}
+
+// HS_RELEASE_FIT_QUADRATIC (bench/throw_fidelity.c's "lsq"), frames ≥ 3: the least-squares
+// quadratic through where the wrist carried the object j = 0 … frames frames back, its slope at
+// j = 0 (the release), as a motion per frame. Fitted in the discrete orthogonal polynomials of j
+// about c = frames / 2 (1, j − c, (j − c)² − s², s² their variance), whose coefficients are plain
+// ratios of sums: exact for a wrist at constant acceleration, where the mean lags by a·window/2.
+static hs_vec3 quadratic_slope(const hs_body *body, const hs_hand *hand, int frames) {
+	double c = 0.5 * frames, s2 = frames * (frames + 2) / 12.0, n1 = 0.0, n2 = 0.0;
+	hs_vec3 here = hs_grasp_held_pos(body, hand), b1 = hs_v3(0, 0, 0), b2 = b1;
+	for (int j = 0; j <= frames; ++j) {
+		double p1 = j - c, p2 = p1 * p1 - s2;
+		n1 += p1 * p1;
+		n2 += p2 * p2;
+		if (j > 0) { // positions relative to the release's (y = 0 at j = 0): small sums
+			hs_vec3 y = hs_sub(held_then(body, hand, j), here);
+			b1 = hs_mul_add(b1, p1, y);
+			b2 = hs_mul_add(b2, p2, y);
+		}
+	}
+	// d/dj of b1 (j − c) + b2 ((j − c)² − s²) at j = 0 is b1 − 2c b2, per frame back in time
+	return hs_sub(hs_scale(b2, 2.0 * c / n2), hs_scale(b1, 1.0 / n1));
 }
 
 // Eq. 3 on release. A grasp that ends starts eq. 3 on the exact parabola of the release velocity
 // v (DESIGN.md "Release"), as hs_world_add_object does for an initial velocity: P(t - dt) =
 // P(t) - v dt + g dt²/2, so the flight does not depend on the frame rate. v is the hand's motion
-// over its last frames (release_frames of them, the one in which it let go the last): where its
-// wrist carries the object now, less where it carried it then, over that time (the object is in
-// the hand when the frame starts and leaves it during the frame). The object's own last frame
+// over its last frames (release_frames of them, the one in which it let go the last): by default
+// (HS_RELEASE_FIT_MEAN) where its wrist carries the object now, less where it carried it then, over
+// that time (the object is in the hand when the frame starts and leaves it during the frame); with
+// HS_RELEASE_FIT_QUADRATIC and 3 frames or more, quadratic_slope. The object's own last frame
 // (the paper's letter: eq. 3 continued from its last two positions) lags the hand by a frame: at
 // 12 frames/s, with the hand opened 10 ms after the end of a 0.1 s swing, its last held frame is
 // mid-swing and a throw aimed 2 m away landed 1.11 m short. The spin is the wrist's mean turn over
@@ -167,7 +198,7 @@ static void release(hs_world *world, hs_body *body, hs_contact_state last) {
 		double dt = world->def.dt;
 		hs_vec3 v_dt, then_pos;
 		hs_quat turn, then_rot;
-		int frames = release_frames(hand, dt);
+		int frames = release_frames(world, hand);
 		hs_hand_past_wrist(hand, frames, &then_pos, &then_rot);
 		if (frames == 1) { // the frame it let go in: where the wrist carried the object less where it was
 			v_dt = hs_sub(hs_grasp_held_pos(body, hand), body->pos);
@@ -178,6 +209,9 @@ static void release(hs_world *world, hs_body *body, hs_contact_state last) {
 			hs_quat q = hs_quat_normalize(hs_quat_mul(hand->wrist_rot, hs_quat_conj(then_rot)));
 			turn = hs_quat_normalize(hs_quat_slerp(hs_quat_identity(), q, 1.0 / frames));
 		}
+		// one or two frames keep the mean: a quadratic through 2 or 3 points fits their noise exactly
+		if (world->def.release_fit == HS_RELEASE_FIT_QUADRATIC && frames >= 3)
+			v_dt = quadratic_slope(body, hand, frames);
 		body->prev = hs_add(hs_sub(body->pos, v_dt), hs_scale(world->def.gravity, 0.5 * dt * dt));
 		body->spin = turn;
 	} else {

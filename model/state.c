@@ -69,6 +69,10 @@ static uint64_t definition_checksum(const hs_world *w) {
 	h = hs_state_mix_f64(h, d->grasp_release_mm);
 	h = hs_state_mix_f64(h, d->grasp_open_mm);
 	h = hs_state_mix(h, (uint64_t)d->glove_deadband);
+	if (d->release_window_s != 0.05 || d->release_fit != HS_RELEASE_FIT_MEAN) { // the default keeps older checksums
+		h = hs_state_mix_f64(h, d->release_window_s);
+		h = hs_state_mix(h, (uint64_t)d->release_fit);
+	}
 	for (int i = 0; i < w->shape_count; ++i)
 		h = shape_checksum(h, &w->shapes[i]);
 	for (int i = 0; i < w->object_count; ++i) {
@@ -97,7 +101,7 @@ static int header_of(const hs_world *w, uint64_t out[HS_STATE_HEADER_WORDS], con
 	    "another hand count",
 	    "another shape count",
 	    "another contact capacity (max_hands)",
-	    "another world definition (dt, gravity, tolerance, stacking, grasp rule, shapes, masses or hand definitions)"};
+	    "another world definition (dt, gravity, tolerance, stacking, grasp rule, release, shapes, masses or hand definitions)"};
 	for (int i = 0; i < HS_STATE_HEADER_WORDS; ++i) {
 		out[i] = words[i];
 		why[i] = reasons[i];
@@ -128,10 +132,11 @@ static void body_io(hs_state_io *io, const hs_world *w, hs_body *b) {
 	hs_state_int_range(io, &b->released_by, 0, w->hand_count);
 }
 
-// One hand: 105 words (56 and 7 for each of the HS_HAND_OLDER older wrist poses), the two readings its check
-// points now and a frame ago come from (the points and lines are rebuilt from them after a load),
-// the wrist poses before those (a release's velocity), its two touch masks and its two embedded
-// masks. Its definition is in the checksum.
+// One hand: 56 words and 7 for each of its older_capacity older wrist poses (105 at the default
+// release window: HS_HAND_OLDER of them), the two readings its check points now and a frame ago
+// come from (the points and lines are rebuilt from them after a load), the wrist poses before
+// those (a release's velocity), its two touch masks and its two embedded masks. Its definition is
+// in the checksum; older_capacity follows from the world's (dt, release_window_s).
 static void hand_io(hs_state_io *io, hs_hand *h) {
 	hs_state_vec3(io, &h->wrist_pos);
 	hs_state_rotation(io, &h->wrist_rot);
@@ -142,8 +147,8 @@ static void hand_io(hs_state_io *io, hs_hand *h) {
 	for (int i = 0; i < HS_GLOVE_SENSORS; ++i)
 		hs_state_u8(io, &h->prev_sensors[i]);
 	hs_state_bool(io, &h->placed);
-	hs_state_int_range(io, &h->older_count, 0, HS_HAND_OLDER);
-	for (int i = 0; i < HS_HAND_OLDER; ++i) { // all of them (those not yet reached are zero): a fixed size
+	hs_state_int_range(io, &h->older_count, 0, h->older_capacity);
+	for (int i = 0; i < h->older_capacity; ++i) { // all of them (those not yet reached are zero): a fixed size
 		hs_state_vec3(io, &h->older_pos[i]);
 		hs_state_rotation(io, &h->older_rot[i]);
 	}

@@ -35,6 +35,8 @@ hs_world_def hs_default_world_def(void) {
 	def.grasp_open_mm = 8.0;
 	def.skip_work = true;
 	def.glove_deadband = 3;
+	def.release_window_s = 0.05;
+	def.release_fit = HS_RELEASE_FIT_MEAN;
 	return def;
 }
 
@@ -66,7 +68,10 @@ static bool valid_def(const hs_world_def *def) {
 	       def->grasp_threshold_deg <= 180.0 && isfinite(def->grasp_release_mm) && def->grasp_release_mm >= 0.0 &&
 	       def->grasp_release_mm <= 1000.0 && isfinite(def->grasp_open_mm) && def->grasp_open_mm >= 0.0 &&
 	       def->grasp_open_mm <= 1000.0 && def->glove_deadband >= 0 && def->glove_deadband <= HS_MAX_GLOVE_DEADBAND &&
-	       (def->stacking == HS_STACKING_PAPER || def->stacking == HS_STACKING_SUPPORT);
+	       (def->stacking == HS_STACKING_PAPER || def->stacking == HS_STACKING_SUPPORT) &&
+	       isfinite(def->release_window_s) && def->release_window_s >= 0.0 &&
+	       def->release_window_s <= HS_MAX_RELEASE_WINDOW &&
+	       (def->release_fit == HS_RELEASE_FIT_MEAN || def->release_fit == HS_RELEASE_FIT_QUADRATIC);
 }
 
 hs_world *hs_world_create(const hs_world_def *def, hs_status *status) {
@@ -465,7 +470,8 @@ hs_hand_id hs_world_add_hand(hs_world *world, const hs_hand_def *def, hs_status 
 	hand->def = *def;
 	hs_glove_table_build(&hand->def, &hand->glove);
 	hand->wrist_rot = hand->prev_wrist_rot = hs_quat_identity();
-	for (int k = 0; k < HS_HAND_OLDER; ++k) // not yet reached: a unit rotation, as a state file must hold
+	hand->older_capacity = hs_hand_older_capacity(world->def.release_window_s, world->def.dt);
+	for (int k = 0; k < HS_HAND_OLDER_MAX; ++k) // not yet reached: a unit rotation, as a state file must hold
 		hand->older_rot[k] = hs_quat_identity();
 	hs_hand_update_bounds(hand); // touches nothing until it is set
 	set_status(status, HS_OK);

@@ -369,15 +369,16 @@ static void test_grasp_follow_release(void **state) {
 }
 
 // The thumb tip (3) and index tip (7) hold the cube at its ±x faces; the wrist and both tips move
-// by u per frame from frame 1 to `frames`, then the hand opens. Returns the release frame's index.
-static int carry_and_release(hs_world *w, hs_vec3 u_dt, int frames) {
+// to u k + a k²/2 at frame k (u, a per frame), from frame 1 to `frames`, then the hand opens.
+// Returns the release frame's index.
+static int carry_path_and_release(hs_world *w, hs_vec3 u_dt, hs_vec3 a_dt2, int frames) {
 	hs_hand *hand = &w->hands[0];
 	move_point(w, 3, hs_v3(-0.6, 0, 2), hs_v3(-0.45, 0, 2));
 	move_point(w, 7, hs_v3(0.6, 0, 2), hs_v3(0.45, 0, 2));
 	hs_world_step(w);
 	assert_int_equal(w->bodies[0].contact, HS_CONTACT_GRASP);
 	for (int k = 1; k <= frames; ++k) {
-		hs_vec3 shift = hs_scale(u_dt, k);
+		hs_vec3 shift = hs_mul_add(hs_scale(u_dt, k), 0.5 * k * k, a_dt2);
 		hand->wrist_pos = shift;
 		hand->points[3] = hs_add(hs_v3(-0.45, 0, 2), shift);
 		hand->points[7] = hs_add(hs_v3(0.45, 0, 2), shift);
@@ -386,8 +387,12 @@ static int carry_and_release(hs_world *w, hs_vec3 u_dt, int frames) {
 		assert_int_equal(w->bodies[0].contact, HS_CONTACT_GRASP);
 	}
 	hand->points[3] = hand->points[7] = FAR; // the hand opens while it goes on moving
-	hand->wrist_pos = hs_scale(u_dt, frames + 1);
+	hand->wrist_pos = hs_mul_add(hs_scale(u_dt, frames + 1), 0.5 * (frames + 1) * (frames + 1), a_dt2);
 	return frames + 1;
+}
+
+static int carry_and_release(hs_world *w, hs_vec3 u_dt, int frames) {
+	return carry_path_and_release(w, u_dt, hs_v3(0, 0, 0), frames);
 }
 
 // Release on the exact parabola (DESIGN.md "Release"): a cube carried at constant velocity
@@ -423,6 +428,104 @@ static void test_release_on_exact_parabola(void **state) {
 		double curve = zp - 2.0 * z[top] + zm, slope = 0.5 * (zp - zm);
 		double peak = z[top] - slope * slope / (2.0 * curve) - pn.z;
 		assert_near(peak, u.z * u.z / (2.0 * g), 1e-9 * u.z * u.z / (2.0 * g));
+		hs_world_destroy(w);
+	}
+}
+
+// The release estimators (hs_world_def.release_window_s, release_fit; docs/model.md §4 "Release").
+// The cube carried by a wrist at u t + a t²/2 (t = k dt, k = 0 at the grasp) through frame
+// `frames`, then let go in frame K = frames + 1, flies off with v: its position after the release
+// step is P(K - 1) + v dt + g dt²/2 (eq. 3 started on the exact parabola of v).
+static hs_vec3 release_velocity(double dt, double window_s, hs_release_fit fit, hs_vec3 u, hs_vec3 a, int frames) {
+	hs_world_def def = hs_default_world_def();
+	def.dt = dt;
+	def.release_window_s = window_s;
+	def.release_fit = fit;
+	hs_world *w = rig_world(&def, hs_shape_box(hs_v3(1, 1, 1), NULL), hs_v3(0, 0, 2), hs_v3(0, 0, 2));
+	carry_path_and_release(w, hs_scale(u, dt), hs_scale(a, dt * dt), frames);
+	hs_vec3 before = w->bodies[0].pos;
+	assert_int_equal(hs_world_step(w), HS_OK);
+	assert_int_equal(w->bodies[0].contact, HS_CONTACT_NONE);
+	hs_vec3 moved = hs_sub(hs_sub(w->bodies[0].pos, before), hs_scale(def.gravity, 0.5 * dt * dt));
+	hs_world_destroy(w);
+	return hs_scale(moved, 1.0 / dt);
+}
+
+// The window's frames as the library counts them: the nearest whole number, 1 to 64.
+static int window_frames(double window_s, double dt) {
+	double n = floor(window_s / dt + 0.5);
+	return n < 1.0 ? 1 : n > HS_MAX_RELEASE_FRAMES ? HS_MAX_RELEASE_FRAMES : (int)n;
+}
+
+static const double release_rates[] = {12, 17, 30, 60, 120};
+static const double release_windows[] = {0.0, 0.05, 0.1, 0.16}; // 0: one frame
+
+// A hand at constant velocity releases with exactly that velocity, by either fit over any window.
+static void test_release_constant_velocity(void **state) {
+	(void)state;
+	hs_vec3 u = hs_v3(2, -0.5, 1);
+	for (int r = 0; r < 5; ++r)
+		for (int k = 0; k < 4; ++k)
+			for (int fit = HS_RELEASE_FIT_MEAN; fit <= HS_RELEASE_FIT_QUADRATIC; ++fit) {
+				double dt = 1.0 / release_rates[r];
+				int n = window_frames(release_windows[k], dt);
+				hs_vec3 v = release_velocity(dt, release_windows[k], (hs_release_fit)fit, u, hs_v3(0, 0, 0), n + 2);
+				assert_vec3_near(v, u, 1e-9);
+			}
+}
+
+// A hand at constant acceleration a: the quadratic fit releases with the hand's velocity at the
+// end of the release frame, u + a K dt, exactly (over 3 frames or more; the mean below that); the
+// mean over n frames lags it by a n dt / 2, its velocity half a window before. A 0.5 s window at
+// 240 frames/s is clamped to HS_MAX_RELEASE_FRAMES (64) frames: the hand keeps 63 older poses.
+static void check_constant_acceleration(double dt, double window_s) {
+	hs_vec3 u = hs_v3(2, -0.5, 1), a = hs_v3(3, 1, 2);
+	int n = window_frames(window_s, dt), frames = n + 2, release = frames + 1;
+	hs_vec3 exact = hs_mul_add(u, release * dt, a), mean = hs_mul_add(exact, -0.5 * n * dt, a);
+	hs_vec3 v_mean = release_velocity(dt, window_s, HS_RELEASE_FIT_MEAN, u, a, frames);
+	hs_vec3 v_quad = release_velocity(dt, window_s, HS_RELEASE_FIT_QUADRATIC, u, a, frames);
+	assert_vec3_near(v_mean, mean, 1e-9);
+	assert_vec3_near(v_quad, n >= 3 ? exact : mean, 1e-9);
+}
+
+static void test_release_constant_acceleration(void **state) {
+	(void)state;
+	for (int r = 0; r < 5; ++r)
+		for (int k = 0; k < 4; ++k)
+			check_constant_acceleration(1.0 / release_rates[r], release_windows[k]);
+	assert_int_equal(window_frames(0.5, 1.0 / 240), HS_MAX_RELEASE_FRAMES);
+	check_constant_acceleration(1.0 / 240, 0.5);
+	assert_int_equal(hs_hand_older_capacity(0.5, 1.0 / 240), HS_MAX_RELEASE_FRAMES - 1);
+	assert_int_equal(hs_hand_older_capacity(0.05, 1.0 / 120), HS_HAND_OLDER); // the default's 7
+	assert_int_equal(hs_hand_older_capacity(0.16, 1.0 / 120), 18);             // 19 frames
+}
+
+// hs_world_create refuses a window outside [0, HS_MAX_RELEASE_WINDOW] and an unknown fit.
+static void test_release_options_refused(void **state) {
+	(void)state;
+	const double bad[] = {-1e-9, HS_MAX_RELEASE_WINDOW * (1 + 1e-15), NAN, INFINITY};
+	for (int k = 0; k < 4; ++k) {
+		hs_world_def def = hs_default_world_def();
+		def.release_window_s = bad[k];
+		hs_status st = HS_OK;
+		assert_null(hs_world_create(&def, &st));
+		assert_int_equal(st, HS_ERR_INVALID_ARGUMENT);
+	}
+	const int fits[] = {-1, 2};
+	for (int k = 0; k < 2; ++k) {
+		hs_world_def def = hs_default_world_def();
+		def.release_fit = (hs_release_fit)fits[k];
+		hs_status st = HS_OK;
+		assert_null(hs_world_create(&def, &st));
+		assert_int_equal(st, HS_ERR_INVALID_ARGUMENT);
+	}
+	hs_world_def def = hs_default_world_def(); // the ends of the range are fine
+	assert_true(def.release_window_s == 0.05 && def.release_fit == HS_RELEASE_FIT_MEAN);
+	const double good[] = {0.0, HS_MAX_RELEASE_WINDOW};
+	for (int k = 0; k < 2; ++k) {
+		def.release_window_s = good[k];
+		hs_world *w = hs_world_create(&def, NULL);
+		assert_non_null(w);
 		hs_world_destroy(w);
 	}
 }
@@ -585,6 +688,9 @@ int main(void) {
 	    cmocka_unit_test(test_grasp_follow_release),
 	    cmocka_unit_test(test_grasp_holds_fast_hand),
 	    cmocka_unit_test(test_release_on_exact_parabola),
+	    cmocka_unit_test(test_release_constant_velocity),
+	    cmocka_unit_test(test_release_constant_acceleration),
+	    cmocka_unit_test(test_release_options_refused),
 	    cmocka_unit_test(test_one_finger_does_not_grasp),
 	    cmocka_unit_test(test_grasp_continues_on_two_fingers_only),
 	    cmocka_unit_test(test_grasp_survives_a_contact_leaving),

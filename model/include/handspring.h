@@ -168,6 +168,15 @@ typedef enum hs_stacking {
 #define HS_MAX_COORDINATE 1e6 ///< m, per component of positions and wrist poses
 #define HS_MAX_SPEED 1e6      ///< m/s and rad/s, per component of initial velocities
 #define HS_MAX_GLOVE_DEADBAND 32 ///< sensor units (16 deg)
+#define HS_MAX_RELEASE_WINDOW 0.5 ///< s, hs_world_def.release_window_s
+#define HS_MAX_RELEASE_FRAMES 64  ///< frames a release's velocity is taken over at most: a longer window (0.5 s above 128 frames/s) is clamped to this many frames
+
+/// How a grasp's release velocity is estimated from the wrist's last frames (docs/model.md §4
+/// "Release"; the 1999 paper's eq. 3 continues from the object's last two positions instead).
+typedef enum hs_release_fit {
+	HS_RELEASE_FIT_MEAN,      ///< the mean motion over the window: where the wrist carries the object at the release less where it carried it a window before, over that time
+	HS_RELEASE_FIT_QUADRATIC, ///< the slope at the release of the least-squares quadratic through where the wrist carried the object at each frame of the window; the mean for a window of one or two frames
+} hs_release_fit;
 
 typedef struct hs_world_def {
 	double dt;                  ///< s, fixed frame time (default 1/60)
@@ -184,12 +193,15 @@ typedef struct hs_world_def {
 	double grasp_open_mm;       ///< mm: the grasp ends when the holding fingertips spread or reach out this much more than when it began (default 8)
 	bool skip_work;             ///< bounding-volume rejection and sleeping on (default true); off only to measure what they save
 	int glove_deadband;         ///< sensor units, 0..HS_MAX_GLOVE_DEADBAND: a glove sensor moves the hand only once its reading leaves ±this around the value last used, which then follows it at this distance (default 3; 0: every raw reading, the 1999 paper's letter; docs/model.md §1)
+	double release_window_s;    ///< s, 0..HS_MAX_RELEASE_WINDOW: a released grasp flies with the hand's velocity over its last round(this / dt) frames, at least 1, at most HS_MAX_RELEASE_FRAMES (default 0.05: 1 frame at 12 frames/s, 3 at 60, 6 at 120; docs/model.md §4 "Release")
+	hs_release_fit release_fit; ///< how that velocity is taken from those frames (default HS_RELEASE_FIT_MEAN); the spin is the wrist's mean turn over them either way
 } hs_world_def;
 
 hs_world_def hs_default_world_def(void);
 
 /// Creates a world; NULL with *status set on an invalid definition (dt outside [HS_MIN_DT, HS_MAX_DT],
-/// gravity beyond HS_MAX_GRAVITY, non-finite numbers, capacities out of range) or out of memory.
+/// gravity beyond HS_MAX_GRAVITY, non-finite numbers, capacities out of range, release_window_s
+/// outside [0, HS_MAX_RELEASE_WINDOW], an unknown release_fit) or out of memory.
 hs_world *hs_world_create(const hs_world_def *def, hs_status *status);
 void hs_world_destroy(hs_world *world);
 
