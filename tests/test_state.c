@@ -51,6 +51,9 @@ typedef struct hand_rig {
 } hand_rig;
 
 static bool rig_any_contacts; // the grasp rule of the hand worlds built next (default: false)
+static double rig_fps = 60.0;  // their frame rate (drive_hand's time follows it)
+static double rig_release_window = 0.05;
+static hs_release_fit rig_release_fit = HS_RELEASE_FIT_MEAN;
 
 static hand_rig hand_world(double cube_size, int extra_objects, bool skip_work) {
 	hand_rig r;
@@ -58,6 +61,9 @@ static hand_rig hand_world(double cube_size, int extra_objects, bool skip_work) 
 	def.max_objects = 8;
 	def.skip_work = skip_work;
 	def.grasp_any_contacts = rig_any_contacts;
+	def.dt = 1.0 / rig_fps;
+	def.release_window_s = rig_release_window;
+	def.release_fit = rig_release_fit;
 	r.world = hs_world_create(&def, NULL);
 	assert_non_null(r.world);
 	hs_shape_id cube = add_shape(r.world, hs_shape_box(hs_v3(cube_size, cube_size, cube_size), NULL));
@@ -80,7 +86,7 @@ static hand_rig hand_world(double cube_size, int extra_objects, bool skip_work) 
 
 // The input of frame f: down over the cube, close, lift, swing sideways, open (a throw).
 static void drive_hand(const hand_rig *r, hs_world *w, int f) {
-	double t = (f + 1) / 60.0;
+	double t = (f + 1) / rig_fps;
 	double down = t < 1.0 ? 0.2 * (1.0 - t) : 0.0, close = t < 1.0 ? 0.0 : (t < 1.5 ? (t - 1.0) * 2.0 : 1.0);
 	double lift = t < 1.5 ? 0.0 : (t < 3.0 ? (t - 1.5) * 0.3 : 0.45);
 	double side = t < 2.0 ? 0.0 : (t - 2.0) * 2.0;
@@ -424,6 +430,59 @@ static void test_hash_sees_every_field(void **state) {
 	hs_world_destroy(springs);
 }
 
+// A release window longer than the default keeps more wrist poses (docs/model.md §4 "Release"):
+// 0.16 s at 120 frames/s is 19 frames, 18 older poses a hand where the default keeps 7. The state
+// grows by 11 × 7 words and covers them: a run resumed across the quadratic fit's release is bit
+// for bit the run saved, in the same world and in another built alike; every word is hashed; a
+// world with the default window or the mean fit refuses the state.
+static hand_rig long_window_world(hs_release_fit fit, double window, bool skip_work) {
+	rig_release_fit = fit;
+	rig_release_window = window;
+	hand_rig r = hand_world(0.05, 0, skip_work);
+	rig_release_fit = HS_RELEASE_FIT_MEAN;
+	rig_release_window = 0.05;
+	return r;
+}
+
+static void test_long_release_window_continues_identically(void **state) {
+	(void)state;
+	rig_fps = 120.0; // the worlds below and their input
+	hand_rig plain = long_window_world(HS_RELEASE_FIT_MEAN, 0.05, true);
+	hand_rig mean = long_window_world(HS_RELEASE_FIT_MEAN, 0.16, true);
+	hand_rig r = long_window_world(HS_RELEASE_FIT_QUADRATIC, 0.16, true);
+	assert_int_equal(r.world->hands[0].older_capacity, 18);
+	assert_int_equal(hs_world_state_size(r.world) - hs_world_state_size(plain.world), WORD * 11 * 7);
+	step_hand(&r, r.world, 0, 2 * N_FRAMES, NULL); // t = 1.67 s: held and lifting, the history full
+	hs_object_state target;
+	assert_int_equal(hs_world_object_state(r.world, r.target, &target), HS_OK);
+	assert_int_equal(target.contact, HS_CONTACT_GRASP);
+	assert_int_equal(r.world->hands[0].older_count, 18);
+	size_t size;
+	unsigned char *buffer = save(r.world, &size);
+	uint64_t first[2 * M_FRAMES], again[2 * M_FRAMES], other[2 * M_FRAMES];
+	step_hand(&r, r.world, 2 * N_FRAMES, 2 * M_FRAMES, first);
+	assert_int_equal(hs_world_object_state(r.world, r.target, &target), HS_OK);
+	assert_int_equal(target.contact, HS_CONTACT_NONE); // thrown
+	assert_int_equal(hs_world_load_state(r.world, buffer, size), HS_OK);
+	step_hand(&r, r.world, 2 * N_FRAMES, 2 * M_FRAMES, again);
+	hand_rig r2 = long_window_world(HS_RELEASE_FIT_QUADRATIC, 0.16, false);
+	assert_int_equal(hs_world_load_state(r2.world, buffer, size), HS_OK);
+	step_hand(&r2, r2.world, 2 * N_FRAMES, 2 * M_FRAMES, other);
+	for (int k = 0; k < 2 * M_FRAMES; ++k)
+		if (first[k] != again[k] || first[k] != other[k])
+			fail_msg("frame %d after the save: hashes differ", 2 * N_FRAMES + k + 1);
+	assert_int_equal(hs_world_load_state(r.world, buffer, size), HS_OK);
+	every_word_changes_the_hash(r.world); // the 18 older poses included
+	expect_refused(plain.world, buffer, size, "world definition");
+	expect_refused(mean.world, buffer, size, "world definition");
+	free(buffer);
+	hs_world_destroy(plain.world);
+	hs_world_destroy(mean.world);
+	hs_world_destroy(r.world);
+	hs_world_destroy(r2.world);
+	rig_fps = 60.0;
+}
+
 // Fields the old hash (poses and contact states only) missed: each changes the hash now.
 static void test_hash_sees_what_the_old_one_missed(void **state) {
 	(void)state;
@@ -542,6 +601,7 @@ int main(void) {
 	    cmocka_unit_test(test_refusals),
 	    cmocka_unit_test(test_refuses_other_worlds),
 	    cmocka_unit_test(test_hash_sees_every_field),
+	    cmocka_unit_test(test_long_release_window_continues_identically),
 	    cmocka_unit_test(test_hash_sees_what_the_old_one_missed),
 	    cmocka_unit_test(test_rebuilt_world_hashes_differently),
 	    cmocka_unit_test(test_first_fault),
