@@ -235,14 +235,32 @@ static bool read_choice(hs_scenario_parser *p, const yaml_node_t *node, const ch
 	return hs_yaml_fail(&p->y, node, "'%s' must be %s or %s, got %s", key, first, second, hs_yaml_got(node).text);
 }
 
+// The release velocity's estimator (docs/model.md §4 "Release"): release_fit and release_window_s,
+// flat keys so that a campaign overrides one at a time.
+static bool read_release(hs_scenario_parser *p, const yaml_node_t *fit, const yaml_node_t *window, hs_world_def *def) {
+	bool quadratic = def->release_fit == HS_RELEASE_FIT_QUADRATIC;
+	if (!read_choice(p, fit, "release_fit", "mean", "quadratic", &quadratic))
+		return false;
+	def->release_fit = quadratic ? HS_RELEASE_FIT_QUADRATIC : HS_RELEASE_FIT_MEAN;
+	if (!window)
+		return true;
+	if (!hs_yaml_number(&p->y, window, "release_window_s", &def->release_window_s))
+		return false;
+	if (!(def->release_window_s >= 0.0 && def->release_window_s <= HS_MAX_RELEASE_WINDOW))
+		return hs_yaml_fail(&p->y, window, "'release_window_s' must be within [0, %g] s, got %s",
+		                    HS_MAX_RELEASE_WINDOW, hs_yaml_show(window).text);
+	return true;
+}
+
 bool hs_read_model(hs_scenario_parser *p, const yaml_node_t *node, hs_world_def *def) {
-	static const char *const names[] = {"grasp_threshold_deg", "stacking",     "floor_tolerance",
-	                                    "skip_work",           "spring",       "input_noise", "grasp_rule",
-	                                    "contacts",            "glove_deadband"};
+	static const char *const names[] = {"grasp_threshold_deg", "stacking",       "floor_tolerance",
+	                                    "skip_work",           "spring",         "input_noise",
+	                                    "grasp_rule",          "contacts",       "glove_deadband",
+	                                    "release_fit",         "release_window_s"};
 	if (node->type != YAML_MAPPING_NODE)
 		return hs_yaml_fail(&p->y, node, "'model' must be a mapping, got %s", hs_yaml_got(node).text);
 	hs_fields f;
-	if (!hs_yaml_mapping(&p->y, node, names, 9, "model", &f))
+	if (!hs_yaml_mapping(&p->y, node, names, 11, "model", &f))
 		return false;
 	bool stacking_support = def->stacking == HS_STACKING_SUPPORT;
 	// the realistic rule first, the paper's letter second (docs/model.md §3, §6)
@@ -271,6 +289,8 @@ bool hs_read_model(hs_scenario_parser *p, const yaml_node_t *node, hs_world_def 
 	if (f.value[8] && !hs_yaml_integer(&p->y, f.value[8], names[8], 0, HS_MAX_GLOVE_DEADBAND, &band))
 		return false;
 	def->glove_deadband = (int)band;
+	if (!read_release(p, f.value[9], f.value[10], def))
+		return false;
 	if (f.value[4]) {
 		p->spring_key = f.key[4];
 		if (!read_spring(p, f.value[4]))
