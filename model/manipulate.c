@@ -158,7 +158,7 @@ static hs_vec3 held_then(const hs_body *body, const hs_hand *hand, int frames) {
 	return hs_add(pos, hs_quat_rotate(rot, body->grip_pos));
 }
 
-// HS_RELEASE_FIT_QUADRATIC (bench/throw_fidelity.c's "lsq"), frames ≥ 3: the least-squares
+// HS_RELEASE_FIT_QUADRATIC (bench/throw_fidelity.c's "lsq"), frames ≥ 2: the least-squares
 // quadratic through where the wrist carried the object j = 0 … frames frames back, its slope at
 // j = 0 (the release), as a motion per frame. Fitted in the discrete orthogonal polynomials of j
 // about c = frames / 2 (1, j − c, (j − c)² − s², s² their variance), whose coefficients are plain
@@ -186,7 +186,7 @@ static hs_vec3 quadratic_slope(const hs_body *body, const hs_hand *hand, int fra
 // over its last frames (release_frames of them, the one in which it let go the last): by default
 // (HS_RELEASE_FIT_MEAN) where its wrist carries the object now, less where it carried it then, over
 // that time (the object is in the hand when the frame starts and leaves it during the frame); with
-// HS_RELEASE_FIT_QUADRATIC and 3 frames or more, quadratic_slope. The object's own last frame
+// HS_RELEASE_FIT_QUADRATIC and 2 frames or more, quadratic_slope. The object's own last frame
 // (the paper's letter: eq. 3 continued from its last two positions) lags the hand by a frame: at
 // 12 frames/s, with the hand opened 10 ms after the end of a 0.1 s swing, its last held frame is
 // mid-swing and a throw aimed 2 m away landed 1.11 m short. The spin is the wrist's mean turn over
@@ -209,8 +209,8 @@ static void release(hs_world *world, hs_body *body, hs_contact_state last) {
 			hs_quat q = hs_quat_normalize(hs_quat_mul(hand->wrist_rot, hs_quat_conj(then_rot)));
 			turn = hs_quat_normalize(hs_quat_slerp(hs_quat_identity(), q, 1.0 / frames));
 		}
-		// one or two frames keep the mean: a quadratic through 2 or 3 points fits their noise exactly
-		if (world->def.release_fit == HS_RELEASE_FIT_QUADRATIC && frames >= 3)
+		// one frame keeps the mean (two points); two fit the quadratic through three, as the bench's lsq
+		if (world->def.release_fit == HS_RELEASE_FIT_QUADRATIC && frames >= 2)
 			v_dt = quadratic_slope(body, hand, frames);
 		body->prev = hs_add(hs_sub(body->pos, v_dt), hs_scale(world->def.gravity, 0.5 * dt * dt));
 		body->spin = turn;

@@ -175,7 +175,7 @@ typedef enum hs_stacking {
 /// "Release"; the 1999 paper's eq. 3 continues from the object's last two positions instead).
 typedef enum hs_release_fit {
 	HS_RELEASE_FIT_MEAN,      ///< the mean motion over the window: where the wrist carries the object at the release less where it carried it a window before, over that time
-	HS_RELEASE_FIT_QUADRATIC, ///< the slope at the release of the least-squares quadratic through where the wrist carried the object at each frame of the window; the mean for a window of one or two frames
+	HS_RELEASE_FIT_QUADRATIC, ///< the slope at the release of the least-squares quadratic through where the wrist carried the object at each frame of the window; the mean for a window of one frame (two points)
 } hs_release_fit;
 
 typedef struct hs_world_def {
