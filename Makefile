@@ -149,7 +149,7 @@ $(HSOLIB): $(HLIB_PIC_OBJ) $(SOLIB) $(BUILD)/pic/handspring-harness.map
 	ln -sf $(notdir $@) $(BUILD)/libhandspring-harness.so.$(HS_SOVERSION)
 	ln -sf libhandspring-harness.so.$(HS_SOVERSION) $(BUILD)/libhandspring-harness.so
 
-$(TOOL): $(BUILD)/obj/tool/handspring.o $(BUILD)/obj/tool/view.o $(BUILD)/obj/tool/outsel.o $(BUILD)/obj/tool/golden.o $(BUILD)/obj/tool/hand_cmd.o $(LIBS)
+$(TOOL): $(patsubst tool/%.c,$(BUILD)/obj/tool/%.o,$(wildcard tool/*.c)) $(LIBS)
 	$(CC) $(LDFLAGS) -o $@ $^ $(LDLIBS_ALL)
 
 # test_view reads the pictures `handspring view` draws with libpng

@@ -32,6 +32,19 @@ void hs_hand_script_clear(hs_hand_script *script);
 // Errors are "PATH:LINE: what is wrong".
 bool hs_record_load(const char *path, hs_hand_script *script, hs_error *err);
 
+// A thrower's error on one hand's script (throw_error.c, hs_throw_error): after `from` the wrist
+// is at pivot + turn (scale (w - pivot)) for the script's w, and the glove reads the script at t - timing.
+typedef struct hs_thrower {
+	bool active;
+	int hand;
+	double from, timing, scale; // s, s, 1 + speed
+	hs_vec3 pivot;              // m: the script's wrist at `from`
+	hs_quat turn;
+} hs_thrower;
+// Changes a sampled reading of the thrower's hand at time t (> from).
+void hs_thrower_apply(const hs_thrower *thrower, const hs_hand_script *script, double t, hs_vec3 *wrist,
+                      uint8_t sensors[HS_GLOVE_SENSORS]);
+
 // The hands of a scenario and their scripts.
 typedef struct hs_hands {
 	int count;
@@ -39,6 +52,7 @@ typedef struct hs_hands {
 	hs_hand_id *ids;
 	hs_hand_script *scripts;
 	hs_hand_def *defs; // as added to the world
+	hs_thrower thrower; // a campaign's throw error (inactive: none)
 } hs_hands;
 
 // Gives every hand its pose and glove at time t (the end of the coming frame), with the input

@@ -12,6 +12,7 @@
 
 struct hs_noise {
 	gsl_rng *rng;
+	double stylus_scale; // the stylus's noise times this (a campaign's noise axis)
 };
 
 hs_noise *hs_noise_create(unsigned long seed) {
@@ -24,6 +25,7 @@ hs_noise *hs_noise_create(unsigned long seed) {
 		return NULL;
 	}
 	gsl_rng_set(noise->rng, seed);
+	noise->stylus_scale = 1.0;
 	return noise;
 }
 
@@ -34,8 +36,10 @@ void hs_noise_destroy(hs_noise *noise) {
 	free(noise);
 }
 
+void hs_noise_set_stylus_scale(hs_noise *noise, double scale) { noise->stylus_scale = scale; }
+
 // Two independent N(0, 1) draws (Box–Muller): u1, u2 in (0, 1], r = √(−2 ln u1), θ = 2π u2.
-static void gaussian_pair(hs_noise *noise, double *a, double *b) {
+void hs_noise_gaussian_pair(hs_noise *noise, double *a, double *b) {
 	double u1 = gsl_rng_uniform_pos(noise->rng), u2 = gsl_rng_uniform_pos(noise->rng);
 	double r = sqrt(-2.0 * hs_log(u1)), theta = 2.0 * HS_PI * u2;
 	*a = r * hs_cos(theta);
@@ -45,9 +49,10 @@ static void gaussian_pair(hs_noise *noise, double *a, double *b) {
 void hs_noise_stylus(hs_noise *noise, hs_vec3 *position, hs_quat *orientation) {
 	double n[6]; // x, y, z of the position, then of the rotation vector
 	for (int i = 0; i < 6; i += 2)
-		gaussian_pair(noise, &n[i], &n[i + 1]);
-	*position = hs_add(*position, hs_scale(hs_v3(n[0], n[1], n[2]), HS_STYLUS_NOISE_POSITION));
-	hs_vec3 rv = hs_scale(hs_v3(n[3], n[4], n[5]), HS_STYLUS_NOISE_ROTATION);
+		hs_noise_gaussian_pair(noise, &n[i], &n[i + 1]);
+	double k = noise->stylus_scale;
+	*position = hs_add(*position, hs_scale(hs_v3(n[0], n[1], n[2]), HS_STYLUS_NOISE_POSITION * k));
+	hs_vec3 rv = hs_scale(hs_v3(n[3], n[4], n[5]), HS_STYLUS_NOISE_ROTATION * k);
 	double angle = hs_length(rv);
 	if (angle > 0.0)
 		*orientation = hs_quat_normalize(

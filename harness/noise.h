@@ -27,6 +27,10 @@ typedef struct hs_noise hs_noise;
 // A generator (GSL's mt19937) seeded explicitly; NULL when out of memory.
 hs_noise *hs_noise_create(unsigned long seed);
 void hs_noise_destroy(hs_noise *noise);
+// The stylus's noise is its RMS times `scale` from now on (1 when created).
+void hs_noise_set_stylus_scale(hs_noise *noise, double scale);
+// Two independent N(0, 1) draws (Box–Muller through hs_log, hs_cos, hs_sin: the same on every machine).
+void hs_noise_gaussian_pair(hs_noise *noise, double *a, double *b);
 
 // Adds tracker noise to a stylus reading: position + N(0, σp²) per axis, then a rotation whose
 // rotation vector is N(0, σr²) per axis, applied before the reading (world frame). Six draws in a

@@ -4,6 +4,7 @@
 //
 // Errors are "PATH:LINE: what is wrong", one message, the first problem found; a failed load
 // frees everything it allocated. The schema is documented for users in scenarios/README.md.
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -88,6 +89,33 @@ static void realistic_noise(hs_scenario_parser *p, bool hands) {
 		p->noise.wrist = HS_STYLUS_NOISE_POSITION;
 		p->noise.wrist_rotation = HS_STYLUS_NOISE_ROTATION;
 	}
+	double k = p->options->noise_scale;
+	if (k > 0.0) { // a campaign's noise axis: the levels times k
+		p->noise.glove_units = (int)lround(p->noise.glove_units * k);
+		p->noise.wrist *= k;
+		p->noise.wrist_rotation *= k;
+		p->stylus_scale = k;
+	}
+}
+
+// The caller's model options (a campaign's axes), each read as the file's `model:` is, after it.
+static bool read_model_overrides(hs_scenario_parser *p, hs_world_def *def) {
+	const hs_scenario_options *o = p->options;
+	for (int i = 0; o && i < o->model_count; ++i) {
+		const char *text = o->model_texts[i];
+		hs_yaml file = p->y;
+		p->y = (hs_yaml){.path = o->model_path ? o->model_path : "(model options)", .err = file.err};
+		bool ok = hs_yaml_load(&p->y, text, strlen(text), "empty model options") &&
+		          hs_read_model(p, hs_yaml_root(&p->y), def);
+		if (ok && (p->spring_key || p->input_noise_key)) // their nodes would outlive this document
+			ok = hs_yaml_fail(&p->y, p->spring_key ? p->spring_key : p->input_noise_key,
+			                  "'spring' and 'input_noise' cannot be overridden");
+		hs_yaml_free(&p->y);
+		p->y = file;
+		if (!ok)
+			return false;
+	}
+	return true;
 }
 
 static bool read_scenario(hs_scenario_parser *p, const yaml_node_t *root) {
@@ -110,6 +138,12 @@ static bool read_scenario(hs_scenario_parser *p, const yaml_node_t *root) {
 	p->spring = hs_default_spring_def();
 	if (f.value[S_MODEL] && !hs_read_model(p, f.value[S_MODEL], &def))
 		return false;
+	const yaml_node_t *spring_key = p->spring_key, *noise_key = p->input_noise_key;
+	p->spring_key = p->input_noise_key = NULL;
+	if (!read_model_overrides(p, &def))
+		return false;
+	p->spring_key = spring_key;
+	p->input_noise_key = noise_key;
 	if (p->spring_key && !f.value[S_STYLUS])
 		return hs_yaml_fail(&p->y, p->spring_key, "'spring' options need a 'stylus': only spring worlds use them");
 	if (p->input_noise_key && !f.value[S_HANDS])
@@ -120,12 +154,16 @@ static bool read_scenario(hs_scenario_parser *p, const yaml_node_t *root) {
 		realistic_noise(p, f.value[S_HANDS] != NULL);
 	if (p->seeded && !(s->noise = hs_noise_create(p->seed)))
 		return hs_yaml_fail(&p->y, root, "out of memory");
+	if (s->noise && p->stylus_scale > 0.0)
+		hs_noise_set_stylus_scale(s->noise, p->stylus_scale);
 	s->noise_options = p->noise;
 	if (f.value[S_HANDS] && !hs_count_hands(p, f.value[S_HANDS], &def))
 		return false;
 	if (!hs_read_objects(p, f.value[S_OBJECTS], def))
 		return false;
 	if (f.value[S_HANDS] && !hs_read_hands(p, f.value[S_HANDS]))
+		return false;
+	if (p->options && p->options->throw_error && !hs_throw_error_set(p, root, p->options->throw_error))
 		return false;
 	if (f.value[S_STYLUS] && !hs_read_stylus(p, f.value[S_STYLUS]))
 		return false;
@@ -191,7 +229,8 @@ hs_scenario *hs_scenario_load_with(const char *path, const hs_scenario_options *
 	}
 	if (ok) {
 		p.s->source_hash = fnv1a(text, size);
-		p.s->overridden = options && (options->dt > 0.0 || options->noise);
+		p.s->overridden = options && (options->dt > 0.0 || options->noise || options->model_count > 0 ||
+		                              options->throw_error);
 	}
 	free(p.sorted);
 	hs_yaml_free(&p.y);

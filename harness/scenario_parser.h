@@ -25,6 +25,7 @@ typedef struct hs_scenario_parser {
 	unsigned long seed;
 	const yaml_node_t *input_noise_key; // where model.input_noise was given (NULL: not given)
 	const hs_scenario_options *options; // what the caller overrides (NULL: nothing)
+	double stylus_scale;                // the stylus noise's scale (0: as it is)
 } hs_scenario_parser;
 
 // scenario_world.c
@@ -49,6 +50,8 @@ bool hs_read_stylus(hs_scenario_parser *p, const yaml_node_t *node);
 // expect.c: the clauses, then everything the run records (so stepping never allocates)
 bool hs_read_expect(hs_scenario_parser *p, const yaml_node_t *node);
 bool hs_prepare_checks(hs_scenario_parser *p, const yaml_node_t *root);
+// throw_error.c: a thrower's error on one hand's script (a load option; `root` for messages)
+bool hs_throw_error_set(hs_scenario_parser *p, const yaml_node_t *root, const hs_throw_error *e);
 // robust.c: the `robust` block (the sweep's matrix and noise levels)
 bool hs_read_robust(hs_scenario_parser *p, const yaml_node_t *node, bool hands);
 

@@ -7,6 +7,7 @@
 //   handspring all [--dir DIR] [--out-dir DIR] [--golden-dir DIR]
 //                                                        the whole catalog and a summary table
 //   handspring sweep FILE                                the scenario's robust matrix (dt x noise seeds)
+//   handspring campaign FILE ...                         many trials over axes of options (campaign_cmd.c)
 //
 // Exit status: 0 all expectations pass, 1 an expectation failed, 2 bad input or usage.
 #include <errno.h>
@@ -21,6 +22,8 @@
 #include "golden.h"
 #include "hand_cmd.h"
 #include "outsel.h"
+#include "output.h"
+#include "campaign_cmd.h"
 #include "view.h"
 
 enum { EXIT_PASS = 0, EXIT_FAILED = 1, EXIT_BAD_INPUT = 2 };
@@ -33,6 +36,7 @@ static const char *const usage_main =
     "                                                     run one scenario and check its expectations\n"
     "  all [--dir DIR] [--out-dir DIR] [--golden-dir DIR] run every scenario of a catalog\n"
     "  sweep FILE                                         run a scenario's robust matrix (dt x noise seeds)\n"
+    "  campaign FILE [--out TRIALS.csv] [--summary S.csv] many trials over axes of options (docs/campaigns.md)\n"
     "  hand [--posture P] [--amount A]                    the hand's check points in the wrist frame\n"
     "  joints FILE --format mediapipe|openxr --out OUT    a scenario's hand as a joint recording\n"
     "  check DIR [--golden GDIR]                          compare a folder of scenarios with their goldens\n"
@@ -128,85 +132,12 @@ static bool option_value(int argc, char **argv, int *i, const char *name, const 
 	return true;
 }
 
-// Like mkdir -p for the folder that will hold `file`.
-static bool make_parent_dirs(const char *file) {
-	char *path = malloc(strlen(file) + 1);
-	if (!path)
-		return false;
-	strcpy(path, file);
-	bool ok = true;
-	for (char *p = path + 1; ok && *p; ++p) {
-		if (*p != '/')
-			continue;
-		*p = '\0';
-		struct stat st;
-		if (mkdir(path, 0777) != 0 && !(errno == EEXIST && stat(path, &st) == 0 && S_ISDIR(st.st_mode)))
-			ok = false;
-		*p = '/';
-	}
-	free(path);
-	return ok;
-}
-
 static char *join_csv(const char *dir, const char *name) {
 	size_t n = strlen(dir) + strlen(name) + 6;
 	char *r = malloc(n);
 	if (r)
 		snprintf(r, n, "%s/%s.csv", dir, name);
 	return r;
-}
-
-// An output file written under a temporary name and renamed when complete, so that an
-// interrupted run never leaves a half-written golden behind. A path that exists and is not a
-// regular file (/dev/null, a pipe) is written in place: renaming over it replaced /dev/null with
-// a regular file when run as root (tests/resume_catalog.sh's --out /dev/null did, and apt then
-// failed on the machine).
-typedef struct output {
-	char *path, *temp; // temp NULL: written in place
-	FILE *file;
-} output;
-
-static bool output_open(output *o, const char *path) {
-	memset(o, 0, sizeof *o);
-	o->path = malloc(strlen(path) + 1);
-	if (!o->path)
-		return false;
-	strcpy(o->path, path);
-	struct stat st;
-	if (stat(path, &st) == 0 && !S_ISREG(st.st_mode)) {
-		o->file = fopen(path, "w");
-		return o->file != NULL;
-	}
-	size_t n = strlen(path) + 5;
-	o->temp = malloc(n);
-	if (!o->temp)
-		return false;
-	snprintf(o->temp, n, "%s.tmp", path);
-	if (!make_parent_dirs(path))
-		return false;
-	o->file = fopen(o->temp, "w");
-	return o->file != NULL;
-}
-
-// Closes, then renames to the final name when `keep`; false (and errno) on any write error.
-static bool output_close(output *o, bool keep) {
-	bool ok = true;
-	if (o->file) {
-		ok = !ferror(o->file);
-		ok = fclose(o->file) == 0 && ok;
-		o->file = NULL;
-		if (ok && keep && o->temp)
-			ok = rename(o->temp, o->path) == 0;
-		if ((!ok || !keep) && o->temp)
-			remove(o->temp);
-	}
-	return ok;
-}
-
-static void output_free(output *o) {
-	free(o->path);
-	free(o->temp);
-	memset(o, 0, sizeof *o);
 }
 
 // Runs every frame, writing the trajectory to each open file.
@@ -796,7 +727,8 @@ int main(int argc, char **argv) {
 		int (*run)(int argc, char **argv);
 	} commands[] = {{"list", cmd_list},    {"run", cmd_run},           {"all", cmd_all},
 	                {"sweep", cmd_sweep},  {"view", hs_view_main},     {"joints", cmd_joints},
-	                {"hand", hs_hand_main}, {"check", hs_check_main},  {"golden", cmd_golden}};
+	                {"hand", hs_hand_main}, {"check", hs_check_main},  {"golden", cmd_golden},
+	                {"campaign", hs_campaign_main}};
 	for (size_t k = 0; k < sizeof commands / sizeof commands[0]; ++k)
 		if (strcmp(command, commands[k].name) == 0)
 			return commands[k].run(argc - 2, argv + 2);

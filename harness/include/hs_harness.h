@@ -44,7 +44,33 @@ typedef struct hs_scenario_options {
 	bool noise;               // draw realistic input noise from `noise_seed`: hand worlds the robust block's
 	unsigned long noise_seed; // levels, else model.input_noise's, else glove ±4 units, wrist ±0.762 mm and
 	                          // ±0.15° (the tracker's static accuracy, paper §5.1); spring worlds the stylus's
+	double noise_scale;       // with `noise`: every level times this, glove units rounded (0: times 1)
+	/// Model options read after the file's `model:` (later ones win), each a YAML mapping's text such
+	/// as "{grasp_threshold_deg: 120}" (not `spring` or `input_noise`); messages name `model_path`
+	/// and the text's own lines (a campaign pads a text with newlines to its line in its file).
+	int model_count;
+	const char *const *model_texts;
+	const char *model_path;
+	/// A thrower's error on this run (NULL: none): see hs_throw_error.
+	const struct hs_throw_error *throw_error;
 } hs_scenario_options;
+
+/// A human thrower's error on one throw (docs/campaigns.md): one hand's script is changed from
+/// `from` on. The wrist's path after `from` is scaled about where it is then by 1 + speed and
+/// turned by `azimuth` about the vertical and by `elevation` about the horizontal line across the
+/// swing (the direction from the wrist at `from` to it at `release`; up is positive; a vertical
+/// swing turns about x); the wrist's orientation keeps its script. The glove's readings after
+/// `from` come `timing` s later (negative: earlier) than the script has them, so the hand opens
+/// that much later against the arm. Zero everywhere: the script as written.
+typedef struct hs_throw_error {
+	int hand;         ///< the hand's index, in the file's order
+	double from;      ///< s: the swing starts (the fingers should be still around this time)
+	double release;   ///< s: when the script's hand opens, for the swing's direction (> from)
+	double timing;    ///< s
+	double speed;     ///< relative: > -1
+	double azimuth;   ///< rad
+	double elevation; ///< rad
+} hs_throw_error;
 
 /// hs_scenario_load with overrides (`options` NULL: none). A run loaded with a dt or a noise seed
 /// cannot be saved or resumed (HS_ERR_INVALID_ARGUMENT): a state file names the file's bytes only.
@@ -59,6 +85,32 @@ bool hs_scenario_parse_dt(const char *text, double *dt);
 /// `sweep: N of M cells pass`. Returns 0 when every cell and the nominal run pass, 1 when any
 /// fails, 2 with `err` set on bad input (the file or any cell fails to load, no `robust` block).
 int hs_scenario_sweep(const char *path, FILE *out, hs_error *err);
+
+// ---------------------------------------------------------------------------------------------
+// Campaigns: many trials of one scenario over axes of options and a thrower's errors
+// (docs/campaigns.md). Trial i's row depends only on the campaign file and i.
+
+typedef struct hs_campaign hs_campaign;
+
+/// Loads a campaign file and checks it whole: every cell's scenario is loaded once, so a bad
+/// option fails here, at its line. NULL and `err` filled on any problem.
+hs_campaign *hs_campaign_load(const char *path, hs_error *err);
+void hs_campaign_destroy(hs_campaign *campaign);
+/// Trials in the campaign: cells × trials per cell.
+long hs_campaign_trials(const hs_campaign *campaign);
+/// The trial CSV's header line (with its newline).
+void hs_campaign_write_header(const hs_campaign *campaign, FILE *out);
+/// Runs trial `trial` (0 ≤ trial < hs_campaign_trials) and writes its CSV row. False with `err`
+/// filled when the trial cannot be loaded (out of memory, a range).
+bool hs_campaign_run_trial(hs_campaign *campaign, long trial, FILE *out, hs_error *err);
+/// Reads a trial CSV (from `in`, named `in_path` in messages): this campaign's header, then every
+/// trial's row in trial order, each once (as the tool and scripts/campaign.sh merge them), and
+/// writes the per-cell summary CSV to `summary` (hits, rate, Wilson 95 % interval, mean distance)
+/// and a table to `table` (either may be NULL). Returns 0, or 2 with `err` filled.
+int hs_campaign_summarize(const hs_campaign *campaign, FILE *in, const char *in_path, FILE *summary, FILE *table,
+                          hs_error *err);
+/// The Wilson score interval of `hits` of `n` at z = 1.959963984540054 (95 %); [0, 1] for n = 0.
+void hs_wilson_interval(long hits, long n, double *lo, double *hi);
 void hs_scenario_destroy(hs_scenario *scenario);
 
 const char *hs_scenario_name(const hs_scenario *scenario);

@@ -1,0 +1,71 @@
+// campaign_internal.h — a campaign as its three files share it: what the file says (campaign.c),
+// running one trial (campaign_run.c) and the summary of the trials' rows (campaign_summary.c).
+#ifndef HS_HARNESS_CAMPAIGN_INTERNAL_H
+#define HS_HARNESS_CAMPAIGN_INTERNAL_H
+
+#include <stdint.h>
+
+#include "hs_harness.h"
+
+enum { HS_CAMPAIGN_MAX_AXES = 8, HS_CAMPAIGN_MAX_VALUES = 64, HS_CAMPAIGN_MAX_WORD = 48 };
+#define HS_CAMPAIGN_MAX_TRIALS 100000000L
+#define HS_CAMPAIGN_TRUNCATE 4.0 // a thrower's draws are normal, cut at this many SD
+
+typedef enum hs_axis_kind {
+	HS_AXIS_DT,          // the frame time (`dt` as a scenario writes it)
+	HS_AXIS_NOISE,       // input noise: the scenario's realistic levels times this (0: none)
+	HS_AXIS_THROW_SCALE, // the thrower's three SDs times this
+	HS_AXIS_MODEL,       // one `model:` option
+} hs_axis_kind;
+
+typedef struct hs_axis {
+	hs_axis_kind kind;
+	char name[HS_CAMPAIGN_MAX_WORD]; // its CSV column: dt, noise, throw_scale or the model key
+	int count;
+	double value[HS_CAMPAIGN_MAX_VALUES];                     // dt, noise, throw_scale
+	char text[HS_CAMPAIGN_MAX_VALUES][HS_CAMPAIGN_MAX_WORD];  // a model value as written
+	char *model[HS_CAMPAIGN_MAX_VALUES];                      // its override text, at its line
+} hs_axis;
+
+// The thrower (hs_throw_error): its hand, swing and the SDs of its errors.
+typedef struct hs_thrower_spec {
+	bool given;
+	int hand;
+	double from, release;         // s
+	double timing, speed, angle;  // SD: s, relative, rad (azimuth and elevation each)
+} hs_thrower_spec;
+
+typedef struct hs_target {
+	bool given;
+	int object;
+	double x, y, radius; // m
+} hs_target;
+
+struct hs_campaign {
+	char *path, *scenario;
+	uint64_t seed;
+	long per_cell, cells, trials;
+	bool judge_all; // every clause, not only the robust ones
+	int axis_count;
+	hs_axis axes[HS_CAMPAIGN_MAX_AXES];
+	hs_thrower_spec thrower;
+	hs_target target;
+};
+
+// One trial's inputs: the cell's axis values and the trial's draws.
+typedef struct hs_trial {
+	long index, cell, k;
+	int value[HS_CAMPAIGN_MAX_AXES]; // an index into each axis
+	uint64_t seed;
+	hs_scenario_options options;
+	const char *models[HS_CAMPAIGN_MAX_AXES];
+	hs_throw_error error;
+} hs_trial;
+
+// campaign_run.c: the trial's options (pointers into `c` and `t`); the trial CSV's header line
+// (no newline).
+void hs_trial_prepare(const hs_campaign *c, long index, hs_trial *t);
+enum { HS_CAMPAIGN_HEADER = 1024 };
+void hs_campaign_header(const hs_campaign *c, char *text, size_t size);
+
+#endif

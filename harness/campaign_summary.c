@@ -1,0 +1,177 @@
+// campaign_summary.c — a campaign's trial rows, summed up per cell: trials, hits, the hit rate and
+// its Wilson score interval (95 %), the mean distance to the target. The rows are read back from
+// the merged CSV, so the summary of a run spread over many machines is the summary of the same
+// bytes as a run on one.
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "campaign_internal.h"
+#include "error.h"
+
+// z of a two-sided 95 % interval: gsl_cdf_ugaussian_Pinv(0.975) (test_campaign checks it against
+// GSL), written out so the interval does not depend on a libm's log.
+#define WILSON_Z 1.959963984540054
+
+void hs_wilson_interval(long hits, long n, double *lo, double *hi) {
+	if (n <= 0) {
+		*lo = 0.0;
+		*hi = 1.0;
+		return;
+	}
+	double p = (double)hits / (double)n, z2 = WILSON_Z * WILSON_Z, nn = (double)n;
+	double denom = 1.0 + z2 / nn;
+	double centre = (p + z2 / (2.0 * nn)) / denom;
+	double half = WILSON_Z * sqrt(p * (1.0 - p) / nn + z2 / (4.0 * nn * nn)) / denom;
+	*lo = centre - half < 0.0 ? 0.0 : centre - half;
+	*hi = centre + half > 1.0 ? 1.0 : centre + half;
+}
+
+typedef struct cell_sum {
+	long trials, hits;
+	double distance; // summed in trial order
+} cell_sum;
+
+// The fields of one row, split in place at the commas; -1 when there are more than `most`.
+static int split(char *line, char **field, int most) {
+	int n = 0;
+	for (char *s = line;; ++s) {
+		if (n == most)
+			return -1;
+		field[n++] = s;
+		s = strchr(s, ',');
+		if (!s)
+			return n;
+		*s = '\0';
+	}
+}
+
+// A whole decimal field: the trial index or 0/1.
+static bool whole(const char *text, long *out) {
+	char *end;
+	long v = strtol(text, &end, 10);
+	if (end == text || *end)
+		return false;
+	*out = v;
+	return true;
+}
+
+// Row `expect`: its trial is `expect`, its field count the header's, hit 0 or 1, a finite distance.
+static bool read_row(const hs_campaign *c, char *line, long expect, int fields, cell_sum *sums, const char *path,
+                     unsigned long at, hs_error *err) {
+	char *f[HS_CAMPAIGN_MAX_AXES + 12];
+	long trial, hit;
+	if (split(line, f, HS_CAMPAIGN_MAX_AXES + 12) != fields)
+		return hs_set_error(err, path, at, "a row of %d fields, like the header, expected", fields);
+	if (!whole(f[0], &trial) || trial != expect)
+		return hs_set_error(err, path, at, "trial %ld expected (rows sorted by trial, each once), got '%.20s'", expect, f[0]);
+	if (!whole(f[fields - 2], &hit) || (hit != 0 && hit != 1))
+		return hs_set_error(err, path, at, "'hit' must be 0 or 1, got '%.20s'", f[fields - 2]);
+	cell_sum *s = &sums[trial / c->per_cell];
+	s->trials++;
+	s->hits += hit;
+	if (c->target.given) {
+		char *end;
+		double d = strtod(f[fields - 3], &end);
+		if (end == f[fields - 3] || *end || !isfinite(d))
+			return hs_set_error(err, path, at, "'distance' must be a finite number, got '%.20s'", f[fields - 3]);
+		s->distance += d;
+	}
+	return true;
+}
+
+// Reads the header and every row into the cells' sums.
+static bool read_rows(const hs_campaign *c, FILE *in, const char *path, cell_sum *sums, hs_error *err) {
+	char header[HS_CAMPAIGN_HEADER];
+	hs_campaign_header(c, header, sizeof header);
+	int fields = 1;
+	for (const char *s = header; *s; ++s)
+		fields += *s == ',';
+	char *line = NULL;
+	size_t cap = 0;
+	ssize_t len;
+	long trial = 0;
+	unsigned long at = 0;
+	bool ok = true;
+	while (ok && (len = getline(&line, &cap, in)) >= 0) {
+		++at;
+		if (len > 0 && line[len - 1] == '\n')
+			line[--len] = '\0';
+		if (at == 1)
+			ok = strcmp(line, header) == 0 ||
+			     hs_set_error(err, path, 1, "not this campaign's trials: the header must be '%.300s'", header);
+		else if (trial == c->trials)
+			ok = hs_set_error(err, path, at, "more rows than the campaign's %ld trials", c->trials);
+		else
+			ok = read_row(c, line, trial++, fields, sums, path, at, err);
+	}
+	free(line);
+	if (ok && trial < c->trials)
+		ok = hs_set_error(err, path, at + 1, "%ld of the campaign's %ld trials missing, the first trial %ld", c->trials - trial,
+		                  c->trials, trial);
+	return ok;
+}
+
+// A cell's axis values as the trial rows show them.
+static void write_values(const hs_campaign *c, long cell, FILE *out, const char *sep, int width) {
+	hs_trial t;
+	hs_trial_prepare(c, cell * c->per_cell, &t);
+	for (int a = 0; a < c->axis_count; ++a) {
+		const hs_axis *axis = &c->axes[a];
+		if (axis->kind == HS_AXIS_MODEL)
+			fprintf(out, "%s%*s", sep, width, axis->text[t.value[a]]);
+		else if (width > 0)
+			fprintf(out, "%s%*.6g", sep, width, axis->value[t.value[a]]);
+		else
+			fprintf(out, "%s%.17g", sep, axis->value[t.value[a]]);
+	}
+}
+
+static void write_summary(const hs_campaign *c, const cell_sum *sums, FILE *out) {
+	fputs("cell", out);
+	for (int a = 0; a < c->axis_count; ++a)
+		fprintf(out, ",%s", c->axes[a].name);
+	fprintf(out, ",trials,hits,rate,lo95,hi95%s\n", c->target.given ? ",mean_distance" : "");
+	for (long k = 0; k < c->cells; ++k) {
+		double lo, hi;
+		hs_wilson_interval(sums[k].hits, sums[k].trials, &lo, &hi);
+		fprintf(out, "%ld", k);
+		write_values(c, k, out, ",", 0);
+		fprintf(out, ",%ld,%ld,%.6f,%.6f,%.6f", sums[k].trials, sums[k].hits,
+		        (double)sums[k].hits / (double)sums[k].trials, lo, hi);
+		if (c->target.given)
+			fprintf(out, ",%.6f", sums[k].distance / (double)sums[k].trials);
+		fputs("\n", out);
+	}
+}
+
+static void write_table(const hs_campaign *c, const cell_sum *sums, FILE *out) {
+	fprintf(out, "campaign %s: %ld cells x %ld trials\n%6s", c->path, c->cells, c->per_cell, "cell");
+	for (int a = 0; a < c->axis_count; ++a)
+		fprintf(out, " %12.12s", c->axes[a].name);
+	fprintf(out, " %8s %8s  %-17s%s\n", "hits", "rate", "95 % (Wilson)", c->target.given ? " mean distance" : "");
+	for (long k = 0; k < c->cells; ++k) {
+		double lo, hi;
+		hs_wilson_interval(sums[k].hits, sums[k].trials, &lo, &hi);
+		fprintf(out, "%6ld", k);
+		write_values(c, k, out, " ", 12);
+		fprintf(out, " %8ld %8.3f  [%.3f, %.3f]", sums[k].hits, (double)sums[k].hits / (double)sums[k].trials, lo, hi);
+		if (c->target.given)
+			fprintf(out, "    %.3f m", sums[k].distance / (double)sums[k].trials);
+		fputs("\n", out);
+	}
+}
+
+int hs_campaign_summarize(const hs_campaign *c, FILE *in, const char *in_path, FILE *summary, FILE *table,
+                          hs_error *err) {
+	cell_sum *sums = calloc((size_t)c->cells, sizeof *sums);
+	if (!sums)
+		return hs_set_error(err, in_path, 1, "out of memory"), 2;
+	bool ok = read_rows(c, in, in_path, sums, err);
+	if (ok && summary)
+		write_summary(c, sums, summary);
+	if (ok && table)
+		write_table(c, sums, table);
+	free(sums);
+	return ok ? 0 : 2;
+}
