@@ -1,6 +1,7 @@
 // campaign.c — reading a campaign file (docs/campaigns.md): the base scenario, the axes whose
 // product makes the cells, the trials per cell, the thrower's errors and the target. The load
 // checks it whole: every cell's scenario is loaded once, so a bad option fails at its own line.
+#include <errno.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -276,6 +277,11 @@ static bool read_campaign(hs_campaign *c, const hs_yaml *y, const yaml_node_t *r
 	c->judge_all = f.value[C_JUDGE] && hs_yaml_scalar_is(f.value[C_JUDGE], "all");
 	if (!(c->scenario = hs_yaml_sibling_file(y, f.value[C_SCENARIO], "scenario")))
 		return false;
+	FILE *probe = fopen(c->scenario, "r"); // a missing scenario is the campaign's line; a bad one its own
+	if (!probe)
+		return hs_yaml_fail(y, f.value[C_SCENARIO], "cannot read the scenario %s: %s", hs_yaml_show(f.value[C_SCENARIO]).text,
+		                    strerror(errno));
+	fclose(probe);
 	hs_scenario *s = hs_scenario_load(c->scenario, y->err);
 	if (!s)
 		return false;
