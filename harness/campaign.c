@@ -87,6 +87,49 @@ static bool read_model_axis(const hs_yaml *y, const yaml_node_t *key, const yaml
 	return true;
 }
 
+// One value of the `model` axis: a mapping of options (and its `name` for the column), as the
+// text "{KEY: VALUE, ...}" at the mapping's line.
+static bool read_model_set(const hs_yaml *y, const yaml_node_t *map, hs_axis *a, int i) {
+	if (map->type != YAML_MAPPING_NODE || map->data.mapping.pairs.top == map->data.mapping.pairs.start)
+		return hs_yaml_fail(y, map, "a 'model' axis value must be a mapping of model options, got %s", hs_yaml_got(map).text);
+	unsigned long line = hs_yaml_line(map);
+	size_t size = line + 16, used = line;
+	for (yaml_node_pair_t *q = map->data.mapping.pairs.start; q < map->data.mapping.pairs.top; ++q)
+		size += 2 * HS_CAMPAIGN_MAX_WORD + 4;
+	if (!(a->model[i] = malloc(size)))
+		return hs_yaml_fail(y, map, "out of memory");
+	a->count = i + 1; // what destroy frees
+	memset(a->model[i], '\n', line - 1);
+	used = line - 1 + (size_t)snprintf(a->model[i] + line - 1, size - (line - 1), "{");
+	for (yaml_node_pair_t *q = map->data.mapping.pairs.start; q < map->data.mapping.pairs.top; ++q) {
+		const yaml_node_t *key = yaml_document_get_node((yaml_document_t *)&y->doc, q->key);
+		const yaml_node_t *value = yaml_document_get_node((yaml_document_t *)&y->doc, q->value);
+		const char *k = hs_yaml_scalar(key), *v = hs_yaml_scalar(value);
+		if (!k || !plain_word(k) || !v || !plain_word(v))
+			return hs_yaml_fail(y, value, "a model option and its value must be words of at most %d characters, got %s",
+			                    HS_CAMPAIGN_MAX_WORD - 1, hs_yaml_got(value).text);
+		if (strcmp(k, "name") == 0) {
+			snprintf(a->text[i], sizeof a->text[i], "%s", v);
+			continue;
+		}
+		if (strcmp(k, "spring") == 0 || strcmp(k, "input_noise") == 0)
+			return hs_yaml_fail(y, key, "'%s' cannot be swept: sweep input noise with the 'noise' axis", k);
+		used += (size_t)snprintf(a->model[i] + used, size - used, "%s%s: %s", used > line ? ", " : "", k, v);
+	}
+	snprintf(a->model[i] + used, size - used, "}");
+	if (!a->text[i][0])
+		return hs_yaml_fail(y, map, "a 'model' axis value needs a 'name' for its column");
+	return true;
+}
+
+static bool read_model_sets(const hs_yaml *y, const yaml_node_t *key, const yaml_node_t *list, hs_axis *a) {
+	long n = axis_length(y, key, list);
+	for (long i = 0; i < n; ++i)
+		if (!read_model_set(y, hs_yaml_item(y, list, i), a, (int)i))
+			return false;
+	return n > 0;
+}
+
 static bool read_axis(hs_campaign *c, const hs_yaml *y, const yaml_node_t *key, const yaml_node_t *list) {
 	const char *name = hs_yaml_scalar(key);
 	if (!name || !plain_word(name))
@@ -102,8 +145,13 @@ static bool read_axis(hs_campaign *c, const hs_yaml *y, const yaml_node_t *key, 
 		snprintf(a->name, sizeof a->name, "%s", name);
 		return read_number_axis(y, key, list, a);
 	}
+	if (strcmp(name, "model") == 0) { // sets of options, each named
+		a->kind = HS_AXIS_MODEL;
+		snprintf(a->name, sizeof a->name, "model");
+		return read_model_sets(y, key, list, a);
+	}
 	if (strncmp(name, "model.", 6) != 0 || !name[6])
-		return hs_yaml_fail(y, key, "unknown axis '%s': dt, noise, throw_scale or model.OPTION", name);
+		return hs_yaml_fail(y, key, "unknown axis '%s': dt, noise, throw_scale, model.OPTION or model", name);
 	a->kind = HS_AXIS_MODEL;
 	snprintf(a->name, sizeof a->name, "%s", name + 6);
 	return read_model_axis(y, key, list, a);
