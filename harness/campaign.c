@@ -194,7 +194,7 @@ enum { T_HAND, T_FROM, T_RELEASE, T_TIMING, T_SPEED, T_DIRECTION, T_COUNT };
 static const char *const throw_keys[T_COUNT] = {"hand", "from", "release", "timing_ms", "speed", "direction_deg"};
 
 // throw: the thrower's hand, its swing (from, release) and the SD of each error.
-static bool read_throw(hs_campaign *c, const hs_yaml *y, const yaml_node_t *node, const hs_scenario *s) {
+static bool read_throw(hs_campaign *c, const hs_yaml *y, const yaml_node_t *node, const hs_scenario *s, int index) {
 	hs_fields f;
 	if (node->type != YAML_MAPPING_NODE)
 		return hs_yaml_fail(y, node, "'throw' must be a mapping (hand, from, release, timing_ms, speed, direction_deg), got %s",
@@ -206,7 +206,7 @@ static bool read_throw(hs_campaign *c, const hs_yaml *y, const yaml_node_t *node
 			return hs_yaml_fail(y, node, "'throw' is missing '%s'", throw_keys[k]);
 	hs_thrower_spec *t = &c->thrower;
 	double ms = 0.0, deg = 0.0;
-	if ((t->hand = find_name(y, f.value[T_HAND], s, true, "hand")) < 0 ||
+	if ((t->hand[index] = find_name(y, f.value[T_HAND], s, true, "hand")) < 0 ||
 	    !hs_yaml_time(y, f.value[T_FROM], "from", s->duration, &t->from) ||
 	    !hs_yaml_time(y, f.value[T_RELEASE], "release", s->duration, &t->release))
 		return false;
@@ -252,7 +252,7 @@ enum { G_OBJECT, G_AT, G_RADIUS, G_COUNT };
 static const char *const target_keys[G_COUNT] = {"object", "at", "radius"};
 
 // target: an object that hits when it ends within `radius` of `at` (x, y) on the floor.
-static bool read_target(hs_campaign *c, const hs_yaml *y, const yaml_node_t *node, const hs_scenario *s) {
+static bool read_target(hs_campaign *c, const hs_yaml *y, const yaml_node_t *node, const hs_scenario *s, int index) {
 	hs_fields f;
 	if (node->type != YAML_MAPPING_NODE)
 		return hs_yaml_fail(y, node, "'target' must be a mapping (object, at, radius), got %s", hs_yaml_got(node).text);
@@ -263,7 +263,7 @@ static bool read_target(hs_campaign *c, const hs_yaml *y, const yaml_node_t *nod
 			return hs_yaml_fail(y, node, "'target' is missing '%s'", target_keys[k]);
 	hs_target *g = &c->target;
 	double at[2];
-	if ((g->object = find_name(y, f.value[G_OBJECT], s, false, "object")) < 0 ||
+	if ((g->object[index] = find_name(y, f.value[G_OBJECT], s, false, "object")) < 0 ||
 	    !hs_yaml_numbers(y, f.value[G_AT], "at", 2, "[x, y] in m", at, NULL) ||
 	    !hs_yaml_number(y, f.value[G_RADIUS], "radius", &g->radius))
 		return false;
@@ -276,22 +276,29 @@ static bool read_target(hs_campaign *c, const hs_yaml *y, const yaml_node_t *nod
 	return true;
 }
 
-// Every model value and the first trial, loaded once: what the trials will load cannot fail later.
+// Every model value (with the first scenario) and the first trial of every scenario, loaded once:
+// what the trials will load cannot fail later.
 static bool check_cells(const hs_campaign *c, hs_error *err) {
+	hs_trial t;
+	hs_trial_prepare(c, 0, &t);
 	for (int a = 0; a < c->axis_count; ++a)
 		for (int v = 0; c->axes[a].kind == HS_AXIS_MODEL && v < c->axes[a].count; ++v) {
 			const char *text = c->axes[a].model[v];
 			hs_scenario_options o = {.model_count = 1, .model_texts = &text, .model_path = c->path};
-			hs_scenario *s = hs_scenario_load_with(c->scenario, &o, err);
+			hs_scenario *s = hs_scenario_load_with(t.scenario, &o, err);
 			if (!s)
 				return false;
 			hs_scenario_destroy(s);
 		}
-	hs_trial t;
-	hs_trial_prepare(c, 0, &t);
-	hs_scenario *s = hs_scenario_load_with(c->scenario, &t.options, err);
-	hs_scenario_destroy(s);
-	return s != NULL;
+	int scenarios = c->scenario ? 1 : c->axes[0].count; // a scenario axis is the first, the slowest
+	for (int k = 0; k < scenarios; ++k) {
+		hs_trial_prepare(c, k * (c->cells / scenarios) * c->per_cell, &t);
+		hs_scenario *s = hs_scenario_load_with(t.scenario, &t.options, err);
+		hs_scenario_destroy(s);
+		if (!s)
+			return false;
+	}
+	return true;
 }
 
 // cells = the product of the axes' lengths; trials = cells × trials per cell, both bounded.
@@ -304,6 +311,52 @@ static bool count_trials(hs_campaign *c, const hs_yaml *y, const yaml_node_t *ro
 		                    HS_CAMPAIGN_MAX_TRIALS);
 	c->trials = c->cells * c->per_cell;
 	return true;
+}
+
+// `scenario:` a path, or a list of them: the first axis, named by the scenarios' names.
+static bool read_scenarios(hs_campaign *c, const hs_yaml *y, const yaml_node_t *node) {
+	if (node->type != YAML_SEQUENCE_NODE)
+		return (c->scenario = hs_yaml_sibling_file(y, node, "scenario")) != NULL;
+	long n = hs_yaml_length(node);
+	if (n < 1 || n > HS_CAMPAIGN_MAX_VALUES)
+		return hs_yaml_fail(y, node, "'scenario' must be a file or a list of 1 to %d files, got another count",
+		                    HS_CAMPAIGN_MAX_VALUES);
+	hs_axis *a = &c->axes[c->axis_count++];
+	a->kind = HS_AXIS_SCENARIO;
+	snprintf(a->name, sizeof a->name, "scenario");
+	for (long i = 0; i < n; ++i) {
+		if (!(a->model[i] = hs_yaml_sibling_file(y, hs_yaml_item(y, node, i), "scenario")))
+			return false;
+		a->count = (int)i + 1;
+	}
+	return true;
+}
+
+// Each scenario: readable (a missing one is the campaign's line, a bad one its own), its name, and
+// the thrower's hand and the target's object in it.
+static bool check_scenario(hs_campaign *c, const hs_yaml *y, const hs_fields *f, const yaml_node_t *where, int k) {
+	const char *path = c->scenario ? c->scenario : c->axes[0].model[k];
+	FILE *probe = fopen(path, "r");
+	if (!probe)
+		return hs_yaml_fail(y, where, "cannot read the scenario %s: %s", hs_yaml_show(where).text, strerror(errno));
+	fclose(probe);
+	hs_scenario *s = hs_scenario_load(path, y->err);
+	if (!s)
+		return false;
+	if (!c->scenario)
+		snprintf(c->axes[0].text[k], sizeof c->axes[0].text[k], "%.*s", HS_CAMPAIGN_MAX_WORD - 1, s->name);
+	bool ok = (!f->value[C_THROW] || read_throw(c, y, f->value[C_THROW], s, k)) &&
+	          (!f->value[C_TARGET] || read_target(c, y, f->value[C_TARGET], s, k));
+	hs_scenario_destroy(s);
+	return ok;
+}
+
+static bool check_scenarios(hs_campaign *c, const hs_yaml *y, const hs_fields *f) {
+	const yaml_node_t *node = f->value[C_SCENARIO];
+	for (int k = 0, n = c->scenario ? 1 : c->axes[0].count; k < n; ++k)
+		if (!check_scenario(c, y, f, c->scenario ? node : hs_yaml_item(y, node, k), k))
+			return false;
+	return !f->value[C_THROW] || check_thrower_range(c, y, f->value[C_THROW]);
 }
 
 static bool read_campaign(hs_campaign *c, const hs_yaml *y, const yaml_node_t *root) {
@@ -323,22 +376,8 @@ static bool read_campaign(hs_campaign *c, const hs_yaml *y, const yaml_node_t *r
 	if (f.value[C_JUDGE] && !hs_yaml_scalar_is(f.value[C_JUDGE], "robust") && !hs_yaml_scalar_is(f.value[C_JUDGE], "all"))
 		return hs_yaml_fail(y, f.value[C_JUDGE], "'judge' must be robust or all, got %s", hs_yaml_got(f.value[C_JUDGE]).text);
 	c->judge_all = f.value[C_JUDGE] && hs_yaml_scalar_is(f.value[C_JUDGE], "all");
-	if (!(c->scenario = hs_yaml_sibling_file(y, f.value[C_SCENARIO], "scenario")))
-		return false;
-	FILE *probe = fopen(c->scenario, "r"); // a missing scenario is the campaign's line; a bad one its own
-	if (!probe)
-		return hs_yaml_fail(y, f.value[C_SCENARIO], "cannot read the scenario %s: %s", hs_yaml_show(f.value[C_SCENARIO]).text,
-		                    strerror(errno));
-	fclose(probe);
-	hs_scenario *s = hs_scenario_load(c->scenario, y->err);
-	if (!s)
-		return false;
-	bool ok = (!f.value[C_AXES] || read_axes(c, y, f.value[C_AXES])) &&
-	          (!f.value[C_THROW] || read_throw(c, y, f.value[C_THROW], s)) &&
-	          (!f.value[C_THROW] || check_thrower_range(c, y, f.value[C_THROW])) &&
-	          (!f.value[C_TARGET] || read_target(c, y, f.value[C_TARGET], s)) && count_trials(c, y, root);
-	hs_scenario_destroy(s);
-	return ok && check_cells(c, y->err);
+	return read_scenarios(c, y, f.value[C_SCENARIO]) && (!f.value[C_AXES] || read_axes(c, y, f.value[C_AXES])) &&
+	       count_trials(c, y, root) && check_scenarios(c, y, &f) && check_cells(c, y->err);
 }
 
 hs_campaign *hs_campaign_load(const char *path, hs_error *err) {

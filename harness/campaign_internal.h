@@ -15,7 +15,8 @@ typedef enum hs_axis_kind {
 	HS_AXIS_DT,          // the frame time (`dt` as a scenario writes it)
 	HS_AXIS_NOISE,       // input noise: the scenario's realistic levels times this (0: none)
 	HS_AXIS_THROW_SCALE, // the thrower's three SDs times this
-	HS_AXIS_MODEL,       // one `model:` option
+	HS_AXIS_MODEL,       // one `model:` option, or a named set of them
+	HS_AXIS_SCENARIO,    // the base scenario (`scenario:` a list): always the first axis
 } hs_axis_kind;
 
 typedef struct hs_axis {
@@ -23,26 +24,26 @@ typedef struct hs_axis {
 	char name[HS_CAMPAIGN_MAX_WORD]; // its CSV column: dt, noise, throw_scale or the model key
 	int count;
 	double value[HS_CAMPAIGN_MAX_VALUES];                     // dt, noise, throw_scale
-	char text[HS_CAMPAIGN_MAX_VALUES][HS_CAMPAIGN_MAX_WORD];  // a model value as written
-	char *model[HS_CAMPAIGN_MAX_VALUES];                      // its override text, at its line
+	char text[HS_CAMPAIGN_MAX_VALUES][HS_CAMPAIGN_MAX_WORD];  // a model value as written, a scenario's name
+	char *model[HS_CAMPAIGN_MAX_VALUES];                      // its override text at its line; a scenario's path
 } hs_axis;
 
 // The thrower (hs_throw_error): its hand, swing and the SDs of its errors.
 typedef struct hs_thrower_spec {
 	bool given;
-	int hand;
+	int hand[HS_CAMPAIGN_MAX_VALUES]; // in each scenario
 	double from, release;         // s
 	double timing, speed, angle;  // SD: s, relative, rad (azimuth and elevation each)
 } hs_thrower_spec;
 
 typedef struct hs_target {
 	bool given;
-	int object;
+	int object[HS_CAMPAIGN_MAX_VALUES]; // in each scenario
 	double x, y, radius; // m
 } hs_target;
 
 struct hs_campaign {
-	char *path, *scenario;
+	char *path, *scenario; // the base scenario (NULL: a scenario axis)
 	uint64_t seed;
 	long per_cell, cells, trials;
 	bool judge_all; // every clause, not only the robust ones
@@ -57,6 +58,8 @@ typedef struct hs_trial {
 	long index, cell, k;
 	int value[HS_CAMPAIGN_MAX_AXES]; // an index into each axis
 	uint64_t seed;
+	const char *scenario; // its path
+	int scenario_index;   // in the scenario axis (0 without one)
 	hs_scenario_options options;
 	const char *models[HS_CAMPAIGN_MAX_AXES];
 	hs_throw_error error;

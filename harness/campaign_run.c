@@ -33,7 +33,7 @@ static void draw_thrower(const hs_thrower_spec *spec, uint64_t seed, double scal
 		hs_noise_gaussian_pair(rng, &g[2], &g[3]);
 		hs_noise_destroy(rng);
 	}
-	*e = (hs_throw_error){.hand = spec->hand, .from = spec->from, .release = spec->release};
+	*e = (hs_throw_error){.from = spec->from, .release = spec->release};
 	e->timing = spec->timing * scale * cut(g[0]);
 	e->speed = spec->speed * scale * cut(g[1]);
 	e->azimuth = spec->angle * scale * cut(g[2]);
@@ -56,6 +56,7 @@ void hs_trial_prepare(const hs_campaign *c, long index, hs_trial *t) {
 	o->model_path = c->path;
 	o->model_texts = t->models;
 	double scale = 1.0;
+	t->scenario = c->scenario;
 	for (int a = 0; a < c->axis_count; ++a) {
 		const hs_axis *axis = &c->axes[a];
 		double v = axis->value[t->value[a]];
@@ -67,9 +68,12 @@ void hs_trial_prepare(const hs_campaign *c, long index, hs_trial *t) {
 			scale = v;
 		else if (axis->kind == HS_AXIS_MODEL)
 			t->models[o->model_count++] = axis->model[t->value[a]];
+		else if (axis->kind == HS_AXIS_SCENARIO)
+			t->scenario = axis->model[t->scenario_index = t->value[a]];
 	}
 	if (c->thrower.given) {
 		draw_thrower(&c->thrower, t->seed, scale, &t->error);
+		t->error.hand = c->thrower.hand[t->scenario_index];
 		o->throw_error = &t->error;
 	}
 }
@@ -106,7 +110,7 @@ static void write_row(const hs_campaign *c, const hs_trial *t, double distance, 
 	fprintf(out, "%ld,%ld,%ld,%llu", t->index, t->cell, t->k, (unsigned long long)t->seed);
 	for (int a = 0; a < c->axis_count; ++a) {
 		const hs_axis *axis = &c->axes[a];
-		if (axis->kind == HS_AXIS_MODEL)
+		if (axis->kind == HS_AXIS_MODEL || axis->kind == HS_AXIS_SCENARIO)
 			fprintf(out, ",%s", axis->text[t->value[a]]);
 		else
 			fprintf(out, ",%.17g", axis->value[t->value[a]]);
@@ -127,7 +131,7 @@ bool hs_campaign_run_trial(hs_campaign *c, long trial, FILE *out, hs_error *err)
 		                    c ? c->trials - 1 : -1L);
 	hs_trial t;
 	hs_trial_prepare(c, trial, &t);
-	hs_scenario *s = hs_scenario_load_with(c->scenario, &t.options, err);
+	hs_scenario *s = hs_scenario_load_with(t.scenario, &t.options, err);
 	if (!s)
 		return false;
 	while (hs_scenario_step(s)) {
@@ -140,7 +144,7 @@ bool hs_campaign_run_trial(hs_campaign *c, long trial, FILE *out, hs_error *err)
 	double distance = 0.0;
 	bool hit = !fault && line == 0;
 	if (c->target.given) { // on the floor: x and y only (sqrt is exact; hypot is libm's)
-		hs_vec3 p = hs_scenario_state_of(s, c->target.object).position;
+		hs_vec3 p = hs_scenario_state_of(s, c->target.object[t.scenario_index]).position;
 		double dx = p.x - c->target.x, dy = p.y - c->target.y;
 		distance = sqrt(dx * dx + dy * dy);
 		hit = !fault && distance <= c->target.radius;

@@ -118,7 +118,7 @@ static void write_values(const hs_campaign *c, long cell, FILE *out, const char 
 	hs_trial_prepare(c, cell * c->per_cell, &t);
 	for (int a = 0; a < c->axis_count; ++a) {
 		const hs_axis *axis = &c->axes[a];
-		if (axis->kind == HS_AXIS_MODEL)
+		if (axis->kind == HS_AXIS_MODEL || axis->kind == HS_AXIS_SCENARIO)
 			fprintf(out, "%s%*s", sep, width, axis->text[t.value[a]]);
 		else if (width > 0)
 			fprintf(out, "%s%*.6g", sep, width, axis->value[t.value[a]]);
