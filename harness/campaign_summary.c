@@ -112,15 +112,24 @@ static bool read_rows(const hs_campaign *c, FILE *in, const char *path, cell_sum
 	return ok;
 }
 
-// A cell's axis values as the trial rows show them.
-static void write_values(const hs_campaign *c, long cell, FILE *out, const char *sep, int width) {
+// A column's width in the table: its name's, its longest value's, at least 9.
+static int column_width(const hs_axis *a) {
+	size_t w = strlen(a->name) > 9 ? strlen(a->name) : 9;
+	for (int v = 0; (a->kind == HS_AXIS_MODEL || a->kind == HS_AXIS_SCENARIO) && v < a->count; ++v)
+		w = strlen(a->text[v]) > w ? strlen(a->text[v]) : w;
+	return (int)w;
+}
+
+// A cell's axis values as the trial rows show them (width 0), or as table columns.
+static void write_values(const hs_campaign *c, long cell, FILE *out, const char *sep, bool table) {
 	hs_trial t;
 	hs_trial_prepare(c, cell * c->per_cell, &t);
 	for (int a = 0; a < c->axis_count; ++a) {
 		const hs_axis *axis = &c->axes[a];
+		int width = table ? column_width(axis) : 0;
 		if (axis->kind == HS_AXIS_MODEL || axis->kind == HS_AXIS_SCENARIO)
 			fprintf(out, "%s%*s", sep, width, axis->text[t.value[a]]);
-		else if (width > 0)
+		else if (table)
 			fprintf(out, "%s%*.6g", sep, width, axis->value[t.value[a]]);
 		else
 			fprintf(out, "%s%.17g", sep, axis->value[t.value[a]]);
@@ -136,7 +145,7 @@ static void write_summary(const hs_campaign *c, const cell_sum *sums, FILE *out)
 		double lo, hi;
 		hs_wilson_interval(sums[k].hits, sums[k].trials, &lo, &hi);
 		fprintf(out, "%ld", k);
-		write_values(c, k, out, ",", 0);
+		write_values(c, k, out, ",", false);
 		fprintf(out, ",%ld,%ld,%.6f,%.6f,%.6f", sums[k].trials, sums[k].hits,
 		        (double)sums[k].hits / (double)sums[k].trials, lo, hi);
 		if (c->target.given)
@@ -148,13 +157,13 @@ static void write_summary(const hs_campaign *c, const cell_sum *sums, FILE *out)
 static void write_table(const hs_campaign *c, const cell_sum *sums, FILE *out) {
 	fprintf(out, "campaign %s: %ld cells x %ld trials\n%6s", c->path, c->cells, c->per_cell, "cell");
 	for (int a = 0; a < c->axis_count; ++a)
-		fprintf(out, " %12.12s", c->axes[a].name);
+		fprintf(out, " %*s", column_width(&c->axes[a]), c->axes[a].name);
 	fprintf(out, " %8s %8s  %-17s%s\n", "hits", "rate", "95 % (Wilson)", c->target.given ? " mean distance" : "");
 	for (long k = 0; k < c->cells; ++k) {
 		double lo, hi;
 		hs_wilson_interval(sums[k].hits, sums[k].trials, &lo, &hi);
 		fprintf(out, "%6ld", k);
-		write_values(c, k, out, " ", 12);
+		write_values(c, k, out, " ", true);
 		fprintf(out, " %8ld %8.3f  [%.3f, %.3f]", sums[k].hits, (double)sums[k].hits / (double)sums[k].trials, lo, hi);
 		if (c->target.given)
 			fprintf(out, "    %.3f m", sums[k].distance / (double)sums[k].trials);
