@@ -213,6 +213,10 @@ for name in $builds; do
 			note "$name: $set: stderr: $(sed -n 1p "$det/$name/$set.err")"
 		fi
 	done
+	# a campaign's trial rows (the thrower's draws, noise at 1 and 3 times the paper's): byte for byte
+	# shellcheck disable=SC2086
+	env $envset $runner "$bin" campaign tests/campaigns/small.yaml --out "$det/$name/campaign.csv" \
+		>/dev/null 2>"$det/$name/campaign.err" || note "$name: campaign: $(sed -n 1p "$det/$name/campaign.err")"
 	t2=$(date +%s)
 	note "$name: build $((t1 - t0)) s, runs $((t2 - t1)) s"
 done
@@ -293,6 +297,19 @@ for f in $rows; do
 done
 rm -f "$tmp.ref" "$tmp.other"
 
+# the campaign: every build's trial CSV the reference's, byte for byte
+campaign_differ=""
+for name in "$@"; do
+	[ -s "$det/$name.skip" ] && continue
+	cmp -s "$det/$ref/campaign.csv" "$det/$name/campaign.csv" || campaign_differ="$campaign_differ $name"
+done
+if [ -n "$campaign_differ" ] || [ ! -s "$det/$ref/campaign.csv" ]; then
+	echo "campaign tests/campaigns/small.yaml: the trial CSV differs from $ref's in:${campaign_differ:- (no reference rows)}"
+	bad=1
+else
+	echo "campaign tests/campaigns/small.yaml: every build's trial CSV is $ref's, byte for byte ($(($(wc -l <"$det/$ref/campaign.csv") - 1)) trials)"
+fi
+
 echo
 for name in "$@"; do
 	[ -s "$det/$name.skip" ] && echo "  -  $name: $(cat "$det/$name.skip")"
@@ -302,7 +319,7 @@ echo "  ($(($(date +%s) - start)) s in all)"
 
 if [ "$bad" -ne 0 ]; then
 	failed=$(for name in "$@"; do grep -l 'build failed' "$det/$name.skip"; done 2>/dev/null | wc -l)
-	echo "determinism: FAILED: $differ cells differ from $ref (F<n>: the first frame whose hash differs), $unrun not run (X), $failed builds failed"
+	echo "determinism: FAILED: $differ cells differ from $ref (F<n>: the first frame whose hash differs), $unrun not run (X), $failed builds failed${campaign_differ:+, the campaign rows differ in$campaign_differ}"
 	exit 1
 fi
 same=yes
