@@ -190,14 +190,15 @@ static int find_name(const hs_yaml *y, const yaml_node_t *node, const hs_scenari
 	return -1;
 }
 
-enum { T_HAND, T_FROM, T_RELEASE, T_TIMING, T_SPEED, T_DIRECTION, T_COUNT };
-static const char *const throw_keys[T_COUNT] = {"hand", "from", "release", "timing_ms", "speed", "direction_deg"};
+enum { T_HAND, T_FROM, T_RELEASE, T_TIMING, T_SPEED, T_DIRECTION, T_PHASE, T_COUNT };
+static const char *const throw_keys[T_COUNT] = {"hand",  "from",          "release", "timing_ms",
+                                                "speed", "direction_deg", "phase"};
 
 // throw: the thrower's hand, its swing (from, release) and the SD of each error.
 static bool read_throw(hs_campaign *c, const hs_yaml *y, const yaml_node_t *node, const hs_scenario *s, int index) {
 	hs_fields f;
 	if (node->type != YAML_MAPPING_NODE)
-		return hs_yaml_fail(y, node, "'throw' must be a mapping (hand, from, release, timing_ms, speed, direction_deg), got %s",
+		return hs_yaml_fail(y, node, "'throw' must be a mapping (hand, from, release, timing_ms, speed, direction_deg, phase), got %s",
 		                    hs_yaml_got(node).text);
 	if (!hs_yaml_mapping(y, node, throw_keys, T_COUNT, "throw", &f))
 		return false;
@@ -219,6 +220,9 @@ static bool read_throw(hs_campaign *c, const hs_yaml *y, const yaml_node_t *node
 		return false;
 	t->timing = ms * 1e-3;
 	t->angle = deg * (HS_PI / 180.0);
+	t->phase = true;
+	if (f.value[T_PHASE] && !hs_yaml_bool(y, f.value[T_PHASE], "phase", &t->phase))
+		return false;
 	t->given = true;
 	return true;
 }
@@ -343,6 +347,7 @@ static bool check_scenario(hs_campaign *c, const hs_yaml *y, const hs_fields *f,
 	hs_scenario *s = hs_scenario_load(path, y->err);
 	if (!s)
 		return false;
+	c->dt[k] = s->dt;
 	if (!c->scenario)
 		snprintf(c->axes[0].text[k], sizeof c->axes[0].text[k], "%.*s", HS_CAMPAIGN_MAX_WORD - 1, s->name);
 	bool ok = (!f->value[C_THROW] || read_throw(c, y, f->value[C_THROW], s, k)) &&

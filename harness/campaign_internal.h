@@ -34,6 +34,7 @@ typedef struct hs_thrower_spec {
 	int hand[HS_CAMPAIGN_MAX_VALUES]; // in each scenario
 	double from, release;         // s
 	double timing, speed, angle;  // SD: s, relative, rad (azimuth and elevation each)
+	bool phase;                   // the script starts U[0, dt) late: the frame clock's phase
 } hs_thrower_spec;
 
 typedef struct hs_target {
@@ -44,6 +45,7 @@ typedef struct hs_target {
 
 struct hs_campaign {
 	char *path, *scenario; // the base scenario (NULL: a scenario axis)
+	double dt[HS_CAMPAIGN_MAX_VALUES]; // s: each scenario's own frame time
 	uint64_t seed;
 	long per_cell, cells, trials;
 	bool judge_all; // every clause, not only the robust ones

@@ -25,15 +25,17 @@ static double cut(double g) {
 
 // The thrower's four errors: N(0, 1) each (Box-Muller through the library's own log, cos and sin,
 // so the same on every machine), cut at HS_CAMPAIGN_TRUNCATE, times the SDs and the scale.
-static void draw_thrower(const hs_thrower_spec *spec, uint64_t seed, double scale, hs_throw_error *e) {
-	double g[4] = {0, 0, 0, 0};
+// With `phase`, a fifth draw, uniform: the script starts that fraction of a frame late.
+static void draw_thrower(const hs_thrower_spec *spec, uint64_t seed, double scale, double dt, hs_throw_error *e) {
+	double g[4] = {0, 0, 0, 0}, u = 0.0;
 	hs_noise *rng = hs_noise_create((unsigned long)(seed >> 32));
 	if (rng) { // out of memory: no error drawn (the trial's load then fails on memory too)
 		hs_noise_gaussian_pair(rng, &g[0], &g[1]);
 		hs_noise_gaussian_pair(rng, &g[2], &g[3]);
+		u = spec->phase ? hs_noise_uniform(rng) : 0.0;
 		hs_noise_destroy(rng);
 	}
-	*e = (hs_throw_error){.from = spec->from, .release = spec->release};
+	*e = (hs_throw_error){.from = spec->from, .release = spec->release, .delay = u * dt};
 	e->timing = spec->timing * scale * cut(g[0]);
 	e->speed = spec->speed * scale * cut(g[1]);
 	e->azimuth = spec->angle * scale * cut(g[2]);
@@ -72,7 +74,7 @@ void hs_trial_prepare(const hs_campaign *c, long index, hs_trial *t) {
 			t->scenario = axis->model[t->scenario_index = t->value[a]];
 	}
 	if (c->thrower.given) {
-		draw_thrower(&c->thrower, t->seed, scale, &t->error);
+		draw_thrower(&c->thrower, t->seed, scale, o->dt > 0.0 ? o->dt : c->dt[t->scenario_index], &t->error);
 		t->error.hand = c->thrower.hand[t->scenario_index];
 		o->throw_error = &t->error;
 	}
@@ -92,7 +94,7 @@ void hs_campaign_header(const hs_campaign *c, char *text, size_t size) {
 		append(text, size, c->axes[a].name);
 	}
 	if (c->thrower.given)
-		append(text, size, ",timing_ms,speed,azimuth_deg,elevation_deg");
+		append(text, size, ",timing_ms,speed,azimuth_deg,elevation_deg,delay_ms");
 	if (c->target.given)
 		append(text, size, ",distance");
 	append(text, size, ",hit,clauses");
@@ -118,7 +120,8 @@ static void write_row(const hs_campaign *c, const hs_trial *t, double distance, 
 	if (c->thrower.given) {
 		const hs_throw_error *e = &t->error;
 		double deg = 180.0 / HS_PI;
-		fprintf(out, ",%.17g,%.17g,%.17g,%.17g", e->timing * 1e3, e->speed, e->azimuth * deg, e->elevation * deg);
+		fprintf(out, ",%.17g,%.17g,%.17g,%.17g,%.17g", e->timing * 1e3, e->speed, e->azimuth * deg,
+		        e->elevation * deg, e->delay * 1e3);
 	}
 	if (c->target.given)
 		fprintf(out, ",%.17g", distance);

@@ -376,9 +376,10 @@ void hs_hands_drive(hs_world *world, const hs_hands *hands, double t, hs_noise *
 		hs_vec3 wrist;
 		hs_quat rot;
 		uint8_t sensors[HS_GLOVE_SENSORS];
-		hs_hand_script_sample(&hands->scripts[h], t, &wrist, &rot, sensors);
-		if (hands->thrower.active && hands->thrower.hand == h && t > hands->thrower.from)
-			hs_thrower_apply(&hands->thrower, &hands->scripts[h], t, &wrist, sensors);
+		if (hands->thrower.active && hands->thrower.hand == h)
+			hs_thrower_sample(&hands->thrower, &hands->scripts[h], t, &wrist, &rot, sensors);
+		else
+			hs_hand_script_sample(&hands->scripts[h], t, &wrist, &rot, sensors);
 		if (noise) // what a real glove and tracker report (hands in order: one generator, one sequence)
 			hs_noise_hand(noise, options, &wrist, &rot, sensors);
 		hs_world_set_hand(world, hands->ids[h], wrist, rot, sensors);

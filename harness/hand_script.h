@@ -32,18 +32,19 @@ void hs_hand_script_clear(hs_hand_script *script);
 // Errors are "PATH:LINE: what is wrong".
 bool hs_record_load(const char *path, hs_hand_script *script, hs_error *err);
 
-// A thrower's error on one hand's script (throw_error.c, hs_throw_error): after `from` the wrist
-// is at pivot + turn (scale (w - pivot)) for the script's w, and the glove reads the script at t - timing.
+// A thrower's error on one hand's script (throw_error.c, hs_throw_error): the script runs `delay`
+// late; after `from` the wrist is at pivot + turn (scale (w - pivot)) for the script's w, and the
+// glove reads the script at t - timing.
 typedef struct hs_thrower {
 	bool active;
 	int hand;
-	double from, timing, scale; // s, s, 1 + speed
-	hs_vec3 pivot;              // m: the script's wrist at `from`
+	double delay, from, timing, scale; // s, s, s, 1 + speed
+	hs_vec3 pivot;                     // m: the script's wrist at `from`
 	hs_quat turn;
 } hs_thrower;
-// Changes a sampled reading of the thrower's hand at time t (> from).
-void hs_thrower_apply(const hs_thrower *thrower, const hs_hand_script *script, double t, hs_vec3 *wrist,
-                      uint8_t sensors[HS_GLOVE_SENSORS]);
+// The thrower's hand at time t (hs_hand_script_sample with the errors).
+void hs_thrower_sample(const hs_thrower *thrower, const hs_hand_script *script, double t, hs_vec3 *wrist,
+                       hs_quat *rot, uint8_t sensors[HS_GLOVE_SENSORS]);
 
 // The hands of a scenario and their scripts.
 typedef struct hs_hands {

@@ -38,6 +38,8 @@ void hs_noise_destroy(hs_noise *noise) {
 
 void hs_noise_set_stylus_scale(hs_noise *noise, double scale) { noise->stylus_scale = scale; }
 
+double hs_noise_uniform(hs_noise *noise) { return gsl_rng_uniform(noise->rng); }
+
 // Two independent N(0, 1) draws (Box–Muller): u1, u2 in (0, 1], r = √(−2 ln u1), θ = 2π u2.
 void hs_noise_gaussian_pair(hs_noise *noise, double *a, double *b) {
 	double u1 = gsl_rng_uniform_pos(noise->rng), u2 = gsl_rng_uniform_pos(noise->rng);

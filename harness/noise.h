@@ -29,6 +29,8 @@ hs_noise *hs_noise_create(unsigned long seed);
 void hs_noise_destroy(hs_noise *noise);
 // The stylus's noise is its RMS times `scale` from now on (1 when created).
 void hs_noise_set_stylus_scale(hs_noise *noise, double scale);
+// A draw in [0, 1) (an integer over 2^32: exact everywhere).
+double hs_noise_uniform(hs_noise *noise);
 // Two independent N(0, 1) draws (Box–Muller through hs_log, hs_cos, hs_sin: the same on every machine).
 void hs_noise_gaussian_pair(hs_noise *noise, double *a, double *b);
 

@@ -10,8 +10,12 @@
 
 static const double MAX_TIMING = 1.0; // s
 
-void hs_thrower_apply(const hs_thrower *thrower, const hs_hand_script *script, double t, hs_vec3 *wrist,
-                      uint8_t sensors[HS_GLOVE_SENSORS]) {
+void hs_thrower_sample(const hs_thrower *thrower, const hs_hand_script *script, double t, hs_vec3 *wrist,
+                       hs_quat *rot, uint8_t sensors[HS_GLOVE_SENSORS]) {
+	t -= thrower->delay;
+	hs_hand_script_sample(script, t, wrist, rot, sensors);
+	if (!(t > thrower->from))
+		return;
 	hs_vec3 arm = hs_scale(hs_sub(*wrist, thrower->pivot), thrower->scale);
 	*wrist = hs_add(thrower->pivot, hs_quat_rotate(thrower->turn, arm));
 	if (thrower->timing != 0.0) { // the glove as the script has it `timing` earlier
@@ -49,12 +53,12 @@ bool hs_throw_error_set(hs_scenario_parser *p, const yaml_node_t *root, const hs
 	    !(e->release > e->from))
 		return hs_yaml_fail(&p->y, root, "throw error: need 0 <= from < release <= duration %g s, got %g and %g",
 		                    p->s->duration, e->from, e->release);
-	if (!finite_in(e->timing, -MAX_TIMING, MAX_TIMING) || !(isfinite(e->speed) && e->speed > -1.0) ||
+	if (!finite_in(e->timing, -MAX_TIMING, MAX_TIMING) || !finite_in(e->delay, 0.0, MAX_TIMING) || !(isfinite(e->speed) && e->speed > -1.0) ||
 	    !finite_in(e->azimuth, -HS_PI, HS_PI) || !finite_in(e->elevation, -HS_PI, HS_PI))
 		return hs_yaml_fail(&p->y, root,
-		                    "throw error: timing within [-1, 1] s, speed above -1, angles within [-pi, pi], "
-		                    "got %g s, %g, %g and %g rad",
-		                    e->timing, e->speed, e->azimuth, e->elevation);
+		                    "throw error: timing within [-1, 1] s, delay within [0, 1] s, speed above -1, angles "
+		                    "within [-pi, pi], got %g s, %g s, %g, %g and %g rad",
+		                    e->timing, e->delay, e->speed, e->azimuth, e->elevation);
 	const hs_hand_script *script = &hands->scripts[e->hand];
 	hs_thrower *t = &hands->thrower;
 	hs_quat r;
@@ -64,6 +68,7 @@ bool hs_throw_error_set(hs_scenario_parser *p, const yaml_node_t *root, const hs
 	t->hand = e->hand;
 	t->from = e->from;
 	t->timing = e->timing;
+	t->delay = e->delay;
 	t->scale = 1.0 + e->speed;
 	t->active = true;
 	return true;

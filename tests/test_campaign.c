@@ -95,6 +95,17 @@ static void test_late_release_goes_further(void **state) {
 	assert_true(x_early < 2.0406666666666667 - 0.03);
 }
 
+// The script a whole frame late ends where it ends on time (the block waits on the floor): the
+// frame clock's phase is all `delay` changes. Half a frame late the release falls elsewhere.
+static void test_delay_is_the_frame_phase(void **state) {
+	(void)state;
+	hs_throw_error frame = {.hand = 0, .from = 1.2, .release = 1.31, .delay = 1.0 / 60.0};
+	hs_throw_error half = frame;
+	half.delay = 0.5 / 60.0;
+	assert_vec3_near(rest_with_error(&frame), hs_v3(2.0406666666666667, 0, 0.025), 1e-12);
+	assert_true(fabs(rest_with_error(&half).x - 2.0406666666666667) > 1e-3);
+}
+
 // Rows written by one process, by slices in another order, and twice, are the same bytes.
 static char *rows_of(hs_campaign *c, long first, long last) {
 	char *text = NULL;
@@ -244,6 +255,7 @@ int main(void) {
 	    cmocka_unit_test(test_speed_and_azimuth_closed_form),
 	    cmocka_unit_test(test_elevation_closed_form),
 	    cmocka_unit_test(test_late_release_goes_further),
+	    cmocka_unit_test(test_delay_is_the_frame_phase),
 	    cmocka_unit_test(test_split_is_the_whole),
 	    cmocka_unit_test(test_wilson_interval),
 	    cmocka_unit_test(test_summary_checks_the_rows),

@@ -61,9 +61,12 @@ typedef struct hs_scenario_options {
 /// swing (the direction from the wrist at `from` to it at `release`; up is positive; a vertical
 /// swing turns about x); the wrist's orientation keeps its script. The glove's readings after
 /// `from` come `timing` s later (negative: earlier) than the script has them, so the hand opens
-/// that much later against the arm. Zero everywhere: the script as written.
+/// that much later against the arm. `delay` runs the hand's whole script that much later (the
+/// frame clock's phase against the person: a real throw does not start on a frame). Zero
+/// everywhere: the script as written.
 typedef struct hs_throw_error {
 	int hand;         ///< the hand's index, in the file's order
+	double delay;     ///< s: within [0, 1]
 	double from;      ///< s: the swing starts (the fingers should be still around this time)
 	double release;   ///< s: when the script's hand opens, for the swing's direction (> from)
 	double timing;    ///< s
