@@ -1,0 +1,40 @@
+# exp2.gp — Experiment 2 of the 1999 paper as a Monte-Carlo throw study (campaigns/exp2.yaml):
+# the hit rate against the frame rate, one line per release-velocity estimator, with its Wilson
+# 95 % interval, one panel per input-noise level. Writes exp2.png and exp2.svg.
+#   gnuplot -e "summary='build/campaign/exp2/summary.csv'; out='build/plots'" plots/campaign/exp2.gp
+if (!exists("summary")) summary = 'build/campaign/exp2/summary.csv'
+if (!exists("out")) out = 'build/plots'
+set datafile separator ","
+# summary.csv: cell,dt,noise,throw_scale,model,trials,hits,rate,lo95,hi95,mean_distance
+estimators = "frame mean-50ms mean-0.1s lsq-0.16s"
+colors = "#d62728 #1f77b4 #2ca02c #9467bd"
+noises = "0 1 3"
+titles = "'no input noise' 'the paper''s glove and tracker noise' 'three times that'"
+stats summary skip 1 using 6 nooutput
+trials = int(STATS_min)
+offset(k) = 1.0 + 0.025 * (k - 2.5) # the estimators side by side at each rate
+do for [f = 1:2] {
+    if (f == 1) {
+        set terminal pngcairo size 1500, 560 enhanced font "Sans,11"
+        set output out.'/exp2.png'
+    } else {
+        set terminal svg size 1500, 560 enhanced font "Sans,11" background rgb "white"
+        set output out.'/exp2.svg'
+    }
+    set multiplot layout 1, 3 title sprintf("Experiment 2 (1999 paper): a block thrown at a 15 cm target 2 m away, %d throws a point, the thrower of 90 %% hits at 17 frames/s", trials)
+    set logscale x 2
+    set xrange [10:150]
+    set xtics ("12" 12, "17" 17, "30" 30, "60" 60, "120" 120)
+    set yrange [0:1.02]
+    set xlabel "frames/s"
+    set ylabel "hit rate (Wilson 95 % interval)"
+    set grid
+    set key bottom right
+    do for [n = 1:3] {
+        set title word(titles, n)
+        plot for [k = 1:4] summary skip 1 \
+            using (($3 == real(word(noises, n)) && strcol(5) eq word(estimators, k)) ? offset(k) / $2 : NaN):8:9:10 \
+            with yerrorlines lw 2 pt 7 ps 0.6 lc rgb word(colors, k) title word(estimators, k)
+    }
+    unset multiplot
+}
