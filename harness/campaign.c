@@ -348,6 +348,7 @@ static bool check_scenario(hs_campaign *c, const hs_yaml *y, const hs_fields *f,
 	if (!s)
 		return false;
 	c->dt[k] = s->dt;
+	c->duration[k] = s->duration;
 	if (!c->scenario)
 		snprintf(c->axes[0].text[k], sizeof c->axes[0].text[k], "%.*s", HS_CAMPAIGN_MAX_WORD - 1, s->name);
 	bool ok = (!f->value[C_THROW] || read_throw(c, y, f->value[C_THROW], s, k)) &&

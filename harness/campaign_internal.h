@@ -45,7 +45,8 @@ typedef struct hs_target {
 
 struct hs_campaign {
 	char *path, *scenario; // the base scenario (NULL: a scenario axis)
-	double dt[HS_CAMPAIGN_MAX_VALUES]; // s: each scenario's own frame time
+	double dt[HS_CAMPAIGN_MAX_VALUES];       // s: each scenario's own frame time
+	double duration[HS_CAMPAIGN_MAX_VALUES]; // s: each scenario's duration
 	uint64_t seed;
 	long per_cell, cells, trials;
 	bool judge_all; // every clause, not only the robust ones

@@ -86,6 +86,15 @@ static void append(char *text, size_t size, const char *part) {
 	snprintf(text + n, size - n, "%s", part);
 }
 
+double hs_campaign_trial_frames(const hs_campaign *c, long trial) {
+	if (!c || trial < 0 || trial >= c->trials)
+		return 0.0;
+	hs_trial t;
+	hs_trial_prepare(c, trial, &t);
+	double dt = t.options.dt > 0.0 ? t.options.dt : c->dt[t.scenario_index];
+	return c->duration[t.scenario_index] / dt;
+}
+
 void hs_campaign_header(const hs_campaign *c, char *text, size_t size) {
 	text[0] = '\0';
 	append(text, size, "trial,cell,k,seed");

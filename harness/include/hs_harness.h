@@ -101,6 +101,8 @@ hs_campaign *hs_campaign_load(const char *path, hs_error *err);
 void hs_campaign_destroy(hs_campaign *campaign);
 /// Trials in the campaign: cells × trials per cell.
 long hs_campaign_trials(const hs_campaign *campaign);
+/// What trial `trial` costs to run, in frames (its scenario's duration / its dt): for progress.
+double hs_campaign_trial_frames(const hs_campaign *campaign, long trial);
 /// The trial CSV's header line (with its newline).
 void hs_campaign_write_header(const hs_campaign *campaign, FILE *out);
 /// Runs trial `trial` (0 ≤ trial < hs_campaign_trials) and writes its CSV row. False with `err`
