@@ -5,7 +5,9 @@
 # Debian with only a compiler and make. clang is a base package: `make check` builds the tool with
 # gcc and clang and compares them (the determinism pair); g++ (and clang's clang++) compile the
 # README's examples and the public headers as C++, and pkg-config links them against an installed
-# copy (make check-readme). `deps.sh bench` adds the benchmark peers
+# copy (make check-readme). GNU parallel and OpenSSH (server and client) run campaigns over cores
+# and machines, and make check-campaign drives them through a private sshd on 127.0.0.1 (issue 14,
+# docs/campaigns.md). `deps.sh bench` adds the benchmark peers
 # (ODE, MuJoCo); `deps.sh fuzz` adds the compiler-rt runtime that holds libFuzzer; `deps.sh
 # valgrind` adds valgrind (make valgrind, make determinism).
 set -eu
@@ -23,6 +25,10 @@ has_file /usr/include/png.h || need="$need libpng-dev"
 has_cmd gnuplot || need="$need gnuplot-nox"
 has_cmd clang || need="$need clang"
 has_cmd g++ || need="$need g++"
+# GNU's, not moreutils' program of the same name
+{ has_cmd parallel && parallel --version 2>/dev/null | grep -q 'GNU parallel'; } || need="$need parallel"
+has_file /usr/sbin/sshd || need="$need openssh-server"
+{ has_cmd ssh && has_cmd ssh-keygen; } || need="$need openssh-client"
 
 for extra in "$@"; do
 	case "$extra" in
