@@ -197,6 +197,23 @@ figures: all
 check-sweep: all
 	@sh scripts/sweep_catalog.sh $(TOOL) scenarios/hand
 
+# Monte-Carlo campaigns (issue 14, docs/campaigns.md): the trials spread over GNU parallel, on this
+# machine's cores or over ssh (SSHLOGIN is parallel's --sshlogin, e.g. 4/host1,4/host2,:);
+# RESUME=1 continues an interrupted run in OUT.
+#   make campaign CAMPAIGN=FILE [JOBS=N] [SSHLOGIN=...] [OUT=DIR] [RESUME=1]
+# check-campaign: local jobs, ssh to a private sshd on 127.0.0.1, and a run killed and resumed must
+# give the in-process run's files byte for byte; check-slurm (not part of check): the same split as a
+# Slurm job array on a single-node Slurm started for the test. Both on CAMPAIGN_CHECK, a small campaign.
+.PHONY: campaign check-campaign check-slurm
+CAMPAIGN_CHECK ?=
+campaign: all
+	@[ -n "$(CAMPAIGN)" ] || { echo "usage: make campaign CAMPAIGN=FILE [JOBS=N] [SSHLOGIN=...] [OUT=DIR] [RESUME=1]"; exit 2; }
+	@sh scripts/campaign.sh '$(CAMPAIGN)' '$(or $(OUT),$(BUILD)/campaign/$(basename $(notdir $(CAMPAIGN))))' --tool $(TOOL) \
+		$(if $(JOBS),--jobs $(JOBS)) $(if $(SSHLOGIN),--sshlogin '$(SSHLOGIN)') $(if $(RESUME),--resume)
+check-campaign check-slurm: all
+	@[ -n "$(CAMPAIGN_CHECK)" ] || { echo "$@: CAMPAIGN_CHECK=FILE (a small campaign) is not set"; exit 2; }
+	@sh tests/$(if $(filter check-slurm,$@),campaign_slurm.sh,campaign_parallel.sh) $(TOOL) '$(CAMPAIGN_CHECK)'
+
 # The main job: every catalog scenario, a summary table, trajectories under $(BUILD)/traj.
 run: all
 	$(TOOL) all --dir scenarios --out-dir $(BUILD)/traj
