@@ -107,12 +107,13 @@ else
 	rm -rf "$out/parts"
 	rm -f "$out/jobs" "$out/joblog" "$out/campaign.id" "$out/trials.csv" "$out/trials.csv.tmp" "$out/summary.csv"
 	if [ -z "$chunk" ]; then
-		# job slots: --jobs (else the cores here) per machine, or the N of an N/login
+		# job slots: --jobs per machine; without it the cores here, or the N of an N/login (a
+		# remote's own core count, which parallel finds out, is unknown here: taken as ours)
 		ncpu=$(nproc 2>/dev/null || echo 1)
 		slots=${jobs:-$ncpu}
 		if [ -n "$sshlogin" ]; then
-			slots=$(printf '%s\n' "$sshlogin" | tr ' ,' '[\n*]' | awk -v d="$slots" '
-				NF { if (match($0, /^[0-9]+\//)) s += substr($0, 1, RLENGTH - 1); else s += d }
+			slots=$(printf '%s\n' "$sshlogin" | tr ',' '\n' | awk -v j="$jobs" -v d="$slots" '
+				NF { if (j == "" && match($0, /^[0-9]+\//)) s += substr($0, 1, RLENGTH - 1); else s += d }
 				END { print (s > 0 ? s : 1) }')
 		fi
 		chunk=$((total / (4 * slots)))
