@@ -154,7 +154,7 @@ if [ "$njobs" -gt 0 ]; then
 fi
 if [ "$rc" -ne 0 ]; then
 	# the job that failed (a nonzero exit of its own, not one parallel stopped), else any
-	awk -F'\t' -v from="$before" 'FNR > from && ($7 != 0 || $8 != 0) {
+	awk -F'\t' -v from="$before" 'FNR > 1 && FNR > from && ($7 != 0 || $8 != 0) {
 			if ($7 > 0 && $8 == 0) { print $1, $2, $7; found = 1; exit }
 			if (!any) any = $1 " " $2 " " $7 "/" $8 }
 		END { if (!found && any) print any }' "$out/joblog" > "$out/failed" || true
@@ -162,7 +162,7 @@ if [ "$rc" -ne 0 ]; then
 		echo "campaign: job $seq (trials $(sed -n "${seq}p" "$out/jobs")) on $host failed (status $status):" >&2
 		sed 's/^/  /' "$out/parts/$seq.rows.err" 2>/dev/null | head -n 20 >&2 || true
 	else
-		echo "campaign: parallel failed (status $rc)" >&2
+		echo "campaign: parallel stopped (status $rc) before every job was done" >&2
 	fi
 	rm -f "$out/failed"
 	done_jobs=$(awk -F'\t' 'NR > 1 && $7 == 0 && $8 == 0 && !($1 in n) { n[$1] = 1; c++ } END { print c + 0 }' "$out/joblog" 2>/dev/null || echo 0)
