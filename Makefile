@@ -180,8 +180,9 @@ check: deps
 	@$(MAKE) --no-print-directory check-resume
 	@sh scripts/layout_check.sh
 	@$(MAKE) --no-print-directory check-sweep
+	@$(MAKE) --no-print-directory check-campaign
 	@$(MAKE) --no-print-directory figures
-	@echo "check: all suites passed (plain and ASan+UBSan, reliability, README examples, resume, layout, the hand scenarios' robustness sweep, the papers' figures)"
+	@echo "check: all suites passed (plain and ASan+UBSan, reliability, README examples, resume, layout, the hand scenarios' robustness sweep, a campaign over GNU parallel, ssh and a resume, the papers' figures)"
 
 # Save half-way and resume every catalog scenario: the rest of the run must be byte-identical.
 check-resume: all
@@ -205,7 +206,7 @@ check-sweep: all
 # give the in-process run's files byte for byte; check-slurm (not part of check): the same split as a
 # Slurm job array on a single-node Slurm started for the test. Both on CAMPAIGN_CHECK, a small campaign.
 .PHONY: campaign check-campaign check-slurm
-CAMPAIGN_CHECK ?=
+CAMPAIGN_CHECK ?= tests/campaigns/small.yaml
 campaign: all
 	@[ -n "$(CAMPAIGN)" ] || { echo "usage: make campaign CAMPAIGN=FILE [JOBS=N] [SSHLOGIN=...] [OUT=DIR] [RESUME=1]"; exit 2; }
 	@sh scripts/campaign.sh '$(CAMPAIGN)' '$(or $(OUT),$(BUILD)/campaign/$(basename $(notdir $(CAMPAIGN))))' --tool $(TOOL) \

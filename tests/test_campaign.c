@@ -15,7 +15,7 @@
 #include "test_util.h"
 
 #define THROW "scenarios/hand/throw_at_target.yaml"
-#define SMALL "tests/campaigns/small.yaml"
+#define SMALL "tests/campaigns/tiny.yaml"
 #define BAD_DIR "tests/bad_campaign"
 
 // v turned by `elevation` about -y (the line across a swing toward +x: up is positive), then by
