@@ -7,7 +7,7 @@
 #                        -O0/-O2/-O3 and -march=native, i386, aarch64 (qemu), no-FMA libm paths and
 #                        the sanitizer builds run the catalog and the randomized soak (tests/soak_gen.c):
 #                        per-frame hashes must agree; then valgrind on the catalog
-#   make valgrind        valgrind on the catalog run and the bad-input corpus (slow: not in check)
+#   make valgrind        valgrind on the catalog run, a campaign and the bad-input corpora (slow: not in check)
 #   make check-reliability   (run by `make check`) the stress subset and the quick matrix:
 #                        gcc -O2 / gcc -O0 / clang -O2, gcc -O2 on the no-FMA libm paths, and i386
 #                        and aarch64 where scripts/deps-cross.sh has installed them
@@ -78,7 +78,16 @@ valgrind:
 		$(VALGRIND) $(VALGRIND_BUILD)/handspring run $$f > /dev/null 2> $(VALGRIND_BUILD)/vg/bad.err; rc=$$?; \
 		if [ $$rc -ne 2 ] || [ "$$(wc -l < $(VALGRIND_BUILD)/vg/bad.err)" -ne 1 ]; then \
 			cat $(VALGRIND_BUILD)/vg/bad.err; echo "valgrind: $$f: status $$rc"; exit 1; fi; \
-		n=$$((n + 1)); done; echo "valgrind: clean (catalog and $$n bad inputs)"
+		n=$$((n + 1)); done; \
+	for f in tests/bad_campaign/*.yaml; do \
+		$(VALGRIND) $(VALGRIND_BUILD)/handspring campaign $$f --count > /dev/null 2> $(VALGRIND_BUILD)/vg/bad.err; rc=$$?; \
+		if [ $$rc -ne 2 ] || [ "$$(wc -l < $(VALGRIND_BUILD)/vg/bad.err)" -ne 1 ]; then \
+			cat $(VALGRIND_BUILD)/vg/bad.err; echo "valgrind: $$f: status $$rc"; exit 1; fi; \
+		n=$$((n + 1)); done; \
+	$(VALGRIND) $(VALGRIND_BUILD)/handspring campaign tests/campaigns/tiny.yaml --out $(VALGRIND_BUILD)/vg/campaign.csv \
+		> /dev/null 2> $(VALGRIND_BUILD)/vg/campaign.err || { cat $(VALGRIND_BUILD)/vg/campaign.err; \
+		echo "valgrind: the campaign tests/campaigns/tiny.yaml reported errors"; exit 1; }; \
+	echo "valgrind: clean (catalog, a campaign and $$n bad inputs, scenarios and campaigns)"
 
 # ---------------------------------------------------------------------------------------------
 # libFuzzer (clang): the model built again with coverage, ASan and UBSan
