@@ -28,7 +28,7 @@ void hs_wilson_interval(long hits, long n, double *lo, double *hi) {
 }
 
 typedef struct cell_sum {
-	long trials, hits;
+	long trials, hits, faults;
 	double distance; // summed in trial order
 } cell_sum;
 
@@ -70,6 +70,7 @@ static bool read_row(const hs_campaign *c, char *line, long expect, int fields, 
 	cell_sum *s = &sums[trial / c->per_cell];
 	s->trials++;
 	s->hits += hit;
+	s->faults += strcmp(f[fields - 1], "fault") == 0;
 	if (c->target.given) {
 		char *end;
 		double d = strtod(f[fields - 3], &end);
@@ -140,14 +141,14 @@ static void write_summary(const hs_campaign *c, const cell_sum *sums, FILE *out)
 	fputs("cell", out);
 	for (int a = 0; a < c->axis_count; ++a)
 		fprintf(out, ",%s", c->axes[a].name);
-	fprintf(out, ",trials,hits,rate,lo95,hi95%s\n", c->target.given ? ",mean_distance" : "");
+	fprintf(out, ",trials,hits,rate,lo95,hi95,faults%s\n", c->target.given ? ",mean_distance" : "");
 	for (long k = 0; k < c->cells; ++k) {
 		double lo, hi;
 		hs_wilson_interval(sums[k].hits, sums[k].trials, &lo, &hi);
 		fprintf(out, "%ld", k);
 		write_values(c, k, out, ",", false);
-		fprintf(out, ",%ld,%ld,%.6f,%.6f,%.6f", sums[k].trials, sums[k].hits,
-		        (double)sums[k].hits / (double)sums[k].trials, lo, hi);
+		fprintf(out, ",%ld,%ld,%.6f,%.6f,%.6f,%ld", sums[k].trials, sums[k].hits,
+		        (double)sums[k].hits / (double)sums[k].trials, lo, hi, sums[k].faults);
 		if (c->target.given)
 			fprintf(out, ",%.6f", sums[k].distance / (double)sums[k].trials);
 		fputs("\n", out);
@@ -167,6 +168,8 @@ static void write_table(const hs_campaign *c, const cell_sum *sums, FILE *out) {
 		fprintf(out, " %8ld %8.3f  [%.3f, %.3f]", sums[k].hits, (double)sums[k].hits / (double)sums[k].trials, lo, hi);
 		if (c->target.given)
 			fprintf(out, "    %.3f m", sums[k].distance / (double)sums[k].trials);
+		if (sums[k].faults > 0)
+			fprintf(out, "    %ld FAULTED", sums[k].faults);
 		fputs("\n", out);
 	}
 }
@@ -181,6 +184,12 @@ int hs_campaign_summarize(const hs_campaign *c, FILE *in, const char *in_path, F
 		write_summary(c, sums, summary);
 	if (ok && table)
 		write_table(c, sums, table);
+	long faults = 0;
+	for (long k = 0; ok && k < c->cells; ++k)
+		faults += sums[k].faults;
+	if (faults > 0) // the numbers of those runs went bad: the summary is written, the status says so
+		hs_set_error(err, in_path, 1, "%ld of %ld trials faulted (a step failed or a value went non-finite): "
+		             "their clauses column says fault", faults, c->trials);
 	free(sums);
-	return ok ? 0 : 2;
+	return !ok ? 2 : faults > 0 ? 1 : 0;
 }

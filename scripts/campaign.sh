@@ -31,7 +31,7 @@
 # OUTDIR/trials.csv (header + rows sorted by trial) and OUTDIR/summary.csv, whose table it prints.
 # Progress: parallel's --bar on stderr when stderr is a terminal; always a last line with the
 # trials run, the wall time and the trials per second.
-# Exit status: 0; 2 for bad arguments or input (the tool's `file:line: message` on stderr); a
+# Exit status: 0; 1 when done but some trials' runs faulted (their rows say `fault`); 2 for bad arguments or input (the tool's `file:line: message` on stderr); a
 # failed job's own status (its stderr printed, rerun with --resume once fixed); 130/143 when
 # interrupted (rerun with --resume).
 set -eu
@@ -178,7 +178,9 @@ while [ "$seq" -le "$njobs" ]; do
 	set -- "$@" "$out/parts/$seq.rows"
 	seq=$((seq + 1))
 done
-sh "$here/campaign_merge.sh" "$tool" "$file" "$out" "$@"
+merged=0
+sh "$here/campaign_merge.sh" "$tool" "$file" "$out" "$@" || merged=$?
+[ "$merged" -le 1 ] || exit "$merged" # 1: merged, but some trials' runs faulted (said above)
 
 # trials run now: the jobs this run's joblog lines record as done
 ran=$(awk -F'\t' -v from="$before" 'NR == FNR { split($0, r, ":"); size[FNR] = r[2] - r[1]; next }
@@ -189,3 +191,4 @@ awk -v t="$total" -v r="$ran" -v s="$start" -v e="$(now)" -v o="$out" 'BEGIN {
 	printf "campaign: %d trials", t
 	if (r != t) printf " (%d run now, %d done before)", r, t - r
 	printf " in %.2f s, %.1f trials/s -> %s/trials.csv, %s/summary.csv\n", w, r / w, o, o }'
+exit "$merged"

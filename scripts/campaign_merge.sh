@@ -10,7 +10,8 @@
 # A part is the rows of some trials (no header), as `--trials A:B --rows` writes them. A part that
 # does not end in a newline was cut short (a killed job) and is refused, as is a row count other
 # than T. The merged file is written as trials.csv.tmp and renamed only once --summarize accepts it.
-# Exit status: 0, or 2 with the reason on stderr (the tool's own `file:line: message` included).
+# Exit status: 0; 1 when merged and summarised but some trials' runs faulted (clauses `fault`); 2
+# with the reason on stderr (the tool's own `file:line: message` included).
 set -eu
 if [ $# -lt 3 ]; then
 	echo "usage: campaign_merge.sh TOOL CAMPAIGN_FILE OUTDIR PART..." >&2
@@ -44,8 +45,10 @@ if [ "$rows" -ne "$total" ]; then
 fi
 rc=0
 "$tool" campaign "$file" --summarize "$tmp" --summary "$out/summary.csv" || rc=$?
-if [ "$rc" -ne 0 ]; then
+if [ "$rc" -gt 1 ]; then
 	echo "campaign_merge: --summarize refused the merged trials (status $rc; $tmp kept)" >&2
 	exit 2
 fi
 mv -f "$tmp" "$out/trials.csv"
+# status 1: merged and summarised, but some trials' runs faulted (the tool said how many)
+[ "$rc" -eq 0 ] || exit 1

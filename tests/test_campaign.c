@@ -207,6 +207,27 @@ static void test_summary_checks_the_rows(void **state) {
 	assert_non_null(all);
 	snprintf(all, n, "%s%s", header, rows);
 	assert_int_equal(summarize_text(c, all, &err), 0);
+	// a faulted trial: summarised (a miss, counted in `faults`), status 1
+	char *row0 = strchr(all, '\n') + 1, *end0 = strchr(row0, '\n');
+	char *comma = end0;
+	while (*--comma != ',') {
+	}
+	size_t m = strlen(all) + 8;
+	char *faulted = malloc(m);
+	assert_non_null(faulted);
+	snprintf(faulted, m, "%.*s,fault%s", (int)(comma - all), all, end0);
+	char summary[8192];
+	FILE *in = fmemopen(faulted, strlen(faulted), "r"), *sum = fmemopen(summary, sizeof summary, "w");
+	assert_int_equal(hs_campaign_summarize(c, in, "rows.csv", sum, NULL, &err), 1);
+	fclose(in);
+	fclose(sum);
+	assert_string_equal(err.message, "rows.csv:1: 1 of 40 trials faulted (a step failed or a value went non-finite): "
+	                                 "their clauses column says fault");
+	assert_non_null(strstr(summary, "lo95,hi95,faults,mean_distance\n0,"));
+	const char *cell0 = strstr(summary, "\n0,") + 1; // cell,dt,noise,threshold,trials,hits,rate,lo,hi,faults
+	assert_string_equal(field(cell0, 9), "1");
+	assert_string_equal(field(strstr(cell0, "\n1,") + 1, 9), "0");
+	free(faulted);
 	assert_int_equal(summarize_text(c, "trial,hit\n", &err), 2);
 	assert_non_null(strstr(err.message, "rows.csv:1: not this campaign's trials"));
 	all[strlen(all) - 1] = '\0'; // drop the last row

@@ -10,7 +10,7 @@
 #include "hs_harness.h"
 #include "output.h"
 
-enum { EXIT_PASS = 0, EXIT_BAD_INPUT = 2 };
+enum { EXIT_PASS = 0, EXIT_FAULTED = 1, EXIT_BAD_INPUT = 2 };
 
 static const char *const usage =
     "usage: handspring campaign FILE [--out TRIALS.csv] [--summary SUMMARY.csv] [--progress]\n"
@@ -26,7 +26,8 @@ static const char *const usage =
     "  --summarize FILE   read a merged trial CSV (header, then every trial in order) and summarise it\n"
     "  --count            print the number of trials; --header: the trial CSV's header line\n"
     "  --progress         trials done, trials/s and the time left on stderr (default: when a terminal)\n"
-    "Trial i's row depends only on FILE and i. Exit status: 0 done, 2 bad input.\n";
+    "Trial i's row depends only on FILE and i. Exit status: 0 done, 1 done but a trial's run faulted (a step\n"
+    "failed or a value went non-finite: its clauses column says fault), 2 bad input.\n";
 
 typedef struct campaign_args {
 	const char *file, *out, *summary, *summarize;
@@ -154,7 +155,7 @@ static int summarize(const hs_campaign *c, FILE *in, const char *in_path, const 
 	int status = hs_campaign_summarize(c, in, in_path, o.file, stdout, &err);
 	if (status != EXIT_PASS)
 		fprintf(stderr, "%s\n", err.message);
-	if (summary_path && !output_close(&o, status == EXIT_PASS) && status == EXIT_PASS) {
+	if (summary_path && !output_close(&o, status != EXIT_BAD_INPUT) && status != EXIT_BAD_INPUT) {
 		fprintf(stderr, "%s: write failed\n", summary_path);
 		status = EXIT_BAD_INPUT;
 	}
@@ -189,7 +190,7 @@ static int run_all(hs_campaign *c, const campaign_args *a, hs_error *err) {
 	}
 	if (status == EXIT_PASS) {
 		rewind(rows);
-		status = summarize(c, rows, a->out ? a->out : "(trials)", a->summary);
+		status = summarize(c, rows, a->out ? a->out : "(trials)", a->summary); // EXIT_FAULTED: written
 	}
 	fclose(rows);
 	return status;

@@ -111,7 +111,9 @@ bool hs_campaign_run_trial(hs_campaign *campaign, long trial, FILE *out, hs_erro
 /// Reads a trial CSV (from `in`, named `in_path` in messages): this campaign's header, then every
 /// trial's row in trial order, each once (as the tool and scripts/campaign.sh merge them), and
 /// writes the per-cell summary CSV to `summary` (hits, rate, Wilson 95 % interval, mean distance)
-/// and a table to `table` (either may be NULL). Returns 0, or 2 with `err` filled.
+/// and a table to `table` (either may be NULL). Returns 0; 1 when a trial's run faulted (a step
+/// failed or a value went non-finite: `clauses` is `fault`; the summary counts them and is written);
+/// 2 with `err` filled when the rows are refused.
 int hs_campaign_summarize(const hs_campaign *campaign, FILE *in, const char *in_path, FILE *summary, FILE *table,
                           hs_error *err);
 /// The Wilson score interval of `hits` of `n` at z = 1.959963984540054 (95 %); [0, 1] for n = 0.
