@@ -289,7 +289,7 @@ static bool check_cells(const hs_campaign *c, hs_error *err) {
 		for (int v = 0; c->axes[a].kind == HS_AXIS_MODEL && v < c->axes[a].count; ++v) {
 			const char *text = c->axes[a].model[v];
 			hs_scenario_options o = {.model_count = 1, .model_texts = &text, .model_path = c->path};
-			hs_scenario *s = hs_scenario_load_with(t.scenario, &o, err);
+			hs_scenario *s = hs_scenario_load_source(&c->source[0], &o, err);
 			if (!s)
 				return false;
 			hs_scenario_destroy(s);
@@ -297,7 +297,7 @@ static bool check_cells(const hs_campaign *c, hs_error *err) {
 	int scenarios = c->scenario ? 1 : c->axes[0].count; // a scenario axis is the first, the slowest
 	for (int k = 0; k < scenarios; ++k) {
 		hs_trial_prepare(c, k * (c->cells / scenarios) * c->per_cell, &t);
-		hs_scenario *s = hs_scenario_load_with(t.scenario, &t.options, err);
+		hs_scenario *s = hs_scenario_load_source(&c->source[k], &t.options, err);
 		hs_scenario_destroy(s);
 		if (!s)
 			return false;
@@ -344,7 +344,10 @@ static bool check_scenario(hs_campaign *c, const hs_yaml *y, const hs_fields *f,
 	if (!probe)
 		return hs_yaml_fail(y, where, "cannot read the scenario %s: %s", hs_yaml_show(where).text, strerror(errno));
 	fclose(probe);
-	hs_scenario *s = hs_scenario_load(path, y->err);
+	if (!hs_scenario_source_open(&c->source[k], path, y->err))
+		return false;
+	c->sources = k + 1;
+	hs_scenario *s = hs_scenario_load_source(&c->source[k], NULL, y->err);
 	if (!s)
 		return false;
 	c->dt[k] = s->dt;
@@ -397,7 +400,8 @@ hs_campaign *hs_campaign_load(const char *path, hs_error *err) {
 		return NULL;
 	hs_campaign *c = calloc(1, sizeof *c);
 	hs_yaml y = {.path = path, .err = err};
-	bool ok = c && (c->path = strdup(path)) != NULL;
+	bool ok = c && (c->path = strdup(path)) != NULL &&
+	          (c->source = calloc(HS_CAMPAIGN_MAX_VALUES, sizeof *c->source)) != NULL;
 	if (!ok)
 		hs_set_error(err, path, 1, "out of memory");
 	if (ok && memchr(text, '\0', size))
@@ -420,6 +424,9 @@ void hs_campaign_destroy(hs_campaign *c) {
 	for (int a = 0; a < c->axis_count; ++a)
 		for (int v = 0; v < c->axes[a].count; ++v)
 			free(c->axes[a].model[v]);
+	for (int k = 0; k < c->sources; ++k)
+		hs_scenario_source_close(&c->source[k]);
+	free(c->source);
 	free(c->path);
 	free(c->scenario);
 	free(c);

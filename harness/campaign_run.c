@@ -58,7 +58,6 @@ void hs_trial_prepare(const hs_campaign *c, long index, hs_trial *t) {
 	o->model_path = c->path;
 	o->model_texts = t->models;
 	double scale = 1.0;
-	t->scenario = c->scenario;
 	for (int a = 0; a < c->axis_count; ++a) {
 		const hs_axis *axis = &c->axes[a];
 		double v = axis->value[t->value[a]];
@@ -71,7 +70,7 @@ void hs_trial_prepare(const hs_campaign *c, long index, hs_trial *t) {
 		else if (axis->kind == HS_AXIS_MODEL)
 			t->models[o->model_count++] = axis->model[t->value[a]];
 		else if (axis->kind == HS_AXIS_SCENARIO)
-			t->scenario = axis->model[t->scenario_index = t->value[a]];
+			t->scenario_index = t->value[a];
 	}
 	if (c->thrower.given) {
 		draw_thrower(&c->thrower, t->seed, scale, o->dt > 0.0 ? o->dt : c->dt[t->scenario_index], &t->error);
@@ -143,7 +142,7 @@ bool hs_campaign_run_trial(hs_campaign *c, long trial, FILE *out, hs_error *err)
 		                    c ? c->trials - 1 : -1L);
 	hs_trial t;
 	hs_trial_prepare(c, trial, &t);
-	hs_scenario *s = hs_scenario_load_with(t.scenario, &t.options, err);
+	hs_scenario *s = hs_scenario_load_source(&c->source[t.scenario_index], &t.options, err);
 	if (!s)
 		return false;
 	while (hs_scenario_step(s)) {

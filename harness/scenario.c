@@ -208,38 +208,59 @@ static bool start(hs_scenario *s, const char *path, hs_error *err) {
 
 hs_scenario *hs_scenario_load(const char *path, hs_error *err) { return hs_scenario_load_with(path, NULL, err); }
 
-hs_scenario *hs_scenario_load_with(const char *path, const hs_scenario_options *options, hs_error *err) {
+bool hs_scenario_source_open(hs_scenario_source *src, const char *path, hs_error *err) {
+	memset(src, 0, sizeof *src);
+	if (!path)
+		return hs_set_error(err, "(null)", 1, "cannot read: no file given");
+	char *text = NULL;
+	size_t size = 0;
+	if (!read_text_file(path, &text, &size, err))
+		return false;
+	src->y = (hs_yaml){.path = path, .err = err};
+	src->hash = fnv1a(text, size);
+	bool ok = hs_yaml_load(&src->y, text, size, "empty file: a scenario needs description, dt, duration and objects");
+	free(text);
+	if (!ok)
+		hs_yaml_free(&src->y);
+	return ok;
+}
+
+void hs_scenario_source_close(hs_scenario_source *src) { hs_yaml_free(&src->y); }
+
+hs_scenario *hs_scenario_load_source(const hs_scenario_source *src, const hs_scenario_options *options, hs_error *err) {
 	hs_error scratch;
 	if (!err)
 		err = &scratch;
 	err->message[0] = '\0';
-	if (!path) {
-		hs_set_error(err, "(null)", 1, "cannot read: no file given");
-		return NULL;
-	}
-	char *text = NULL;
-	size_t size = 0;
-	if (!read_text_file(path, &text, &size, err))
-		return NULL;
-	hs_scenario_parser p = {.y = {.path = path, .err = err}, .options = options};
-	bool ok = hs_yaml_load(&p.y, text, size, "empty file: a scenario needs description, dt, duration and objects");
+	const char *path = src->y.path;
+	hs_scenario_parser p = {.y = src->y, .options = options};
+	p.y.err = err; // the document is only read: every load builds its own scenario from it
+	p.s = calloc(1, sizeof *p.s);
+	bool ok = p.s ? read_scenario(&p, hs_yaml_root(&p.y)) : hs_set_error(err, path, 1, "out of memory");
 	if (ok) {
-		p.s = calloc(1, sizeof *p.s);
-		ok = p.s ? read_scenario(&p, hs_yaml_root(&p.y)) : hs_set_error(err, path, 1, "out of memory");
-	}
-	if (ok) {
-		p.s->source_hash = fnv1a(text, size);
+		p.s->source_hash = src->hash;
 		p.s->overridden = options && (options->dt > 0.0 || options->noise || options->model_count > 0 ||
 		                              options->throw_error);
 	}
 	free(p.sorted);
-	hs_yaml_free(&p.y);
-	free(text);
 	if (!ok || !start(p.s, path, err)) {
 		hs_scenario_destroy(p.s);
 		return NULL;
 	}
 	return p.s;
+}
+
+hs_scenario *hs_scenario_load_with(const char *path, const hs_scenario_options *options, hs_error *err) {
+	hs_error scratch;
+	if (!err)
+		err = &scratch;
+	err->message[0] = '\0';
+	hs_scenario_source src;
+	if (!hs_scenario_source_open(&src, path, err))
+		return NULL;
+	hs_scenario *s = hs_scenario_load_source(&src, options, err);
+	hs_scenario_source_close(&src);
+	return s;
 }
 
 void hs_scenario_destroy(hs_scenario *s) {

@@ -10,6 +10,7 @@
 #include "hs_harness.h"
 #include "noise.h"
 #include "stylus_script.h"
+#include "yaml_read.h"
 
 enum { HS_MAX_NAME = 64 }; // characters of an object name
 enum { HS_ROBUST_MAX_DTS = 16, HS_ROBUST_MAX_SEEDS = 100 };
@@ -49,6 +50,16 @@ struct hs_scenario {
 	uint64_t source_hash;     // FNV-1a of the scenario file's bytes: a state file names the file it continues
 	long fault_offset;        // numeric faults before a resume that the world's counters do not hold
 };
+
+// A scenario file read and parsed once, to be loaded many times (a campaign's trials): each load
+// builds its own scenario from the same document, as hs_scenario_load_with does from the file.
+typedef struct hs_scenario_source {
+	hs_yaml y; // the parsed document; y.path is the file's path (not owned)
+	uint64_t hash; // FNV-1a of its bytes
+} hs_scenario_source;
+bool hs_scenario_source_open(hs_scenario_source *src, const char *path, hs_error *err);
+void hs_scenario_source_close(hs_scenario_source *src);
+hs_scenario *hs_scenario_load_source(const hs_scenario_source *src, const hs_scenario_options *options, hs_error *err);
 
 // Numeric faults the world caught in this run (a resumed run counts those before the save too).
 long hs_scenario_faults(const hs_scenario *s);
