@@ -240,7 +240,7 @@ plots: all $(PLOT_GENS)
 	@for g in $(PLOT_GENS); do $$g $(BUILD)/plots || exit 1; done
 	@for s in plots/*.gp; do [ -e "$$s" ] || continue; \
 		gnuplot -e "traj='$(BUILD)/traj'; out='$(BUILD)/plots'" $$s || exit 1; done
-	@# the campaigns' plots (docs/campaigns.md): Experiment 2 (~75 s on 2 cores) and the grasp threshold
+	@# the campaigns' plots (docs/campaigns.md): Experiment 2 (~45 s on 2 cores) and the grasp threshold
 	@for c in exp2 grasp_threshold; do \
 		sh scripts/campaign.sh campaigns/$$c.yaml $(BUILD)/campaign/$$c --tool $(TOOL) > $(BUILD)/plots/campaign_$$c.txt && \
 		gnuplot -e "summary='$(BUILD)/campaign/$$c/summary.csv'; out='$(BUILD)/plots'" plots/campaign/$$c.gp || exit 1; done

@@ -105,10 +105,9 @@ static double now(void) {
 }
 
 // "done of total, trials/s, time left" on stderr, at most twice a second and at the end. The time
-// left weighs each trial by its frames plus LOAD_FRAMES (a trial loads its scenario, which costs
-// about that many frames: exp2.yaml's 12 frames/s trials, 36 frames, ran at 0.9 ms, its 120
-// frames/s ones, 360 frames, at about 3.5 ms).
-#define LOAD_FRAMES 100.0
+// left weighs each trial by its frames plus LOAD_FRAMES (a trial builds its world, which costs
+// about that many frames: campaigns/exp2.yaml's trials take 0.43 ms and 2 us a frame).
+#define LOAD_FRAMES 200.0
 
 typedef struct progress {
 	long done, total;
