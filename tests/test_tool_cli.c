@@ -169,6 +169,27 @@ static void test_out_to_device(void **state) {
 	assert_int_equal(stat("/dev/null", &st), 0);
 	assert_true(S_ISCHR(st.st_mode));
 	assert_int_equal(stat("/dev/null.tmp", &st), -1);
+	// a symbolic link is written through, not replaced (/dev/stdout is one)
+	char dir[] = "/tmp/hs_cli_link_XXXXXX";
+	assert_non_null(mkdtemp(dir));
+	char target[64], link[64];
+	snprintf(target, sizeof target, "%s/target.csv", dir);
+	snprintf(link, sizeof link, "%s/link.csv", dir);
+	FILE *f = fopen(target, "w");
+	assert_non_null(f);
+	fclose(f);
+	assert_int_equal(symlink("target.csv", link), 0);
+	const char *through[] = {"run", "scenarios/seed_scene.yaml", "--out", link, NULL};
+	r = tool(through);
+	assert_int_equal(r.status, 0);
+	done(&r);
+	assert_int_equal(lstat(link, &st), 0);
+	assert_true(S_ISLNK(st.st_mode));
+	assert_int_equal(stat(target, &st), 0);
+	assert_true(st.st_size > 1000);
+	remove(link);
+	remove(target);
+	rmdir(dir);
 }
 
 // `handspring hand`: the open hand's index tip (check point 7) at (0.18, 0.025, 0) m in the wrist
@@ -189,12 +210,63 @@ static void test_hand_points(void **state) {
 	done(&r);
 }
 
+// `handspring campaign`: --count and --header, a slice's rows are those lines of the whole run's
+// trial CSV, and each bad use exits 2 with one message.
+static void test_campaign_cli(void **state) {
+	(void)state;
+	const char *count[] = {"campaign", "tests/campaigns/tiny.yaml", "--count", NULL};
+	result r = tool(count);
+	assert_int_equal(r.status, 0);
+	assert_string_equal(r.out, "40\n");
+	done(&r);
+	char path[] = "/tmp/hs_cli_trials_XXXXXX";
+	int fd = mkstemp(path);
+	assert_true(fd >= 0);
+	close(fd);
+	const char *whole[] = {"campaign", "tests/campaigns/tiny.yaml", "--out", path, NULL};
+	result all = tool(whole);
+	assert_int_equal(all.status, 0);
+	FILE *f = fopen(path, "r");
+	assert_non_null(f);
+	free(all.out);
+	all.out = slurp(f); // the trial CSV (stdout has the table)
+	fclose(f);
+	remove(path);
+	const char *slice[] = {"campaign", "tests/campaigns/tiny.yaml", "--trials", "3:5", NULL};
+	r = tool(slice);
+	assert_int_equal(r.status, 0);
+	char *row3 = strstr(all.out, "\n3,");
+	assert_non_null(row3);
+	assert_memory_equal(r.out, row3 + 1, strlen(r.out)); // rows 3 and 4, as in the whole run
+	assert_ptr_equal(strstr(row3 + 1, "\n5,"), row3 + strlen(r.out));
+	done(&r);
+	done(&all);
+	const char *const bad[][6] = {
+	    {"campaign", "tests/campaigns/tiny.yaml", "--trials", "5:5", NULL},
+	    {"campaign", "tests/campaigns/tiny.yaml", "--trials", "0:41", NULL},
+	    {"campaign", "tests/campaigns/tiny.yaml", "--frobnicate", NULL},
+	    {"campaign", "tests/campaigns/tiny.yaml", "--count", "--header", NULL},
+	    {"campaign", NULL},
+	};
+	const char *said[] = {"'--trials' needs A:B with 0 <= A < B, got '5:5'",
+	                      "tests/campaigns/tiny.yaml: --trials reaches 41, the campaign has 40 trials",
+	                      "unknown option '--frobnicate'", "go alone", "missing the campaign FILE"};
+	for (int k = 0; k < 5; ++k) {
+		r = tool(bad[k]);
+		assert_int_equal(r.status, 2);
+		if (!strstr(r.err, said[k]))
+			fail_msg("case %d: %s", k, r.err);
+		done(&r);
+	}
+}
+
 int main(void) {
 	const struct CMUnitTest tests[] = {
 	    cmocka_unit_test(test_golden_then_check),
 	    cmocka_unit_test(test_run_filters),
 	    cmocka_unit_test(test_out_to_device),
 	    cmocka_unit_test(test_hand_points),
+	    cmocka_unit_test(test_campaign_cli),
 	};
 	return cmocka_run_group_tests(tests, NULL, NULL);
 }

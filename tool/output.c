@@ -33,7 +33,7 @@ bool output_open(output *o, const char *path) {
 		return false;
 	strcpy(o->path, path);
 	struct stat st;
-	if (stat(path, &st) == 0 && !S_ISREG(st.st_mode)) {
+	if (lstat(path, &st) == 0 && !S_ISREG(st.st_mode)) { // a symbolic link too: a rename would replace it
 		o->file = fopen(path, "w");
 		return o->file != NULL;
 	}

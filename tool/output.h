@@ -9,7 +9,8 @@
 // interrupted run never leaves a half-written golden behind. A path that exists and is not a
 // regular file (/dev/null, a pipe) is written in place: renaming over it replaced /dev/null with
 // a regular file when run as root (tests/resume_catalog.sh's --out /dev/null did, and apt then
-// failed on the machine).
+// failed on the machine). A symbolic link is written through, in place: renaming over
+// /dev/stdout (a link to /proc/self/fd/1) replaced the link itself with a regular file.
 typedef struct output {
 	char *path, *temp; // temp NULL: written in place
 	FILE *file;
