@@ -308,8 +308,11 @@ static bool check_cells(const hs_campaign *c, hs_error *err) {
 // cells = the product of the axes' lengths; trials = cells × trials per cell, both bounded.
 static bool count_trials(hs_campaign *c, const hs_yaml *y, const yaml_node_t *root) {
 	c->cells = 1;
-	for (int a = 0; a < c->axis_count; ++a)
-		c->cells *= c->axes[a].count; // at most 64^8 < 2^63
+	for (int a = 0; a < c->axis_count; ++a) { // checked before each product: a long may be 32 bits
+		if (c->cells > HS_CAMPAIGN_MAX_TRIALS / c->axes[a].count)
+			return hs_yaml_fail(y, root, "the axes make more than %ld cells", HS_CAMPAIGN_MAX_TRIALS);
+		c->cells *= c->axes[a].count;
+	}
 	if (c->cells > HS_CAMPAIGN_MAX_TRIALS / c->per_cell)
 		return hs_yaml_fail(y, root, "%ld cells x %ld trials is more than %ld trials", c->cells, c->per_cell,
 		                    HS_CAMPAIGN_MAX_TRIALS);
