@@ -451,8 +451,8 @@ static double first_meeting(const hs_world *world, const hs_spring_system *sys, 
 
 // Objects i and j answered at the fraction tau of the frame (tau < 0: where the frame leaves
 // them): both put back to where they met, the impulse, the separation, then for each the rest of
-// the frame from there on a new path (on the spring: the rest is lost). False when they were a
-// resting pair still within the touch gap: nothing to answer.
+// the frame from there on a new path (on the spring, or a push: the rest is lost). False when
+// they were a resting pair still within the touch gap: nothing to answer.
 static bool answer(hs_world *world, hs_spring_system *sys, int i, int j, double tau, bool resting) {
 	hs_body *a = &world->bodies[i], *b = &world->bodies[j];
 	const hs_spring_geom *ga = &sys->geom[i], *gb = &sys->geom[j];
@@ -478,13 +478,16 @@ static bool answer(hs_world *world, hs_spring_system *sys, int i, int j, double 
 	bool push = resting || -hs_dot(hs_sub(b->vel, a->vel), n) <= HS_REST_BOUNCE_SPEED;
 	hs_spring_pair_impulse(world, sys, i, j, n, push ? 0.0 : hs_spring_pair_restitution(world, sys, i, j), push);
 	separate(world, sys, i, j, n, depth, push);
-	if (tau > 0.0 && tau < 1.0) { // the rest of the frame, from where they met
+	// the rest of the frame, from where they met; a push (no bounce) stops there: moved on by the
+	// frame start's load, an object that met a second support fell on into it and was separated
+	// off the first by mm, so a pile never settled at 12-30 frames/s (it has no energy to add)
+	if (tau > 0.0 && tau < 1.0) {
 		int ends[2] = {i, j};
 		for (int q = 0; q < 2; ++q) { // their paths start again here
 			sys->path_pos[ends[q]] = world->bodies[ends[q]].pos;
 			sys->path_vel[ends[q]] = world->bodies[ends[q]].vel;
 			sys->path_t0[ends[q]] = tau;
-			if (ends[q] != sys->attached)
+			if (ends[q] != sys->attached && !push)
 				hs_spring_advance(world, sys, ends[q], (1.0 - tau) * world->def.dt);
 		}
 	}
