@@ -317,33 +317,38 @@ static void test_closed_box_energy(void **state) {
 	hs_world_destroy(s.world);
 }
 
-// 27 balls dropped into a 40 cm walled box at the paper's 12 and 17 frames/s, seeded jitter: a
-// separation used to throw a ball wedged in a corner 0.3 m across the box in one frame (its one
-// free direction ran almost across the contact normal), and a row of balls along a wall, more
-// than fit, was parted along the row pair by pair and back until two balls lay centre on centre
-// (overlap 0.1 m, 5 of 13 seeds). Now none lies more than 60 % of a diameter inside another
-// (0.048 m measured). Not yet asserted: at these rates some balls of the pile still jitter at
-// 0.1-0.3 m/s after 6 s and a jam may keep up to 4.6 cm of overlap (issue 11, open).
+// 27 balls of 5 cm dropped from a jittered 3 × 3 × 3 lattice with random velocities (seeded) into
+// a 40 cm walled box at `hz` frames/s.
+static scene dense_drop(double hz, unsigned long seed) {
+	scene s = make_scene(hz, 0.2, 0.5);
+	gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
+	gsl_rng_set(rng, seed);
+	for (int k = 0; k < 27; ++k) {
+		hs_object_def od = hs_default_object_def();
+		od.shape = s.sphere;
+		od.position = hs_v3(-0.12 + 0.12 * (k % 3) + 0.02 * (gsl_rng_uniform(rng) - 0.5),
+		                    -0.12 + 0.12 * (k / 3 % 3) + 0.02 * (gsl_rng_uniform(rng) - 0.5), 0.3 + 0.15 * (k / 9));
+		od.velocity = hs_v3(0.5 * (gsl_rng_uniform(rng) - 0.5), 0.5 * (gsl_rng_uniform(rng) - 0.5), 0.0);
+		hs_status st;
+		hs_world_add_object(s.world, &od, &st);
+		assert_int_equal(st, HS_OK);
+	}
+	gsl_rng_free(rng);
+	return s;
+}
+
+// The dense drop at the paper's 12 and 17 frames/s: a separation used to throw a ball wedged in a
+// corner 0.3 m across the box in one frame (its one free direction ran almost across the contact
+// normal), and a row of balls along a wall, more than fit, was parted along the row pair by pair
+// and back until two balls lay centre on centre (overlap 0.1 m, 5 of 13 seeds). Now none lies
+// more than 60 % of a diameter inside another (0.047 m measured).
 static void test_dense_drop_keeps_balls_apart(void **state) {
 	(void)state;
 	const double hz[2] = {12.0, 17.0};
 	double worst = 0.0;
 	for (int r = 0; r < 2; ++r)
 		for (unsigned long seed = 1; seed <= 8; ++seed) {
-			scene s = make_scene(hz[r], 0.2, 0.5);
-			gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
-			gsl_rng_set(rng, seed);
-			for (int k = 0; k < 27; ++k) {
-				hs_object_def od = hs_default_object_def();
-				od.shape = s.sphere;
-				od.position = hs_v3(-0.12 + 0.12 * (k % 3) + 0.02 * (gsl_rng_uniform(rng) - 0.5),
-				                    -0.12 + 0.12 * (k / 3 % 3) + 0.02 * (gsl_rng_uniform(rng) - 0.5), 0.3 + 0.15 * (k / 9));
-				od.velocity = hs_v3(0.5 * (gsl_rng_uniform(rng) - 0.5), 0.5 * (gsl_rng_uniform(rng) - 0.5), 0.0);
-				hs_status st;
-				hs_world_add_object(s.world, &od, &st);
-				assert_int_equal(st, HS_OK);
-			}
-			gsl_rng_free(rng);
+			scene s = dense_drop(hz[r], seed);
 			for (long f = 0; f < (long)(4.0 * hz[r]); ++f) {
 				hs_world_step(s.world);
 				for (int i = 0; i < 27; ++i) {
@@ -358,6 +363,43 @@ static void test_dense_drop_keeps_balls_apart(void **state) {
 	assert_true(worst < 0.06);
 }
 
+// The dense drop comes to rest: over the last second of 10 s no ball moves 1 µm in a frame nor
+// keeps 1 mm/s. It did not at these rates (seeds 1-8: 4 of 8 at 12 frames/s, 2 at 17, 6 at 30;
+// balls jittering 1-2 cm a frame): a ball that met a second support mid-frame fell on into it and
+// was separated off the first by mm, so next frame it fell again. Still open: at 12 frames/s 3 of
+// 8 seeds (1.5 cm a frame), at 17 one (2.3 mm); the settled piles still drift by up to 1e-7 m.
+static void test_dense_drop_comes_to_rest(void **state) {
+	(void)state;
+	const double hz[3] = {12.0, 17.0, 30.0};
+	const int need[3] = {5, 7, 8}; // of 8 seeds
+	for (int r = 0; r < 3; ++r) {
+		int settled = 0;
+		double worst_v = 0.0, worst_step = 0.0;
+		for (unsigned long seed = 1; seed <= 8; ++seed) {
+			scene s = dense_drop(hz[r], seed);
+			long frames = (long)(10.0 * hz[r]);
+			double v = 0.0, step = 0.0;
+			for (long f = 0; f < frames; ++f) {
+				hs_vec3 before[27];
+				for (int i = 0; i < 27; ++i)
+					before[i] = s.world->bodies[i].pos;
+				hs_world_step(s.world);
+				for (int i = 0; f >= frames - (long)hz[r] && i < 27; ++i) {
+					v = fmax(v, hs_length(s.world->bodies[i].vel));
+					step = fmax(step, hs_length(hs_sub(s.world->bodies[i].pos, before[i])));
+				}
+			}
+			settled += step < 1e-6 && v < 1e-3;
+			worst_v = fmax(worst_v, v);
+			worst_step = fmax(worst_step, step);
+			hs_world_destroy(s.world);
+		}
+		print_message("dense drop at %.0f/s: %d of 8 seeds at rest in the last second (worst: %.3g m/s, %.3g m a frame)\n",
+		              hz[r], settled, worst_v, worst_step);
+		assert_true(settled >= need[r]);
+	}
+}
+
 int main(void) {
 	const struct CMUnitTest tests[] = {
 	    cmocka_unit_test(test_ball_on_ball),
@@ -369,6 +411,7 @@ int main(void) {
 	    cmocka_unit_test(test_restitution_per_pair),
 	    cmocka_unit_test(test_closed_box_energy),
 	    cmocka_unit_test(test_dense_drop_keeps_balls_apart),
+	    cmocka_unit_test(test_dense_drop_comes_to_rest),
 	};
 	return cmocka_run_group_tests(tests, NULL, NULL);
 }
