@@ -214,8 +214,8 @@ static hs_vec3 free_part(const hs_world *world, const hs_spring_system *sys, int
 // ±n it is free to move along (free_part), mass-weighted (inverse-mass shares when both are
 // free); velocities untouched, so momentum stays exact. A separation that lifts the pair costs
 // potential energy: it is paid from the pair's kinetic energy (both velocities scaled down, to
-// zero when it does not suffice). A resting pair's separation by at most HS_DRIFT (the drift of a
-// contact at rest) goes only as far as that pays; an impact's, or a deeper one, goes all the way
+// zero when it does not suffice). A resting pair's separation by at most HS_REST_DRIFT (the drift
+// of a contact at rest) goes only as far as that pays; an impact's, or a deeper one, goes all the way
 // (objects do not pass through each other), and test_spring_rest's seeded closed box measures
 // that energy still never rises (issue 11).
 // The way off the walls both objects of a pair touch and that n runs along (half a unit per
@@ -232,7 +232,6 @@ static hs_vec3 off_shared_walls(const hs_world *world, const hs_spring_system *s
 	return off;
 }
 
-#define HS_DRIFT 1e-4 // m
 #define HS_SEPARATE_REACH 2.0 // depths: the farthest a separation moves one object
 
 static hs_vec3 within_reach(hs_vec3 d, double reach) {
@@ -280,7 +279,7 @@ static void separate(hs_world *world, const hs_spring_system *sys, int i, int j,
 	double lift = -a->mass * hs_dot(g, da) - b->mass * hs_dot(g, db); // J of potential energy
 	if (lift > 0.0) {
 		double kinetic = 0.5 * a->mass * hs_length_sq(a->vel) + 0.5 * b->mass * hs_length_sq(b->vel);
-		double share = kinetic >= lift || !resting || depth > HS_DRIFT ? 1.0 : kinetic / lift;
+		double share = kinetic >= lift || !resting || depth > HS_REST_DRIFT ? 1.0 : kinetic / lift;
 		double keep = kinetic > lift ? sqrt(1.0 - lift / kinetic) : 0.0;
 		a->vel = hs_scale(a->vel, keep);
 		b->vel = hs_scale(b->vel, keep);

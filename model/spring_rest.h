@@ -16,6 +16,11 @@ void hs_spring_rest(hs_world *world, hs_spring_system *sys);
 // (§5.1) an object pressed by the spring against another chatters at 0.5 to 20 mm/s.
 #define HS_REST_BOUNCE_SPEED 0.05
 
+// m: the drift of a contact at rest. A resting pair's separation by at most this goes only as far
+// as the pair's kinetic energy pays (spring_collide.c); an object that deep in another at rest
+// is held there all the same (it would step and fall back into the same place every frame).
+#define HS_REST_DRIFT 1e-4
+
 // The impulse of restitution e along n (unit, from i to j) when i and j approach (true then).
 // For a resting contact (`resting`), an object lying on the floor whose static friction takes the
 // impulse within the frame (μ m g dt) does not move: the other stops against it.
