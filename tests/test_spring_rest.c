@@ -365,7 +365,7 @@ static void test_dense_drop_keeps_balls_apart(void **state) {
 
 // The dense drop comes to rest: over the last second of 10 s no ball moves 1 µm in a frame nor
 // keeps 1 mm/s, and in most seeds every ball keeps its bits. It did not at these rates (seeds
-// 1-8 at rest: 4 at 12 frames/s, 2 at 17, 6 at 30; none to the bit; balls jittering 1-2 cm a
+// 1-8 at rest: 4 at 12 frames/s, 1 at 17, 5 at 30; none to the bit; balls jittering 1-2 cm a
 // frame): a ball that met a second support mid-frame fell on into it and was separated off the
 // first by mm, so next frame it fell again; and a ball lying 1 µm-0.1 mm in another was never
 // held (the separation of such a drift is paid from kinetic energy: it stayed), so it stepped and
