@@ -61,64 +61,72 @@ static bool read_number_axis(const hs_yaml *y, const yaml_node_t *key, const yam
 	return true;
 }
 
-// model.KEY: words, each kept as the text "{KEY: VALUE}" padded with newlines to its line, so the
-// scenario loader's messages about it name the campaign file's line.
-static bool read_model_axis(const hs_yaml *y, const yaml_node_t *key, const yaml_node_t *list, hs_axis *a) {
-	if (strcmp(a->name, "spring") == 0 || strcmp(a->name, "input_noise") == 0)
-		return hs_yaml_fail(y, key, "'%s' cannot be an axis: sweep input noise with the 'noise' axis", a->name);
-	long n = axis_length(y, key, list);
-	if (n < 0)
+// `body` as the `line`-th line of a text (newlines before it), so the scenario loader's messages
+// about a model override name the campaign file's line; NULL when out of memory.
+static char *at_line(unsigned long line, const char *body) {
+	size_t n = strlen(body);
+	char *text = malloc(line + n);
+	if (text) {
+		memset(text, '\n', line - 1);
+		memcpy(text + line - 1, body, n + 1);
+	}
+	return text;
+}
+
+static bool swept_noise(const hs_yaml *y, const yaml_node_t *key, const char *name) {
+	if (strcmp(name, "spring") != 0 && strcmp(name, "input_noise") != 0)
 		return false;
+	return !hs_yaml_fail(y, key, "'%s' cannot be swept: sweep input noise with the 'noise' axis", name);
+}
+
+// model.KEY: words, each kept as the override "{KEY: VALUE}" at its line.
+static bool read_model_axis(const hs_yaml *y, const yaml_node_t *key, const yaml_node_t *list, hs_axis *a) {
+	long n = swept_noise(y, key, a->name) ? -1 : axis_length(y, key, list);
 	for (long i = 0; i < n; ++i) {
 		const yaml_node_t *item = hs_yaml_item(y, list, i);
 		const char *v = hs_yaml_scalar(item);
 		if (!v || !plain_word(v))
 			return hs_yaml_fail(y, item, "a model value must be a number or a word of at most %d characters, got %s",
 			                    HS_CAMPAIGN_MAX_WORD - 1, hs_yaml_got(item).text);
-		unsigned long line = hs_yaml_line(item);
-		size_t size = line + strlen(a->name) + strlen(v) + 8;
-		if (!(a->model[i] = malloc(size)))
+		char body[2 * HS_CAMPAIGN_MAX_WORD + 8];
+		snprintf(body, sizeof body, "{%s: %s}", a->name, v);
+		if (!(a->model[i] = at_line(hs_yaml_line(item), body)))
 			return hs_yaml_fail(y, item, "out of memory");
-		memset(a->model[i], '\n', line - 1);
-		snprintf(a->model[i] + line - 1, size - (line - 1), "{%s: %s}", a->name, v);
 		snprintf(a->text[i], sizeof a->text[i], "%s", v);
 		a->count = (int)i + 1; // what destroy frees
 	}
-	return true;
+	return n > 0;
 }
 
-// One value of the `model` axis: a mapping of options (and its `name` for the column), as the
-// text "{KEY: VALUE, ...}" at the mapping's line.
+// One value of the `model` axis: a mapping of up to HS_CAMPAIGN_MAX_OPTIONS options and its
+// `name` (the column), kept as the override "{KEY: VALUE, ...}" at the mapping's line.
 static bool read_model_set(const hs_yaml *y, const yaml_node_t *map, hs_axis *a, int i) {
-	if (map->type != YAML_MAPPING_NODE || map->data.mapping.pairs.top == map->data.mapping.pairs.start)
-		return hs_yaml_fail(y, map, "a 'model' axis value must be a mapping of model options, got %s", hs_yaml_got(map).text);
-	unsigned long line = hs_yaml_line(map);
-	size_t size = line + 16, used = line;
-	for (yaml_node_pair_t *q = map->data.mapping.pairs.start; q < map->data.mapping.pairs.top; ++q)
-		size += 2 * HS_CAMPAIGN_MAX_WORD + 4;
-	if (!(a->model[i] = malloc(size)))
-		return hs_yaml_fail(y, map, "out of memory");
-	a->count = i + 1; // what destroy frees
-	memset(a->model[i], '\n', line - 1);
-	used = line - 1 + (size_t)snprintf(a->model[i] + line - 1, size - (line - 1), "{");
-	for (yaml_node_pair_t *q = map->data.mapping.pairs.start; q < map->data.mapping.pairs.top; ++q) {
+	yaml_node_pair_t *first = map->type == YAML_MAPPING_NODE ? map->data.mapping.pairs.start : NULL;
+	long pairs = first ? map->data.mapping.pairs.top - first : 0;
+	if (pairs < 1 || pairs > HS_CAMPAIGN_MAX_OPTIONS + 1)
+		return hs_yaml_fail(y, map, "a 'model' axis value must be a mapping of a name and 1 to %d model options, got %s",
+		                    HS_CAMPAIGN_MAX_OPTIONS, hs_yaml_got(map).text);
+	char body[(HS_CAMPAIGN_MAX_OPTIONS + 1) * (2 * HS_CAMPAIGN_MAX_WORD + 4) + 2] = "{";
+	for (yaml_node_pair_t *q = first; q < first + pairs; ++q) {
 		const yaml_node_t *key = yaml_document_get_node((yaml_document_t *)&y->doc, q->key);
 		const yaml_node_t *value = yaml_document_get_node((yaml_document_t *)&y->doc, q->value);
 		const char *k = hs_yaml_scalar(key), *v = hs_yaml_scalar(value);
 		if (!k || !plain_word(k) || !v || !plain_word(v))
 			return hs_yaml_fail(y, value, "a model option and its value must be words of at most %d characters, got %s",
 			                    HS_CAMPAIGN_MAX_WORD - 1, hs_yaml_got(value).text);
-		if (strcmp(k, "name") == 0) {
+		if (strcmp(k, "name") == 0)
 			snprintf(a->text[i], sizeof a->text[i], "%s", v);
-			continue;
-		}
-		if (strcmp(k, "spring") == 0 || strcmp(k, "input_noise") == 0)
-			return hs_yaml_fail(y, key, "'%s' cannot be swept: sweep input noise with the 'noise' axis", k);
-		used += (size_t)snprintf(a->model[i] + used, size - used, "%s%s: %s", used > line ? ", " : "", k, v);
+		else if (swept_noise(y, key, k))
+			return false;
+		else
+			snprintf(body + strlen(body), sizeof body - strlen(body), "%s%s: %s", body[1] ? ", " : "", k, v);
 	}
-	snprintf(a->model[i] + used, size - used, "}");
+	strcat(body, "}");
 	if (!a->text[i][0])
 		return hs_yaml_fail(y, map, "a 'model' axis value needs a 'name' for its column");
+	if (!(a->model[i] = at_line(hs_yaml_line(map), body)))
+		return hs_yaml_fail(y, map, "out of memory");
+	a->count = i + 1; // what destroy frees
 	return true;
 }
 

@@ -8,6 +8,7 @@
 #include "hs_harness.h"
 
 enum { HS_CAMPAIGN_MAX_AXES = 8, HS_CAMPAIGN_MAX_VALUES = 64, HS_CAMPAIGN_MAX_WORD = 48 };
+enum { HS_CAMPAIGN_MAX_OPTIONS = 16 }; // model options in one value of the `model` axis
 #define HS_CAMPAIGN_MAX_TRIALS 100000000L
 #define HS_CAMPAIGN_TRUNCATE 4.0 // a thrower's draws are normal, cut at this many SD
 
