@@ -58,6 +58,7 @@ void hs_awake_compact(hs_world *world) {
 	for (int k = 0; k < world->awake_count; ++k) {
 		int i = world->awake[k];
 		const hs_body *b = &world->bodies[i];
+		hs_digest_stale(world, i); // the step changes no other object (skip_work changes no result)
 		if (b->asleep && !b->held && !b->carried)
 			world->awake_flag[i] = 0;
 		else
@@ -78,4 +79,5 @@ void hs_broadphase_reset(hs_world *world) {
 			world->awake[world->awake_count++] = i;
 	}
 	world->grid_dirty = true; // filed again at the next step
+	hs_digest_all_stale(world);
 }

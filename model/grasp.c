@@ -132,8 +132,10 @@ static int set_aside_released(hs_world *world, int i, int first, int n) {
 	uint32_t r = (uint32_t)body->released_by;
 	const hs_hand *hand = &world->hands[r - 1];
 	double spread = whole_hand_opening(hand);
-	if (spread > body->grip_spread)
+	if (spread > body->grip_spread) { // the object may sleep meanwhile: its hash digest is stale
 		body->grip_spread = spread;
+		hs_digest_stale(world, i);
+	}
 	hs_contact *cs = &world->contacts[first];
 	int kept = 0;
 	bool other_finger = false;
@@ -148,6 +150,7 @@ static int set_aside_released(hs_world *world, int i, int first, int n) {
 		return n; // the object falls clear of a finger it rested on: still that hand's release
 	if (kept == n || closes) { // the rule lapses
 		body->released_by = 0;
+		hs_digest_stale(world, i);
 		return n;
 	}
 	world->contact_count = first + kept;

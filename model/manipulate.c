@@ -350,6 +350,8 @@ void hs_manipulate(hs_world *world) {
 		hs_contact_state state = hs_grasp_detect(world, i, first, &n, &continues);
 		bool was_held = body->held != 0;
 		hs_contact_state last = (hs_contact_state)body->contact;
+		if (state != last) // changed, even if it sleeps on (an object moved is woken, hs_wake)
+			hs_digest_stale(world, i);
 		body->contact = (uint8_t)state;
 		body->held = 0;
 		if (state == HS_CONTACT_NONE) {

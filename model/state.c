@@ -4,6 +4,7 @@
 #include <limits.h>
 #include <stdarg.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "broadphase.h"
@@ -162,15 +163,82 @@ static void hand_io(hs_state_io *io, hs_hand *h) {
 	hs_state_mask(io, &h->embed_lines, HS_HAND_LINES);
 }
 
-// The whole state after the header: the single list of what a step reads from the last one.
+#define HS_HASH_LANES {HS_HASH_SEED, ~HS_HASH_SEED, HS_HASH_SEED >> 1, 1}
+
+// Object i's digest: its index and its walk, hashed alone. Objects enter the world's hash as the
+// sum of their digests, so an object that did not change costs nothing to hash again (its digest
+// is kept), and the sum still changes with any single field of any object (each digest is a
+// bijection of each field, the sum of each digest) and with their order (the index).
+static uint64_t body_digest(const hs_world *w, int i) {
+	hs_state_io io = {.mode = HS_STATE_HASH, .lane = HS_HASH_LANES};
+	uint64_t index = (uint64_t)i;
+	hs_state_u64(&io, &index);
+	body_io(&io, w, &w->bodies[i]); // HASH mode only reads the fields
+	return hs_state_hash_of(&io);
+}
+
+#if defined(HS_HASH_SELFCHECK)
+// Sanitizer builds: every hash checks the kept digests against a walk over every object, so a
+// change the stale list missed fails the first test that hashes after it.
+static void check_digests(const hs_world *w) {
+	uint64_t sum = 0;
+	for (int i = 0; i < w->object_count; ++i) {
+		uint64_t d = body_digest(w, i);
+		if (d != w->digest[i]) {
+			fprintf(stderr, "handspring: object %d changed at frame %ld but was not marked stale\n", i, w->frame);
+			abort();
+		}
+		sum += d;
+	}
+	if (sum != w->digest_sum) {
+		fprintf(stderr, "handspring: digest sum wrong at frame %ld\n", w->frame);
+		abort();
+	}
+}
+#endif
+
+// The sum of every object's digest, after digesting again those that may have changed. The
+// digests are a cache of the hash (not state): refreshing them changes no result.
+static uint64_t objects_digest(hs_world *w) {
+	if (w->all_stale) {
+		w->digest_sum = 0;
+		for (int i = 0; i < w->object_count; ++i) {
+			w->digest[i] = body_digest(w, i);
+			w->digest_sum += w->digest[i];
+		}
+		memset(w->stale_flag, 0, (size_t)w->object_count);
+		w->stale_count = 0;
+		w->all_stale = false;
+	}
+	for (int k = 0; k < w->stale_count; ++k) {
+		int i = w->stale[k];
+		uint64_t d = body_digest(w, i);
+		w->digest_sum += d - w->digest[i]; // unsigned: wraps, as the sum does
+		w->digest[i] = d;
+		w->stale_flag[i] = 0;
+	}
+	w->stale_count = 0;
+#if defined(HS_HASH_SELFCHECK)
+	check_digests(w);
+#endif
+	return w->digest_sum;
+}
+
+// The whole state after the header: the single list of what a step reads from the last one. The
+// hash takes the objects as the sum of their digests (above); the other modes walk them in order.
 static void world_io(hs_state_io *io, hs_world *w) {
 	io->objects = w->object_count;
 	hs_state_long_range(io, &w->frame, 0, LONG_MAX);
 	hs_state_long_range(io, &w->counters.numeric_faults, 0, LONG_MAX);
 	hs_state_long_range(io, &w->first_fault_frame, -1, LONG_MAX);
 	hs_state_int_range(io, &w->first_fault_object, -1, w->object_count - 1);
-	for (int i = 0; i < w->object_count; ++i)
-		body_io(io, w, &w->bodies[i]);
+	if (io->mode == HS_STATE_HASH) {
+		uint64_t objects = objects_digest(w);
+		hs_state_u64(io, &objects);
+	} else {
+		for (int i = 0; i < w->object_count; ++i)
+			body_io(io, w, &w->bodies[i]);
+	}
 	for (int h = 0; h < w->hand_count; ++h)
 		hand_io(io, &w->hands[h]);
 	if (w->spring)
@@ -201,9 +269,9 @@ hs_status hs_world_save_state(const hs_world *world, void *buffer, size_t size) 
 }
 
 uint64_t hs_world_hash(const hs_world *world) {
-	hs_state_io io = {.mode = HS_STATE_HASH, .lane = {HS_HASH_SEED, ~HS_HASH_SEED, HS_HASH_SEED >> 1, 1}};
+	hs_state_io io = {.mode = HS_STATE_HASH, .lane = HS_HASH_LANES};
 	if (world)
-		world_io(&io, (hs_world *)world); // HASH mode only reads the fields
+		world_io(&io, (hs_world *)world); // HASH mode reads the state and refreshes the digest cache
 	return hs_state_hash_of(&io);
 }
 

@@ -103,8 +103,13 @@ hs_world *hs_world_create(const hs_world_def *def, hs_status *status) {
 	world->near = calloc(objects, sizeof *world->near);
 	world->awake = calloc(objects, sizeof *world->awake);
 	world->awake_flag = calloc(objects, sizeof *world->awake_flag);
+	world->digest = calloc(objects, sizeof *world->digest);
+	world->stale = calloc(objects, sizeof *world->stale);
+	world->stale_flag = calloc(objects, sizeof *world->stale_flag);
+	world->all_stale = true;
 	if (!world->shapes || !world->face_edges || !world->bodies || !world->queue || !world->hands || !world->contacts || !grid ||
-	    !world->candidates || !world->near || !world->awake || !world->awake_flag) {
+	    !world->candidates || !world->near || !world->awake || !world->awake_flag || !world->digest || !world->stale ||
+	    !world->stale_flag) {
 		hs_world_destroy(world);
 		set_status(status, HS_ERR_NO_MEMORY);
 		return NULL;
@@ -141,6 +146,9 @@ void hs_world_destroy(hs_world *world) {
 	free(world->near);
 	free(world->awake);
 	free(world->awake_flag);
+	free(world->digest);
+	free(world->stale);
+	free(world->stale_flag);
 	free(world->scratch_world);
 	free(world->scratch_points);
 	free(world->scratch_hull);
@@ -294,6 +302,7 @@ hs_object_id hs_world_add_object(hs_world *world, const hs_object_def *def, hs_s
 	set_status(status, HS_OK);
 	int index = world->object_count++;
 	hs_wake(world, index); // new objects look at the world once
+	hs_digest_stale(world, index);
 	world->grid_dirty = true;
 	return hs_object_handle(world, index);
 }
@@ -371,6 +380,7 @@ hs_status hs_world_step(hs_world *world) {
 	if (world->spring) { // the workbench model replaces the 1999 motion in its worlds
 		long faults = world->counters.numeric_faults;
 		hs_spring_step(world);
+		hs_digest_all_stale(world); // the spring model keeps no awake list: every object is hashed again
 		if (world->counters.numeric_faults > faults && world->first_fault_frame < 0)
 			world->first_fault_frame = world->frame; // counted without an object: still the first
 		world->frame++;

@@ -67,12 +67,33 @@ struct hs_world {
 	int awake_count;
 	int *awake;
 	uint8_t *awake_flag;
+	// CACHE: the state hash's object digests (state.c), so that a hash costs in the objects that
+	// changed, not in all of them: digest[i] is object i's walk hashed alone, digest_sum their sum.
+	// stale lists the objects that may have changed since they were digested (each step's awake
+	// list, new objects); all_stale says any of them may have (a load, the spring model's calls).
+	uint64_t *digest;
+	uint64_t digest_sum;
+	int *stale;
+	uint8_t *stale_flag;
+	int stale_count;
+	bool all_stale;
 	char state_error[160]; // why the last hs_world_load_state refused ("" when it did not)
 };
 
 // Every live handle has this generation: objects, shapes and hands are never removed, so no slot
 // is reused yet. A handle whose generation differs is refused, so a removal can bump it later.
 #define HS_GENERATION 1
+
+// Object i may have changed: its digest is computed again at the next hash (state.c).
+static inline void hs_digest_stale(hs_world *world, int i) {
+	if (!world->stale_flag[i]) {
+		world->stale_flag[i] = 1;
+		world->stale[world->stale_count++] = i;
+	}
+}
+
+// Any object may have changed (a load, a spring step, a test writing fields): all are digested again.
+static inline void hs_digest_all_stale(hs_world *world) { world->all_stale = true; }
 
 static inline hs_object_id hs_object_handle(const hs_world *world, int i) {
 	hs_object_id id = {0, 0, 0};

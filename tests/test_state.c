@@ -483,6 +483,13 @@ static void test_long_release_window_continues_identically(void **state) {
 	rig_fps = 60.0;
 }
 
+// The hash after fields were written by hand, not through the library's calls (which mark what
+// they change): its kept object digests are dropped first.
+static uint64_t rehash(hs_world *w) {
+	hs_digest_all_stale(w);
+	return hs_world_hash(w);
+}
+
 // Fields the old hash (poses and contact states only) missed: each changes the hash now.
 static void test_hash_sees_what_the_old_one_missed(void **state) {
 	(void)state;
@@ -492,27 +499,27 @@ static void test_hash_sees_what_the_old_one_missed(void **state) {
 	uint64_t h = hs_world_hash(w);
 	hs_body saved = w->bodies[1];
 	w->bodies[1].prev.x += 1e-9; // the velocity of a flying object
-	assert_true(hs_world_hash(w) != h);
+	assert_true(rehash(w) != h);
 	w->bodies[1] = saved;
 	w->bodies[1].spin.x = -w->bodies[1].spin.x;
-	assert_true(hs_world_hash(w) != h);
+	assert_true(rehash(w) != h);
 	w->bodies[1] = saved;
 	w->bodies[1].asleep ^= 1;
-	assert_true(hs_world_hash(w) != h);
+	assert_true(rehash(w) != h);
 	w->bodies[1] = saved;
 	w->bodies[0].grip_pos.y += 1e-12;
-	assert_true(hs_world_hash(w) != h);
+	assert_true(rehash(w) != h);
 	w->bodies[0].grip_pos.y -= 1e-12;
 	w->hands[0].sensors[3] ^= 1;
-	assert_true(hs_world_hash(w) != h);
+	assert_true(rehash(w) != h);
 	w->hands[0].sensors[3] ^= 1;
 	w->hands[0].prev_wrist_pos.z += 1e-9; // where the previous check points were placed from
-	assert_true(hs_world_hash(w) != h);
+	assert_true(rehash(w) != h);
 	w->hands[0].prev_wrist_pos.z -= 1e-9;
 	w->hands[0].prev_sensors[7] ^= 1;
-	assert_true(hs_world_hash(w) != h);
+	assert_true(rehash(w) != h);
 	w->hands[0].prev_sensors[7] ^= 1;
-	assert_true(hs_world_hash(w) == h);
+	assert_true(rehash(w) == h);
 	hs_world_destroy(w);
 }
 
