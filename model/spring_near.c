@@ -10,6 +10,9 @@
 // (the lists are in index order, as the grid's answers). A list that would not fit, an object gone
 // too far, or a query box beyond its skin falls back to the grid.
 #include <string.h>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 #include "hgrid.h"
 #include "spring_near.h"
@@ -101,6 +104,36 @@ static bool build_lists(const hs_world *world, hs_spring_system *sys) {
 	return true;
 }
 
+// The objects of list[0 .. n) whose bounding boxes meet [lo, hi], in list order, into sys->near.
+static int filter_list(hs_spring_system *sys, const int *list, int n, hs_vec3 lo, hs_vec3 hi) {
+	int count = 0;
+	const hs_vec3 *blo = sys->box_lo, *bhi = sys->box_hi;
+#if defined(__SSE2__)
+	// Without branches, two axes a compare (the same <= as below, false for NaN alike): in a pile
+	// whether a neighbour's box meets is a coin toss, and the short-circuit test mispredicted about
+	// 36 times an object a frame at 1000 objects.
+	const __m128d hxy = _mm_loadu_pd(&hi.x), lxy = _mm_loadu_pd(&lo.x);
+	const __m128d lz = _mm_set1_pd(lo.z), hz = _mm_set1_pd(hi.z);
+	for (int k = 0; k < n; ++k) {
+		int r = list[k];
+		__m128d below = _mm_cmple_pd(_mm_loadu_pd(&blo[r].x), hxy); // blo.x <= hi.x, blo.y <= hi.y
+		__m128d above = _mm_cmple_pd(lxy, _mm_loadu_pd(&bhi[r].x)); // lo.x <= bhi.x, lo.y <= bhi.y
+		// (blo.z, lo.z) <= (hi.z, bhi.z)
+		__m128d z = _mm_cmple_pd(_mm_loadl_pd(lz, &blo[r].z), _mm_loadh_pd(hz, &bhi[r].z));
+		sys->near[count] = r;
+		count += _mm_movemask_pd(_mm_and_pd(_mm_and_pd(below, above), z)) == 3;
+	}
+#else
+	for (int k = 0; k < n; ++k) {
+		int r = list[k];
+		if (blo[r].x <= hi.x && lo.x <= bhi[r].x && blo[r].y <= hi.y && lo.y <= bhi[r].y && blo[r].z <= hi.z &&
+		    lo.z <= bhi[r].z)
+			sys->near[count++] = r;
+	}
+#endif
+	return count;
+}
+
 int hs_spring_near(const hs_world *world, hs_spring_system *sys, int i, double reach, const int **out) {
 	*out = sys->near;
 	if (sys->all_pairs) {
@@ -120,15 +153,7 @@ int hs_spring_near(const hs_world *world, hs_spring_system *sys, int i, double r
 		double e = sys->nb_margin + 1e-6;
 		lo = hs_sub(lo, hs_v3(e, e, e));
 		hi = hs_add(hi, hs_v3(e, e, e));
-		int count = 0;
-		const hs_vec3 *blo = sys->box_lo, *bhi = sys->box_hi;
-		for (int k = sys->nb_start[i]; k < sys->nb_start[i + 1]; ++k) {
-			int r = sys->nb[k];
-			if (blo[r].x <= hi.x && lo.x <= bhi[r].x && blo[r].y <= hi.y && lo.y <= bhi[r].y && blo[r].z <= hi.z &&
-			    lo.z <= bhi[r].z)
-				sys->near[count++] = r;
-		}
-		return count;
+		return filter_list(sys, sys->nb + sys->nb_start[i], sys->nb_start[i + 1] - sys->nb_start[i], lo, hi);
 	}
 	return hs_hgrid_query(&sys->grid, lo, hi, sys->near);
 }
