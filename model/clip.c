@@ -9,23 +9,8 @@ static inline hs_clip clip(const hs_shape *shape, const hs_part *part, hs_vec3 a
 	hs_clip c = {0.0, 1.0, -1, -1, false};
 	hs_vec3 d = hs_sub(b, a);
 	for (int f = part->first_face; f < part->first_face + part->face_count; ++f) {
-		double num = shape->faces[f].offset + grow - hs_dot(shape->faces[f].normal, a);
-		double den = hs_dot(shape->faces[f].normal, d);
-		if (den == 0.0) {
-			if (num <= 0.0)
-				return c; // parallel and outside this face's plane
-			continue;
-		}
-		double t = num / den;
-		if (den < 0.0) { // entering through this face; the first of equal faces wins
-			if (t > c.t_in) {
-				c.t_in = t;
-				c.face_in = f;
-			}
-		} else if (t < c.t_out) {
-			c.t_out = t;
-			c.face_out = f;
-		}
+		if (!hs_clip_face(&c, &shape->faces[f], f, a, d, grow))
+			return c; // parallel and outside this face's plane
 		if (!to_the_end && c.t_in > c.t_out)
 			return c; // misses
 	}

@@ -67,15 +67,29 @@ static void line_to_body(const frame *f, const hs_vec3 p[2], hs_vec3 out[2]) {
 }
 static hs_vec3 to_world(const frame *f, hs_vec3 p) { return hs_add(f->pos, hs_mat3_mul(f->rot, p)); }
 
-// Inside the part grown by `grow` (m; 0: the part itself).
-static bool inside_part(const hs_shape *shape, const hs_part *part, hs_vec3 p, double grow) {
+// Many-faced parts (HS_FACE_TREE_MIN_FACES or more) are searched through their normal-cone tree
+// (face_tree.h: the faces near the point, with the scan's answers), out of line; the others are
+// scanned inline, as they were.
+#if defined(__GNUC__)
+#define HS_NOINLINE __attribute__((noinline))
+#define HS_INLINE inline __attribute__((always_inline))
+#else
+#define HS_NOINLINE
+#define HS_INLINE inline
+#endif
+
+static const hs_face_tree *tree_of(const hs_world *world, const hs_shape *shape) {
+	return &world->face_trees[shape - world->shapes];
+}
+
+static inline bool scan_inside(const hs_shape *shape, const hs_part *part, hs_vec3 p, double grow) {
 	for (int f = part->first_face; f < part->first_face + part->face_count; ++f)
 		if (hs_dot(shape->faces[f].normal, p) >= shape->faces[f].offset + grow)
 			return false;
 	return true;
 }
 
-static int nearest_face(const hs_shape *shape, const hs_part *part, hs_vec3 p) {
+static inline int scan_nearest(const hs_shape *shape, const hs_part *part, hs_vec3 p) {
 	int best = part->first_face;
 	double best_depth = INFINITY;
 	for (int f = part->first_face; f < part->first_face + part->face_count; ++f) {
@@ -86,6 +100,54 @@ static int nearest_face(const hs_shape *shape, const hs_part *part, hs_vec3 p) {
 		}
 	}
 	return best;
+}
+
+static inline bool scan_beyond(const hs_shape *shape, const hs_part *part, const hs_vec3 q[4]) {
+	for (int f = part->first_face; f < part->first_face + part->face_count; ++f) {
+		hs_vec3 n = shape->faces[f].normal;
+		double o = shape->faces[f].offset;
+		if (hs_dot(n, q[0]) > o && hs_dot(n, q[1]) > o && hs_dot(n, q[2]) > o && hs_dot(n, q[3]) > o)
+			return true;
+	}
+	return false;
+}
+
+static HS_NOINLINE bool inside_many(const hs_world *world, const hs_shape *shape, const hs_part *part, hs_vec3 p,
+                                    double grow) {
+	const hs_face_tree *tree = tree_of(world, shape);
+	int root = hs_face_tree_root(tree, shape, part);
+	return root >= 0 ? hs_face_tree_inside(tree, root, shape, p, grow) : scan_inside(shape, part, p, grow);
+}
+
+static HS_NOINLINE int nearest_many(const hs_world *world, const hs_shape *shape, const hs_part *part, hs_vec3 p) {
+	const hs_face_tree *tree = tree_of(world, shape);
+	int root = hs_face_tree_root(tree, shape, part);
+	return root >= 0 ? hs_face_tree_nearest(tree, root, shape, part->first_face, p) : scan_nearest(shape, part, p);
+}
+
+// Inside the part grown by `grow` (m; 0: the part itself).
+static inline bool inside_part(const hs_world *world, const hs_shape *shape, const hs_part *part, hs_vec3 p, double grow) {
+	if (part->face_count >= HS_FACE_TREE_MIN_FACES)
+		return inside_many(world, shape, part, p, grow);
+	return scan_inside(shape, part, p, grow);
+}
+
+static inline int nearest_face(const hs_world *world, const hs_shape *shape, const hs_part *part, hs_vec3 p) {
+	if (part->face_count >= HS_FACE_TREE_MIN_FACES)
+		return nearest_many(world, shape, part, p);
+	return scan_nearest(shape, part, p);
+}
+
+// hs_clip_segment, through the tree for a many-faced part: the same clip whenever it hits.
+static inline hs_clip clip_part(const hs_world *world, const hs_shape *shape, const hs_part *part, hs_vec3 a, hs_vec3 b,
+                         double grow) {
+	if (part->face_count >= HS_FACE_TREE_MIN_FACES) {
+		const hs_face_tree *tree = tree_of(world, shape);
+		int root = hs_face_tree_root(tree, shape, part);
+		if (root >= 0)
+			return hs_face_tree_clip(tree, root, shape, a, b, grow);
+	}
+	return hs_clip_segment(shape, part, a, b, grow);
 }
 
 // The part's first edge (in index order) between faces f1 and f2, or -1: among f1's own edges
@@ -191,7 +253,7 @@ static bool came_onto(const hs_world *world, int object, const hs_part *part, hs
 		return false; // nothing has moved yet (an object's pose a frame ago is its initial parabola's)
 	const hs_body *body = &world->bodies[object];
 	frame last = frame_before_last_step(body);
-	return !inside_part(&world->shapes[body->shape], part, to_body(&last, prev_point), grow);
+	return !inside_part(world, &world->shapes[body->shape], part, to_body(&last, prev_point), grow);
 }
 
 static bool line_came_onto(const hs_world *world, int object, const hs_part *part, const hs_vec3 prev[2], double grow) {
@@ -199,7 +261,7 @@ static bool line_came_onto(const hs_world *world, int object, const hs_part *par
 		return false;
 	const hs_body *body = &world->bodies[object];
 	frame last = frame_before_last_step(body);
-	return !hs_clip_segment(&world->shapes[body->shape], part, to_body(&last, prev[0]), to_body(&last, prev[1]), grow).hit;
+	return !clip_part(world, &world->shapes[body->shape], part, to_body(&last, prev[0]), to_body(&last, prev[1]), grow).hit;
 }
 
 // Where check point i is at piece boundary k of its path (0: a frame ago, steps: now).
@@ -217,12 +279,12 @@ static bool path_near(const hs_hand *hand, int i, int steps, hs_vec3 c, double r
 
 // The first piece of check point i's path (relative to the object: body frame) that crosses into
 // the part; false when none does. `inside`: the point ends inside (the last piece may end there).
-static bool path_enters(const hs_shape *shape, const hs_part *part, const hs_hand *hand, int i, int steps,
+static bool path_enters(const hs_world *world, const hs_shape *shape, const hs_part *part, const hs_hand *hand, int i, int steps,
                         const frame *body, hs_vec3 a, bool inside, hs_clip *hit, hs_vec3 *from, hs_vec3 *to,
                         double *when) {
 	for (int k = 1; k <= steps; ++k) {
 		hs_vec3 b = k == steps ? to_body(body, hand->points[i]) : to_body(body, hand->path_points[k - 1][i]);
-		hs_clip c = hs_clip_segment(shape, part, a, b, 0.0);
+		hs_clip c = clip_part(world, shape, part, a, b, 0.0);
 		if (c.face_in >= 0 && c.hit && (c.t_in < c.t_out || (k == steps && inside))) {
 			*hit = c;
 			*from = a;
@@ -247,7 +309,7 @@ static void paper_point(hs_world *world, int object, int h, int i, const hs_part
 		             b, c.t_in);
 		return;
 	}
-	int face = nearest_face(shape, part, b);
+	int face = nearest_face(world, shape, part, b);
 	const hs_face *f = &shape->faces[face];
 	push_contact(world, object, h, i, false, face, body, hs_mul_add(b, f->offset - hs_dot(f->normal, b), f->normal),
 	             f->normal, b, 0.0);
@@ -274,7 +336,7 @@ static void detect_points(hs_world *world, int object, int h, const hs_part *par
 		    (!swept || moved || !path_near(hand, i, steps, center, r_sq)))
 			continue;
 		hs_vec3 b = to_body(body, hand->points[i]);
-		bool inside = inside_part(shape, part, b, grow);
+		bool inside = inside_part(world, shape, part, b, grow);
 		if (paper) {
 			if (inside)
 				paper_point(world, object, h, i, part, body, to_body(before, hand->prev_points[i]), b, grow);
@@ -283,15 +345,15 @@ static void detect_points(hs_world *world, int object, int h, const hs_part *par
 		bool touched = swept && (hand->touch_points >> i & 1u);
 		double margin = world->def.grasp_release_mm * 1e-3;
 		if (swept && (hand->embed_points >> i & 1u)) { // started inside: touches nothing until clear
-			if (inside_part(shape, part, b, 2.0 * margin))
+			if (inside_part(world, shape, part, b, 2.0 * margin))
 				world->hands[h].embed_points_next |= 1u << i;
 			continue;
 		}
-		if (!inside && touched && inside_part(shape, part, b, margin)) {
+		if (!inside && touched && inside_part(world, shape, part, b, margin)) {
 			world->hands[h].near_points |= 1u << i; // off the surface, within the margin: still touching
 			if (moved)
 				continue;
-			const hs_face *f = &shape->faces[nearest_face(shape, part, b)];
+			const hs_face *f = &shape->faces[nearest_face(world, shape, part, b)];
 			hs_vec3 on = hs_mul_add(b, f->offset - hs_dot(f->normal, b), f->normal);
 			// on an object that moved, only beside a part of its hand that pushes it (keep_hovering)
 			push_contact(world, object, h, i, false, (int)(f - shape->faces), body, on, f->normal, on, still ? 0.0 : -1.0);
@@ -305,27 +367,27 @@ static void detect_points(hs_world *world, int object, int h, const hs_part *par
 		bool entered;
 		double when = 0.0;
 		if (grow > 0.0 || steps == 1) {
-			c = hs_clip_segment(shape, part, a, b, grow);
+			c = clip_part(world, shape, part, a, b, grow);
 			from = a;
 			to = b;
 			entered = c.face_in >= 0 && c.hit && (inside || c.t_in < c.t_out);
 			when = c.t_in;
 		} else {
-			entered = path_enters(shape, part, hand, i, steps, body, a, inside, &c, &from, &to, &when);
+			entered = path_enters(world, shape, part, hand, i, steps, body, a, inside, &c, &from, &to, &when);
 		}
 		if (entered && !touched) { // reached the surface this frame
 			push_contact(world, object, h, i, false, c.face_in, body, hs_lerp(from, to, c.t_in),
 			             shape->faces[c.face_in].normal, b, when);
-		} else if (inside && !touched && !inside_part(shape, part, a, grow)) { // from on the surface (the clip's t = 0)
-			int face = nearest_face(shape, part, a);
+		} else if (inside && !touched && !inside_part(world, shape, part, a, grow)) { // from on the surface (the clip's t = 0)
+			int face = nearest_face(world, shape, part, a);
 			push_contact(world, object, h, i, false, face, body, a, shape->faces[face].normal, b, 0.0);
 		} else if (inside && (grow > 0.0 || touched || came_onto(world, object, part, hand->prev_points[i], grow))) {
 			// sunk in (or back in, within the margin), or the object came onto it; or within the grown
 			// part (the margin counts every part)
-			int face = nearest_face(shape, part, a);
+			int face = nearest_face(world, shape, part, a);
 			const hs_face *f = &shape->faces[face];
 			hs_vec3 point = hs_mul_add(a, f->offset - hs_dot(f->normal, a), f->normal);
-			hs_vec3 start = inside_part(shape, part, a, grow) ? a : point; // back in: from the surface
+			hs_vec3 start = inside_part(world, shape, part, a, grow) ? a : point; // back in: from the surface
 			push_contact(world, object, h, i, false, face, body, point, f->normal,
 			             hs_add(point, hs_sub(b, start)), 0.0);
 		} else if (inside && swept) { // in it since before it touched anything: started inside
@@ -350,7 +412,7 @@ static void line_across(hs_world *world, int object, int h, int j, const hs_part
 		normal = edge_normal(shape, feature);
 	} else {
 		hs_vec3 mid = hs_lerp(p0, p1, 0.5 * (c.t_in + c.t_out));
-		feature = nearest_face(shape, part, mid);
+		feature = nearest_face(world, shape, part, mid);
 		const hs_face *f = &shape->faces[feature];
 		point = hs_mul_add(mid, f->offset - hs_dot(f->normal, mid), f->normal);
 		normal = f->normal;
@@ -404,14 +466,16 @@ static bool edge_through_sweep(hs_vec3 ea, hs_vec3 eb, const hs_vec3 q[2], const
 }
 
 // True when all four ends lie beyond one face plane of the part: the swept surface misses it.
-static bool sweep_beyond_a_face(const hs_shape *shape, const hs_part *part, const hs_vec3 q[2], const hs_vec3 p[2]) {
-	for (int f = part->first_face; f < part->first_face + part->face_count; ++f) {
-		hs_vec3 n = shape->faces[f].normal;
-		double o = shape->faces[f].offset;
-		if (hs_dot(n, q[0]) > o && hs_dot(n, q[1]) > o && hs_dot(n, p[0]) > o && hs_dot(n, p[1]) > o)
-			return true;
+static bool sweep_beyond_a_face(const hs_world *world, const hs_shape *shape, const hs_part *part, const hs_vec3 q[2],
+                                const hs_vec3 p[2]) {
+	const hs_vec3 ends[4] = {q[0], q[1], p[0], p[1]};
+	if (part->face_count >= HS_FACE_TREE_MIN_FACES) {
+		const hs_face_tree *tree = tree_of(world, shape);
+		int root = hs_face_tree_root(tree, shape, part);
+		if (root >= 0)
+			return hs_face_tree_beyond(tree, root, shape, ends);
 	}
-	return false;
+	return scan_beyond(shape, part, ends);
 }
 
 // The first contact of a check line that misses the part at both ends of a piece of its path but
@@ -422,14 +486,14 @@ static bool sweep_beyond_a_face(const hs_shape *shape, const hs_part *part, cons
 static bool swept_line(hs_world *world, int object, int h, int j, const hs_part *part, const frame *body,
                        const hs_vec3 q[2], const hs_vec3 n[2], const hs_vec3 p[2], double t0, double span) {
 	const hs_shape *shape = &world->shapes[world->bodies[object].shape];
-	if (sweep_beyond_a_face(shape, part, q, n))
+	if (sweep_beyond_a_face(world, shape, part, q, n))
 		return false;
 	double best = INFINITY;
 	int feature = -1;
 	bool edge = false;
 	hs_vec3 point = q[0], finger = p[0];
 	for (int k = 0; k < 2; ++k) {
-		hs_clip c = hs_clip_segment(shape, part, q[k], n[k], 0.0);
+		hs_clip c = clip_part(world, shape, part, q[k], n[k], 0.0);
 		if (c.hit && c.face_in >= 0 && c.t_in < c.t_out && c.t_in < best) {
 			best = c.t_in;
 			feature = c.face_in;
@@ -464,7 +528,7 @@ static void swept_path(hs_world *world, int object, int h, int j, const hs_part 
 	const hs_hand *hand = &world->hands[h];
 	hs_vec3 q[2] = {to_body(before, hand->prev_lines[j][0]), to_body(before, hand->prev_lines[j][1])};
 	for (int k = 1; k <= steps; ++k) {
-		if (hs_clip_segment(shape, part, q[0], q[1], 0.0).hit)
+		if (clip_part(world, shape, part, q[0], q[1], 0.0).hit)
 			return;
 		hs_vec3 n[2] = {p[0], p[1]};
 		if (k < steps) {
@@ -523,17 +587,17 @@ static bool end_touches(const hs_world *world, uint32_t touching, int point, con
                         const hs_part *part, const hs_vec3 p[2]) { // the line runs beside point and point + 1
 	double margin = world->def.grasp_release_mm * 1e-3;
 	for (int k = 0; k < 2; ++k)
-		if ((touching >> (point + k) & 1u) && inside_part(shape, part, p[k], margin))
+		if ((touching >> (point + k) & 1u) && inside_part(world, shape, part, p[k], margin))
 			return true;
 	return false;
 }
 
 // True when check point a or a + 1 touches (`touching`) and lies inside the part grown by `grow`
 // now (the check points of a segment's line ends, end_touches).
-static bool ends_deep(const hs_hand *hand, uint32_t touching, int a, const frame *body, const hs_shape *shape,
+static bool ends_deep(const hs_world *world, const hs_hand *hand, uint32_t touching, int a, const frame *body, const hs_shape *shape,
                       const hs_part *part, double grow) {
 	for (int k = 0; k < 2; ++k)
-		if ((touching >> (a + k) & 1u) && inside_part(shape, part, to_body(body, hand->points[a + k]), grow))
+		if ((touching >> (a + k) & 1u) && inside_part(world, shape, part, to_body(body, hand->points[a + k]), grow))
 			return true;
 	return false;
 }
@@ -573,7 +637,7 @@ static void detect_lines(hs_world *world, int object, int h, const hs_part *part
 				continue;
 			}
 			all_near = ri > 0.0 && d <= ri * ri;
-			if (swept && ends_deep(hand, touching, a, body, shape, part, deep)) {
+			if (swept && ends_deep(world, hand, touching, a, body, shape, part, deep)) {
 				j += 3; // every line of the segment is beside a touching point (end_touches)
 				continue;
 			}
@@ -590,11 +654,11 @@ static void detect_lines(hs_world *world, int object, int h, const hs_part *part
 		if (swept && end_touches(world, hand->touch_points, a, shape, part, q))
 			continue; // or at its start
 		if (swept && (hand->embed_lines >> j & 1u)) { // started inside: touches nothing until clear
-			if (hs_clip_segment(shape, part, p[0], p[1], 2.0 * world->def.grasp_release_mm * 1e-3).hit)
+			if (clip_part(world, shape, part, p[0], p[1], 2.0 * world->def.grasp_release_mm * 1e-3).hit)
 				world->hands[h].embed_lines_next |= (uint64_t)1 << j;
 			continue;
 		}
-		hs_clip c = hs_clip_segment(shape, part, p[0], p[1], grow);
+		hs_clip c = clip_part(world, shape, part, p[0], p[1], grow);
 		if (!c.hit) {
 			if (swept && !moved) // a held object moves with the hand: nothing passes through it unseen
 				swept_path(world, object, h, j, part, body, before, steps, p);
@@ -606,7 +670,7 @@ static void detect_lines(hs_world *world, int object, int h, const hs_part *part
 			line_across(world, object, h, j, part, body, p[0], p[1], c, NULL);
 			continue;
 		}
-		if (!hs_clip_segment(shape, part, q[0], q[1], grow).hit) { // reached it this frame
+		if (!clip_part(world, shape, part, q[0], q[1], grow).hit) { // reached it this frame
 			line_across(world, object, h, j, part, body, p[0], p[1], c, NULL);
 		} else if (grow > 0.0 || (hand->touch_lines >> j & 1u) || line_came_onto(world, object, part, m, grow)) {
 			// in it a frame ago too: sunk in (touching), or the object came onto it
@@ -628,9 +692,9 @@ hs_vec3 hs_contact_rectify(const hs_world *world, hs_vec3 p) {
 		hs_vec3 b = to_body(&f, p);
 		for (int k = 0; k < shape->part_count; ++k) {
 			const hs_part *part = &shape->parts[k];
-			if (!inside_part(shape, part, b, 0.0))
+			if (!inside_part(world, shape, part, b, 0.0))
 				continue;
-			const hs_face *face = &shape->faces[nearest_face(shape, part, b)];
+			const hs_face *face = &shape->faces[nearest_face(world, shape, part, b)];
 			return to_world(&f, hs_mul_add(b, face->offset - hs_dot(face->normal, b), face->normal));
 		}
 	}

@@ -91,6 +91,7 @@ hs_world *hs_world_create(const hs_world_def *def, hs_status *status) {
 	world->grasp_limit = hs_grasp_limit(def->grasp_threshold_deg);
 	world->shapes = calloc((size_t)def->max_shapes, sizeof *world->shapes);
 	world->face_edges = calloc((size_t)def->max_shapes, sizeof *world->face_edges);
+	world->face_trees = calloc((size_t)def->max_shapes, sizeof *world->face_trees);
 	size_t objects = def->max_objects > 0 ? (size_t)def->max_objects : 1;
 	world->bodies = calloc(objects, sizeof *world->bodies);
 	world->queue = calloc(objects, sizeof *world->queue);
@@ -107,7 +108,7 @@ hs_world *hs_world_create(const hs_world_def *def, hs_status *status) {
 	world->stale = calloc(objects, sizeof *world->stale);
 	world->stale_flag = calloc(objects, sizeof *world->stale_flag);
 	world->all_stale = true;
-	if (!world->shapes || !world->face_edges || !world->bodies || !world->queue || !world->hands || !world->contacts || !grid ||
+	if (!world->shapes || !world->face_edges || !world->face_trees || !world->bodies || !world->queue || !world->hands || !world->contacts || !grid ||
 	    !world->candidates || !world->near || !world->awake || !world->awake_flag || !world->digest || !world->stale ||
 	    !world->stale_flag) {
 		hs_world_destroy(world);
@@ -134,9 +135,11 @@ void hs_world_destroy(hs_world *world) {
 		free_shape_arrays(&world->shapes[i]);
 		free(world->face_edges[i].first);
 		free(world->face_edges[i].edges);
+		hs_face_tree_free(&world->face_trees[i]);
 	}
 	free(world->shapes);
 	free(world->face_edges);
+	free(world->face_trees);
 	free(world->bodies);
 	free(world->queue);
 	free(world->hands);
@@ -244,7 +247,11 @@ hs_shape_id hs_world_add_shape(hs_world *world, const hs_shape *shape, hs_status
 		set_status(status, HS_ERR_NO_MEMORY);
 		return none;
 	}
-	if (!index_face_edges(copy, &world->face_edges[world->shape_count])) {
+	if (!index_face_edges(copy, &world->face_edges[world->shape_count]) ||
+	    !hs_face_tree_build(&world->face_trees[world->shape_count], copy)) {
+		free(world->face_edges[world->shape_count].first);
+		free(world->face_edges[world->shape_count].edges);
+		world->face_edges[world->shape_count] = (hs_face_edges){0};
 		free_shape_arrays(copy);
 		set_status(status, HS_ERR_NO_MEMORY);
 		return none;

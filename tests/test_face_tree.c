@@ -1,0 +1,214 @@
+// test_face_tree.c — the normal-cone trees (model/face_tree.c) answer every query exactly as the
+// scan of all faces in index order does: inside, nearest face (ties to the lower index), the
+// Cyrus-Beck clip (every field when it hits) and the four-points-beyond test, on many-faced
+// balls and stretched balls, for random points near and far, points on the surface and at the
+// centre (where faces tie), and NaN.
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <setjmp.h>
+#include <cmocka.h>
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "clip.h"
+#include "face_tree.h"
+#include "test_util.h"
+
+// A UV ball of slices × stacks faces (fans at the poles, planar trapezoids between), its vertices
+// scaled by `stretch` (an affine map keeps faces planar).
+static hs_shape *uv_ball(int slices, int stacks, double r, hs_vec3 stretch) {
+	int nv = 2 + slices * (stacks - 1), nf = slices * stacks;
+	hs_vec3 *v = malloc((size_t)nv * sizeof *v);
+	int *fv = malloc((size_t)nf * 4 * sizeof *fv), *fs = malloc((size_t)nf * sizeof *fs);
+	assert_non_null(v);
+	assert_non_null(fv);
+	assert_non_null(fs);
+	int n = 0, m = 0, f = 0;
+	v[n++] = hs_v3(0.0, 0.0, r * stretch.z);
+	for (int j = 1; j < stacks; ++j)
+		for (int i = 0; i < slices; ++i) {
+			double th = HS_PI * j / stacks, ph = 2.0 * HS_PI * i / slices;
+			v[n++] = hs_v3(r * stretch.x * sin(th) * cos(ph), r * stretch.y * sin(th) * sin(ph), r * stretch.z * cos(th));
+		}
+	v[n++] = hs_v3(0.0, 0.0, -r * stretch.z);
+	for (int j = 0; j < stacks; ++j)
+		for (int i = 0; i < slices; ++i) {
+			int i1 = (i + 1) % slices, top = 1 + (j - 1) * slices, low = top + slices;
+			if (j == 0) {
+				fv[m++] = 0, fv[m++] = 1 + i, fv[m++] = 1 + i1, fs[f++] = 3;
+			} else if (j == stacks - 1) {
+				fv[m++] = n - 1, fv[m++] = top + i1, fv[m++] = top + i, fs[f++] = 3;
+			} else {
+				fv[m++] = top + i, fv[m++] = low + i, fv[m++] = low + i1, fv[m++] = top + i1, fs[f++] = 4;
+			}
+		}
+	char why[128] = "";
+	hs_status st;
+	hs_shape *s = hs_shape_polyhedron(v, n, fv, fs, f, why, sizeof why, &st);
+	if (!s)
+		fail_msg("ball of %d faces: %s", f, why);
+	free(v);
+	free(fv);
+	free(fs);
+	return s;
+}
+
+// The scans, written here as contact.c writes them (the reference).
+static bool scan_inside(const hs_shape *s, const hs_part *part, hs_vec3 p, double grow) {
+	for (int f = part->first_face; f < part->first_face + part->face_count; ++f)
+		if (hs_dot(s->faces[f].normal, p) >= s->faces[f].offset + grow)
+			return false;
+	return true;
+}
+
+static int scan_nearest(const hs_shape *s, const hs_part *part, hs_vec3 p) {
+	int best = part->first_face;
+	double best_depth = INFINITY;
+	for (int f = part->first_face; f < part->first_face + part->face_count; ++f) {
+		double depth = s->faces[f].offset - hs_dot(s->faces[f].normal, p);
+		if (depth < best_depth) {
+			best_depth = depth;
+			best = f;
+		}
+	}
+	return best;
+}
+
+static bool scan_beyond(const hs_shape *s, const hs_part *part, const hs_vec3 q[4]) {
+	for (int f = part->first_face; f < part->first_face + part->face_count; ++f) {
+		hs_vec3 n = s->faces[f].normal;
+		double o = s->faces[f].offset;
+		if (hs_dot(n, q[0]) > o && hs_dot(n, q[1]) > o && hs_dot(n, q[2]) > o && hs_dot(n, q[3]) > o)
+			return true;
+	}
+	return false;
+}
+
+static double unit(uint64_t *state) { // [-1, 1), a fixed LCG
+	*state = *state * 6364136223846793005ull + 1442695040888963407ull;
+	return (double)(*state >> 11) / (double)(1ull << 52) - 1.0;
+}
+
+// A point of one of four kinds: anywhere near the ball, just inside or outside a vertex, on a face
+// (a vertex average), or the centre.
+static hs_vec3 sample(const hs_shape *s, uint64_t *rng, double r) {
+	int kind = (int)((unit(rng) + 1.0) * 2.0);
+	int v = (int)((unit(rng) + 1.0) * 0.5 * s->vertex_count) % s->vertex_count;
+	switch (kind) {
+	case 0: {
+		double scale = (unit(rng) + 1.0) * 1.5 * r; // 0 .. 3 r
+		return hs_v3(scale * unit(rng), scale * unit(rng), scale * unit(rng));
+	}
+	case 1:
+		return hs_scale(s->vertices[v], 1.0 + 1e-6 * unit(rng));
+	case 2: {
+		const hs_face *f = &s->faces[v % s->face_count];
+		hs_vec3 c = hs_v3(0, 0, 0);
+		for (int k = 0; k < f->index_count; ++k)
+			c = hs_add(c, s->vertices[s->face_vertices[f->first_index + k]]);
+		return hs_scale(c, 1.0 / f->index_count);
+	}
+	default:
+		return hs_v3(0.0, 0.0, 0.0);
+	}
+}
+
+static void compare_on(hs_shape *s, double r, int samples) {
+	hs_face_tree tree;
+	assert_true(hs_face_tree_build(&tree, s));
+	const hs_part *part = &s->parts[0];
+	int root = hs_face_tree_root(&tree, s, part);
+	assert_true(root >= 0); // a many-faced part has its tree
+	uint64_t rng = 12345;
+	const double grows[3] = {0.0, 1e-3, 2e-3};
+	int hits = 0, inside = 0, beyond = 0;
+	for (int k = 0; k < samples; ++k) {
+		hs_vec3 a = sample(s, &rng, r), b = sample(s, &rng, r);
+		double grow = grows[k % 3];
+		bool in = scan_inside(s, part, a, grow);
+		inside += in;
+		assert_int_equal(hs_face_tree_inside(&tree, root, s, a, grow), in);
+		assert_int_equal(hs_face_tree_nearest(&tree, root, s, part->first_face, a), scan_nearest(s, part, a));
+		hs_clip want = hs_clip_segment(s, part, a, b, grow), got = hs_face_tree_clip(&tree, root, s, a, b, grow);
+		assert_int_equal(got.hit, want.hit);
+		if (want.hit) {
+			hits++;
+			assert_true(got.t_in == want.t_in && got.t_out == want.t_out);
+			assert_int_equal(got.face_in, want.face_in);
+			assert_int_equal(got.face_out, want.face_out);
+		}
+		hs_vec3 q[4] = {a, b, sample(s, &rng, r), sample(s, &rng, r)};
+		if (k % 2) // a small swept quad about a: beyond a face when a is well outside
+			for (int i = 1; i < 4; ++i)
+				q[i] = hs_add(a, hs_v3(0.1 * r * unit(&rng), 0.1 * r * unit(&rng), 0.1 * r * unit(&rng)));
+		bool far = scan_beyond(s, part, q);
+		beyond += far;
+		assert_int_equal(hs_face_tree_beyond(&tree, root, s, q), far);
+	}
+	// the samples reach every answer
+	print_message("%d samples: %d hits, %d inside, %d beyond\n", samples, hits, inside, beyond);
+	assert_true(hits > samples / 20 && hits < samples);
+	assert_true(inside > samples / 20 && inside < samples);
+	assert_true(beyond > samples / 50 && beyond < samples);
+	hs_vec3 nan = hs_v3(NAN, 0.0, 0.0);
+	assert_int_equal(hs_face_tree_inside(&tree, root, s, nan, 0.0), scan_inside(s, part, nan, 0.0));
+	assert_int_equal(hs_face_tree_nearest(&tree, root, s, part->first_face, nan), scan_nearest(s, part, nan));
+	hs_clip want = hs_clip_segment(s, part, nan, hs_v3(0, 0, 0), 0.0), got = hs_face_tree_clip(&tree, root, s, nan, hs_v3(0, 0, 0), 0.0);
+	assert_int_equal(got.hit, want.hit);
+	hs_face_tree_free(&tree);
+}
+
+static void test_ball_128(void **state) {
+	(void)state;
+	hs_shape *s = uv_ball(16, 8, 0.025, hs_v3(1, 1, 1));
+	compare_on(s, 0.025, 60000);
+	hs_shape_destroy(s);
+}
+
+static void test_ball_512(void **state) {
+	(void)state;
+	hs_shape *s = uv_ball(32, 16, 0.025, hs_v3(1, 1, 1));
+	compare_on(s, 0.025, 60000);
+	hs_shape_destroy(s);
+}
+
+// Stretched: plane offsets differ from face to face and normals crowd at the flat sides.
+static void test_stretched_ball(void **state) {
+	(void)state;
+	hs_shape *s = uv_ball(24, 12, 0.5, hs_v3(1.0, 0.3, 0.05));
+	compare_on(s, 0.5, 60000);
+	hs_shape_destroy(s);
+}
+
+// Few faces: no tree (the scan is cheaper); a shape of several parts gets a root per part.
+static void test_few_faces_are_scanned(void **state) {
+	(void)state;
+	hs_status st;
+	hs_shape *cube = hs_shape_box(hs_v3(0.05, 0.05, 0.05), &st);
+	hs_shape *ellipsoid = hs_shape_ellipsoid(hs_v3(0.05, 0.03, 0.02), &st);
+	hs_shape *l = hs_shape_l_block(hs_v3(0.1, 0.05, 0.1), 0.02, &st);
+	hs_shape *shapes[3] = {cube, ellipsoid, l};
+	assert_int_equal(hs_face_tree_root(NULL, cube, &cube->parts[0]), -1);
+	for (int k = 0; k < 3; ++k) {
+		hs_face_tree tree;
+		assert_true(hs_face_tree_build(&tree, shapes[k]));
+		assert_int_equal(tree.part_count, shapes[k]->part_count);
+		for (int p = 0; p < shapes[k]->part_count; ++p)
+			assert_int_equal(hs_face_tree_root(&tree, shapes[k], &shapes[k]->parts[p]), -1);
+		hs_face_tree_free(&tree);
+		hs_shape_destroy(shapes[k]);
+	}
+}
+
+int main(void) {
+	const struct CMUnitTest tests[] = {
+	    cmocka_unit_test(test_ball_128),
+	    cmocka_unit_test(test_ball_512),
+	    cmocka_unit_test(test_stretched_ball),
+	    cmocka_unit_test(test_few_faces_are_scanned),
+	};
+	return cmocka_run_group_tests(tests, NULL, NULL);
+}
