@@ -363,7 +363,7 @@ static void detect_points(hs_world *world, int object, int h, const hs_part *par
 			continue; // a held object moves with the hand: nothing passes through it unseen
 		hs_vec3 a = to_body(before, hand->prev_points[i]); // where it was
 		hs_clip c;
-		hs_vec3 from, to;
+		hs_vec3 from = a, to = b; // (path_enters sets them when it enters: read only then)
 		bool entered;
 		double when = 0.0;
 		if (grow > 0.0 || steps == 1) {
@@ -448,7 +448,7 @@ static bool segment_triangle(hs_vec3 a, hs_vec3 b, hs_vec3 v0, hs_vec3 v1, hs_ve
 // edge. False when none does.
 static bool edge_through_sweep(hs_vec3 ea, hs_vec3 eb, const hs_vec3 q[2], const hs_vec3 p[2], double *u, double *s,
                                double *t) {
-	double t1, b1, g1, t2, b2, g2;
+	double t1 = 0.0, b1 = 0.0, g1 = 0.0, t2 = 0.0, b2 = 0.0, g2 = 0.0; // set where read (gcc -O3 cannot see it)
 	bool first = segment_triangle(ea, eb, q[0], q[1], p[1], &t1, &b1, &g1);
 	bool second = segment_triangle(ea, eb, q[0], p[1], p[0], &t2, &b2, &g2);
 	if (first && (!second || g1 <= b2 + g2)) {
