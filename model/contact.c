@@ -12,6 +12,7 @@
 // "Swept detection, rectification and contact hysteresis"). paper_contacts keeps [H]'s letter.
 #include "clip.h"
 #include "contact.h"
+#include "hgrid.h"
 #include "push.h"
 
 #include "lanes2.h"
@@ -478,6 +479,60 @@ static bool sweep_beyond_a_face(const hs_world *world, const hs_shape *shape, co
 	return scan_beyond(shape, part, ends);
 }
 
+// The earliest feature a swept line meets so far (swept_line): its place u along the sweep, the
+// face or edge, where on the part and where on the line.
+typedef struct swept_hit {
+	double best;
+	int feature;
+	bool edge;
+	hs_vec3 point, finger;
+} swept_hit;
+
+// Edge e against the surface a line sweeps from q0-q1 to n0-n1 (ends p0-p1 now): kept when it meets
+// it earlier than the best so far (the first in the order tried on a tie).
+static inline void try_edge(const hs_shape *shape, int e, const hs_vec3 q[2], const hs_vec3 n[2], const hs_vec3 p[2],
+                            swept_hit *hit) {
+	hs_vec3 ea = shape->vertices[shape->edges[e].a], eb = shape->vertices[shape->edges[e].b];
+	double u, s, t;
+	if (edge_through_sweep(ea, eb, q, n, &u, &s, &t) && u < hit->best) {
+		hit->best = u;
+		hit->feature = e;
+		hit->edge = true;
+		hit->point = hs_lerp(ea, eb, t);
+		hit->finger = hs_lerp(p[0], p[1], s);
+	}
+}
+
+// A many-faced part's edges against the sweep: only those of the faces whose planes the sweep
+// reaches (face_tree.h), in index order; any other edge lies on faces the sweep stays inside of,
+// so it misses, and the result is the loop over every edge's. -1 (nothing tried) when the part
+// has no tree.
+static HS_NOINLINE int sweep_edges(hs_world *world, const hs_shape *shape, const hs_part *part, const hs_vec3 q[2],
+                                   const hs_vec3 n[2], const hs_vec3 p[2], swept_hit *hit) {
+	const hs_face_tree *tree = tree_of(world, shape);
+	int root = hs_face_tree_root(tree, shape, part);
+	if (root < 0)
+		return -1;
+	const hs_vec3 ends[4] = {q[0], q[1], n[0], n[1]};
+	int faces = hs_face_tree_reached(tree, root, (int)(part - shape->parts), shape, ends, world->face_pick);
+	const hs_face_edges *index = &world->face_edges[shape - world->shapes];
+	int count = 0;
+	for (int k = 0; k < faces; ++k)
+		for (int j = index->first[world->face_pick[k]]; j < index->first[world->face_pick[k] + 1]; ++j) {
+			int e = index->edges[j];
+			if (e >= part->first_edge && e < part->first_edge + part->edge_count && !world->edge_mark[e]) {
+				world->edge_mark[e] = 1;
+				world->edge_pick[count++] = e;
+			}
+		}
+	for (int k = 0; k < count; ++k)
+		world->edge_mark[world->edge_pick[k]] = 0;
+	hs_sort_indices(world->edge_pick, count);
+	for (int k = 0; k < count; ++k)
+		try_edge(shape, world->edge_pick[k], q, n, p, hit);
+	return count;
+}
+
 // The first contact of a check line that misses the part at both ends of a piece of its path but
 // swept across it (from q0-q1 to n0-n1): an end of the line passing through a face, or an edge of
 // the part through the swept surface. A convex part meets that surface in one of these two ways
@@ -488,34 +543,25 @@ static bool swept_line(hs_world *world, int object, int h, int j, const hs_part 
 	const hs_shape *shape = &world->shapes[world->bodies[object].shape];
 	if (sweep_beyond_a_face(world, shape, part, q, n))
 		return false;
-	double best = INFINITY;
-	int feature = -1;
-	bool edge = false;
-	hs_vec3 point = q[0], finger = p[0];
+	swept_hit hit = {INFINITY, -1, false, q[0], p[0]};
 	for (int k = 0; k < 2; ++k) {
 		hs_clip c = clip_part(world, shape, part, q[k], n[k], 0.0);
-		if (c.hit && c.face_in >= 0 && c.t_in < c.t_out && c.t_in < best) {
-			best = c.t_in;
-			feature = c.face_in;
-			point = hs_lerp(q[k], n[k], c.t_in);
-			finger = p[k];
+		if (c.hit && c.face_in >= 0 && c.t_in < c.t_out && c.t_in < hit.best) {
+			hit.best = c.t_in;
+			hit.feature = c.face_in;
+			hit.point = hs_lerp(q[k], n[k], c.t_in);
+			hit.finger = p[k];
 		}
 	}
-	for (int e = part->first_edge; e < part->first_edge + part->edge_count; ++e) {
-		hs_vec3 ea = shape->vertices[shape->edges[e].a], eb = shape->vertices[shape->edges[e].b];
-		double u, s, t;
-		if (edge_through_sweep(ea, eb, q, n, &u, &s, &t) && u < best) {
-			best = u;
-			feature = e;
-			edge = true;
-			point = hs_lerp(ea, eb, t);
-			finger = hs_lerp(p[0], p[1], s);
-		}
-	}
-	if (feature < 0)
+	// a many-faced part: only the edges of faces the sweep reaches; else every edge, in index order
+	if (part->face_count < HS_FACE_TREE_MIN_FACES || sweep_edges(world, shape, part, q, n, p, &hit) < 0)
+		for (int e = part->first_edge; e < part->first_edge + part->edge_count; ++e)
+			try_edge(shape, e, q, n, p, &hit);
+	if (hit.feature < 0)
 		return false;
-	push_contact(world, object, h, HS_HAND_POINTS + j, edge, feature, body, point,
-	             edge ? edge_normal(shape, feature) : shape->faces[feature].normal, finger, t0 + best * span);
+	push_contact(world, object, h, HS_HAND_POINTS + j, hit.edge, hit.feature, body, hit.point,
+	             hit.edge ? edge_normal(shape, hit.feature) : shape->faces[hit.feature].normal, hit.finger,
+	             t0 + hit.best * span);
 	return true;
 }
 

@@ -99,14 +99,29 @@ static void build_node(builder *b, int index) {
 	build_node(b, child + 1);
 }
 
+// How far a vertex of one of the part's faces lies off that face's plane, at most (the shape
+// builder accepts faces planar to 1e-9 of the part's size).
+static double plane_deviation(const hs_shape *shape, const hs_part *part) {
+	double worst = 0.0;
+	for (int f = part->first_face; f < part->first_face + part->face_count; ++f) {
+		const hs_face *face = &shape->faces[f];
+		for (int k = 0; k < face->index_count; ++k) {
+			hs_vec3 v = shape->vertices[shape->face_vertices[face->first_index + k]];
+			worst = fmax(worst, fabs(hs_dot(face->normal, v) - face->offset));
+		}
+	}
+	return worst * 2.0;
+}
+
 bool hs_face_tree_build(hs_face_tree *tree, const hs_shape *shape) {
 	*tree = (hs_face_tree){0};
 	int faces = shape->face_count > 0 ? shape->face_count : 1;
 	tree->order = malloc((size_t)faces * sizeof *tree->order);
 	tree->nodes = malloc((size_t)(2 * faces) * sizeof *tree->nodes); // a binary tree on F leaves: < 2F nodes
 	tree->root = malloc((size_t)(shape->part_count > 0 ? shape->part_count : 1) * sizeof *tree->root);
+	tree->deviation = calloc((size_t)(shape->part_count > 0 ? shape->part_count : 1), sizeof *tree->deviation);
 	builder b = {shape, tree, 0, malloc((size_t)faces * sizeof(double)), malloc((size_t)faces * sizeof(int))};
-	bool ok = tree->order && tree->nodes && tree->root && b.key && b.buffer;
+	bool ok = tree->order && tree->nodes && tree->root && tree->deviation && b.key && b.buffer;
 	if (ok) {
 		tree->part_count = shape->part_count;
 		for (int f = 0; f < shape->face_count; ++f)
@@ -116,6 +131,7 @@ bool hs_face_tree_build(hs_face_tree *tree, const hs_shape *shape) {
 			tree->root[p] = -1;
 			if (part->face_count < HS_FACE_TREE_MIN_FACES)
 				continue;
+			tree->deviation[p] = plane_deviation(shape, part);
 			tree->root[p] = b.node_count++;
 			tree->nodes[tree->root[p]] = (hs_face_node){.first = part->first_face, .count = part->face_count};
 			build_node(&b, tree->root[p]);
@@ -132,6 +148,7 @@ void hs_face_tree_free(hs_face_tree *tree) {
 	free(tree->order);
 	free(tree->nodes);
 	free(tree->root);
+	free(tree->deviation);
 	*tree = (hs_face_tree){0};
 }
 
@@ -255,4 +272,38 @@ bool hs_face_tree_beyond(const hs_face_tree *tree, int root, const hs_shape *sha
 		}
 	}
 	return false;
+}
+
+int hs_face_tree_reached(const hs_face_tree *tree, int root, int p, const hs_shape *shape, const hs_vec3 q[4],
+                         int *out) {
+	double length[4], off = -tree->deviation[p]; // a face's vertices may lie this far inside its plane
+	for (int k = 0; k < 4; ++k)
+		length[k] = hs_length(q[k]);
+	int count = 0, stack[HS_FACE_TREE_DEPTH], top = 0;
+	stack[top++] = root;
+	while (top > 0) {
+		const hs_face_node *n = &tree->nodes[stack[--top]];
+		bool skip = true;
+		for (int k = 0; k < 4 && skip; ++k) // every point inside every plane below, by the margin
+			skip = node_below(n, q[k], length[k], off);
+		if (skip)
+			continue;
+		if (n->child >= 0) {
+			stack[top++] = n->child;
+			stack[top++] = n->child + 1;
+			continue;
+		}
+		for (int k = n->first; k < n->first + n->count; ++k) {
+			int f = tree->order[k];
+			const hs_face *face = &shape->faces[f];
+			bool inside = true;
+			for (int j = 0; j < 4 && inside; ++j) {
+				double slack = 1e-9 + 1e-12 * (length[j] + fabs(face->offset) + fabs(off));
+				inside = hs_dot(face->normal, q[j]) - face->offset < off - slack;
+			}
+			if (!inside)
+				out[count++] = f;
+		}
+	}
+	return count;
 }

@@ -33,6 +33,7 @@ typedef struct hs_face_tree {
 	int *order;         // face indices, grouped by node
 	hs_face_node *nodes;
 	int *root;          // per part: its root node, -1 for a part that is scanned
+	double *deviation;  // per part: how far a vertex of one of its faces lies off that face's plane, at most
 	int part_count;
 } hs_face_tree;
 
@@ -61,5 +62,11 @@ hs_clip hs_face_tree_clip(const hs_face_tree *tree, int root, const hs_shape *sh
                           double grow);
 // True when all four points lie strictly beyond one face plane of the part.
 bool hs_face_tree_beyond(const hs_face_tree *tree, int root, const hs_shape *shape, const hs_vec3 q[4]);
+// The faces of part `p` (its index) whose planes the convex hull of the four points may reach,
+// into `out` (room for the part's faces), in no particular order; their count. A face left out
+// has every point inside its plane by more than its vertices' deviation from it and the slack,
+// so no edge of it meets the hull: an edge that does lies on two faces that are both listed.
+int hs_face_tree_reached(const hs_face_tree *tree, int root, int p, const hs_shape *shape, const hs_vec3 q[4],
+                         int *out);
 
 #endif

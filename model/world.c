@@ -155,6 +155,9 @@ void hs_world_destroy(hs_world *world) {
 	free(world->scratch_world);
 	free(world->scratch_points);
 	free(world->scratch_hull);
+	free(world->face_pick);
+	free(world->edge_pick);
+	free(world->edge_mark);
 	free(world);
 }
 
@@ -232,6 +235,30 @@ static bool reserve_scratch(hs_world *world, int vertex_count) {
 	return true;
 }
 
+// Scratch for a swept line's faces and edges (contact.c), sized for the shape with most of them.
+static bool reserve_picks(hs_world *world, const hs_shape *shape) {
+	if (shape->face_count > world->pick_faces) {
+		int *faces = realloc(world->face_pick, (size_t)shape->face_count * sizeof *faces);
+		if (!faces)
+			return false;
+		world->face_pick = faces;
+		world->pick_faces = shape->face_count;
+	}
+	if (shape->edge_count > world->pick_edges) {
+		int *edges = realloc(world->edge_pick, (size_t)shape->edge_count * sizeof *edges);
+		if (edges)
+			world->edge_pick = edges;
+		uint8_t *mark = realloc(world->edge_mark, (size_t)shape->edge_count * sizeof *mark);
+		if (mark)
+			world->edge_mark = mark;
+		if (!edges || !mark)
+			return false;
+		memset(world->edge_mark, 0, (size_t)shape->edge_count);
+		world->pick_edges = shape->edge_count;
+	}
+	return true;
+}
+
 hs_shape_id hs_world_add_shape(hs_world *world, const hs_shape *shape, hs_status *status) {
 	hs_shape_id none = {0};
 	if (!world || !shape || shape->vertex_count <= 0 || !shape->vertices || !(shape->volume > 0.0)) {
@@ -243,7 +270,7 @@ hs_shape_id hs_world_add_shape(hs_world *world, const hs_shape *shape, hs_status
 		return none;
 	}
 	hs_shape *copy = &world->shapes[world->shape_count];
-	if (!reserve_scratch(world, shape->vertex_count) || !copy_shape(copy, shape)) {
+	if (!reserve_scratch(world, shape->vertex_count) || !reserve_picks(world, shape) || !copy_shape(copy, shape)) {
 		set_status(status, HS_ERR_NO_MEMORY);
 		return none;
 	}

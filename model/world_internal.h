@@ -51,6 +51,12 @@ struct hs_world {
 	hs_vec3 *scratch_world; // posed vertices
 	hs_vec2 *scratch_points;
 	hs_vec2 *scratch_hull;
+	// SCRATCH of a swept check line against a many-faced part (contact.c, swept_line): the faces
+	// its sweep reaches, the edges of those faces (ascending) and a mark per edge, sized at
+	// hs_world_add_shape for the most faces and edges a shape has
+	int pick_faces, pick_edges;
+	int *face_pick, *edge_pick;
+	uint8_t *edge_mark;
 	// OUTPUT of the last step (hs_world_contacts), rebuilt from scratch by every step: not state
 	int contact_count, contact_capacity;
 	hs_contact *contacts; // this frame's hand contacts, grouped by object

@@ -203,12 +203,69 @@ static void test_few_faces_are_scanned(void **state) {
 	}
 }
 
+// A segment meets a triangle (loosely: barycentrics within 1e-9 of their bounds count).
+static bool segment_meets_triangle(hs_vec3 a, hs_vec3 b, hs_vec3 v0, hs_vec3 v1, hs_vec3 v2) {
+	hs_vec3 e1 = hs_sub(v1, v0), e2 = hs_sub(v2, v0), d = hs_sub(b, a), pv = hs_cross(d, e2);
+	double det = hs_dot(e1, pv);
+	if (det == 0.0)
+		return false;
+	hs_vec3 tv = hs_sub(a, v0), qv = hs_cross(tv, e1);
+	double u = hs_dot(tv, pv) / det, v = hs_dot(d, qv) / det, s = hs_dot(e2, qv) / det, e = 1e-9;
+	return u >= -e && v >= -e && u + v <= 1.0 + e && s >= -e && s <= 1.0 + e;
+}
+
+// The faces a swept quad reaches hold every edge the quad's two triangles meet (contact.c tries
+// only their edges), and leave most faces out when the quad passes close by.
+static void test_reached_faces_hold_every_edge_hit(void **state) {
+	(void)state;
+	hs_shape *s = uv_ball(32, 16, 0.025, hs_v3(1.0, 0.8, 0.6));
+	hs_face_tree tree;
+	assert_true(hs_face_tree_build(&tree, s));
+	int root = hs_face_tree_root(&tree, s, &s->parts[0]);
+	int *faces = malloc((size_t)s->face_count * sizeof *faces);
+	bool *listed = malloc((size_t)s->face_count * sizeof *listed);
+	assert_non_null(faces);
+	assert_non_null(listed);
+	uint64_t rng = 777;
+	long hits = 0, listed_total = 0;
+	const int quads = 4000;
+	for (int k = 0; k < quads; ++k) {
+		// a check line (length 2 cm) near the surface, moved by up to 2 cm
+		hs_vec3 c = sample(s, &rng, 0.025);
+		hs_vec3 dir = hs_v3(unit(&rng), unit(&rng), unit(&rng)), move = hs_v3(unit(&rng), unit(&rng), unit(&rng));
+		hs_vec3 q[4] = {hs_sub(c, hs_scale(dir, 0.01)), hs_add(c, hs_scale(dir, 0.01)), {0, 0, 0}, {0, 0, 0}};
+		q[2] = hs_add(q[0], hs_scale(move, 0.02)); // n0
+		q[3] = hs_add(q[1], hs_scale(move, 0.02)); // n1
+		int count = hs_face_tree_reached(&tree, root, 0, s, q, faces);
+		listed_total += count;
+		memset(listed, 0, (size_t)s->face_count * sizeof *listed);
+		for (int j = 0; j < count; ++j)
+			listed[faces[j]] = true;
+		for (int e = 0; e < s->edge_count; ++e) {
+			hs_vec3 ea = s->vertices[s->edges[e].a], eb = s->vertices[s->edges[e].b];
+			if (!segment_meets_triangle(ea, eb, q[0], q[1], q[3]) && !segment_meets_triangle(ea, eb, q[0], q[3], q[2]))
+				continue;
+			hits++;
+			assert_true(listed[s->edges[e].faces[0]] && listed[s->edges[e].faces[1]]);
+		}
+	}
+	print_message("%d quads: %ld edge hits, %.1f of %d faces listed a quad\n", quads, hits, (double)listed_total / quads,
+	              s->face_count);
+	assert_true(hits > quads / 4);
+	assert_true(listed_total < (long)quads * s->face_count / 2); // the tree leaves most faces out
+	free(faces);
+	free(listed);
+	hs_face_tree_free(&tree);
+	hs_shape_destroy(s);
+}
+
 int main(void) {
 	const struct CMUnitTest tests[] = {
 	    cmocka_unit_test(test_ball_128),
 	    cmocka_unit_test(test_ball_512),
 	    cmocka_unit_test(test_stretched_ball),
 	    cmocka_unit_test(test_few_faces_are_scanned),
+	    cmocka_unit_test(test_reached_faces_hold_every_edge_hit),
 	};
 	return cmocka_run_group_tests(tests, NULL, NULL);
 }
