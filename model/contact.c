@@ -104,12 +104,9 @@ static inline int scan_nearest(const hs_shape *shape, const hs_part *part, hs_ve
 }
 
 static inline bool scan_beyond(const hs_shape *shape, const hs_part *part, const hs_vec3 q[4]) {
-	for (int f = part->first_face; f < part->first_face + part->face_count; ++f) {
-		hs_vec3 n = shape->faces[f].normal;
-		double o = shape->faces[f].offset;
-		if (hs_dot(n, q[0]) > o && hs_dot(n, q[1]) > o && hs_dot(n, q[2]) > o && hs_dot(n, q[3]) > o)
+	for (int f = part->first_face; f < part->first_face + part->face_count; ++f)
+		if (hs_face_beyond(&shape->faces[f], q))
 			return true;
-	}
 	return false;
 }
 

@@ -162,9 +162,20 @@ static double node_bound(const hs_face_node *n, hs_vec3 p, double length) {
 // True when every face below the node has dot(n_f, p) - o_f < limit, whatever the rounding of
 // the scan's own sums: the slack (1 nm, and 1e-12 of the magnitudes) is some 10^4 times the
 // largest rounding error of either side. False for NaN.
+static double slack(double length, double offset, double limit) {
+	return 1e-9 + 1e-12 * (length + fabs(offset) + fabs(limit));
+}
+
 static bool node_below(const hs_face_node *n, hs_vec3 p, double length, double limit) {
-	double slack = 1e-9 + 1e-12 * (length + fabs(n->offset_min) + fabs(limit));
-	return node_bound(n, p, length) < limit - slack;
+	return node_bound(n, p, length) < limit - slack(length, n->offset_min, limit);
+}
+
+// Whether the four points lie below the node by node_below: any of them (`all` false) or all.
+static bool quad_below(const hs_face_node *n, const hs_vec3 q[4], const double length[4], double limit, bool all) {
+	for (int k = 0; k < 4; ++k)
+		if (node_below(n, q[k], length[k], limit) != all)
+			return !all;
+	return all;
 }
 
 bool hs_face_tree_inside(const hs_face_tree *tree, int root, const hs_shape *shape, hs_vec3 p, double grow) {
@@ -253,23 +264,16 @@ bool hs_face_tree_beyond(const hs_face_tree *tree, int root, const hs_shape *sha
 	stack[top++] = root;
 	while (top > 0) {
 		const hs_face_node *n = &tree->nodes[stack[--top]];
-		bool skip = false;
-		for (int k = 0; k < 4 && !skip; ++k) // a point inside every plane below: no face below has all four beyond
-			skip = node_below(n, q[k], length[k], 0.0);
-		if (skip)
-			continue;
+		if (quad_below(n, q, length, 0.0, false))
+			continue; // a point inside every plane below: no face below has all four beyond
 		if (n->child >= 0) {
 			stack[top++] = n->child;
 			stack[top++] = n->child + 1;
 			continue;
 		}
-		for (int k = n->first; k < n->first + n->count; ++k) {
-			int f = tree->order[k];
-			hs_vec3 nf = shape->faces[f].normal;
-			double o = shape->faces[f].offset;
-			if (hs_dot(nf, q[0]) > o && hs_dot(nf, q[1]) > o && hs_dot(nf, q[2]) > o && hs_dot(nf, q[3]) > o)
+		for (int k = n->first; k < n->first + n->count; ++k)
+			if (hs_face_beyond(&shape->faces[tree->order[k]], q))
 				return true;
-		}
 	}
 	return false;
 }
@@ -283,11 +287,8 @@ int hs_face_tree_reached(const hs_face_tree *tree, int root, int p, const hs_sha
 	stack[top++] = root;
 	while (top > 0) {
 		const hs_face_node *n = &tree->nodes[stack[--top]];
-		bool skip = true;
-		for (int k = 0; k < 4 && skip; ++k) // every point inside every plane below, by the margin
-			skip = node_below(n, q[k], length[k], off);
-		if (skip)
-			continue;
+		if (quad_below(n, q, length, off, true))
+			continue; // every point inside every plane below, by the margin
 		if (n->child >= 0) {
 			stack[top++] = n->child;
 			stack[top++] = n->child + 1;
@@ -298,8 +299,7 @@ int hs_face_tree_reached(const hs_face_tree *tree, int root, int p, const hs_sha
 			const hs_face *face = &shape->faces[f];
 			bool inside = true;
 			for (int j = 0; j < 4 && inside; ++j) {
-				double slack = 1e-9 + 1e-12 * (length[j] + fabs(face->offset) + fabs(off));
-				inside = hs_dot(face->normal, q[j]) - face->offset < off - slack;
+				inside = hs_dot(face->normal, q[j]) - face->offset < off - slack(length[j], face->offset, off);
 			}
 			if (!inside)
 				out[count++] = f;
