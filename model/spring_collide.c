@@ -296,20 +296,20 @@ static bool boxes_meet(const hs_spring_geom *ga, hs_vec3 pa, const hs_spring_geo
 	       pa.z + ga->lo.z - m <= pb.z + gb->hi.z && pb.z + gb->lo.z <= pa.z + ga->hi.z + m;
 }
 
-void hs_spring_find_touches(hs_world *world, hs_spring_system *sys, double gap) {
+void hs_spring_find_touches(hs_world *world, hs_spring_system *sys, double gap, double reach) {
 	hs_spring_file_all(world, sys);
 	sys->touch_count = 0;
 	const hs_spring_geom *geom = sys->geom;
 	for (int i = 0; i < world->object_count; ++i) {
 		hs_vec3 pa = world->bodies[i].pos;
 		const int *near;
-		int count = hs_spring_near(world, sys, i, 0.0, &near);
+		int count = hs_spring_near_grown(world, sys, i, reach, &near);
 		for (int k = 0; k < count; ++k) {
 			int j = near[k];
 			hs_vec3 pb = world->bodies[j].pos, n;
 			double depth;
-			if (j <= i || !boxes_meet(&geom[i], pa, &geom[j], pb, hs_spring_margin(&geom[i], pa) + hs_spring_margin(&geom[j], pb)) ||
-			    !hs_spring_contact_within(world, &geom[i], pa, &geom[j], pb, gap, &n, &depth))
+			if (j <= i || !boxes_meet(&geom[i], pa, &geom[j], pb, reach + hs_spring_margin(&geom[i], pa) + hs_spring_margin(&geom[j], pb)) ||
+			    !hs_spring_contact_within(world, &geom[i], pa, &geom[j], pb, reach, &n, &depth))
 				continue;
 			if (sys->touch_count == sys->touch_capacity) {
 				world->counters.dropped_contacts++;
@@ -321,6 +321,7 @@ void hs_spring_find_touches(hs_world *world, hs_spring_system *sys, double gap) 
 			t->b = j;
 			t->n = n;
 			t->depth = depth;
+			t->ahead = depth < -gap;
 		}
 	}
 }
@@ -335,7 +336,9 @@ bool hs_spring_touching(const hs_spring_system *sys, int a, int b) {
 		else
 			hi = mid;
 	}
-	return lo < sys->touch_count && sys->touch[lo].a == a && sys->touch[lo].b == b;
+	if (lo == sys->touch_count || sys->touch[lo].a != a || sys->touch[lo].b != b)
+		return false;
+	return !sys->touch[lo].ahead || sys->touch[lo].normal > 0.0;
 }
 
 // Object i at the fraction tau of the frame, for motion at constant acceleration through it (gravity,

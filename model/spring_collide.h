@@ -12,10 +12,12 @@ bool hs_spring_contact(const hs_world *world, const hs_spring_geom *ga, hs_vec3 
 // negative for shapes apart (by less than the gap), for every kind of pair.
 bool hs_spring_contact_within(const hs_world *world, const hs_spring_geom *ga, hs_vec3 pa, const hs_spring_geom *gb,
                      hs_vec3 pb, double gap, hs_vec3 *n, double *depth);
-// Every pair of objects within `gap` of each other where they are now, into sys->touch in ascending
-// (a, b) (normal and depth set, the rest zero), through the broad phase.
-void hs_spring_find_touches(hs_world *world, hs_spring_system *sys, double gap);
-// True when (a, b), a < b, is among sys->touch.
+// Every pair of objects within `reach` (≥ gap) of each other where they are now, into sys->touch in
+// ascending (a, b) (normal and depth set, `ahead` for a pair apart by more than `gap`, the rest
+// zero), through the broad phase.
+void hs_spring_find_touches(hs_world *world, hs_spring_system *sys, double gap, double reach);
+// True when (a, b), a < b, is among sys->touch and touches, or is ahead and its force acts (the
+// rest solve closes it by the frame's end): a resting pair.
 bool hs_spring_touching(const hs_spring_system *sys, int a, int b);
 // Every overlapping pair of the world's objects (array order, shapes in sys->geom, found through
 // the broad phase sys->grid) exchanges an impulse of restitution sys->def.restitution along the

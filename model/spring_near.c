@@ -134,15 +134,15 @@ static int filter_list(hs_spring_system *sys, const int *list, int n, hs_vec3 lo
 	return count;
 }
 
-int hs_spring_near(const hs_world *world, hs_spring_system *sys, int i, double reach, const int **out) {
+// The objects whose boxes may meet lo..hi (a query about object i), from i's neighbour list while
+// the query lies within its skin, else from the grid.
+static int near_box(const hs_world *world, hs_spring_system *sys, int i, hs_vec3 lo, hs_vec3 hi, const int **out) {
 	*out = sys->near;
 	if (sys->all_pairs) {
 		for (int j = 0; j < world->object_count; ++j)
 			sys->near[j] = j;
 		return world->object_count;
 	}
-	hs_vec3 lo, hi;
-	query_box(world, sys, i, reach, &lo, &hi);
 	if (sys->nb_state == HS_NEAR_STALE)
 		sys->nb_state = sys->nb_skin > 0.0 && build_lists(world, sys) ? HS_NEAR_LISTS : HS_NEAR_GRID;
 	double s = sys->nb_skin;
@@ -156,4 +156,18 @@ int hs_spring_near(const hs_world *world, hs_spring_system *sys, int i, double r
 		return filter_list(sys, sys->nb + sys->nb_start[i], sys->nb_start[i + 1] - sys->nb_start[i], lo, hi);
 	}
 	return hs_hgrid_query(&sys->grid, lo, hi, sys->near);
+}
+
+int hs_spring_near(const hs_world *world, hs_spring_system *sys, int i, double reach, const int **out) {
+	hs_vec3 lo, hi;
+	query_box(world, sys, i, reach, &lo, &hi);
+	return near_box(world, sys, i, lo, hi, out);
+}
+
+int hs_spring_near_grown(const hs_world *world, hs_spring_system *sys, int i, double grow, const int **out) {
+	hs_vec3 lo, hi;
+	query_box(world, sys, i, 0.0, &lo, &hi);
+	lo = hs_sub(lo, hs_v3(grow, grow, grow));
+	hi = hs_add(hi, hs_v3(grow, grow, grow));
+	return near_box(world, sys, i, lo, hi, out);
 }

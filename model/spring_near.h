@@ -20,5 +20,7 @@ void hs_spring_refile(hs_world *world, hs_spring_system *sys, int i);
 // frame grown by `reach` (the farthest any object moved: where another's path may cross it), in
 // index order, i among them; more may come than meet. *out points to them; returns how many.
 int hs_spring_near(const hs_world *world, hs_spring_system *sys, int i, double reach, const int **out);
+// As hs_spring_near for object i's box where it is now, grown by `grow` (m) on every side.
+int hs_spring_near_grown(const hs_world *world, hs_spring_system *sys, int i, double grow, const int **out);
 
 #endif

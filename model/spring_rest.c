@@ -11,6 +11,12 @@
 //    within the frame) — found together by projected Gauss–Seidel, then applied through the frame
 //    as constant forces. The objects' own steps find the floor's and walls' share again.
 //  - Two objects touch when their true shapes lie within floor_tolerance (the floor's tolerance).
+//  - A pair apart by more (up to v_b dt / 2, v_b = HS_REST_BOUNCE_SPEED) whose free motion closes
+//    the gap within the frame slower than v_b (a push, not an impact) joins the solve ahead of its
+//    meeting: its normal force acts only as far as it must for the gap to close by the frame's
+//    end, g + v_n dt + a_n dt² / 2 ≥ 0 (a speculative contact). Without it a ball sliding off one
+//    support fell into a second one a few µm away through the rest of the frame, was stopped
+//    inside it and separated off the first: at 12 frames/s a pile never settled.
 //  - Touching objects still approaching at the frame start first exchange impulses, pair by pair
 //    until none approaches: the pair's restitution, none below HS_REST_BOUNCE_SPEED (5 cm/s: a
 //    resting push, which an object the floor's static friction holds takes without moving); the
@@ -33,12 +39,70 @@
 #define HS_REST_MAX_PASSES 64      // impulse passes over the touches
 #define HS_REST_CONVERGED 1e-13    // relative change of every force in a sweep that ends the solve
 #define HS_REST_MAX_SWEEPS 1000    // Gauss–Seidel sweeps at most
+// m/s × dt: pairs apart by up to this join the solve ahead of their meeting. Two objects meeting
+// from rest at less than the bounce speed (a resting push) close at most v_b dt / 2 in a frame.
+#define HS_REST_AHEAD (0.5 * HS_REST_BOUNCE_SPEED)
 
 double hs_spring_pair_restitution(const hs_world *world, const hs_spring_system *sys, int a, int b) {
 	double ea = world->bodies[a].restitution, eb = world->bodies[b].restitution;
 	ea = ea < 0.0 ? sys->def.restitution : ea;
 	eb = eb < 0.0 ? sys->def.restitution : eb;
 	return fmin(ea, eb);
+}
+
+// Gravity and the spring on object i, with every object held where it is: the spring as the frame
+// begins (a pull growing through the frame then presses the object on into what it touches, and
+// the resting contact holds it, instead of lagging behind the contact force and opening the
+// contact every frame).
+static hs_vec3 free_force(const hs_world *world, const hs_spring_system *sys, int i, double dt) {
+	const hs_body *b = &world->bodies[i];
+	hs_vec3 f = hs_scale(world->def.gravity, b->mass);
+	if (i != sys->attached)
+		return f;
+	hs_spring_params sp = hs_spring_params_of(&sys->def, world, b->mass);
+	return hs_add(f, hs_spring_force(&sp, sys->axis, b->pos, hs_v3(0.0, 0.0, 0.0), hs_spring_anchor_prev(sys),
+	                                 hs_spring_anchor_velocity(sys, dt)));
+}
+
+// Object i lies on the floor and does not leave it.
+static bool on_floor(const hs_world *world, const hs_spring_system *sys, int i) {
+	const hs_body *b = &world->bodies[i];
+	return b->pos.z <= -sys->geom[i].lo.z + world->def.floor_tolerance && b->vel.z <= 0.0;
+}
+
+// The pair's free relative acceleration along n (gravity and the spring; what the floor holds up
+// does not fall).
+static double free_approach(const hs_world *world, const hs_spring_system *sys, const hs_spring_touch *c, double dt) {
+	hs_vec3 fa = hs_scale(free_force(world, sys, c->a, dt), 1.0 / world->bodies[c->a].mass);
+	hs_vec3 fb = hs_scale(free_force(world, sys, c->b, dt), 1.0 / world->bodies[c->b].mass);
+	if (fa.z < 0.0 && on_floor(world, sys, c->a))
+		fa.z = 0.0;
+	if (fb.z < 0.0 && on_floor(world, sys, c->b))
+		fb.z = 0.0;
+	return hs_dot(hs_sub(fb, fa), c->n);
+}
+
+// Touches ahead (apart by more than the touch gap) that join the solve: the pair's free motion
+// closes the gap within the frame, slower than the bounce speed at the meeting (a resting push;
+// a faster one is an impact, which spring_collide.c answers with the pair's restitution). The
+// rest are dropped: those pairs are left to spring_collide.c as before.
+static void keep_meeting_ahead(hs_world *world, hs_spring_system *sys, double dt) {
+	int kept = 0;
+	for (int t = 0; t < sys->touch_count; ++t) {
+		hs_spring_touch *c = &sys->touch[t];
+		if (c->ahead) {
+			double gap = -c->depth, an = free_approach(world, sys, c, dt);
+			double vn = hs_dot(hs_sub(world->bodies[c->b].vel, world->bodies[c->a].vel), c->n);
+			// the least gap over the frame of the free motion gap + vn t + an t² / 2
+			double t_min = an > 0.0 && vn < 0.0 ? fmin(dt, -vn / an) : dt;
+			double least = vn * t_min + 0.5 * an * t_min * t_min < 0.0 ? gap + vn * t_min + 0.5 * an * t_min * t_min : gap;
+			double meet = vn * vn + 2.0 * fmax(0.0, -an) * gap;
+			if (least > 0.0 || meet > HS_REST_BOUNCE_SPEED * HS_REST_BOUNCE_SPEED)
+				continue;
+		}
+		sys->touch[kept++] = *c;
+	}
+	sys->touch_count = kept;
 }
 
 // The objects in any touch, ascending, with their place in sys->active.
@@ -110,7 +174,7 @@ static void approach_impulses(hs_world *world, hs_spring_system *sys) {
 			hs_spring_touch *c = &sys->touch[t];
 			hs_body *a = &world->bodies[c->a], *b = &world->bodies[c->b];
 			double vn = hs_dot(hs_sub(b->vel, a->vel), c->n);
-			if (!(vn < -HS_REST_APPROACH))
+			if (c->ahead || !(vn < -HS_REST_APPROACH))
 				continue;
 			bool impact = -vn > HS_REST_BOUNCE_SPEED;
 			hs_spring_pair_impulse(world, sys, c->a, c->b, c->n, impact ? c->e : 0.0, !impact);
@@ -128,13 +192,7 @@ static void approach_impulses(hs_world *world, hs_spring_system *sys) {
 // contact's force holds it instead of the object falling a whole frame back into the other.
 static bool closes(hs_world *world, hs_spring_system *sys, const hs_spring_touch *c, double dt) {
 	hs_body *a = &world->bodies[c->a], *b = &world->bodies[c->b];
-	const hs_spring_rest_body *ra = &sys->rest[sys->rest_index[c->a]], *rb = &sys->rest[sys->rest_index[c->b]];
-	hs_vec3 fa = hs_scale(ra->force, 1.0 / a->mass), fb = hs_scale(rb->force, 1.0 / b->mass);
-	if (ra->floor && fa.z < 0.0) // what the floor holds up does not fall
-		fa.z = 0.0;
-	if (rb->floor && fb.z < 0.0)
-		fb.z = 0.0;
-	double an = hs_dot(hs_sub(fb, fa), c->n), vn = hs_dot(hs_sub(b->vel, a->vel), c->n);
+	double an = free_approach(world, sys, c, dt), vn = hs_dot(hs_sub(b->vel, a->vel), c->n);
 	if (!(an < 0.0 && vn < -0.5 * an * dt))
 		return false;
 	double wa = 1.0 / a->mass, wb = 1.0 / b->mass; // an object the floor holds does not move (floor_takes)
@@ -157,17 +215,9 @@ static void prepare(hs_world *world, hs_spring_system *sys, double dt) {
 		const hs_body *b = &world->bodies[i];
 		hs_spring_rest_body *r = &sys->rest[k];
 		memset(r, 0, sizeof *r);
-		r->force = hs_scale(world->def.gravity, b->mass);
-		if (i == sys->attached) {
-			hs_spring_params sp = hs_spring_params_of(&sys->def, world, b->mass);
-			// the spring as the frame begins: a pull growing through the frame then presses the
-			// object on into what it touches (the resting contact holds it) instead of lagging
-			// behind the contact force and opening the contact every frame
-			r->force = hs_add(r->force, hs_spring_force(&sp, sys->axis, b->pos, hs_v3(0.0, 0.0, 0.0),
-			                                            hs_spring_anchor_prev(sys), hs_spring_anchor_velocity(sys, dt)));
-		}
+		r->force = free_force(world, sys, i, dt);
 		r->acc = hs_scale(r->force, 1.0 / b->mass);
-		r->floor = b->pos.z <= -sys->geom[i].lo.z + tol && b->vel.z <= 0.0;
+		r->floor = on_floor(world, sys, i);
 		r->sliding = r->floor && hs_length(hs_v3(b->vel.x, b->vel.y, 0.0)) > HS_REST_STICK_SPEED;
 		unsigned w = hs_spring_walls_near(&sys->def.walls, &sys->geom[i], b->pos, tol);
 		for (int q = 0; q < 4; ++q) // a wall it leaves pushes no more
@@ -179,7 +229,14 @@ static void prepare(hs_world *world, hs_spring_system *sys, double dt) {
 		hs_spring_touch *c = &sys->touch[t];
 		const hs_body *a = &world->bodies[c->a], *b = &world->bodies[c->b];
 		hs_vec3 v = hs_sub(b->vel, a->vel);
-		c->open = hs_dot(v, c->n) > HS_REST_APPROACH && !closes(world, sys, c, dt);
+		double vn = hs_dot(v, c->n);
+		if (c->ahead) { // its force may only close the gap by the frame's end (keep_meeting_ahead)
+			c->open = false;
+			c->bias = 2.0 * (-c->depth + vn * dt) / (dt * dt);
+		} else {
+			c->open = vn > HS_REST_APPROACH && !closes(world, sys, c, dt);
+			c->bias = 0.0;
+		}
 		hs_vec3 vt = hs_mul_add(v, -hs_dot(v, c->n), c->n);
 		double s = hs_length(vt);
 		c->slide = s > HS_REST_STICK_SPEED ? hs_scale(vt, 1.0 / s) : hs_v3(0.0, 0.0, 0.0);
@@ -244,17 +301,20 @@ static double sweep_touches(hs_world *world, hs_spring_system *sys, double dt) {
 			continue;
 		hs_spring_rest_body *ra = &sys->rest[sys->rest_index[c->a]], *rb = &sys->rest[sys->rest_index[c->b]];
 		double wa = 1.0 / world->bodies[c->a].mass, wb = 1.0 / world->bodies[c->b].mass;
-		double n = fmax(0.0, c->normal - c->mass * hs_dot(hs_sub(rb->acc, ra->acc), c->n));
+		double n = fmax(0.0, c->normal - c->mass * (hs_dot(hs_sub(rb->acc, ra->acc), c->n) + c->bias));
 		double dn = n - c->normal;
 		ra->acc = hs_mul_add(ra->acc, -dn * wa, c->n);
 		rb->acc = hs_mul_add(rb->acc, dn * wb, c->n);
 		change = fmax(change, fabs(dn));
 		c->normal = n;
 		hs_vec3 f;
-		if (hs_length_sq(c->slide) > 0.0) { // sliding: against it, no more than stops it this frame
+		if (hs_length_sq(c->slide) > 0.0) {
+			// sliding: against it, no more than stops it this frame with every other force acting
+			// (one contact's own stop let three boxes sliding on a fourth throw it back each frame)
 			hs_vec3 v = hs_sub(world->bodies[c->b].vel, world->bodies[c->a].vel);
-			double stop = c->mass * hs_dot(v, c->slide) / dt;
-			f = hs_scale(c->slide, -fmin(d->friction_sliding * n, stop));
+			double held = -hs_dot(c->friction, c->slide);
+			double stop = held + c->mass * (hs_dot(hs_sub(rb->acc, ra->acc), c->slide) + hs_dot(v, c->slide) / dt);
+			f = hs_scale(c->slide, -fmin(d->friction_sliding * n, fmax(0.0, stop)));
 		} else {
 			hs_vec3 ar = hs_sub(rb->acc, ra->acc);
 			hs_vec3 at = hs_mul_add(ar, -hs_dot(ar, c->n), c->n);
@@ -290,7 +350,9 @@ void hs_spring_rest(hs_world *world, hs_spring_system *sys) {
 		memset(sys->load, 0, (size_t)n * sizeof *sys->load);
 		memset(sys->held, 0, (size_t)n);
 	}
-	hs_spring_find_touches(world, sys, world->def.floor_tolerance);
+	double tol = world->def.floor_tolerance;
+	hs_spring_find_touches(world, sys, tol, fmax(tol, HS_REST_AHEAD * dt));
+	keep_meeting_ahead(world, sys, dt);
 	collect_active(world, sys);
 	if (sys->touch_count == 0)
 		return;
@@ -318,6 +380,8 @@ void hs_spring_rest(hs_world *world, hs_spring_system *sys) {
 	}
 	for (int t = 0; t < sys->touch_count; ++t) { // sliding on another, or deeper in it than drift: not held
 		const hs_spring_touch *c = &sys->touch[t];
+		if (c->ahead && !(c->normal > 0.0))
+			continue;
 		if (hs_length_sq(c->slide) > 0.0 || c->depth > HS_REST_DRIFT)
 			sys->held[c->a] = sys->held[c->b] = 2;
 	}

@@ -15,7 +15,8 @@
 #define HS_SPRING_TOUCHES_PER_OBJECT 8
 #define HS_SPRING_NEAR_PER_OBJECT 32 // neighbour-list entries per object (beyond: the grid is asked)
 
-// Two objects touching at the frame start (spring_rest.c): within floor_tolerance of each other.
+// Two objects touching at the frame start (spring_rest.c): within floor_tolerance of each other;
+// or apart by less than a slow meeting can close within the frame (`ahead`, spring_rest.c).
 typedef struct hs_spring_touch {
 	int a, b;        // body indices, a < b
 	hs_vec3 n;       // unit normal from a to b
@@ -25,7 +26,9 @@ typedef struct hs_spring_touch {
 	double e;        // restitution of the pair: the smaller of the two objects'
 	double normal;   // N: normal force on b (on a: its opposite)
 	hs_vec3 friction; // N: friction force on b, across n
+	double bias;     // m/s²: the relative acceleration along n the pair takes before its force acts
 	uint8_t open;    // moving apart at the frame start: no force (it would do work)
+	uint8_t ahead;   // apart by more than the touch gap: its force only closes the gap by the frame's end
 } hs_spring_touch;
 
 // A meeting of objects i < j at the fraction tau of the frame (spring_collide.c).
