@@ -340,8 +340,9 @@ static scene dense_drop(double hz, unsigned long seed) {
 // The dense drop at the paper's 12 and 17 frames/s: a separation used to throw a ball wedged in a
 // corner 0.3 m across the box in one frame (its one free direction ran almost across the contact
 // normal), and a row of balls along a wall, more than fit, was parted along the row pair by pair
-// and back until two balls lay centre on centre (overlap 0.1 m, 5 of 13 seeds). Now none lies
-// more than 60 % of a diameter inside another (0.047 m measured).
+// and back until two balls lay centre on centre (overlap 0.1 m, 5 of 13 seeds). Then none lay
+// more than 60 % of a diameter inside another (0.047 m measured); since a pair pushed into each
+// other mid-frame is answered where that begins, none more than 35 % (0.029 m measured).
 static void test_dense_drop_keeps_balls_apart(void **state) {
 	(void)state;
 	const double hz[2] = {12.0, 17.0};
@@ -360,7 +361,7 @@ static void test_dense_drop_keeps_balls_apart(void **state) {
 			hs_world_destroy(s.world);
 		}
 	print_message("dense drop: largest overlap %.4f m\n", worst);
-	assert_true(worst < 0.06);
+	assert_true(worst < 0.035);
 }
 
 // The dense drop comes to rest: over the last second of 10 s no ball moves 1 µm in a frame nor
@@ -371,18 +372,24 @@ static void test_dense_drop_keeps_balls_apart(void **state) {
 // held (the separation of such a drift is paid from kinetic energy: it stayed), so it stepped and
 // fell back into place every frame. Then 4 of 8 seeds still jittered at 12 frames/s (1.2 cm a
 // frame) and 2 at 17: a ball on one support, its second one a few µm beyond the touch gap, slid
-// and fell into it every frame. Now such a pair joins the resting solve ahead of its meeting
-// (spring_rest.c): every seed at rest at 12, 17 and 30 frames/s, to the bit 8, 7 and 7.
+// and fell into it every frame; such a pair now joins the resting solve ahead of its meeting
+// (spring_rest.c). Seeds 15 and 21 jammed: a ball pushed into a third one mid-fall reached the
+// floor inside it, 16 balls on a floor for a 4 × 4 grid, pushed to and fro by 1 cm a frame; that
+// overlap is now answered where it begins (spring_collide.c first_meeting). Every seed at rest at
+// 12, 17 and 30 frames/s, to the bit 7, 8 and 7 (the rest creep by under 1 µm a frame: a ball on
+// friction at its limit).
 static void test_dense_drop_comes_to_rest(void **state) {
 	(void)state;
 	const double hz[3] = {12.0, 17.0, 30.0};
-	const int need_rest[3] = {8, 8, 8}, need_bits[3] = {8, 7, 7}; // of 8 seeds
+	// seeds 1-8, and 15 and 21, whose floor layer jammed (16 balls; 1 cm a frame)
+	const unsigned long seeds[10] = {1, 2, 3, 4, 5, 6, 7, 8, 15, 21};
+	const int need_rest[3] = {10, 10, 10}, need_bits[3] = {7, 8, 7}; // of 10 seeds
 	for (int r = 0; r < 3; ++r) {
 		int settled = 0, bits = 0;
 		long latest = 0; // the last frame a ball moved, over the seeds at rest to the bit
 		double worst_v = 0.0, worst_step = 0.0;
-		for (unsigned long seed = 1; seed <= 8; ++seed) {
-			scene s = dense_drop(hz[r], seed);
+		for (int k = 0; k < 10; ++k) {
+			scene s = dense_drop(hz[r], seeds[k]);
 			long frames = (long)(10.0 * hz[r]), moved = 0;
 			double v = 0.0, step = 0.0;
 			for (long f = 0; f < frames; ++f) {
@@ -405,7 +412,7 @@ static void test_dense_drop_comes_to_rest(void **state) {
 			worst_step = fmax(worst_step, step);
 			hs_world_destroy(s.world);
 		}
-		print_message("dense drop at %.0f/s: %d of 8 seeds at rest in the last second, %d to the bit (by %.2f s); "
+		print_message("dense drop at %.0f/s: %d of 10 seeds at rest in the last second, %d to the bit (by %.2f s); "
 		              "worst %.3g m/s, %.3g m a frame\n",
 		              hz[r], settled, bits, (double)latest / hz[r], worst_v, worst_step);
 		assert_true(settled >= need_rest[r]);
