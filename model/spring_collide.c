@@ -537,7 +537,7 @@ static double meeting_of(hs_world *world, const hs_spring_system *sys, int i, in
 }
 
 // Events by tau (the meetings: their fraction of the frame; the end passes: the height of the pair's
-// lower object), then the pair: a strict order, a pair being listed once at a time (qsort's form).
+// lower object), then the pair: a strict order, a pair being listed once at a time.
 static int event_order(const void *x, const void *y) {
 	const hs_spring_event *a = x, *b = y;
 	if (a->tau != b->tau)
@@ -630,6 +630,32 @@ static bool unmoved(const hs_world *world, const hs_spring_system *sys, int i) {
 }
 
 
+// Heap sort by event_order, in place: glibc's qsort allocates a buffer for arrays over 1 KiB, and
+// the step must not (a dense drop's end pass sorted 63 such arrays in 10 s). The order is strict,
+// so the result is qsort's.
+static void sift_last(hs_spring_event *h, int n, int k) {
+	for (int child; (child = 2 * k + 1) < n; k = child) {
+		if (child + 1 < n && before(&h[child], &h[child + 1]))
+			++child;
+		if (!before(&h[k], &h[child]))
+			return;
+		hs_spring_event t = h[k];
+		h[k] = h[child];
+		h[child] = t;
+	}
+}
+
+static void sort_events(hs_spring_event *e, int n) {
+	for (int k = n / 2 - 1; k >= 0; --k)
+		sift_last(e, n, k);
+	for (int end = n - 1; end > 0; --end) {
+		hs_spring_event t = e[0];
+		e[0] = e[end];
+		e[end] = t;
+		sift_last(e, end, 0);
+	}
+}
+
 static bool in_order(const hs_spring_event *e, int n) {
 	for (int k = 1; k < n; ++k)
 		if (event_order(&e[k - 1], &e[k]) > 0)
@@ -666,7 +692,7 @@ static bool end_pass(hs_world *world, hs_spring_system *sys, bool first) {
 		}
 	}
 	if (!in_order(sys->events, sys->event_count)) // (often already: objects on one floor, met in index order)
-		qsort(sys->events, (size_t)sys->event_count, sizeof *sys->events, event_order);
+		sort_events(sys->events, sys->event_count);
 	bool moved = false;
 	sys->shock = true;
 	for (int e = 0; e < sys->event_count; ++e) {
