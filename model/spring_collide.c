@@ -23,7 +23,8 @@
 //    through the frame): no sweep and no bounce; an overlap up to twice the touch gap stays. Its
 //    separation lifts it as far as its kinetic energy pays, and deeper than HS_REST_DRIFT as far
 //    as that and the potential energy it released this frame pay, and at least back to half the
-//    drift (a closed box's energy never rises; objects do not sink into each other).
+//    drift (so no overlap deeper than the drift stays; that last step is not paid for, and
+//    test_spring_rest's closed box measures that its energy still never rises).
 #include <stdlib.h>
 #include <string.h>
 
