@@ -157,7 +157,7 @@ static void approach_impulses(hs_world *world, hs_spring_system *sys) {
 		for (int k = 0; k < sys->active_count; ++k) {
 			int i = sys->active[k];
 			hs_body *b = &world->bodies[i];
-			if (b->pos.z <= -sys->geom[i].lo.z + tol && b->vel.z < 0.0) {
+			if (on_floor(world, sys, i) && b->vel.z < 0.0) {
 				b->vel.z = 0.0; // the floor absorbs (§4.4 drop)
 				any = true;
 			}
