@@ -1,8 +1,20 @@
 // spring_solve.c — the forces of the resting contacts between the spring model's objects, the
 // floor and the walls (spring_rest.c sets the problem up: which pairs touch, how each slides, the
-// free forces; its header gives the reading): projected Gauss–Seidel over the floor and walls of
-// each object, then over the touches, until no force changes by more than HS_REST_CONVERGED of
-// the largest free force (or HS_REST_MAX_SWEEPS sweeps).
+// free forces; its header gives the reading).
+//
+//  - Projected Gauss–Seidel over the floor and walls of each object, then over the touches, until
+//    no force changes by more than HS_REST_CONVERGED of the largest free force (or
+//    HS_REST_MAX_SWEEPS sweeps).
+//  - Sticking contacts are first solved in Coulomb's cone: each contact's normal force and
+//    friction together, stepped as far as the contact's own residual asks and projected onto
+//    |f| ≤ μ_static n (see onto_cone). Where the contacts can hold every object still, these
+//    sweeps find forces that do; the older order — normal force first, friction then clipped to
+//    μ n — did not converge in a statically indeterminate pile (1000 sweeps, forces creeping by
+//    mN a sweep, balls stepping µm a frame for good). Where they cannot, the cone's answer lifts
+//    contacts whose friction is at its limit, which Coulomb's law does not: that frame is solved
+//    again in the older order.
+#include <string.h>
+
 #include "spring_contact.h"
 #include "spring_solve.h"
 
@@ -15,15 +27,49 @@ static hs_vec3 within_cone(hs_vec3 f, double limit) {
 	return len > limit ? hs_scale(f, limit / len) : f;
 }
 
-// One Gauss–Seidel sweep over the floor and walls of each active object; the largest change.
-static double sweep_bodies(hs_world *world, hs_spring_system *sys, double dt) {
+// The point of the cone |f| ≤ μ n nearest to (n, f). Objects do not turn (§4.2), so a contact's
+// block of the solve's matrix is 1 / m_c times the identity, and this projection of the
+// contact's unconstrained step is its exact minimiser: the sweeps descend one convex quadratic.
+static void onto_cone(double *n, hs_vec3 *f, double mu) {
+	double t = hs_length(*f);
+	if (t <= mu * *n)
+		return;
+	if (mu * t <= -*n) { // in the polar cone: the contact opens
+		*n = 0.0;
+		*f = hs_v3(0.0, 0.0, 0.0);
+		return;
+	}
+	double nn = (*n + mu * t) / (1.0 + mu * mu);
+	*f = hs_scale(*f, mu * nn / t);
+	*n = nn;
+}
+
+// The floor's normal force and friction on a resting object, stepped together and projected
+// onto the cone; the larger change.
+static double floor_in_cone(hs_spring_rest_body *r, double m, double mu) {
+	double n = r->floor_normal - m * r->acc.z;
+	hs_vec3 f = hs_sub(r->floor_friction, hs_scale(hs_v3(r->acc.x, r->acc.y, 0.0), m));
+	onto_cone(&n, &f, mu);
+	double dn = n - r->floor_normal;
+	hs_vec3 df = hs_sub(f, r->floor_friction);
+	r->acc = hs_mul_add(r->acc, 1.0 / m, hs_v3(df.x, df.y, dn));
+	r->floor_normal = n;
+	r->floor_friction = f;
+	return fmax(fabs(dn), hs_length(df));
+}
+
+// One Gauss–Seidel sweep over the floor and walls of each active object (sticking floor contacts
+// in the cone when `cone`); the largest change.
+static double sweep_bodies(hs_world *world, hs_spring_system *sys, double dt, bool cone) {
 	const hs_spring_def *d = &sys->def;
 	double change = 0.0;
 	for (int k = 0; k < sys->active_count; ++k) {
 		hs_spring_rest_body *r = &sys->rest[k];
 		const hs_body *b = &world->bodies[sys->active[k]];
 		double m = b->mass;
-		if (r->floor) {
+		if (r->floor && cone && !r->sliding) {
+			change = fmax(change, floor_in_cone(r, m, d->friction_static));
+		} else if (r->floor) {
 			double n = fmax(0.0, r->floor_normal - m * r->acc.z);
 			r->acc.z += (n - r->floor_normal) / m;
 			change = fmax(change, fabs(n - r->floor_normal));
@@ -55,8 +101,28 @@ static double sweep_bodies(hs_world *world, hs_spring_system *sys, double dt) {
 	return change;
 }
 
-// One Gauss–Seidel sweep over the touches; the largest change.
-static double sweep_touches(hs_world *world, hs_spring_system *sys, double dt) {
+// A sticking touch's normal force and friction, stepped together and projected onto the cone;
+// the larger change.
+static double touch_in_cone(hs_spring_touch *c, hs_spring_rest_body *ra, hs_spring_rest_body *rb, double wa,
+                            double wb, double mu) {
+	hs_vec3 ar = hs_sub(rb->acc, ra->acc);
+	double an = hs_dot(ar, c->n);
+	double n = c->normal - c->mass * (an + c->bias);
+	hs_vec3 f = hs_mul_add(c->friction, -c->mass, hs_mul_add(ar, -an, c->n));
+	onto_cone(&n, &f, mu);
+	double dn = n - c->normal;
+	hs_vec3 df = hs_sub(f, c->friction);
+	hs_vec3 dl = hs_mul_add(df, dn, c->n);
+	ra->acc = hs_mul_add(ra->acc, -wa, dl);
+	rb->acc = hs_mul_add(rb->acc, wb, dl);
+	c->normal = n;
+	c->friction = f;
+	return fmax(fabs(dn), hs_length(df));
+}
+
+// One Gauss–Seidel sweep over the touches (sticking ones in the cone when `cone`); the largest
+// change.
+static double sweep_touches(hs_world *world, hs_spring_system *sys, double dt, bool cone) {
 	const hs_spring_def *d = &sys->def;
 	double change = 0.0;
 	for (int t = 0; t < sys->touch_count; ++t) {
@@ -65,6 +131,10 @@ static double sweep_touches(hs_world *world, hs_spring_system *sys, double dt) {
 			continue;
 		hs_spring_rest_body *ra = &sys->rest[sys->rest_index[c->a]], *rb = &sys->rest[sys->rest_index[c->b]];
 		double wa = 1.0 / world->bodies[c->a].mass, wb = 1.0 / world->bodies[c->b].mass;
+		if (cone && !(hs_length_sq(c->slide) > 0.0)) {
+			change = fmax(change, touch_in_cone(c, ra, rb, wa, wb, d->friction_static));
+			continue;
+		}
 		double n = fmax(0.0, c->normal - c->mass * (hs_dot(hs_sub(rb->acc, ra->acc), c->n) + c->bias));
 		double dn = n - c->normal;
 		ra->acc = hs_mul_add(ra->acc, -dn * wa, c->n);
@@ -93,14 +163,60 @@ static double sweep_touches(hs_world *world, hs_spring_system *sys, double dt) {
 	return change;
 }
 
+// Sweeps until no force changes by more than HS_REST_CONVERGED of the largest free force.
+static void solve(hs_world *world, hs_spring_system *sys, double dt, double scale, bool cone) {
+	for (int sweep = 0; sweep < HS_REST_MAX_SWEEPS; ++sweep) {
+		double change = sweep_bodies(world, sys, dt, cone); // (two statements: the order is the result's)
+		change = fmax(change, sweep_touches(world, sys, dt, cone));
+		if (!(change > HS_REST_CONVERGED * scale))
+			return;
+	}
+}
+
+// The cone's answer lifts a contact whose friction is at its limit (its normal acceleration
+// apart is more than HS_REST_TOLERANCE of the largest free force, per unit of the pair's mass):
+// there Coulomb's law would let the contact slide instead.
+static bool cone_lifts(const hs_world *world, const hs_spring_system *sys, double scale) {
+	double mu = sys->def.friction_static * (1.0 - HS_REST_TOLERANCE), allowed = HS_REST_TOLERANCE * scale; // (at the limit to rounding)
+	for (int k = 0; k < sys->active_count; ++k) {
+		const hs_spring_rest_body *r = &sys->rest[k];
+		if (r->floor && !r->sliding && r->floor_normal > 0.0 && hs_length(r->floor_friction) >= mu * r->floor_normal &&
+		    r->acc.z * world->bodies[sys->active[k]].mass > allowed)
+			return true;
+	}
+	for (int t = 0; t < sys->touch_count; ++t) {
+		const hs_spring_touch *c = &sys->touch[t];
+		if (c->open || hs_length_sq(c->slide) > 0.0 || !(c->normal > 0.0) || hs_length(c->friction) < mu * c->normal)
+			continue;
+		const hs_spring_rest_body *ra = &sys->rest[sys->rest_index[c->a]], *rb = &sys->rest[sys->rest_index[c->b]];
+		if ((hs_dot(hs_sub(rb->acc, ra->acc), c->n) + c->bias) * c->mass > allowed)
+			return true;
+	}
+	return false;
+}
+
+// Every force of the solve back to none.
+static void restart(hs_world *world, hs_spring_system *sys) {
+	for (int k = 0; k < sys->active_count; ++k) {
+		hs_spring_rest_body *r = &sys->rest[k];
+		r->acc = hs_scale(r->force, 1.0 / world->bodies[sys->active[k]].mass);
+		r->floor_normal = 0.0;
+		r->floor_friction = hs_v3(0.0, 0.0, 0.0);
+		memset(r->wall, 0, sizeof r->wall);
+	}
+	for (int t = 0; t < sys->touch_count; ++t) {
+		sys->touch[t].normal = 0.0;
+		sys->touch[t].friction = hs_v3(0.0, 0.0, 0.0);
+	}
+}
+
 void hs_spring_solve(hs_world *world, hs_spring_system *sys, double dt) {
 	double scale = 0.0;
 	for (int k = 0; k < sys->active_count; ++k)
 		scale = fmax(scale, hs_length(sys->rest[k].force));
-	for (int sweep = 0; sweep < HS_REST_MAX_SWEEPS; ++sweep) {
-		double change = sweep_bodies(world, sys, dt); // (two statements: the order is the result's)
-		change = fmax(change, sweep_touches(world, sys, dt));
-		if (!(change > HS_REST_CONVERGED * scale))
-			return;
+	solve(world, sys, dt, scale, true);
+	if (cone_lifts(world, sys, scale)) { // Coulomb's order instead (the file's header)
+		restart(world, sys);
+		solve(world, sys, dt, scale, false);
 	}
 }
