@@ -269,8 +269,10 @@ void hs_spring_rest(hs_world *world, hs_spring_system *sys) {
 	hs_spring_find_touches(world, sys, tol, fmax(tol, HS_REST_AHEAD * dt));
 	keep_meeting_ahead(world, sys, dt);
 	collect_active(world, sys);
-	if (sys->touch_count == 0)
+	if (sys->touch_count == 0) {
+		hs_spring_keep_forces(sys); // none: the next frame starts from none
 		return;
+	}
 	for (int t = 0; t < sys->touch_count; ++t) {
 		hs_spring_touch *c = &sys->touch[t];
 		c->e = hs_spring_pair_restitution(world, sys, c->a, c->b);

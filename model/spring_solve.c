@@ -13,6 +13,11 @@
 //    mN a sweep, balls stepping µm a frame for good). Where they cannot, the cone's answer lifts
 //    contacts whose friction is at its limit, which Coulomb's law does not: that frame is solved
 //    again in the older order.
+//  - Warm start: each sticking touch that goes on from the last frame starts from the forces it
+//    ended that frame with (sys->warm, part of the state, so a resumed run matches an unbroken
+//    one), so a still pile's solve goes on where the last frame's stopped: over frames it
+//    converges where one frame's 1000 sweeps did not (a pile the cone can hold needed 266,000
+//    sweeps from zero).
 #include <string.h>
 
 #include "spring_contact.h"
@@ -210,13 +215,52 @@ static void restart(hs_world *world, hs_spring_system *sys) {
 	}
 }
 
+// Each sticking touch that goes on from the last frame starts from the forces it ended it with:
+// its friction turned across the new normal, both put back in the cone.
+static void warm_start(hs_world *world, hs_spring_system *sys) {
+	double mu = sys->def.friction_static;
+	int w = 0;
+	for (int t = 0; t < sys->touch_count; ++t) {
+		hs_spring_touch *c = &sys->touch[t];
+		while (w < sys->warm_count && (sys->warm[w].a < c->a || (sys->warm[w].a == c->a && sys->warm[w].b < c->b)))
+			++w; // (both lists ascend)
+		if (w == sys->warm_count)
+			return;
+		const hs_spring_warm *last = &sys->warm[w];
+		if (last->a != c->a || last->b != c->b || c->open || hs_length_sq(c->slide) > 0.0)
+			continue;
+		double n = last->normal;
+		hs_vec3 f = hs_mul_add(last->friction, -hs_dot(last->friction, c->n), c->n);
+		onto_cone(&n, &f, mu);
+		c->normal = n;
+		c->friction = f;
+		hs_vec3 on_b = hs_mul_add(f, n, c->n);
+		hs_spring_rest_body *ra = &sys->rest[sys->rest_index[c->a]], *rb = &sys->rest[sys->rest_index[c->b]];
+		ra->acc = hs_mul_add(ra->acc, -1.0 / world->bodies[c->a].mass, on_b);
+		rb->acc = hs_mul_add(rb->acc, 1.0 / world->bodies[c->b].mass, on_b);
+	}
+}
+
+void hs_spring_keep_forces(hs_spring_system *sys) {
+	int n = sys->touch_count;
+	for (int t = 0; t < n; ++t) {
+		const hs_spring_touch *c = &sys->touch[t];
+		sys->warm[t] = (hs_spring_warm){c->a, c->b, c->normal, c->friction};
+	}
+	if (sys->warm_count > n) // (zero beyond the count: what a state's hash leaves out, spring_state.c)
+		memset(&sys->warm[n], 0, (size_t)(sys->warm_count - n) * sizeof *sys->warm);
+	sys->warm_count = n;
+}
+
 void hs_spring_solve(hs_world *world, hs_spring_system *sys, double dt) {
 	double scale = 0.0;
 	for (int k = 0; k < sys->active_count; ++k)
 		scale = fmax(scale, hs_length(sys->rest[k].force));
+	warm_start(world, sys);
 	solve(world, sys, dt, scale, true);
 	if (cone_lifts(world, sys, scale)) { // Coulomb's order instead (the file's header)
 		restart(world, sys);
 		solve(world, sys, dt, scale, false);
 	}
+	hs_spring_keep_forces(sys);
 }

@@ -5,9 +5,12 @@
 #include "spring_system.h"
 
 // The forces of the touches sys->touch and of the floor and walls on the objects sys->active
-// (sys->rest), from the set-up spring_rest.c's prepare leaves (forces zero, each object's
+// (sys->rest), as spring_rest.c's prepare left them set up (forces zero, each object's
 // acceleration under its free force).
 void hs_spring_solve(hs_world *world, hs_spring_system *sys, double dt);
+
+// The touches' forces as the frame's solve leaves them, for the next frame's start (sys->warm).
+void hs_spring_keep_forces(hs_spring_system *sys);
 
 // Relative: what the forces may leave unbalanced on an object they hold (of its load).
 #define HS_REST_TOLERANCE 1e-9

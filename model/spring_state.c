@@ -8,6 +8,8 @@
 // the loaded orientations. A load's CHECK pass refuses what would make a later step read out of
 // bounds or compute with garbage: indices and enums out of range, flags not 0 or 1, non-finite
 // numbers, stylus orientations that are not unit quaternions.
+#include <string.h>
+
 #include "spring_world.h"
 #include "state.h"
 #include "world_internal.h"
@@ -78,6 +80,31 @@ static void spring_io(hs_spring_system *sys, hs_state_io *io) {
 	hs_state_f64(io, &r->hand_speed);
 }
 
+// The touches' forces the next frame's resting solve starts from (spring_solve.c): every slot, so
+// the size depends on the definitions only; those beyond the count are zero (CHECK refuses
+// others), and HASH leaves them out: a hash every frame of a 1000-object box mixed 8000 slots for
+// its touches (+8 % instructions a frame), a default world's 512 for none.
+static void warm_io(hs_spring_system *sys, hs_state_io *io) {
+	int last = sys->capacity - 1;
+	int count = hs_state_count(io, &sys->warm_count, sys->touch_capacity);
+	int slots = io->mode == HS_STATE_HASH ? count : sys->touch_capacity;
+	for (int k = 0; k < slots; ++k) {
+		hs_spring_warm *w = &sys->warm[k];
+		if (k < count) {
+			hs_state_int_range(io, &w->a, 0, last);
+			hs_state_int_range(io, &w->b, 0, last);
+			hs_state_f64(io, &w->normal);
+			hs_state_vec3(io, &w->friction);
+			continue;
+		}
+		uint64_t zero[6] = {0};
+		for (int q = 0; q < 6; ++q)
+			hs_state_zero(io, &zero[q]);
+		if (io->mode == HS_STATE_LOAD)
+			*w = (hs_spring_warm){0, 0, 0.0, {0.0, 0.0, 0.0}};
+	}
+}
+
 // The spring definition as one checksum: a state saved under other spring parameters is refused.
 static uint64_t def_checksum(const hs_spring_def *d) {
 	const double numbers[] = {d->friction_static, d->friction_sliding, d->restitution, d->walls.x_min,
@@ -103,6 +130,7 @@ void hs_spring_state_io(hs_spring_system *sys, hs_state_io *io) {
 	stylus_io(sys, io);
 	spring_io(sys, io);
 	tracker_io(&sys->tracker, io);
+	warm_io(sys, io);
 	if (io->mode == HS_STATE_LOAD)
 		sys->geom_count = 0; // the geometry cache is rebuilt from the loaded bodies at the next step
 }

@@ -31,6 +31,14 @@ typedef struct hs_spring_touch {
 	uint8_t ahead;   // apart by more than the touch gap: its force only closes the gap by the frame's end
 } hs_spring_touch;
 
+// A touch's forces at the end of a frame: the next frame's solve starts from them where the
+// touch goes on (spring_solve.c's warm start).
+typedef struct hs_spring_warm {
+	int a, b;         // body indices, a < b
+	double normal;    // N
+	hs_vec3 friction; // N
+} hs_spring_warm;
+
 // A meeting of objects i < j at the fraction tau of the frame (spring_collide.c).
 typedef struct hs_spring_event {
 	int i, j;
@@ -100,6 +108,10 @@ struct hs_spring_system {
 	// touches in ascending (a, b), the objects in any (active, ascending), their forces
 	hs_spring_touch *touch;
 	int touch_count, touch_capacity;
+	// the touches' forces at the end of the last frame, ascending (a, b), touch_capacity slots,
+	// those beyond warm_count zero (the state visits every slot)
+	hs_spring_warm *warm;
+	int warm_count;
 	int *active;
 	int active_count;
 	int *rest_index;          // object → its place in `active`, -1 when in no touch

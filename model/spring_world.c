@@ -37,6 +37,7 @@ void hs_spring_system_destroy(hs_spring_system *system) {
 	free(system->params_mass);
 	free(system->moved);
 	free(system->active);
+	free(system->warm);
 	free(system->rest_index);
 	free(system->rest);
 	free(system->load);
@@ -77,6 +78,7 @@ hs_status hs_world_enable_springs(hs_world *world, const hs_spring_def *def) {
 	sys->params_mass = calloc(cap, sizeof *sys->params_mass);
 	sys->touch_capacity = (int)(HS_SPRING_TOUCHES_PER_OBJECT * cap);
 	sys->touch = calloc((size_t)sys->touch_capacity, sizeof *sys->touch);
+	sys->warm = calloc((size_t)sys->touch_capacity, sizeof *sys->warm);
 	sys->active = calloc(cap, sizeof *sys->active);
 	sys->rest_index = malloc(cap * sizeof *sys->rest_index);
 	for (size_t i = 0; sys->rest_index && i < cap; ++i)
@@ -89,7 +91,7 @@ hs_status hs_world_enable_springs(hs_world *world, const hs_spring_def *def) {
 	bool grid = hs_hgrid_alloc(&sys->grid, (int)cap, 3);
 	sys->grid_count = -1;
 	if (!sys->geom || !sys->on_floor || !sys->sliding || !sys->separated || !sys->saved_pos || !sys->saved_vel ||
-	    !sys->near || !sys->nb || !sys->nb_start || !sys->nb_pos || !sys->box_lo || !sys->box_hi || !sys->nb_lo || !sys->nb_hi || !grid || !sys->touch || !sys->active || !sys->rest_index || !sys->rest || !sys->load ||
+	    !sys->near || !sys->nb || !sys->nb_start || !sys->nb_pos || !sys->box_lo || !sys->box_hi || !sys->nb_lo || !sys->nb_hi || !grid || !sys->touch || !sys->warm || !sys->active || !sys->rest_index || !sys->rest || !sys->load ||
 	    !sys->held || !sys->path_pos || !sys->path_vel || !sys->path_t0 || !sys->events || !sys->version || !sys->params || !sys->params_mass ||
 	    !sys->moved) {
 		hs_spring_system_destroy(sys);

@@ -6,7 +6,9 @@
 //
 // Contract for a walk (world_io in state.c, hs_spring_state_io for the spring system):
 //  - visit every STATE field once, in a fixed order that depends only on the model (counts,
-//    capacities), never on the values (the size must not change while stepping);
+//    capacities), never on the values (the size must not change while stepping); one exception,
+//    in HASH mode only: slots beyond a count (hs_state_count) that must be zero (hs_state_zero:
+//    CHECK refuses others) may be left out (the spring's warm-start forces, spring_state.c);
 //  - pass each field through the hs_state_* call of its type; give ranged calls the range a
 //    valid state obeys (enums, indices, flags): CHECK refuses a buffer that breaks it;
 //  - in CHECK mode nothing is written (the calls only read and validate); in LOAD mode every field
@@ -75,6 +77,11 @@ void hs_state_u8_range_io(hs_state_io *io, uint8_t *v, uint8_t hi);
 void hs_state_bool_io(hs_state_io *io, bool *v);
 void hs_state_mask_io(hs_state_io *io, uint64_t *v, int bits);
 void hs_state_rotation_io(hs_state_io *io, hs_quat *v);
+// A count of slots in [0, hi] (an int word); returns the count the rest of the walk follows: the
+// buffer's in CHECK and LOAD (0 when out of range: refused anyway), *v otherwise.
+int hs_state_count(hs_state_io *io, int *v, int hi);
+// A word that must be zero (a slot beyond its count); CHECK refuses any other.
+void hs_state_zero(hs_state_io *io, uint64_t *v);
 
 static inline void hs_state_u64(hs_state_io *io, uint64_t *v) {
 	if (io->mode == HS_STATE_HASH)

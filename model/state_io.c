@@ -75,6 +75,24 @@ void hs_state_u64_io(hs_state_io *io, uint64_t *v) {
 		*v = w;
 }
 
+int hs_state_count(hs_state_io *io, int *v, int hi) {
+	int64_t w = (int64_t)word(io, (uint64_t)(int64_t)*v);
+	bool in_range = w >= 0 && w <= (int64_t)hi;
+	if (!in_range)
+		hs_state_refuse(io, "a count out of range");
+	if (loading(io))
+		*v = in_range ? (int)w : 0;
+	return io->mode == HS_STATE_CHECK || io->mode == HS_STATE_LOAD ? (in_range ? (int)w : 0) : *v;
+}
+
+void hs_state_zero(hs_state_io *io, uint64_t *v) {
+	uint64_t w = word(io, *v);
+	if (w != 0u)
+		hs_state_refuse(io, "a slot beyond its count not zero");
+	if (loading(io))
+		*v = 0u;
+}
+
 void hs_state_f64_io(hs_state_io *io, double *v) {
 	uint64_t w = word(io, hs_state_bits(*v));
 	double d;
