@@ -23,9 +23,10 @@
 //    resting push, which an object the floor's static friction holds takes without moving); the
 //    floor and the walls absorb (§4.4).
 //  - An object in contact that is slower than 1 µm/s, sticks at all its contacts, lies in no other
-//    deeper than HS_REST_DRIFT and on which the forces leave less than 1e-9 of its load (the
-//    floor's tolerances) is held: it keeps its position to the bit, its velocity is zero, and it
-//    is not stepped.
+//    deeper than HS_REST_DRIFT beyond the touch gap (what a resting separation parts is the depth
+//    beyond the gap: spring_collide.c) and on which the forces leave less than 1e-9 of its load
+//    (the floor's tolerances) is held: it keeps its position to the bit, its velocity is zero, and
+//    it is not stepped.
 #include <string.h>
 
 #include "spring_collide.h"
@@ -287,11 +288,11 @@ void hs_spring_rest(hs_world *world, hs_spring_system *sys) {
 		sys->load[c->a] = hs_sub(sys->load[c->a], f);
 		sys->load[c->b] = hs_add(sys->load[c->b], f);
 	}
-	for (int t = 0; t < sys->touch_count; ++t) { // sliding on another, or deeper in it than drift: not held
+	for (int t = 0; t < sys->touch_count; ++t) { // sliding on another, or deeper than the gap and drift: not held
 		const hs_spring_touch *c = &sys->touch[t];
 		if (c->ahead && !(c->normal > 0.0))
 			continue;
-		if (hs_length_sq(c->slide) > 0.0 || c->depth > HS_REST_DRIFT)
+		if (hs_length_sq(c->slide) > 0.0 || c->depth - tol > HS_REST_DRIFT)
 			sys->held[c->a] = sys->held[c->b] = 2;
 	}
 	for (int k = 0; k < sys->active_count; ++k) {
