@@ -89,6 +89,11 @@ struct hs_spring_system {
 	uint32_t *version;       // per object: bumped when it is answered, so its listed meetings go stale
 	uint8_t *moved;          // moved by a separation pass (bit 0: the last, bit 1: this one)
 	bool shock;              // an end pass is separating bottom up (spring_collide.c)
+	// SCRATCH of the floor layer's projection (spring_collide.c): objects on the floor in a pair an
+	// end pass found deeper than the drift, and those the projection pushed since (marked in in_layer)
+	int *layer;
+	uint8_t *in_layer;
+	int layer_count;
 	int event_count, event_capacity;
 	// CACHE: the collisions' broad phase (spring_collide.c), 3D, built for grid_count objects
 	// (-1: to build), refiled every frame; near holds a query's result

@@ -38,6 +38,8 @@ void hs_spring_system_destroy(hs_spring_system *system) {
 	free(system->moved);
 	free(system->active);
 	free(system->warm);
+	free(system->layer);
+	free(system->in_layer);
 	free(system->rest_index);
 	free(system->rest);
 	free(system->load);
@@ -79,6 +81,8 @@ hs_status hs_world_enable_springs(hs_world *world, const hs_spring_def *def) {
 	sys->touch_capacity = (int)(HS_SPRING_TOUCHES_PER_OBJECT * cap);
 	sys->touch = calloc((size_t)sys->touch_capacity, sizeof *sys->touch);
 	sys->warm = calloc((size_t)sys->touch_capacity, sizeof *sys->warm);
+	sys->layer = calloc(cap, sizeof *sys->layer);
+	sys->in_layer = calloc(cap, sizeof *sys->in_layer);
 	sys->active = calloc(cap, sizeof *sys->active);
 	sys->rest_index = malloc(cap * sizeof *sys->rest_index);
 	for (size_t i = 0; sys->rest_index && i < cap; ++i)
@@ -91,7 +95,7 @@ hs_status hs_world_enable_springs(hs_world *world, const hs_spring_def *def) {
 	bool grid = hs_hgrid_alloc(&sys->grid, (int)cap, 3);
 	sys->grid_count = -1;
 	if (!sys->geom || !sys->on_floor || !sys->sliding || !sys->separated || !sys->saved_pos || !sys->saved_vel ||
-	    !sys->near || !sys->nb || !sys->nb_start || !sys->nb_pos || !sys->box_lo || !sys->box_hi || !sys->nb_lo || !sys->nb_hi || !grid || !sys->touch || !sys->warm || !sys->active || !sys->rest_index || !sys->rest || !sys->load ||
+	    !sys->near || !sys->nb || !sys->nb_start || !sys->nb_pos || !sys->box_lo || !sys->box_hi || !sys->nb_lo || !sys->nb_hi || !grid || !sys->touch || !sys->warm || !sys->layer || !sys->in_layer || !sys->active || !sys->rest_index || !sys->rest || !sys->load ||
 	    !sys->held || !sys->path_pos || !sys->path_vel || !sys->path_t0 || !sys->events || !sys->version || !sys->params || !sys->params_mass ||
 	    !sys->moved) {
 		hs_spring_system_destroy(sys);
