@@ -25,6 +25,8 @@
 //    as that and the potential energy it released this frame pay, and at least back to half the
 //    drift (so no overlap deeper than the drift stays; that last step is not paid for, and
 //    test_spring_rest's closed box measures that its energy still never rises).
+//  - Resting pairs on the floor left deeper than the drift by the end passes are projected out
+//    together, along the floor (project_floor_layer): no energy either way.
 #include <stdlib.h>
 #include <string.h>
 
