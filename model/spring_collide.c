@@ -193,6 +193,11 @@ static bool still(const hs_world *world, const hs_spring_system *sys, int i) {
 	return p.x == s.x && p.y == s.y && b->vel.x == 0.0 && b->vel.y == 0.0;
 }
 
+// Object i lies on the floor (within the floor's tolerance).
+static bool lies_on_floor(const hs_world *world, const hs_spring_system *sys, int i) {
+	return world->bodies[i].pos.z + sys->geom[i].lo.z <= world->def.floor_tolerance;
+}
+
 // The direction d (unit) object i can be moved along to separate it: without the components
 // into the floor or a wall it touches, and none at all, for a resting contact, when it lies on the
 // floor and has not moved this frame (static friction holds it: the overlap is the other's doing).
@@ -202,7 +207,7 @@ static hs_vec3 free_part(const hs_world *world, const hs_spring_system *sys, int
 	hs_vec3 p = b->pos;
 	double tol = world->def.floor_tolerance;
 	const hs_spring_walls *wl = &sys->def.walls;
-	bool on_floor = p.z + g->lo.z <= tol;
+	bool on_floor = lies_on_floor(world, sys, i);
 	if (holds && on_floor && d.z <= 0.0 && still(world, sys, i))
 		return hs_v3(0.0, 0.0, 0.0); // it has not moved this frame
 	if (d.z < 0.0 && on_floor)
@@ -479,8 +484,7 @@ static double first_meeting(const hs_world *world, const hs_spring_system *sys, 
 
 // Two objects lying on the floor.
 static bool both_on_floor(const hs_world *world, const hs_spring_system *sys, int i, int j) {
-	double tol = world->def.floor_tolerance;
-	return world->bodies[i].pos.z + sys->geom[i].lo.z <= tol && world->bodies[j].pos.z + sys->geom[j].lo.z <= tol;
+	return lies_on_floor(world, sys, i) && lies_on_floor(world, sys, j);
 }
 
 // Object i joins the floor layer's projection (once).
@@ -655,7 +659,6 @@ static bool earliest(hs_spring_system *sys, hs_spring_event *out) {
 static bool unmoved(const hs_world *world, const hs_spring_system *sys, int i) {
 	return sys->held[i] && memcmp(&world->bodies[i].pos, &sys->saved_pos[i], sizeof(hs_vec3)) == 0;
 }
-
 
 // Sorts by event_order in place: the meetings' min-heap (sift_down) taken apart from the back
 // leaves the events in falling order, then reversed. glibc's qsort allocates a buffer for arrays
