@@ -690,18 +690,30 @@ static void detect_lines(hs_world *world, int object, int h, const hs_part *part
 			continue;
 		hs_vec3 p[2];
 		line_to_body(body, l, p);
+		bool embedded = swept && (hand->embed_lines >> j & 1u);
+		// where no path is swept (a held object; the grown and paper tests) a line that misses the
+		// part now is done whatever the test beside the touching points a frame ago says: clipped
+		// before the line a frame ago is transformed (most lines that pass the spheres end here)
+		bool miss_ends = (moved || !swept) && !embedded;
 		if (swept && end_touches(world, touching, a, shape, part, p))
 			continue; // beside a touching check point at the frame's end
+		hs_clip c = {0.0, 1.0, -1, -1, false};
+		if (miss_ends) {
+			c = clip_part(world, shape, part, p[0], p[1], grow);
+			if (!c.hit)
+				continue;
+		}
 		hs_vec3 q[2]; // the line a frame ago
 		line_to_body(before, m, q);
 		if (swept && end_touches(world, hand->touch_points, a, shape, part, q))
 			continue; // or at its start
-		if (swept && (hand->embed_lines >> j & 1u)) { // started inside: touches nothing until clear
+		if (embedded) { // started inside: touches nothing until clear
 			if (clip_part(world, shape, part, p[0], p[1], 2.0 * world->def.grasp_release_mm * 1e-3).hit)
 				world->hands[h].embed_lines_next |= (uint64_t)1 << j;
 			continue;
 		}
-		hs_clip c = clip_part(world, shape, part, p[0], p[1], grow);
+		if (!miss_ends)
+			c = clip_part(world, shape, part, p[0], p[1], grow);
 		if (!c.hit) {
 			if (swept && !moved) // a held object moves with the hand: nothing passes through it unseen
 				swept_path(world, object, h, j, part, body, before, steps, p);
