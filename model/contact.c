@@ -362,9 +362,11 @@ static void detect_points(hs_world *world, int object, int h, const hs_part *par
 		hs_vec3 a = to_body(before, hand->prev_points[i]); // where it was
 		hs_clip c;
 		hs_vec3 from = a, to = b; // (path_enters sets them when it enters: read only then)
-		bool entered;
+		bool entered = false;
 		double when = 0.0;
-		if (grow > 0.0 || steps == 1) {
+		if (touched) {
+			// the entry is read only for a point that did not touch: not sought
+		} else if (grow > 0.0 || steps == 1) {
 			c = clip_part(world, shape, part, a, b, grow);
 			from = a;
 			to = b;
