@@ -566,12 +566,13 @@ static bool swept_line(hs_world *world, int object, int h, int j, const hs_part 
 
 // A check line that misses the part now (p, body frame): the first piece of its path through the
 // frame that swept across the part makes the contact. Touching it at the start of a piece, it
-// had reached it before and left again: nothing.
+// had reached it before and left again: nothing. `start`: the line a frame ago, in the frame of the
+// object's pose before the step (transformed once, by detect_lines).
 static void swept_path(hs_world *world, int object, int h, int j, const hs_part *part, const frame *body,
-                       const frame *before, int steps, const hs_vec3 p[2]) {
+                       int steps, const hs_vec3 start[2], const hs_vec3 p[2]) {
 	const hs_shape *shape = &world->shapes[world->bodies[object].shape];
 	const hs_hand *hand = &world->hands[h];
-	hs_vec3 q[2] = {to_body(before, hand->prev_lines[j][0]), to_body(before, hand->prev_lines[j][1])};
+	hs_vec3 q[2] = {start[0], start[1]};
 	for (int k = 1; k <= steps; ++k) {
 		if (clip_part(world, shape, part, q[0], q[1], 0.0).hit)
 			return;
@@ -718,7 +719,7 @@ static void detect_lines(hs_world *world, int object, int h, const hs_part *part
 			c = clip_part(world, shape, part, p[0], p[1], grow);
 		if (!c.hit) {
 			if (swept && !moved) // a held object moves with the hand: nothing passes through it unseen
-				swept_path(world, object, h, j, part, body, before, steps, p);
+				swept_path(world, object, h, j, part, body, steps, q, p);
 			continue;
 		}
 		if (!across(c))
