@@ -282,13 +282,15 @@ static void hand_pose_wrist(const reading *r, hand_pose *out) {
 
 static hs_vec3 mirror_if(bool left, hs_vec3 v) { return left ? hs_v3(v.x, -v.y, v.z) : v; }
 
-// out[e] = hs_quat_rotate(q, v[e]) for the 4 offsets. With SSE2, two at a time, one per lane:
-// each lane does hs_quat_rotate's products and sums in its order (the same bits).
-static void rotate_offsets(hs_quat q, const hs_vec3 v[4], hs_vec3 out[4]) {
+// A segment's 4 check lines from its ends a, b and its frame q: line e runs from a + off to b + off,
+// off = hs_quat_rotate(q, v[e]), mirrored for a left hand. With SSE2, two lines at a time, one per
+// lane: each lane does hs_quat_rotate's products and sums, then the additions, in their order
+// (the same bits); the mirror is the sign of y.
+static void segment_lines(hs_quat q, const hs_vec3 v[4], hs_vec3 a, hs_vec3 b, bool left, hs_vec3 out[4][2]) {
 	int e = 0;
 #if defined(__SSE2__)
 	const __m128d ux = _mm_set1_pd(q.x), uy = _mm_set1_pd(q.y), uz = _mm_set1_pd(q.z), w = _mm_set1_pd(q.w),
-	              two = _mm_set1_pd(2.0);
+	              two = _mm_set1_pd(2.0), flip = _mm_set1_pd(left ? -0.0 : 0.0);
 	for (; e < 4; e += 2) {
 		hs_lanes2 in = hs_lanes2_load(&v[e], &v[e + 1]);
 		__m128d vx = in.x, vy = in.y, vz = in.z;
@@ -300,11 +302,19 @@ static void rotate_offsets(hs_quat q, const hs_vec3 v[4], hs_vec3 out[4]) {
 		__m128d ox = _mm_add_pd(_mm_add_pd(vx, _mm_mul_pd(tx, w)), _mm_sub_pd(_mm_mul_pd(uy, tz), _mm_mul_pd(uz, ty)));
 		__m128d oy = _mm_add_pd(_mm_add_pd(vy, _mm_mul_pd(ty, w)), _mm_sub_pd(_mm_mul_pd(uz, tx), _mm_mul_pd(ux, tz)));
 		__m128d oz = _mm_add_pd(_mm_add_pd(vz, _mm_mul_pd(tz, w)), _mm_sub_pd(_mm_mul_pd(ux, ty), _mm_mul_pd(uy, tx)));
-		hs_lanes2_store((hs_lanes2){ox, oy, oz}, &out[e], &out[e + 1]);
+		hs_lanes2 from = {_mm_add_pd(_mm_set1_pd(a.x), ox), _mm_xor_pd(_mm_add_pd(_mm_set1_pd(a.y), oy), flip),
+		                  _mm_add_pd(_mm_set1_pd(a.z), oz)};
+		hs_lanes2 to = {_mm_add_pd(_mm_set1_pd(b.x), ox), _mm_xor_pd(_mm_add_pd(_mm_set1_pd(b.y), oy), flip),
+		                _mm_add_pd(_mm_set1_pd(b.z), oz)};
+		hs_lanes2_store(from, &out[e][0], &out[e + 1][0]);
+		hs_lanes2_store(to, &out[e][1], &out[e + 1][1]);
 	}
 #endif
-	for (; e < 4; e++)
-		out[e] = hs_quat_rotate(q, v[e]);
+	for (; e < 4; e++) {
+		hs_vec3 off = hs_quat_rotate(q, v[e]);
+		out[e][0] = mirror_if(left, hs_add(a, off));
+		out[e][1] = mirror_if(left, hs_add(b, off));
+	}
 }
 
 void hs_glove_table_build(const hs_hand_def *def, hs_glove_table *table) {
@@ -332,12 +342,8 @@ void hs_hand_local_shape_with(const hs_hand_def *def, const hs_glove_table *tabl
 	const hs_vec3 offsets[4] = {{0.0, rad, 0.0}, {0.0, -rad, 0.0}, {0.0, 0.0, rad}, {0.0, 0.0, -rad}};
 	for (int s = 0; s < 15; s++) {
 		int f = s / 3, k = s % 3;
-		hs_vec3 a = pose.points[f * 4 + k], b = pose.points[f * 4 + k + 1], off[4];
-		rotate_offsets(pose.segment[s], offsets, off);
-		for (int e = 0; e < 4; e++) {
-			lines[s * 4 + e][0] = mirror_if(def->left, hs_add(a, off[e]));
-			lines[s * 4 + e][1] = mirror_if(def->left, hs_add(b, off[e]));
-		}
+		segment_lines(pose.segment[s], offsets, pose.points[f * 4 + k], pose.points[f * 4 + k + 1], def->left,
+		              &lines[s * 4]);
 	}
 }
 
