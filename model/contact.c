@@ -648,6 +648,26 @@ static bool ends_deep(const hs_world *world, const hs_hand *hand, uint32_t touch
 	return false;
 }
 
+// What detect_lines tests a finger segment by, for a part's bounding sphere of radius r. A
+// segment's 4 check lines lie finger_radius from its axis (joint to joint), at every point of the
+// path: when the axis is further than rs = r + finger_radius from the part, all four are, and none
+// is tested one by one (the same lines culled, fewer distances taken). Where the paths count, a
+// line's piece of path has its corners' mean within finger_radius of the axis' and its sphere at
+// most 2 finger_radius wider: when the axis' misses rp = r + 3 finger_radius, the lines' miss r.
+// An axis within ri = r - finger_radius has all four lines within r: none is tested alone. A
+// touching check point inside the part grown by deep = margin - finger_radius has the segment's
+// line ends beside it inside the part grown by the margin: end_touches holds for all four lines.
+typedef struct segment_bounds {
+	double rs, rp, ri, deep;
+} segment_bounds;
+
+static segment_bounds segment_bounds_of(const hs_world *world, const hs_hand *hand, double r) {
+	double rf = hand->def.finger_radius;
+	segment_bounds b = {r + rf + HS_CULL_SLACK, r + 3.0 * rf + HS_CULL_SLACK, r - rf - HS_CULL_SLACK,
+	                    world->def.grasp_release_mm * 1e-3 - rf - HS_CULL_SLACK};
+	return b;
+}
+
 // (B) check lines against the part: across it now (reached it this frame, sunk in, or across it
 // since before it touched anything, as the check points in detect_points), or swept across it
 // during the frame. A line with an end inside is the check points' business.
@@ -659,18 +679,7 @@ static void detect_lines(hs_world *world, int object, int h, const hs_part *part
 	double r = part->radius + grow;
 	bool paper = world->def.paper_contacts, swept = grow == 0.0 && !paper;
 	int steps = moved ? 1 : hand->path_steps; // a held object moves with the hand: chords suffice
-	// a finger segment's 4 check lines lie finger_radius from its axis (joint to joint), at every
-	// point of the path: when the axis is further than r + finger_radius from the part, all four
-	// are, and none is tested one by one (the same lines culled, fewer distances taken). Where the
-	// paths count, a line's piece of path has its corners' mean within finger_radius of the axis'
-	// and its sphere at most 2 finger_radius wider: when the axis' misses r + 3 finger_radius, the
-	// lines' miss r.
-	// An axis within r - finger_radius has all four lines within r: none is tested alone.
-	double rf = hand->def.finger_radius, rs = r + rf + HS_CULL_SLACK, rp = r + 3.0 * rf + HS_CULL_SLACK,
-	       ri = r - rf - HS_CULL_SLACK;
-	// A touching check point inside the part grown by margin - finger_radius has the segment's line
-	// ends beside it inside the part grown by the margin: end_touches holds for all four lines.
-	double deep = world->def.grasp_release_mm * 1e-3 - rf - HS_CULL_SLACK;
+	segment_bounds sb = segment_bounds_of(world, hand, r);
 	int a = 0;             // the first check point of line j's segment
 	bool all_near = false; // the segment's lines are all within r now
 	for (int j = 0; j < HS_HAND_LINES; ++j) {
@@ -678,15 +687,12 @@ static void detect_lines(hs_world *world, int object, int h, const hs_part *part
 		if (j % 4 == 0) {
 			a = SEGMENT_FIRST_POINT[j / 4];
 			double d = cull ? segment_distance_sq(center, hand->points[a], hand->points[a + 1]) : 0.0;
-			if (cull && d > rs * rs && (!swept || moved || !axis_path_near(hand, a, steps, center, rp))) {
-				j += 3; // the segment's other three lines too
+			if ((cull && d > sb.rs * sb.rs && (!swept || moved || !axis_path_near(hand, a, steps, center, sb.rp))) ||
+			    (swept && ends_deep(world, hand, touching, a, body, shape, part, sb.deep))) {
+				j += 3; // the segment's other three lines too (far, or each beside a touching point)
 				continue;
 			}
-			all_near = ri > 0.0 && d <= ri * ri;
-			if (swept && ends_deep(world, hand, touching, a, body, shape, part, deep)) {
-				j += 3; // every line of the segment is beside a touching point (end_touches)
-				continue;
-			}
+			all_near = sb.ri > 0.0 && d <= sb.ri * sb.ri;
 		}
 		if (cull && !all_near && segment_distance_sq(center, l[0], l[1]) > r * r &&
 		    (!swept || moved || !line_path_near(hand, j, steps, center, r)))
