@@ -269,6 +269,8 @@ static hs_vec3 path_point(const hs_hand *hand, int i, int k, int steps) {
 
 // True when check point i's path through the frame comes within sqrt(r_sq) of c.
 static bool path_near(const hs_hand *hand, int i, int steps, hs_vec3 c, double r_sq) {
+	if (steps == 1) // one piece (most frames): read straight, not through path_point
+		return segment_distance_sq(c, hand->prev_points[i], hand->points[i]) <= r_sq;
 	for (int k = 0; k < steps; ++k)
 		if (segment_distance_sq(c, path_point(hand, i, k, steps), path_point(hand, i, k + 1, steps)) <= r_sq)
 			return true;
@@ -613,6 +615,8 @@ static bool line_path_near(const hs_hand *hand, int j, int steps, hs_vec3 c, dou
 
 // The same for the axis of a finger segment, check points a to a + 1.
 static bool axis_path_near(const hs_hand *hand, int a, int steps, hs_vec3 c, double r) {
+	if (steps == 1) // one piece (most frames): read straight, not through path_point
+		return quad_near(hand->prev_points[a], hand->prev_points[a + 1], hand->points[a], hand->points[a + 1], c, r);
 	for (int k = 0; k < steps; ++k)
 		if (quad_near(path_point(hand, a, k, steps), path_point(hand, a + 1, k, steps), path_point(hand, a, k + 1, steps),
 		              path_point(hand, a + 1, k + 1, steps), c, r))
