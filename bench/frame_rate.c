@@ -690,6 +690,9 @@ void bench_frame_rate(const bench_opts *opts, bench_shared *shared) {
 		snprintf(value, sizeof value, "%.0fx  (%.3f us/frame; grasp lost %ld frames)", 1.0 / honest.on.median / 17.0,
 		         1e6 * honest.on.median, honest.lost_on);
 		bench_summary_add("1 frame rate", "honest frame: ratio to the paper's 17 frames/s", value, BENCH_INFO);
+		snprintf(value, sizeof value, "%.0f frames/s (%.3f us/frame)", 1.0 / honest.on.median, 1e6 * honest.on.median);
+		bench_summary_add("target", "honest frame >= 1,000,000 frames/s, 1 core", value,
+		                  1.0 / honest.on.median >= 1e6 ? BENCH_MET : BENCH_NOT_MET);
 	}
 	if (seed->valid) {
 		shared->seed_us_per_frame = 1e6 * seed->on.median;
