@@ -424,22 +424,40 @@ static double farthest_sq(hs_vec3 c, const hs_vec3 *v, int n, double r_sq) {
 }
 
 // The bounding sphere of a shape in the wrist frame: about the mean check point, over the points
-// and the line ends.
-static void local_bounds(const hs_vec3 points[HS_HAND_POINTS], const hs_vec3 lines[HS_HAND_LINES][2], hs_vec3 *center,
-                         double *radius) {
+// and the line ends. A segment's line ends lie finger_radius `rad` from the check points at its
+// ends, so a segment whose check points are nearer than the farthest distance found so far by more
+// than rad (and a relative slack far above rounding) cannot hold the farthest: its 8 ends are
+// passed over, the fingertips' segments taken first (they hold it mostly). A maximum does not
+// depend on the order it is taken in, so the radius is the same bits as over every end.
+static void local_bounds(const hs_vec3 points[HS_HAND_POINTS], const hs_vec3 lines[HS_HAND_LINES][2], double rad,
+                         hs_vec3 *center, double *radius) {
 	hs_vec3 c = hs_v3(0, 0, 0);
 	for (int i = 0; i < HS_HAND_POINTS; ++i)
 		c = hs_add(c, points[i]);
 	c = hs_scale(c, 1.0 / HS_HAND_POINTS);
-	double r_sq = farthest_sq(c, &lines[0][0], 2 * HS_HAND_LINES, 0.0);
-	r_sq = farthest_sq(c, points, HS_HAND_POINTS, r_sq);
+	double d_sq[HS_HAND_POINTS], r_sq = 0.0;
+	for (int i = 0; i < HS_HAND_POINTS; ++i) { // as farthest_sq: a NaN distance is passed over
+		d_sq[i] = hs_length_sq(hs_sub(points[i], c));
+		r_sq = d_sq[i] > r_sq ? d_sq[i] : r_sq;
+	}
+	// each segment s (fingertips first) with its first check point, 4 (s / 3) + s % 3
+	static const int order[15][2] = {{2, 2},  {5, 6},  {8, 10}, {11, 14}, {14, 18}, {0, 0},   {1, 1},  {3, 4},
+	                                 {4, 5},  {6, 8},  {7, 9},  {9, 12},  {10, 13}, {12, 16}, {13, 17}};
+	for (int k = 0; k < 15; ++k) {
+		int s = order[k][0], a = order[k][1];
+		double most = d_sq[a] > d_sq[a + 1] ? d_sq[a] : d_sq[a + 1];
+		double reach = (sqrt(most) + rad) * (1.0 + 1e-9) + 1e-12; // NaN: not passed over
+		if (!(reach * reach < r_sq))
+			r_sq = farthest_sq(c, &lines[4 * s][0], 8, r_sq);
+	}
 	*center = c;
 	*radius = sqrt(r_sq);
 }
 
 void hs_hand_update_shape(hs_hand *hand) {
 	hs_hand_local_shape_with(&hand->def, &hand->glove, hand->sensors, hand->local_points, hand->local_lines);
-	local_bounds(hand->local_points, (const hs_vec3(*)[2])hand->local_lines, &hand->local_center, &hand->local_radius);
+	local_bounds(hand->local_points, (const hs_vec3(*)[2])hand->local_lines, hand->def.finger_radius, &hand->local_center,
+	             &hand->local_radius);
 }
 
 void hs_hand_update_bounds(hs_hand *hand) {
@@ -510,7 +528,8 @@ void hs_hand_refresh(hs_hand *hand) {
 	hs_hand_local_shape_with(&hand->def, &hand->glove, hand->prev_sensors, hand->local_points, hand->local_lines);
 	hs_hand_place(hand->local_points, (const hs_vec3(*)[2])hand->local_lines, hand->prev_wrist_pos,
 	              hand->prev_wrist_rot, hand->prev_points, hand->prev_lines);
-	local_bounds(hand->local_points, (const hs_vec3(*)[2])hand->local_lines, &hand->local_center, &hand->local_radius);
+	local_bounds(hand->local_points, (const hs_vec3(*)[2])hand->local_lines, hand->def.finger_radius, &hand->local_center,
+	             &hand->local_radius);
 	hand->center = hs_add(hand->prev_wrist_pos, hs_quat_rotate(hand->prev_wrist_rot, hand->local_center));
 	hand->radius = hand->local_radius + 1e-6;
 	hand->prev_center = hand->center;

@@ -11,6 +11,7 @@
 
 #include <cmocka.h>
 
+#include "hand_internal.h"
 #include "hs_harness.h"
 #include "test_util.h"
 
@@ -318,6 +319,42 @@ static void test_left_hand_mirrors(void **state) {
 	hs_hand_kinematics(&left, at, rot, s, q, NULL);
 	for (int i = 0; i < HS_HAND_POINTS; i++)
 		assert_vec3_near(q[i], hs_add(at, hs_quat_rotate(rot, pl[i])), EPS);
+}
+
+// The hand's bounding sphere in the wrist frame passes over the segments that cannot hold its
+// farthest line end (hand.c, local_bounds): its radius must still be the largest distance from its
+// centre to any check point or line end, to the bit, for either hand, thin or thick fingers and any
+// reading.
+static void test_bounds_reach_the_farthest_end(void **state) {
+	(void)state;
+	hs_hand *hand = calloc(1, sizeof *hand);
+	assert_non_null(hand);
+	uint32_t x = 12345u;
+	const double radii[3] = {0.002, 0.008, 0.03};
+	for (int trial = 0; trial < 3000; ++trial) {
+		hand->def = hs_default_hand_def();
+		hand->def.left = trial % 2 == 1;
+		hand->def.finger_radius = radii[trial % 3];
+		for (int i = 0; i < HS_GLOVE_SENSORS; ++i) {
+			x = x * 1664525u + 1013904223u; // a fixed LCG: the same readings every run
+			hand->sensors[i] = (uint8_t)(x >> 24);
+		}
+		hs_glove_table_build(&hand->def, &hand->glove);
+		hs_hand_update_shape(hand);
+		double most = 0.0;
+		for (int i = 0; i < HS_HAND_POINTS; ++i) {
+			double d = hs_length_sq(hs_sub(hand->local_points[i], hand->local_center));
+			most = d > most ? d : most;
+		}
+		for (int j = 0; j < HS_HAND_LINES; ++j)
+			for (int k = 0; k < 2; ++k) {
+				double d = hs_length_sq(hs_sub(hand->local_lines[j][k], hand->local_center));
+				most = d > most ? d : most;
+			}
+		double radius = sqrt(most);
+		assert_memory_equal(&radius, &hand->local_radius, sizeof radius);
+	}
+	free(hand);
 }
 
 // every check line is a long edge of its segment's prism: parallel to the axis, r from it
@@ -1038,6 +1075,7 @@ int main(void) {
 	    cmocka_unit_test(test_abduction_and_arch),
 	    cmocka_unit_test(test_wrist_rotations),
 	    cmocka_unit_test(test_left_hand_mirrors),
+	    cmocka_unit_test(test_bounds_reach_the_farthest_end),
 	    cmocka_unit_test(test_check_lines),
 	    cmocka_unit_test(test_thumb_opposition),
 	    cmocka_unit_test(test_grasp_width),
