@@ -141,8 +141,12 @@ static void part_box(const posed_part *p, hs_vec3 *centre, hs_vec3 *half) {
 		hi = hs_v3(v.x > hi.x ? v.x : hi.x, v.y > hi.y ? v.y : hi.y, v.z > hi.z ? v.z : hi.z);
 	}
 	hs_vec3 c = hs_scale(hs_add(lo, hi), 0.5), h = hs_scale(hs_sub(hi, lo), 0.5);
-	hs_vec3 ux = hs_quat_rotate(p->rot, hs_v3(1, 0, 0)), uy = hs_quat_rotate(p->rot, hs_v3(0, 1, 0)),
-	        uz = hs_quat_rotate(p->rot, hs_v3(0, 0, 1));
+	// hs_quat_rotate of the three axes with its products by 0 and 1 left out: only the signs of
+	// zeros can differ, and only magnitudes are read
+	double x = p->rot.x, y = p->rot.y, z = p->rot.z, w = p->rot.w, a = 2.0 * x, b = 2.0 * y, d = 2.0 * z;
+	hs_vec3 ux = hs_v3(1.0 + (y * -b - z * d), d * w - x * -b, -b * w + x * d);
+	hs_vec3 uy = hs_v3(-d * w + y * a, 1.0 + (z * -d - x * a), a * w - y * -d);
+	hs_vec3 uz = hs_v3(b * w - z * -a, -a * w + z * b, 1.0 + (x * -a - y * b));
 	*centre = hs_add(p->pos, hs_quat_rotate(p->rot, c));
 	*half = hs_v3(fabs(ux.x) * h.x + fabs(uy.x) * h.y + fabs(uz.x) * h.z,
 	              fabs(ux.y) * h.x + fabs(uy.y) * h.y + fabs(uz.y) * h.z,
