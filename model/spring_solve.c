@@ -49,18 +49,27 @@ static void onto_cone(double *n, hs_vec3 *f, double mu) {
 	*n = nn;
 }
 
+// Contact forces (*normal, *friction) stepped to (n, f) and projected onto the cone |f| ≤ μ n:
+// the new forces kept, their changes in *dn and *df; the larger change.
+static double step_in_cone(double *normal, hs_vec3 *friction, double n, hs_vec3 f, double mu, double *dn,
+                           hs_vec3 *df) {
+	onto_cone(&n, &f, mu);
+	*dn = n - *normal;
+	*df = hs_sub(f, *friction);
+	*normal = n;
+	*friction = f;
+	return fmax(fabs(*dn), hs_length(*df));
+}
+
 // The floor's normal force and friction on a resting object, stepped together and projected
 // onto the cone; the larger change.
 static double floor_in_cone(hs_spring_rest_body *r, double m, double mu) {
-	double n = r->floor_normal - m * r->acc.z;
-	hs_vec3 f = hs_sub(r->floor_friction, hs_scale(hs_v3(r->acc.x, r->acc.y, 0.0), m));
-	onto_cone(&n, &f, mu);
-	double dn = n - r->floor_normal;
-	hs_vec3 df = hs_sub(f, r->floor_friction);
+	double dn;
+	hs_vec3 df;
+	double change = step_in_cone(&r->floor_normal, &r->floor_friction, r->floor_normal - m * r->acc.z,
+	                             hs_sub(r->floor_friction, hs_scale(hs_v3(r->acc.x, r->acc.y, 0.0), m)), mu, &dn, &df);
 	r->acc = hs_mul_add(r->acc, 1.0 / m, hs_v3(df.x, df.y, dn));
-	r->floor_normal = n;
-	r->floor_friction = f;
-	return fmax(fabs(dn), hs_length(df));
+	return change;
 }
 
 // One Gauss–Seidel sweep over the floor and walls of each active object (sticking floor contacts
@@ -111,18 +120,14 @@ static double sweep_bodies(hs_world *world, hs_spring_system *sys, double dt, bo
 static double touch_in_cone(hs_spring_touch *c, hs_spring_rest_body *ra, hs_spring_rest_body *rb, double wa,
                             double wb, double mu) {
 	hs_vec3 ar = hs_sub(rb->acc, ra->acc);
-	double an = hs_dot(ar, c->n);
-	double n = c->normal - c->mass * (an + c->bias);
-	hs_vec3 f = hs_mul_add(c->friction, -c->mass, hs_mul_add(ar, -an, c->n));
-	onto_cone(&n, &f, mu);
-	double dn = n - c->normal;
-	hs_vec3 df = hs_sub(f, c->friction);
+	double an = hs_dot(ar, c->n), dn;
+	hs_vec3 df;
+	double change = step_in_cone(&c->normal, &c->friction, c->normal - c->mass * (an + c->bias),
+	                             hs_mul_add(c->friction, -c->mass, hs_mul_add(ar, -an, c->n)), mu, &dn, &df);
 	hs_vec3 dl = hs_mul_add(df, dn, c->n);
 	ra->acc = hs_mul_add(ra->acc, -wa, dl);
 	rb->acc = hs_mul_add(rb->acc, wb, dl);
-	c->normal = n;
-	c->friction = f;
-	return fmax(fabs(dn), hs_length(df));
+	return change;
 }
 
 // One Gauss–Seidel sweep over the touches (sticking ones in the cone when `cone`); the largest
@@ -182,7 +187,8 @@ static void solve(hs_world *world, hs_spring_system *sys, double dt, double scal
 // apart is more than HS_REST_TOLERANCE of the largest free force, per unit of the pair's mass):
 // there Coulomb's law would let the contact slide instead.
 static bool cone_lifts(const hs_world *world, const hs_spring_system *sys, double scale) {
-	double mu = sys->def.friction_static * (1.0 - HS_REST_TOLERANCE), allowed = HS_REST_TOLERANCE * scale; // (at the limit to rounding)
+	// (friction at the limit to rounding)
+	double mu = sys->def.friction_static * (1.0 - HS_REST_TOLERANCE), allowed = HS_REST_TOLERANCE * scale;
 	for (int k = 0; k < sys->active_count; ++k) {
 		const hs_spring_rest_body *r = &sys->rest[k];
 		if (r->floor && !r->sliding && r->floor_normal > 0.0 && hs_length(r->floor_friction) >= mu * r->floor_normal &&
