@@ -696,6 +696,7 @@ static void detect_lines(hs_world *world, int object, int h, const hs_part *part
 				j += 3; // the segment's other three lines too (far, or each beside a touching point)
 				continue;
 			}
+			hs_hand_ready_segment(&world->hands[h], j / 4); // its lines are read from here on
 			all_near = sb.ri > 0.0 && d <= sb.ri * sb.ri;
 		}
 		if (cull && !all_near && segment_distance_sq(center, l[0], l[1]) > r * r &&

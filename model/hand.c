@@ -328,23 +328,37 @@ void hs_glove_table_build(const hs_hand_def *def, hs_glove_table *table) {
 	}
 }
 
-void hs_hand_local_shape_with(const hs_hand_def *def, const hs_glove_table *table,
-                              const uint8_t sensors[HS_GLOVE_SENSORS], hs_vec3 points[HS_HAND_POINTS],
-                              hs_vec3 lines[HS_HAND_LINES][2]) {
+// The shape in the wrist frame without its lines: the check points (mirrored for a left hand)
+// and each segment's frame.
+static void local_pose(const hs_hand_def *def, const hs_glove_table *table, const uint8_t sensors[HS_GLOVE_SENSORS],
+                       hs_vec3 points[HS_HAND_POINTS], hs_quat segment[15]) {
 	reading r = {def, hs_hand_joints_from_sensors(def, sensors), table, sensors};
 	hand_pose pose;
 	hand_pose_wrist(&r, &pose);
 	for (int i = 0; i < HS_HAND_POINTS; i++)
 		points[i] = mirror_if(def->left, pose.points[i]);
-	// check lines (§3.1): the 4 long edges of a square prism around each segment, edge e offset
-	// from the axis by r along the segment's local +y, −y, +z, −z
+	memcpy(segment, pose.segment, sizeof pose.segment);
+}
+
+// Check lines (§3.1) of segment s: the 4 long edges of a square prism around it, edge e offset from
+// the axis by r along the segment's local +y, −y, +z, −z. Its ends are the check points mirrored
+// back (a sign: exact).
+static void local_segment_lines(const hs_hand_def *def, const hs_vec3 points[HS_HAND_POINTS], const hs_quat segment[15],
+                                int s, hs_vec3 out[4][2]) {
 	double rad = def->finger_radius;
 	const hs_vec3 offsets[4] = {{0.0, rad, 0.0}, {0.0, -rad, 0.0}, {0.0, 0.0, rad}, {0.0, 0.0, -rad}};
-	for (int s = 0; s < 15; s++) {
-		int f = s / 3, k = s % 3;
-		segment_lines(pose.segment[s], offsets, pose.points[f * 4 + k], pose.points[f * 4 + k + 1], def->left,
-		              &lines[s * 4]);
-	}
+	int a = 4 * (s / 3) + s % 3;
+	segment_lines(segment[s], offsets, mirror_if(def->left, points[a]), mirror_if(def->left, points[a + 1]), def->left,
+	              out);
+}
+
+void hs_hand_local_shape_with(const hs_hand_def *def, const hs_glove_table *table,
+                              const uint8_t sensors[HS_GLOVE_SENSORS], hs_vec3 points[HS_HAND_POINTS],
+                              hs_vec3 lines[HS_HAND_LINES][2]) {
+	hs_quat segment[15];
+	local_pose(def, table, sensors, points, segment);
+	for (int s = 0; s < 15; s++)
+		local_segment_lines(def, points, segment, s, &lines[s * 4]);
 }
 
 void hs_hand_local_shape(const hs_hand_def *def, const uint8_t sensors[HS_GLOVE_SENSORS],
@@ -429,8 +443,17 @@ static double farthest_sq(hs_vec3 c, const hs_vec3 *v, int n, double r_sq) {
 // than rad (and a relative slack far above rounding) cannot hold the farthest: its 8 ends are
 // passed over, the fingertips' segments taken first (they hold it mostly). A maximum does not
 // depend on the order it is taken in, so the radius is the same bits as over every end.
-static void local_bounds(const hs_vec3 points[HS_HAND_POINTS], const hs_vec3 lines[HS_HAND_LINES][2], double rad,
-                         hs_vec3 *center, double *radius) {
+// Segment s's lines in the wrist frame, computed once for a reading.
+static void ready_local(hs_hand *hand, int s) {
+	if ((unsigned)hand->local_ready >> s & 1u)
+		return;
+	local_segment_lines(&hand->def, hand->local_points, hand->local_segment, s, &hand->local_lines[4 * s]);
+	hand->local_ready = (uint16_t)(hand->local_ready | 1u << s);
+}
+
+static void local_bounds(hs_hand *hand) {
+	const hs_vec3 *points = hand->local_points;
+	double rad = hand->def.finger_radius;
 	hs_vec3 c = hs_v3(0, 0, 0);
 	for (int i = 0; i < HS_HAND_POINTS; ++i)
 		c = hs_add(c, points[i]);
@@ -447,17 +470,45 @@ static void local_bounds(const hs_vec3 points[HS_HAND_POINTS], const hs_vec3 lin
 		int s = order[k][0], a = order[k][1];
 		double most = d_sq[a] > d_sq[a + 1] ? d_sq[a] : d_sq[a + 1];
 		double reach = (sqrt(most) + rad) * (1.0 + 1e-9) + 1e-12; // NaN: not passed over
-		if (!(reach * reach < r_sq))
-			r_sq = farthest_sq(c, &lines[4 * s][0], 8, r_sq);
+		if (!(reach * reach < r_sq)) {
+			ready_local(hand, s);
+			r_sq = farthest_sq(c, &hand->local_lines[4 * s][0], 8, r_sq);
+		}
 	}
-	*center = c;
-	*radius = sqrt(r_sq);
+	hand->local_center = c;
+	hand->local_radius = sqrt(r_sq);
 }
 
 void hs_hand_update_shape(hs_hand *hand) {
-	hs_hand_local_shape_with(&hand->def, &hand->glove, hand->sensors, hand->local_points, hand->local_lines);
-	local_bounds(hand->local_points, (const hs_vec3(*)[2])hand->local_lines, hand->def.finger_radius, &hand->local_center,
-	             &hand->local_radius);
+	local_pose(&hand->def, &hand->glove, hand->sensors, hand->local_points, hand->local_segment);
+	hand->local_ready = 0;
+	local_bounds(hand);
+}
+
+void hs_hand_place_points(hs_hand *hand) {
+	hand->place_m = hs_mat3_from_quat(hand->wrist_rot); // as hs_hand_place
+	place_vectors(hand->place_m, hand->wrist_pos, hand->local_points, hand->points, HS_HAND_POINTS);
+	hand->lines_ready = 0;
+}
+
+void hs_hand_place_segment(hs_hand *hand, int s) {
+	unsigned bit = 1u << s;
+	if (!(hand->lines_ready & bit)) {
+		ready_local(hand, s);
+		place_vectors(hand->place_m, hand->wrist_pos, &hand->local_lines[4 * s][0], &hand->lines[4 * s][0], 8);
+		hand->lines_ready = (uint16_t)(hand->lines_ready | bit);
+	}
+	if (!(hand->prev_lines_ready & bit)) { // not read last frame: from the shape kept with it
+		hs_vec3 local[4][2];
+		local_segment_lines(&hand->def, hand->prev_local_points, hand->prev_local_segment, s, local);
+		place_vectors(hand->prev_place_m, hand->prev_wrist_pos, &local[0][0], &hand->prev_lines[4 * s][0], 8);
+		hand->prev_lines_ready = (uint16_t)(hand->prev_lines_ready | bit);
+	}
+}
+
+void hs_hand_ready_all(hs_hand *hand) {
+	for (int s = 0; s < 15; ++s)
+		hs_hand_ready_segment(hand, s);
 }
 
 void hs_hand_update_bounds(hs_hand *hand) {
@@ -476,7 +527,13 @@ void hs_hand_keep_previous(hs_hand *hand) {
 	hand->prev_center = hand->center;
 	hand->prev_radius = hand->radius;
 	memcpy(hand->prev_points, hand->points, sizeof hand->points);
-	memcpy(hand->prev_lines, hand->lines, sizeof hand->lines);
+	for (int s = 0; s < 15; ++s) // the placed segments' lines
+		if ((unsigned)hand->lines_ready >> s & 1u)
+			memcpy(hand->prev_lines[4 * s], hand->lines[4 * s], sizeof hand->lines[0] * 4);
+	hand->prev_lines_ready = hand->lines_ready; // the others from the shape they would be placed from
+	hand->prev_place_m = hand->place_m;
+	memcpy(hand->prev_local_points, hand->local_points, sizeof hand->local_points);
+	memcpy(hand->prev_local_segment, hand->local_segment, sizeof hand->local_segment);
 	hand->prev_wrist_pos = hand->wrist_pos;
 	hand->prev_wrist_rot = hand->wrist_rot;
 	memcpy(hand->prev_sensors, hand->sensors, sizeof hand->sensors);
@@ -517,6 +574,7 @@ void hs_hand_refresh(hs_hand *hand) {
 		memset(hand->prev_lines, 0, sizeof hand->prev_lines);
 		memset(hand->local_points, 0, sizeof hand->local_points);
 		memset(hand->local_lines, 0, sizeof hand->local_lines);
+		hand->lines_ready = hand->prev_lines_ready = hand->local_ready = HS_HAND_ALL_SEGMENTS;
 		hand->local_center = hs_v3(0, 0, 0);
 		hand->local_radius = 0.0;
 		hs_hand_update_bounds(hand);
@@ -524,19 +582,22 @@ void hs_hand_refresh(hs_hand *hand) {
 		hand->prev_radius = hand->radius;
 		return;
 	}
-	// the previous points and bounds: the same calls that placed them, on the previous reading
-	hs_hand_local_shape_with(&hand->def, &hand->glove, hand->prev_sensors, hand->local_points, hand->local_lines);
-	hs_hand_place(hand->local_points, (const hs_vec3(*)[2])hand->local_lines, hand->prev_wrist_pos,
-	              hand->prev_wrist_rot, hand->prev_points, hand->prev_lines);
-	local_bounds(hand->local_points, (const hs_vec3(*)[2])hand->local_lines, hand->def.finger_radius, &hand->local_center,
-	             &hand->local_radius);
+	// the previous points and bounds: the same calls that placed them, on the previous reading;
+	// its lines from the shape kept for them
+	local_pose(&hand->def, &hand->glove, hand->prev_sensors, hand->local_points, hand->local_segment);
+	hand->local_ready = 0;
+	local_bounds(hand);
+	hand->prev_place_m = hs_mat3_from_quat(hand->prev_wrist_rot);
+	place_vectors(hand->prev_place_m, hand->prev_wrist_pos, hand->local_points, hand->prev_points, HS_HAND_POINTS);
+	memcpy(hand->prev_local_points, hand->local_points, sizeof hand->local_points);
+	memcpy(hand->prev_local_segment, hand->local_segment, sizeof hand->local_segment);
+	hand->prev_lines_ready = 0;
 	hand->center = hs_add(hand->prev_wrist_pos, hs_quat_rotate(hand->prev_wrist_rot, hand->local_center));
 	hand->radius = hand->local_radius + 1e-6;
 	hand->prev_center = hand->center;
 	hand->prev_radius = hand->radius;
 	hs_hand_update_shape(hand);
-	hs_hand_place(hand->local_points, (const hs_vec3(*)[2])hand->local_lines, hand->wrist_pos, hand->wrist_rot,
-	              hand->points, hand->lines);
+	hs_hand_place_points(hand);
 	hs_hand_update_bounds(hand);
 }
 

@@ -69,14 +69,27 @@ typedef struct hs_hand {
 	// embedded parts of the next frame
 	uint32_t near_points, embed_points_next;
 	uint64_t embed_lines_next;
-	// cache: points and lines of (sensors, wrist) and of (prev_sensors, prev_wrist); zero until placed
+	// cache: points and lines of (sensors, wrist) and of (prev_sensors, prev_wrist); zero until placed.
+	// The points are placed with the reading; a finger segment's 4 lines only when something reads
+	// them (hs_hand_ready_segment): bit s of lines_ready / prev_lines_ready says segment s's are
+	// there. Most frames the contact tests reach a third of the segments (the rest are culled by
+	// their check points), and the lines are most of what placing a hand costs.
 	hs_vec3 points[HS_HAND_POINTS], prev_points[HS_HAND_POINTS];
 	hs_vec3 lines[HS_HAND_LINES][2], prev_lines[HS_HAND_LINES][2];
+	uint16_t lines_ready, prev_lines_ready;
+	// what a segment's lines are placed from: the wrist matrix, and for a frame ago the shape in the
+	// wrist frame too (prev_local_*; the current one is local_points, local_segment)
+	hs_mat3 place_m, prev_place_m;
+	hs_vec3 prev_local_points[HS_HAND_POINTS];
+	hs_quat prev_local_segment[15];
 	// cache: bounding sphere of the check points and lines (radius < 0: touches nothing)
 	hs_vec3 center;
 	double radius;
-	// cache: the shape in the wrist frame for `sensors`, recomputed only when the glove reading changes
+	// cache: the shape in the wrist frame for `sensors`, recomputed only when the glove reading
+	// changes: the check points, each segment's frame, and the lines of the segments in local_ready
 	hs_vec3 local_points[HS_HAND_POINTS], local_lines[HS_HAND_LINES][2];
+	hs_quat local_segment[15];
+	uint16_t local_ready;
 	hs_vec3 local_center; // its bounding sphere in the wrist frame
 	double local_radius;
 	// cache: the bounding sphere at the end of the last step (of prev_points and prev_lines)
@@ -109,6 +122,18 @@ void hs_hand_place(const hs_vec3 local_points[HS_HAND_POINTS], const hs_vec3 loc
                    hs_vec3 lines[HS_HAND_LINES][2]);
 // Recomputes the wrist-frame shape cache and its bounding sphere from hand->sensors.
 void hs_hand_update_shape(hs_hand *hand);
+// Places the check points from the shape cache and the wrist pose; the lines wait (lines_ready 0).
+void hs_hand_place_points(hs_hand *hand);
+#define HS_HAND_ALL_SEGMENTS 0x7fffu
+// Places finger segment s's lines now and a frame ago where they are not yet: the same bits as
+// placing all of them with the reading.
+void hs_hand_place_segment(hs_hand *hand, int s);
+static inline void hs_hand_ready_segment(hs_hand *hand, int s) {
+	if (!((unsigned)(hand->lines_ready & hand->prev_lines_ready) >> s & 1u))
+		hs_hand_place_segment(hand, s);
+}
+// Every segment's lines, now and a frame ago (a path through the frame reads them all).
+void hs_hand_ready_all(hs_hand *hand);
 // The world bounding sphere from the wrist pose and the shape cache (radius -1 before placement).
 void hs_hand_update_bounds(hs_hand *hand);
 // The reading of this frame becomes the previous one (the end of a step, a first placement).

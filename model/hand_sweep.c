@@ -99,6 +99,7 @@ void hs_hand_sweep(hs_hand *hand, bool chords_only) {
 		              &hand->sweep_radius);
 		return;
 	}
+	hs_hand_ready_all(hand); // the path's sphere holds every line
 	hs_vec3 c = hs_scale(hs_add(hand->prev_center, hand->center), 0.5);
 	double r_sq = farthest_sq(c, hand->points, (const hs_vec3(*)[2])hand->lines, 0.0);
 	r_sq = farthest_sq(c, hand->prev_points, (const hs_vec3(*)[2])hand->prev_lines, r_sq);

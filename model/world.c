@@ -517,6 +517,7 @@ hs_hand_id hs_world_add_hand(hs_world *world, const hs_hand_def *def, hs_status 
 	hand->older_capacity = hs_hand_older_capacity(world->def.release_window_s, world->def.dt);
 	for (int k = 0; k < HS_HAND_OLDER_MAX; ++k) // not yet reached: a unit rotation, as a state file must hold
 		hand->older_rot[k] = hs_quat_identity();
+	hand->lines_ready = hand->prev_lines_ready = hand->local_ready = HS_HAND_ALL_SEGMENTS; // all zero until set
 	hs_hand_update_bounds(hand); // touches nothing until it is set
 	set_status(status, HS_OK);
 	int index = world->hand_count++;
@@ -561,8 +562,7 @@ hs_status hs_world_set_hand(hs_world *world, hs_hand_id id, hs_vec3 wrist_positi
 		memcpy(hand->sensors, sensors, sizeof hand->sensors); // the glove moved: a new hand shape
 		hs_hand_update_shape(hand);
 	}
-	hs_hand_place(hand->local_points, (const hs_vec3(*)[2])hand->local_lines, hand->wrist_pos, hand->wrist_rot,
-	              hand->points, hand->lines);
+	hs_hand_place_points(hand);
 	bool first = !hand->placed;
 	hand->placed = true;
 	hs_hand_update_bounds(hand);

@@ -341,6 +341,10 @@ static void test_bounds_reach_the_farthest_end(void **state) {
 		}
 		hs_glove_table_build(&hand->def, &hand->glove);
 		hs_hand_update_shape(hand);
+		// every line, not only those the cache computed (the bounds read the segments that may hold the farthest)
+		hs_vec3 points[HS_HAND_POINTS], lines[HS_HAND_LINES][2];
+		hs_hand_local_shape_with(&hand->def, &hand->glove, hand->sensors, points, lines);
+		assert_memory_equal(points, hand->local_points, sizeof points);
 		double most = 0.0;
 		for (int i = 0; i < HS_HAND_POINTS; ++i) {
 			double d = hs_length_sq(hs_sub(hand->local_points[i], hand->local_center));
@@ -348,11 +352,64 @@ static void test_bounds_reach_the_farthest_end(void **state) {
 		}
 		for (int j = 0; j < HS_HAND_LINES; ++j)
 			for (int k = 0; k < 2; ++k) {
-				double d = hs_length_sq(hs_sub(hand->local_lines[j][k], hand->local_center));
+				double d = hs_length_sq(hs_sub(lines[j][k], hand->local_center));
 				most = d > most ? d : most;
 			}
 		double radius = sqrt(most);
 		assert_memory_equal(&radius, &hand->local_radius, sizeof radius);
+	}
+	free(hand);
+}
+
+// A hand in a world places its check lines only when something reads them (hs_hand_ready_segment),
+// now and a frame ago: whichever segments are read, and in whatever frames, they are the bits the
+// kinematics gives for the reading and wrist pose they belong to. Left and right hands, readings
+// from a fixed LCG; a segment read only in the second frame takes its lines a frame ago from the
+// shape kept for them, one read in both from the first frame's placement.
+static void test_lines_placed_when_read(void **state) {
+	(void)state;
+	hs_hand *hand = calloc(1, sizeof *hand);
+	assert_non_null(hand);
+	uint32_t x = 7u;
+	for (int trial = 0; trial < 8; ++trial) {
+		memset(hand, 0, sizeof *hand);
+		hand->def = hs_default_hand_def();
+		hand->def.left = trial % 2 == 1;
+		hs_glove_table_build(&hand->def, &hand->glove);
+		uint8_t readings[2][HS_GLOVE_SENSORS];
+		hs_vec3 wrist[2];
+		hs_quat turn[2];
+		for (int f = 0; f < 2; ++f) {
+			for (int i = 0; i < HS_GLOVE_SENSORS; ++i) {
+				x = x * 1664525u + 1013904223u;
+				readings[f][i] = (uint8_t)(x >> 24);
+			}
+			wrist[f] = hs_v3(0.1 * f, -0.2, 0.3 + 0.01 * trial);
+			turn[f] = hs_quat_from_axis_angle(hs_normalize(hs_v3(1.0, 2.0, 3.0 + f)), 0.3 * trial + 0.7 * f);
+		}
+		for (int f = 0; f < 2; ++f) { // as hs_world_set_hand, then a step's reads and its end
+			memcpy(hand->sensors, readings[f], sizeof hand->sensors);
+			hand->wrist_pos = wrist[f];
+			hand->wrist_rot = turn[f];
+			hs_hand_update_shape(hand);
+			hs_hand_place_points(hand);
+			if (f == 0)
+				hs_hand_keep_previous(hand);
+			hs_hand_ready_segment(hand, (2 + trial) % 15); // read in both frames
+			if (f == 1) {
+				hs_hand_ready_segment(hand, (9 + trial) % 15); // read in the second only
+				assert_int_equal(hand->lines_ready, 1u << (2 + trial) % 15 | 1u << (9 + trial) % 15);
+				hs_hand_ready_all(hand);
+				break;
+			}
+			assert_int_equal(hand->lines_ready, 1u << ((2 + trial) % 15));
+			hs_hand_keep_previous(hand);
+		}
+		hs_vec3 points[HS_HAND_POINTS], lines[HS_HAND_LINES][2], prev_lines[HS_HAND_LINES][2];
+		hs_hand_kinematics(&hand->def, wrist[1], turn[1], readings[1], points, lines);
+		hs_hand_kinematics(&hand->def, wrist[0], turn[0], readings[0], points, prev_lines);
+		assert_memory_equal(lines, hand->lines, sizeof lines);
+		assert_memory_equal(prev_lines, hand->prev_lines, sizeof prev_lines);
 	}
 	free(hand);
 }
@@ -1076,6 +1133,7 @@ int main(void) {
 	    cmocka_unit_test(test_wrist_rotations),
 	    cmocka_unit_test(test_left_hand_mirrors),
 	    cmocka_unit_test(test_bounds_reach_the_farthest_end),
+	    cmocka_unit_test(test_lines_placed_when_read),
 	    cmocka_unit_test(test_check_lines),
 	    cmocka_unit_test(test_thumb_opposition),
 	    cmocka_unit_test(test_grasp_width),
