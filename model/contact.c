@@ -594,11 +594,36 @@ static void swept_path(hs_world *world, int object, int h, int j, const hs_part 
 static double larger(double a, double b) { return a >= b || b != b ? a : b; }
 
 // True when the quad a segment sweeps from m0-m1 to l0-l1 may come within r of c: its bounding
-// sphere about the corners' mean.
-static HS_FORCE_INLINE bool quad_near(hs_vec3 m0, hs_vec3 m1, hs_vec3 l0, hs_vec3 l1, hs_vec3 c, double r) {
-	hs_vec3 mid = hs_scale(hs_add(hs_add(m0, m1), hs_add(l0, l1)), 0.25);
-	double rad = sqrt(larger(larger(hs_length_sq(hs_sub(m0, mid)), hs_length_sq(hs_sub(m1, mid))),
-	                         larger(hs_length_sq(hs_sub(l0, mid)), hs_length_sq(hs_sub(l1, mid)))));
+// sphere about the corners' mean. With SSE2, the two ends a frame ago in one lane and the two ends
+// now in the other: each lane does the scalar code's sums, products and `larger` in its order
+// (the same bits), the lanes meeting where the scalar code joins the two halves.
+static HS_FORCE_INLINE bool quad_near(const hs_vec3 *m0, const hs_vec3 *m1, const hs_vec3 *l0, const hs_vec3 *l1, hs_vec3 c,
+                                      double r) {
+#if defined(__SSE2__)
+	hs_lanes2 a = hs_lanes2_load(m0, l0), b = hs_lanes2_load(m1, l1);
+	__m128d sx = _mm_add_pd(a.x, b.x), sy = _mm_add_pd(a.y, b.y), sz = _mm_add_pd(a.z, b.z); // m0 + m1 | l0 + l1
+	const __m128d quarter = _mm_set_sd(0.25);
+	__m128d mx = _mm_mul_sd(_mm_add_sd(sx, _mm_unpackhi_pd(sx, sx)), quarter);
+	__m128d my = _mm_mul_sd(_mm_add_sd(sy, _mm_unpackhi_pd(sy, sy)), quarter);
+	__m128d mz = _mm_mul_sd(_mm_add_sd(sz, _mm_unpackhi_pd(sz, sz)), quarter);
+	mx = _mm_unpacklo_pd(mx, mx);
+	my = _mm_unpacklo_pd(my, my);
+	mz = _mm_unpacklo_pd(mz, mz);
+	__m128d ax = _mm_sub_pd(a.x, mx), ay = _mm_sub_pd(a.y, my), az = _mm_sub_pd(a.z, mz);
+	__m128d bx = _mm_sub_pd(b.x, mx), by = _mm_sub_pd(b.y, my), bz = _mm_sub_pd(b.z, mz);
+	__m128d da = _mm_add_pd(_mm_add_pd(_mm_mul_pd(ax, ax), _mm_mul_pd(ay, ay)), _mm_mul_pd(az, az)); // m0 | l0
+	__m128d db = _mm_add_pd(_mm_add_pd(_mm_mul_pd(bx, bx), _mm_mul_pd(by, by)), _mm_mul_pd(bz, bz)); // m1 | l1
+	__m128d keep = _mm_or_pd(_mm_cmpge_pd(da, db), _mm_cmpunord_pd(db, db)); // larger(da, db), lane by lane
+	__m128d most = _mm_or_pd(_mm_and_pd(keep, da), _mm_andnot_pd(keep, db));
+	double lanes[2];
+	_mm_storeu_pd(lanes, most);
+	double rad = sqrt(larger(lanes[0], lanes[1]));
+	hs_vec3 mid = hs_v3(_mm_cvtsd_f64(mx), _mm_cvtsd_f64(my), _mm_cvtsd_f64(mz));
+#else
+	hs_vec3 mid = hs_scale(hs_add(hs_add(*m0, *m1), hs_add(*l0, *l1)), 0.25);
+	double rad = sqrt(larger(larger(hs_length_sq(hs_sub(*m0, mid)), hs_length_sq(hs_sub(*m1, mid))),
+	                         larger(hs_length_sq(hs_sub(*l0, mid)), hs_length_sq(hs_sub(*l1, mid)))));
+#endif
 	return hs_length_sq(hs_sub(c, mid)) <= (r + rad) * (r + rad);
 }
 
@@ -607,7 +632,7 @@ static bool line_path_near(const hs_hand *hand, int j, int steps, hs_vec3 c, dou
 	for (int k = 0; k < steps; ++k) {
 		const hs_vec3 *m = k == 0 ? hand->prev_lines[j] : hand->path_lines[k - 1][j];
 		const hs_vec3 *l = k + 1 == steps ? hand->lines[j] : hand->path_lines[k][j];
-		if (quad_near(m[0], m[1], l[0], l[1], c, r))
+		if (quad_near(&m[0], &m[1], &l[0], &l[1], c, r))
 			return true;
 	}
 	return false;
@@ -616,11 +641,13 @@ static bool line_path_near(const hs_hand *hand, int j, int steps, hs_vec3 c, dou
 // The same for the axis of a finger segment, check points a to a + 1.
 static bool axis_path_near(const hs_hand *hand, int a, int steps, hs_vec3 c, double r) {
 	if (steps == 1) // one piece (most frames): read straight, not through path_point
-		return quad_near(hand->prev_points[a], hand->prev_points[a + 1], hand->points[a], hand->points[a + 1], c, r);
-	for (int k = 0; k < steps; ++k)
-		if (quad_near(path_point(hand, a, k, steps), path_point(hand, a + 1, k, steps), path_point(hand, a, k + 1, steps),
-		              path_point(hand, a + 1, k + 1, steps), c, r))
+		return quad_near(&hand->prev_points[a], &hand->prev_points[a + 1], &hand->points[a], &hand->points[a + 1], c, r);
+	for (int k = 0; k < steps; ++k) {
+		hs_vec3 m0 = path_point(hand, a, k, steps), m1 = path_point(hand, a + 1, k, steps);
+		hs_vec3 l0 = path_point(hand, a, k + 1, steps), l1 = path_point(hand, a + 1, k + 1, steps);
+		if (quad_near(&m0, &m1, &l0, &l1, c, r))
 			return true;
+	}
 	return false;
 }
 
