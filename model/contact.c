@@ -859,24 +859,19 @@ static int keep_hovering(hs_world *world, int first, int n) {
 	return kept - first;
 }
 
-static bool hand_near(const hs_world *world, const hs_body *body, const hs_hand *hand, double grow) {
-	double reach = world->shapes[body->shape].radius + grow + hand->sweep_radius;
-	return !world->def.skip_work || hs_length_sq(hs_sub(body->pos, hand->sweep_center)) <= reach * reach;
-}
-
 int hs_contact_detect_grown(hs_world *world, int object, const hs_body *before, double grow) {
 	int first = world->contact_count;
 	const hs_body *body = &world->bodies[object];
 	const hs_shape *shape = &world->shapes[body->shape];
 	int h = 0; // the first hand near the object: only then are its poses made matrices
-	while (h < world->hand_count && !hand_near(world, body, &world->hands[h], grow))
+	while (h < world->hand_count && !hs_contact_hand_near(world, body, &world->hands[h], grow))
 		++h;
 	if (h == world->hand_count)
 		return 0;
 	frame now = frame_of(body), then = before ? frame_of(before) : now;
 	for (; h < world->hand_count; ++h) {
 		const hs_hand *hand = &world->hands[h];
-		if (!hand_near(world, body, hand, grow))
+		if (!hs_contact_hand_near(world, body, hand, grow))
 			continue; // bounding-volume rejection before the narrow tests (Fig. 2)
 		if (grow == 0.0) // the grown test repeats a held object's: counted once
 			world->counters.hand_tests++;

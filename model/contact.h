@@ -8,6 +8,13 @@
 
 #include "world_internal.h"
 
+// True when the hand's path through the frame may reach the body's bounding sphere grown by
+// `grow`, or work is not skipped: the bounding-volume test before a hand's narrow tests (Fig. 2).
+static inline bool hs_contact_hand_near(const hs_world *world, const hs_body *body, const hs_hand *hand, double grow) {
+	double reach = world->shapes[body->shape].radius + grow + hand->sweep_radius;
+	return !world->def.skip_work || hs_length_sq(hs_sub(body->pos, hand->sweep_center)) <= reach * reach;
+}
+
 // Appends the contacts of every hand with the object to world->contacts; returns how many.
 // `before` is the object's pose one frame ago when it has moved since (NULL: it has not).
 int hs_contact_detect(hs_world *world, int object, const hs_body *before);

@@ -226,8 +226,15 @@ static void release(hs_world *world, hs_body *body, hs_contact_state last) {
 	body->asleep = 0;
 }
 
-// The objects a hand may touch, those held last frame (they may be let go) and those under a
-// release rule, in index order.
+// An object the hand pass need not look at unless a hand reaches it: it touched nothing last frame
+// and no hand holds or has let go of it (a pass over it would find no contact and change nothing).
+static bool untouched(const hs_body *b) {
+	return b->contact == HS_CONTACT_NONE && !b->held && !b->grasped_by && !b->released_by;
+}
+
+// The objects a hand may touch (the grid's cells near its path, then the bounding-sphere test the
+// narrow tests start with), those held last frame (they may be let go) and those under a release
+// rule, in index order.
 static void collect_candidates(hs_world *world) {
 	bool skip = world->def.skip_work;
 	// carried or held last frame means awake: only the awake list needs looking at
@@ -235,9 +242,13 @@ static void collect_candidates(hs_world *world) {
 		world->bodies[skip ? world->awake[k] : k].carried = 0;
 	world->candidate_count = 0;
 	for (int h = 0; h < world->hand_count; ++h) {
-		int n = hs_grid_query(world, world->hands[h].sweep_center, world->hands[h].sweep_radius, world->near);
-		for (int k = 0; k < n; ++k)
-			add_candidate(world, world->near[k]);
+		const hs_hand *hand = &world->hands[h];
+		int n = hs_grid_query(world, hand->sweep_center, hand->sweep_radius, world->near);
+		for (int k = 0; k < n; ++k) {
+			const hs_body *b = &world->bodies[world->near[k]];
+			if (!untouched(b) || hs_contact_hand_near(world, b, hand, 0.0))
+				add_candidate(world, world->near[k]);
+		}
 	}
 	for (int k = 0; k < world->awake_count; ++k) // a release rule lapses once its hand is clear (grasp.c)
 		if (world->bodies[world->awake[k]].held || world->bodies[world->awake[k]].released_by)
