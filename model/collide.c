@@ -19,6 +19,7 @@
 typedef struct posed_part {
 	const hs_vec3 *vertices; // body frame
 	int vertex_count;
+	hs_vec3 box_center, box_half; // body frame: the box of the vertices (hs_part)
 	double sphere_radius; // > 0: an exact sphere about `center`
 	hs_vec3 pos;          // body → world: x = pos + rot(v)
 	hs_quat rot;
@@ -34,6 +35,8 @@ static posed_part pose_part(const hs_shape *shape, int index, hs_vec3 pos, hs_qu
 	posed_part p;
 	p.vertices = shape->vertices + part->first_vertex;
 	p.vertex_count = part->vertex_count;
+	p.box_center = part->box_center;
+	p.box_half = part->box_half;
 	p.sphere_radius = shape->kind == HS_SHAPE_SPHERE ? shape->sphere_radius : 0.0;
 	p.pos = pos;
 	p.rot = rot;
@@ -134,13 +137,7 @@ static void part_box(const posed_part *p, hs_vec3 *centre, hs_vec3 *half) {
 		*half = hs_v3(p->sphere_radius, p->sphere_radius, p->sphere_radius);
 		return;
 	}
-	hs_vec3 lo = p->vertices[0], hi = p->vertices[0];
-	for (int i = 1; i < p->vertex_count; i++) {
-		hs_vec3 v = p->vertices[i]; // (comparisons, not fmin: vertices are finite, and no libm call)
-		lo = hs_v3(v.x < lo.x ? v.x : lo.x, v.y < lo.y ? v.y : lo.y, v.z < lo.z ? v.z : lo.z);
-		hi = hs_v3(v.x > hi.x ? v.x : hi.x, v.y > hi.y ? v.y : hi.y, v.z > hi.z ? v.z : hi.z);
-	}
-	hs_vec3 c = hs_scale(hs_add(lo, hi), 0.5), h = hs_scale(hs_sub(hi, lo), 0.5);
+	hs_vec3 c = p->box_center, h = p->box_half; // the body-frame box, kept with the part
 	// hs_quat_rotate of the three axes with its products by 0 and 1 left out: only the signs of
 	// zeros can differ, and only magnitudes are read
 	double x = p->rot.x, y = p->rot.y, z = p->rot.z, w = p->rot.w, a = 2.0 * x, b = 2.0 * y, d = 2.0 * z;

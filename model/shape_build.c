@@ -432,6 +432,14 @@ static void bound_parts(hs_shape *shape, double exact_sphere) {
 		}
 		part->center = c;
 		part->radius = r;
+		hs_vec3 lo = shape->vertices[part->first_vertex], hi = lo;
+		for (int v = 1; v < part->vertex_count; v++) {
+			hs_vec3 x = shape->vertices[part->first_vertex + v]; // (comparisons: collide.c's part_box read them so)
+			lo = hs_v3(x.x < lo.x ? x.x : lo.x, x.y < lo.y ? x.y : lo.y, x.z < lo.z ? x.z : lo.z);
+			hi = hs_v3(x.x > hi.x ? x.x : hi.x, x.y > hi.y ? x.y : hi.y, x.z > hi.z ? x.z : hi.z);
+		}
+		part->box_center = hs_scale(hs_add(lo, hi), 0.5);
+		part->box_half = hs_scale(hs_sub(hi, lo), 0.5);
 	}
 	shape->radius = radius;
 	if (exact_sphere > 0.0) {

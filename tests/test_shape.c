@@ -215,6 +215,12 @@ static void test_l_block(void **state) {
 	assert_vec3_near(s->parts[1].center, hs_v3(-0.75, 0, 0.75), 1e-14);
 	assert_near(s->parts[0].radius, 0.5 * sqrt(11.0), 1e-14);
 	assert_near(s->parts[1].radius, 0.5 * sqrt(3.0), 1e-14);
+	// the parts' vertex boxes (collide.c's cheap rejection): the foot 3 × 1 × 1 about its centre,
+	// the upright 1 × 1 × 1 about its own
+	assert_vec3_near(s->parts[0].box_center, hs_v3(0.25, 0, -0.25), 1e-14);
+	assert_vec3_near(s->parts[0].box_half, hs_v3(1.5, 0.5, 0.5), 1e-14);
+	assert_vec3_near(s->parts[1].box_center, hs_v3(-0.75, 0, 0.75), 1e-14);
+	assert_vec3_near(s->parts[1].box_half, hs_v3(0.5, 0.5, 0.5), 1e-14);
 	// farthest vertex from G: (3, y, 0) given → (1.75, ±0.5, -0.75)
 	assert_near(s->radius, sqrt(1.75 * 1.75 + 0.25 + 0.75 * 0.75), 1e-14);
 	hs_shape_destroy(s);

@@ -61,6 +61,7 @@ typedef struct hs_part {
 	int first_edge, edge_count;
 	hs_vec3 center; ///< m, body frame: centre of the part's bounding sphere
 	double radius;  ///< m: bounding-sphere radius
+	hs_vec3 box_center, box_half; ///< m, body frame: the box of its vertices (centre, half extents)
 } hs_part;
 
 /// A planar convex face: vertex indices (counter-clockwise seen from outside) and its plane.
