@@ -264,6 +264,43 @@ static void finger_pose(const reading *r, int k, hand_pose *out) {
 	chain(def, f, base, q, flex, turn, out);
 }
 
+// The pose turned by q: each point hs_quat_rotate(q, p), each segment frame hs_quat_mul(q, s).
+// With SSE2, two at a time, one per lane, each lane doing those functions' operations in their
+// order (the same bits).
+static void turn_pose(hs_quat q, hand_pose *pose) {
+	int i = 0, s = 0;
+#if defined(__SSE2__)
+	for (; i + 1 < HS_HAND_POINTS; i += 2)
+		hs_lanes2_store(hs_lanes2_rotate(q, hs_lanes2_load(&pose->points[i], &pose->points[i + 1])), &pose->points[i],
+		                &pose->points[i + 1]);
+	const __m128d aw = _mm_set1_pd(q.w), ax = _mm_set1_pd(q.x), ay = _mm_set1_pd(q.y), az = _mm_set1_pd(q.z);
+	for (; s + 1 < 15; s += 2) {
+		const hs_quat *b0 = &pose->segment[s], *b1 = &pose->segment[s + 1];
+		__m128d bw = _mm_set_pd(b1->w, b0->w), bx = _mm_set_pd(b1->x, b0->x), by = _mm_set_pd(b1->y, b0->y),
+		        bz = _mm_set_pd(b1->z, b0->z);
+		__m128d w = _mm_sub_pd(_mm_sub_pd(_mm_sub_pd(_mm_mul_pd(aw, bw), _mm_mul_pd(ax, bx)), _mm_mul_pd(ay, by)),
+		                       _mm_mul_pd(az, bz));
+		__m128d x = _mm_sub_pd(_mm_add_pd(_mm_add_pd(_mm_mul_pd(aw, bx), _mm_mul_pd(ax, bw)), _mm_mul_pd(ay, bz)),
+		                       _mm_mul_pd(az, by));
+		__m128d y = _mm_add_pd(_mm_add_pd(_mm_sub_pd(_mm_mul_pd(aw, by), _mm_mul_pd(ax, bz)), _mm_mul_pd(ay, bw)),
+		                       _mm_mul_pd(az, bx));
+		__m128d z = _mm_add_pd(_mm_sub_pd(_mm_add_pd(_mm_mul_pd(aw, bz), _mm_mul_pd(ax, by)), _mm_mul_pd(ay, bx)),
+		                       _mm_mul_pd(az, bw));
+		double lw[2], lx[2], ly[2], lz[2];
+		_mm_storeu_pd(lw, w);
+		_mm_storeu_pd(lx, x);
+		_mm_storeu_pd(ly, y);
+		_mm_storeu_pd(lz, z);
+		pose->segment[s] = hs_q(lw[0], lx[0], ly[0], lz[0]);
+		pose->segment[s + 1] = hs_q(lw[1], lx[1], ly[1], lz[1]);
+	}
+#endif
+	for (; i < HS_HAND_POINTS; i++)
+		pose->points[i] = hs_quat_rotate(q, pose->points[i]);
+	for (; s < 15; s++)
+		pose->segment[s] = hs_quat_mul(q, pose->segment[s]);
+}
+
 // the whole hand in the wrist frame of a right hand
 static void hand_pose_wrist(const reading *r, hand_pose *out) {
 	const hs_hand_joints *j = &r->j;
@@ -274,10 +311,7 @@ static void hand_pose_wrist(const reading *r, hand_pose *out) {
 		return; // palm frame = wrist frame
 	hs_quat palm = hs_quat_mul(turn_about(Z_AXIS, turn_of(r, HS_GLOVE_WRIST, HS_SENSOR_WRIST_YAW, j->wrist_yaw)),
 	                           turn_about(Y_AXIS, turn_of(r, HS_GLOVE_WRIST, HS_SENSOR_WRIST_PITCH, j->wrist_pitch)));
-	for (int i = 0; i < HS_HAND_POINTS; i++)
-		out->points[i] = hs_quat_rotate(palm, out->points[i]);
-	for (int s = 0; s < 15; s++)
-		out->segment[s] = hs_quat_mul(palm, out->segment[s]);
+	turn_pose(palm, out);
 }
 
 static hs_vec3 mirror_if(bool left, hs_vec3 v) { return left ? hs_v3(v.x, -v.y, v.z) : v; }
@@ -289,19 +323,10 @@ static hs_vec3 mirror_if(bool left, hs_vec3 v) { return left ? hs_v3(v.x, -v.y, 
 static void segment_lines(hs_quat q, const hs_vec3 v[4], hs_vec3 a, hs_vec3 b, bool left, hs_vec3 out[4][2]) {
 	int e = 0;
 #if defined(__SSE2__)
-	const __m128d ux = _mm_set1_pd(q.x), uy = _mm_set1_pd(q.y), uz = _mm_set1_pd(q.z), w = _mm_set1_pd(q.w),
-	              two = _mm_set1_pd(2.0), flip = _mm_set1_pd(left ? -0.0 : 0.0);
+	const __m128d flip = _mm_set1_pd(left ? -0.0 : 0.0);
 	for (; e < 4; e += 2) {
-		hs_lanes2 in = hs_lanes2_load(&v[e], &v[e + 1]);
-		__m128d vx = in.x, vy = in.y, vz = in.z;
-		// t = 2 (u x v)
-		__m128d tx = _mm_mul_pd(_mm_sub_pd(_mm_mul_pd(uy, vz), _mm_mul_pd(uz, vy)), two);
-		__m128d ty = _mm_mul_pd(_mm_sub_pd(_mm_mul_pd(uz, vx), _mm_mul_pd(ux, vz)), two);
-		__m128d tz = _mm_mul_pd(_mm_sub_pd(_mm_mul_pd(ux, vy), _mm_mul_pd(uy, vx)), two);
-		// (v + w t) + u x t
-		__m128d ox = _mm_add_pd(_mm_add_pd(vx, _mm_mul_pd(tx, w)), _mm_sub_pd(_mm_mul_pd(uy, tz), _mm_mul_pd(uz, ty)));
-		__m128d oy = _mm_add_pd(_mm_add_pd(vy, _mm_mul_pd(ty, w)), _mm_sub_pd(_mm_mul_pd(uz, tx), _mm_mul_pd(ux, tz)));
-		__m128d oz = _mm_add_pd(_mm_add_pd(vz, _mm_mul_pd(tz, w)), _mm_sub_pd(_mm_mul_pd(ux, ty), _mm_mul_pd(uy, tx)));
+		hs_lanes2 off = hs_lanes2_rotate(q, hs_lanes2_load(&v[e], &v[e + 1]));
+		__m128d ox = off.x, oy = off.y, oz = off.z;
 		hs_lanes2 from = {_mm_add_pd(_mm_set1_pd(a.x), ox), _mm_xor_pd(_mm_add_pd(_mm_set1_pd(a.y), oy), flip),
 		                  _mm_add_pd(_mm_set1_pd(a.z), oz)};
 		hs_lanes2 to = {_mm_add_pd(_mm_set1_pd(b.x), ox), _mm_xor_pd(_mm_add_pd(_mm_set1_pd(b.y), oy), flip),

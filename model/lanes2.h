@@ -19,6 +19,19 @@ static inline hs_lanes2 hs_lanes2_load(const hs_vec3 *a, const hs_vec3 *b) {
 	return l;
 }
 
+// hs_quat_rotate(q, v) of both lanes: t = 2 (u x v), then (v + w t) + u x t, in its order.
+static inline hs_lanes2 hs_lanes2_rotate(hs_quat q, hs_lanes2 v) {
+	const __m128d ux = _mm_set1_pd(q.x), uy = _mm_set1_pd(q.y), uz = _mm_set1_pd(q.z), w = _mm_set1_pd(q.w),
+	              two = _mm_set1_pd(2.0);
+	__m128d tx = _mm_mul_pd(_mm_sub_pd(_mm_mul_pd(uy, v.z), _mm_mul_pd(uz, v.y)), two);
+	__m128d ty = _mm_mul_pd(_mm_sub_pd(_mm_mul_pd(uz, v.x), _mm_mul_pd(ux, v.z)), two);
+	__m128d tz = _mm_mul_pd(_mm_sub_pd(_mm_mul_pd(ux, v.y), _mm_mul_pd(uy, v.x)), two);
+	hs_lanes2 o = {_mm_add_pd(_mm_add_pd(v.x, _mm_mul_pd(tx, w)), _mm_sub_pd(_mm_mul_pd(uy, tz), _mm_mul_pd(uz, ty))),
+	               _mm_add_pd(_mm_add_pd(v.y, _mm_mul_pd(ty, w)), _mm_sub_pd(_mm_mul_pd(uz, tx), _mm_mul_pd(ux, tz))),
+	               _mm_add_pd(_mm_add_pd(v.z, _mm_mul_pd(tz, w)), _mm_sub_pd(_mm_mul_pd(ux, ty), _mm_mul_pd(uy, tx)))};
+	return o;
+}
+
 static inline void hs_lanes2_store(hs_lanes2 l, hs_vec3 *a, hs_vec3 *b) {
 	_mm_storel_pd(&a->x, l.x);
 	_mm_storel_pd(&a->y, l.y);
