@@ -34,7 +34,7 @@ FP   := -ffp-contract=off -fno-fast-math -fno-tree-vectorize -fno-tree-slp-vecto
 PUBLIC_INC  := -Imodel/include -Iharness/include
 ifeq ($(SANITIZE),1)
 # every layer, not only the programs: the library code is what the sanitizers must see
-SAN_CFLAGS := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer -DHS_HASH_SELFCHECK
+SAN_CFLAGS := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer -DHS_HASH_SELFCHECK -DHS_SELFCHECK
 LDFLAGS    += -fsanitize=address,undefined
 endif
 CFLAGS_BASE = -std=c11 -D_POSIX_C_SOURCE=200809L $(OPT) -g $(WARN) $(FP) $(SAN_CFLAGS) $(PKG_CFLAGS) $(CFLAGS)

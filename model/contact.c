@@ -17,6 +17,11 @@
 
 #include "lanes2.h"
 
+#if defined(HS_SELFCHECK)
+#include <stdio.h>
+#include <stdlib.h>
+#endif
+
 // Grasp when n_i · n_j <= cos(threshold) + eps: with a bare comparison rounding would decide the
 // 90 deg case (two adjoining cube faces) and two builds could disagree (DESIGN.md).
 #define HS_GRASP_EPS 1e-9
@@ -654,6 +659,42 @@ static bool axis_path_near(const hs_hand *hand, int a, int steps, hs_vec3 c, dou
 // The first check point of finger segment s (finger s / 3, segment s % 3): 4 (s / 3) + s % 3.
 static const int SEGMENT_FIRST_POINT[15] = {0, 1, 2, 4, 5, 6, 8, 9, 10, 12, 13, 14, 16, 17, 18};
 
+#if defined(HS_SELFCHECK)
+// Sanitizer builds: what sweep_clear_of_a_face skipped would have found nothing.
+static void check_clear(const hs_world *world, const hs_shape *shape, const hs_part *part, const hs_vec3 q[2],
+                        const hs_vec3 p[2]) {
+	if (clip_part(world, shape, part, p[0], p[1], 0.0).hit || clip_part(world, shape, part, q[0], q[1], 0.0).hit ||
+	    !sweep_beyond_a_face(world, shape, part, q, p)) {
+		fprintf(stderr, "handspring: a line's sweep passed over as clear of a face touches the part (frame %ld)\n",
+		        world->frame);
+		abort();
+	}
+}
+#endif
+
+// True when the line's sweep through the frame, q to p (one piece), lies beyond one face of a
+// scanned part by more than HS_CULL_SLACK (far above the rounding of body-frame coordinates within
+// HS_MAX_COORDINATE): then the clips of p and of q miss and sweep_beyond_a_face holds, so
+// swept_path finds nothing, and the line is passed over before them.
+static bool sweep_clear_of_a_face(const hs_world *world, const hs_shape *shape, const hs_part *part, const hs_vec3 q[2],
+                                  const hs_vec3 p[2]) {
+	if (part->face_count >= HS_FACE_TREE_MIN_FACES)
+		return false;
+	for (int f = part->first_face; f < part->first_face + part->face_count; ++f) {
+		hs_vec3 n = shape->faces[f].normal;
+		double o = shape->faces[f].offset + HS_CULL_SLACK;
+		if (hs_dot(n, p[0]) > o && hs_dot(n, p[1]) > o && hs_dot(n, q[0]) > o && hs_dot(n, q[1]) > o) {
+#if defined(HS_SELFCHECK)
+			check_clear(world, shape, part, q, p);
+#endif
+			return true;
+		}
+	}
+	(void)world;
+	return false;
+}
+
+
 // A line with an end inside the part is the check points' business (detect_lines); so is one
 // with an end off the surface by less than grasp_release_mm at a check point that touches (it
 // touched last frame, the hysteresis of detect_points, or touches the part now), at the end of
@@ -746,6 +787,8 @@ static void detect_lines(hs_world *world, int object, int h, const hs_part *part
 		}
 		hs_vec3 q[2]; // the line a frame ago
 		line_to_body(before, m, q);
+		if (swept && !moved && !embedded && steps == 1 && sweep_clear_of_a_face(world, shape, part, q, p))
+			continue; // missed it at both ends and swept nothing of it
 		if (swept && end_touches(world, hand->touch_points, a, shape, part, q))
 			continue; // or at its start
 		if (embedded) { // started inside: touches nothing until clear
