@@ -695,6 +695,51 @@ static bool sweep_clear_of_a_face(const hs_world *world, const hs_shape *shape, 
 }
 
 
+#if defined(HS_SELFCHECK)
+// Sanitizer builds: each line of a segment passed over as clear would have been passed over alone.
+static void check_segment_clear(const hs_world *world, int h, int a, const frame *body, const frame *before,
+                                const hs_shape *shape, const hs_part *part) {
+	int s = a - a / 4; // the segment of first check point a (SEGMENT_FIRST_POINT)
+	hs_hand *hand = (hs_hand *)&world->hands[h]; // placing lines changes no result (hand_internal.h)
+	hs_hand_ready_segment(hand, s);
+	for (int j = 4 * s; j < 4 * s + 4; ++j) {
+		hs_vec3 p[2], q[2];
+		line_to_body(body, hand->lines[j], p);
+		line_to_body(before, hand->prev_lines[j], q);
+		if (!sweep_clear_of_a_face(world, shape, part, q, p)) {
+			fprintf(stderr, "handspring: a segment passed over as clear of a face has line %d near the part\n", j);
+			abort();
+		}
+	}
+}
+#endif
+
+// The same for a whole finger segment, before its lines are placed: its axis now and a frame ago
+// (check points a and a + 1) beyond one face by more than finger_radius + 2 HS_CULL_SLACK. Each of
+// its check lines lies finger_radius from that axis, so its ends now and a frame ago lie beyond
+// the face by more than HS_CULL_SLACK (the rounding of placing and transforming them is far below
+// the other HS_CULL_SLACK): sweep_clear_of_a_face would pass each one over.
+static bool segment_clear_of_a_face(const hs_world *world, int h, int a, const frame *body, const frame *before,
+                                    const hs_shape *shape, const hs_part *part) {
+	const hs_hand *hand = &world->hands[h];
+	if (part->face_count >= HS_FACE_TREE_MIN_FACES)
+		return false;
+	hs_vec3 e[4] = {to_body(body, hand->points[a]), to_body(body, hand->points[a + 1]),
+	                to_body(before, hand->prev_points[a]), to_body(before, hand->prev_points[a + 1])};
+	double reach = hand->def.finger_radius + 2.0 * HS_CULL_SLACK;
+	for (int f = part->first_face; f < part->first_face + part->face_count; ++f) {
+		hs_vec3 n = shape->faces[f].normal;
+		double o = shape->faces[f].offset + reach;
+		if (hs_dot(n, e[0]) > o && hs_dot(n, e[1]) > o && hs_dot(n, e[2]) > o && hs_dot(n, e[3]) > o) {
+#if defined(HS_SELFCHECK)
+			check_segment_clear(world, h, a, body, before, shape, part);
+#endif
+			return true;
+		}
+	}
+	return false;
+}
+
 // A line with an end inside the part is the check points' business (detect_lines); so is one
 // with an end off the surface by less than grasp_release_mm at a check point that touches (it
 // touched last frame, the hysteresis of detect_points, or touches the part now), at the end of
@@ -760,8 +805,10 @@ static void detect_lines(hs_world *world, int object, int h, const hs_part *part
 			a = SEGMENT_FIRST_POINT[j / 4];
 			double d = cull ? segment_distance_sq(center, hand->points[a], hand->points[a + 1]) : 0.0;
 			if ((cull && d > sb.rs * sb.rs && (!swept || moved || !axis_path_near(hand, a, steps, center, sb.rp))) ||
-			    (swept && ends_deep(world, hand, touching, a, body, shape, part, sb.deep))) {
-				j += 3; // the segment's other three lines too (far, or each beside a touching point)
+			    (swept && ends_deep(world, hand, touching, a, body, shape, part, sb.deep)) ||
+			    (swept && !moved && steps == 1 && !(hand->embed_lines >> j & 0xFu) &&
+			     segment_clear_of_a_face(world, h, a, body, before, shape, part))) {
+				j += 3; // the segment's other three lines too (far, each beside a touching point, or clear)
 				continue;
 			}
 			hs_hand_ready_segment(&world->hands[h], j / 4); // its lines are read from here on
