@@ -168,11 +168,7 @@ static hs_quat thumb_tilt_and_nail(void) {
 // arch angle), about the line through the middle finger's MCP parallel to the palm's x.
 static const double ARCH_SHARE[4] = {0.0, 0.0, 0.5, 1.0};
 
-// One hand in its palm frame, right-handed: check points and segment orientations.
-typedef struct hand_pose {
-	hs_vec3 points[HS_HAND_POINTS];
-	hs_quat segment[15]; // finger × 3 + segment: x along the bone, z toward the back (nail)
-} hand_pose;
+typedef hs_hand_pose hand_pose; // (hand_internal.h: a hand keeps one, its fingers' cache)
 
 // What the kinematics of one reading reads: its angles, and the glove table (NULL: the sines
 // are computed) with the reading it is indexed by.
@@ -264,18 +260,18 @@ static void finger_pose(const reading *r, int k, hand_pose *out) {
 	chain(def, f, base, q, flex, turn, out);
 }
 
-// The pose turned by q: each point hs_quat_rotate(q, p), each segment frame hs_quat_mul(q, s).
-// With SSE2, two at a time, one per lane, each lane doing those functions' operations in their
-// order (the same bits).
-static void turn_pose(hs_quat q, hand_pose *pose) {
+// `in` turned by q into `pose`: each point hs_quat_rotate(q, p), each segment frame
+// hs_quat_mul(q, s). With SSE2, two at a time, one per lane, each lane doing those functions'
+// operations in their order (the same bits).
+static void turn_pose(hs_quat q, const hand_pose *in, hand_pose *pose) {
 	int i = 0, s = 0;
 #if defined(__SSE2__)
 	for (; i + 1 < HS_HAND_POINTS; i += 2)
-		hs_lanes2_store(hs_lanes2_rotate(q, hs_lanes2_load(&pose->points[i], &pose->points[i + 1])), &pose->points[i],
+		hs_lanes2_store(hs_lanes2_rotate(q, hs_lanes2_load(&in->points[i], &in->points[i + 1])), &pose->points[i],
 		                &pose->points[i + 1]);
 	const __m128d aw = _mm_set1_pd(q.w), ax = _mm_set1_pd(q.x), ay = _mm_set1_pd(q.y), az = _mm_set1_pd(q.z);
 	for (; s + 1 < 15; s += 2) {
-		const hs_quat *b0 = &pose->segment[s], *b1 = &pose->segment[s + 1];
+		const hs_quat *b0 = &in->segment[s], *b1 = &in->segment[s + 1];
 		__m128d bw = _mm_set_pd(b1->w, b0->w), bx = _mm_set_pd(b1->x, b0->x), by = _mm_set_pd(b1->y, b0->y),
 		        bz = _mm_set_pd(b1->z, b0->z);
 		__m128d w = _mm_sub_pd(_mm_sub_pd(_mm_sub_pd(_mm_mul_pd(aw, bw), _mm_mul_pd(ax, bx)), _mm_mul_pd(ay, by)),
@@ -296,22 +292,53 @@ static void turn_pose(hs_quat q, hand_pose *pose) {
 	}
 #endif
 	for (; i < HS_HAND_POINTS; i++)
-		pose->points[i] = hs_quat_rotate(q, pose->points[i]);
+		pose->points[i] = hs_quat_rotate(q, in->points[i]);
 	for (; s < 15; s++)
-		pose->segment[s] = hs_quat_mul(q, pose->segment[s]);
+		pose->segment[s] = hs_quat_mul(q, in->segment[s]);
 }
 
-// the whole hand in the wrist frame of a right hand
-static void hand_pose_wrist(const reading *r, hand_pose *out) {
+// The sensors each finger's chain reads (thumb, index .. little; repeated to fill the row).
+static const int FINGER_SENSORS[5][5] = {
+    {HS_SENSOR_THUMB_ROLL, HS_SENSOR_THUMB_MCP, HS_SENSOR_THUMB_IP, HS_SENSOR_THUMB_ABDUCTION, HS_SENSOR_THUMB_ABDUCTION},
+    {HS_SENSOR_INDEX_MCP, HS_SENSOR_INDEX_PIP, HS_SENSOR_INDEX_MIDDLE_ABDUCTION, HS_SENSOR_INDEX_PIP, HS_SENSOR_INDEX_PIP},
+    {HS_SENSOR_MIDDLE_MCP, HS_SENSOR_MIDDLE_PIP, HS_SENSOR_MIDDLE_PIP, HS_SENSOR_MIDDLE_PIP, HS_SENSOR_MIDDLE_PIP},
+    {HS_SENSOR_RING_MCP, HS_SENSOR_RING_PIP, HS_SENSOR_MIDDLE_RING_ABDUCTION, HS_SENSOR_PALM_ARCH, HS_SENSOR_PALM_ARCH},
+    {HS_SENSOR_LITTLE_MCP, HS_SENSOR_LITTLE_PIP, HS_SENSOR_MIDDLE_RING_ABDUCTION, HS_SENSOR_RING_LITTLE_ABDUCTION,
+     HS_SENSOR_PALM_ARCH}};
+
+// True when finger f's chain in `cache` was computed from these sensor values; else records them.
+static bool finger_kept(hs_hand *cache, int f, const uint8_t *v) {
+	uint8_t key[5];
+	for (int k = 0; k < 5; ++k)
+		key[k] = v[FINGER_SENSORS[f][k]];
+	if (((unsigned)cache->palm_valid >> f & 1u) && memcmp(key, cache->palm_key[f], sizeof key) == 0)
+		return true;
+	memcpy(cache->palm_key[f], key, sizeof key);
+	cache->palm_valid = (uint8_t)(cache->palm_valid | 1u << f);
+	return false;
+}
+
+// the whole hand in the wrist frame of a right hand; `cache` (NULL: none) keeps each finger's
+// chain for the sensors it reads (the same function of the same values: the same bits)
+static void hand_pose_wrist(const reading *r, hand_pose *out, hs_hand *cache) {
 	const hs_hand_joints *j = &r->j;
-	thumb_pose(r, out);
-	for (int k = 0; k < 4; k++)
-		finger_pose(r, k, out);
-	if (j->wrist_pitch == 0.0 && j->wrist_yaw == 0.0)
-		return; // palm frame = wrist frame
+	hand_pose *palm_pose = cache ? &cache->palm_pose : out;
+	for (int f = 0; f < 5; f++) {
+		if (cache && finger_kept(cache, f, r->v))
+			continue;
+		if (f == 0)
+			thumb_pose(r, palm_pose);
+		else
+			finger_pose(r, f - 1, palm_pose);
+	}
+	if (j->wrist_pitch == 0.0 && j->wrist_yaw == 0.0) { // palm frame = wrist frame
+		if (palm_pose != out)
+			*out = *palm_pose;
+		return;
+	}
 	hs_quat palm = hs_quat_mul(turn_about(Z_AXIS, turn_of(r, HS_GLOVE_WRIST, HS_SENSOR_WRIST_YAW, j->wrist_yaw)),
 	                           turn_about(Y_AXIS, turn_of(r, HS_GLOVE_WRIST, HS_SENSOR_WRIST_PITCH, j->wrist_pitch)));
-	turn_pose(palm, out);
+	turn_pose(palm, palm_pose, out);
 }
 
 static hs_vec3 mirror_if(bool left, hs_vec3 v) { return left ? hs_v3(v.x, -v.y, v.z) : v; }
@@ -356,10 +383,10 @@ void hs_glove_table_build(const hs_hand_def *def, hs_glove_table *table) {
 // The shape in the wrist frame without its lines: the check points (mirrored for a left hand)
 // and each segment's frame.
 static void local_pose(const hs_hand_def *def, const hs_glove_table *table, const uint8_t sensors[HS_GLOVE_SENSORS],
-                       hs_vec3 points[HS_HAND_POINTS], hs_quat segment[15]) {
+                       hs_vec3 points[HS_HAND_POINTS], hs_quat segment[15], hs_hand *cache) {
 	reading r = {def, hs_hand_joints_from_sensors(def, sensors), table, sensors};
 	hand_pose pose;
-	hand_pose_wrist(&r, &pose);
+	hand_pose_wrist(&r, &pose, cache);
 	for (int i = 0; i < HS_HAND_POINTS; i++)
 		points[i] = mirror_if(def->left, pose.points[i]);
 	memcpy(segment, pose.segment, sizeof pose.segment);
@@ -381,7 +408,7 @@ void hs_hand_local_shape_with(const hs_hand_def *def, const hs_glove_table *tabl
                               const uint8_t sensors[HS_GLOVE_SENSORS], hs_vec3 points[HS_HAND_POINTS],
                               hs_vec3 lines[HS_HAND_LINES][2]) {
 	hs_quat segment[15];
-	local_pose(def, table, sensors, points, segment);
+	local_pose(def, table, sensors, points, segment, NULL);
 	for (int s = 0; s < 15; s++)
 		local_segment_lines(def, points, segment, s, &lines[s * 4]);
 }
@@ -505,7 +532,7 @@ static void local_bounds(hs_hand *hand) {
 }
 
 void hs_hand_update_shape(hs_hand *hand) {
-	local_pose(&hand->def, &hand->glove, hand->sensors, hand->local_points, hand->local_segment);
+	local_pose(&hand->def, &hand->glove, hand->sensors, hand->local_points, hand->local_segment, hand);
 	hand->local_ready = 0;
 	local_bounds(hand);
 }
@@ -609,7 +636,7 @@ void hs_hand_refresh(hs_hand *hand) {
 	}
 	// the previous points and bounds: the same calls that placed them, on the previous reading;
 	// its lines from the shape kept for them
-	local_pose(&hand->def, &hand->glove, hand->prev_sensors, hand->local_points, hand->local_segment);
+	local_pose(&hand->def, &hand->glove, hand->prev_sensors, hand->local_points, hand->local_segment, hand);
 	hand->local_ready = 0;
 	local_bounds(hand);
 	hand->prev_place_m = hs_mat3_from_quat(hand->prev_wrist_rot);
@@ -679,7 +706,7 @@ static bool def_is_valid(const hs_hand_def *def) {
 static hs_vec3 right_hand_point(const hs_hand_def *def, const uint8_t s[HS_GLOVE_SENSORS], int i) {
 	reading r = {def, hs_hand_joints_from_sensors(def, s), NULL, s};
 	hand_pose pose;
-	hand_pose_wrist(&r, &pose);
+	hand_pose_wrist(&r, &pose, NULL);
 	return pose.points[i];
 }
 

@@ -38,6 +38,12 @@ typedef struct hs_glove_table {
 // load (hs_hand_refresh): the check points and lines now and one frame ago (the kinematics of
 // those two readings, §3.1: bit for bit what hs_world_set_hand computed), the shape in the wrist
 // frame and the bounding spheres. 55 words of state instead of the 866 of the points and lines.
+// One hand in its palm frame, right-handed: check points and segment orientations.
+typedef struct hs_hand_pose {
+	hs_vec3 points[HS_HAND_POINTS];
+	hs_quat segment[15]; // finger × 3 + segment: x along the bone, z toward the back (nail)
+} hs_hand_pose;
+
 typedef struct hs_hand {
 	hs_hand_def def;
 	hs_vec3 wrist_pos;
@@ -106,6 +112,12 @@ typedef struct hs_hand {
 	// model cache, built with the hand (hs_glove_table_build): a new reading's kinematics looks its
 	// sines up, the same values the sines of its angles give
 	hs_glove_table glove;
+	// cache: each finger's chain in the palm frame (before the wrist sensors' turn) and the sensor
+	// values it was computed from (palm_key, bit f of palm_valid): a glove's deadband keeps about
+	// half the fingers' readings from one frame to the next, and their chains are not computed again
+	hs_hand_pose palm_pose;
+	uint8_t palm_key[5][5];
+	uint8_t palm_valid;
 } hs_hand;
 
 // The hand's shape in its wrist frame (depends on the sensors only) and its placement.

@@ -414,6 +414,45 @@ static void test_lines_placed_when_read(void **state) {
 	free(hand);
 }
 
+// A hand keeps each finger's chain for the sensors it reads (hand_internal.h palm_pose): readings
+// that change a few sensors at a time, as a glove's deadband passes them, give the bits of the
+// kinematics computed afresh, points and lines, on left and right hands.
+static void test_fingers_kept_between_readings(void **state) {
+	(void)state;
+	hs_hand *hand = calloc(1, sizeof *hand);
+	assert_non_null(hand);
+	uint32_t x = 11u;
+	for (int side = 0; side < 2; ++side) {
+		memset(hand, 0, sizeof *hand);
+		hand->def = hs_default_hand_def();
+		hand->def.left = side == 1;
+		hs_glove_table_build(&hand->def, &hand->glove);
+		hand->wrist_pos = hs_v3(0.1, 0.2, 0.3);
+		hand->wrist_rot = hs_quat_from_axis_angle(hs_normalize(hs_v3(1.0, -2.0, 0.5)), 0.4);
+		int kept = 0;
+		for (int frame = 0; frame < 300; ++frame) {
+			uint8_t was[HS_GLOVE_SENSORS];
+			memcpy(was, hand->sensors, sizeof was);
+			for (int i = 0; i < HS_GLOVE_SENSORS; ++i) { // each sensor moves in one frame of four
+				x = x * 1664525u + 1013904223u;
+				if (frame == 0 || (x >> 30) == 0)
+					hand->sensors[i] = (uint8_t)(x >> 8);
+			}
+			kept += memcmp(was + HS_SENSOR_MIDDLE_MCP, hand->sensors + HS_SENSOR_MIDDLE_MCP, 2) == 0;
+			hs_hand_update_shape(hand);
+			hs_hand_place_points(hand);
+			hs_hand_ready_all(hand);
+			hs_vec3 points[HS_HAND_POINTS], lines[HS_HAND_LINES][2];
+			hs_hand_kinematics(&hand->def, hand->wrist_pos, hand->wrist_rot, hand->sensors, points, lines);
+			assert_memory_equal(points, hand->points, sizeof points);
+			assert_memory_equal(lines, hand->lines, sizeof lines);
+			hs_hand_keep_previous(hand);
+		}
+		assert_true(kept > 100); // the middle finger's chain was reused that often
+	}
+	free(hand);
+}
+
 // every check line is a long edge of its segment's prism: parallel to the axis, r from it
 static void check_lines_geometry(const hs_hand_def *def, hs_vec3 at, hs_quat rot, const uint8_t s[HS_GLOVE_SENSORS]) {
 	hs_vec3 p[HS_HAND_POINTS], l[HS_HAND_LINES][2];
@@ -1134,6 +1173,7 @@ int main(void) {
 	    cmocka_unit_test(test_left_hand_mirrors),
 	    cmocka_unit_test(test_bounds_reach_the_farthest_end),
 	    cmocka_unit_test(test_lines_placed_when_read),
+	    cmocka_unit_test(test_fingers_kept_between_readings),
 	    cmocka_unit_test(test_check_lines),
 	    cmocka_unit_test(test_thumb_opposition),
 	    cmocka_unit_test(test_grasp_width),
