@@ -319,13 +319,24 @@ static bool finger_kept(hs_hand *cache, int f, const uint8_t *v) {
 }
 
 // the whole hand in the wrist frame of a right hand; `cache` (NULL: none) keeps each finger's
-// chain for the sensors it reads (the same function of the same values: the same bits)
-static void hand_pose_wrist(const reading *r, hand_pose *out, hs_hand *cache) {
+// chain for the sensors it reads (the same function of the same values: the same bits). Returns
+// the fingers (bit f) whose points and frames are those of the last shape made through the cache:
+// chain kept, wrist sensors unchanged.
+static unsigned hand_pose_wrist(const reading *r, hand_pose *out, hs_hand *cache) {
 	const hs_hand_joints *j = &r->j;
 	hand_pose *palm_pose = cache ? &cache->palm_pose : out;
+	unsigned same = 0;
+	if (cache) {
+		bool wrist = cache->palm_valid && cache->palm_wrist[0] == r->v[HS_SENSOR_WRIST_PITCH] &&
+		             cache->palm_wrist[1] == r->v[HS_SENSOR_WRIST_YAW];
+		cache->palm_wrist[0] = r->v[HS_SENSOR_WRIST_PITCH];
+		cache->palm_wrist[1] = r->v[HS_SENSOR_WRIST_YAW];
+		same = wrist ? 31u : 0u;
+	}
 	for (int f = 0; f < 5; f++) {
 		if (cache && finger_kept(cache, f, r->v))
 			continue;
+		same &= ~(1u << f);
 		if (f == 0)
 			thumb_pose(r, palm_pose);
 		else
@@ -334,11 +345,12 @@ static void hand_pose_wrist(const reading *r, hand_pose *out, hs_hand *cache) {
 	if (j->wrist_pitch == 0.0 && j->wrist_yaw == 0.0) { // palm frame = wrist frame
 		if (palm_pose != out)
 			*out = *palm_pose;
-		return;
+		return same;
 	}
 	hs_quat palm = hs_quat_mul(turn_about(Z_AXIS, turn_of(r, HS_GLOVE_WRIST, HS_SENSOR_WRIST_YAW, j->wrist_yaw)),
 	                           turn_about(Y_AXIS, turn_of(r, HS_GLOVE_WRIST, HS_SENSOR_WRIST_PITCH, j->wrist_pitch)));
 	turn_pose(palm, palm_pose, out);
+	return same;
 }
 
 static hs_vec3 mirror_if(bool left, hs_vec3 v) { return left ? hs_v3(v.x, -v.y, v.z) : v; }
@@ -382,14 +394,24 @@ void hs_glove_table_build(const hs_hand_def *def, hs_glove_table *table) {
 
 // The shape in the wrist frame without its lines: the check points (mirrored for a left hand)
 // and each segment's frame.
-static void local_pose(const hs_hand_def *def, const hs_glove_table *table, const uint8_t sensors[HS_GLOVE_SENSORS],
-                       hs_vec3 points[HS_HAND_POINTS], hs_quat segment[15], hs_hand *cache) {
+static unsigned local_pose(const hs_hand_def *def, const hs_glove_table *table, const uint8_t sensors[HS_GLOVE_SENSORS],
+                           hs_vec3 points[HS_HAND_POINTS], hs_quat segment[15], hs_hand *cache) {
 	reading r = {def, hs_hand_joints_from_sensors(def, sensors), table, sensors};
 	hand_pose pose;
-	hand_pose_wrist(&r, &pose, cache);
+	unsigned same = hand_pose_wrist(&r, &pose, cache);
 	for (int i = 0; i < HS_HAND_POINTS; i++)
 		points[i] = mirror_if(def->left, pose.points[i]);
 	memcpy(segment, pose.segment, sizeof pose.segment);
+	return same;
+}
+
+// The segments (bit s) of the fingers in `fingers` (bit f): three each.
+static unsigned segments_of(unsigned fingers) {
+	unsigned s = 0;
+	for (int f = 0; f < 5; ++f)
+		if (fingers >> f & 1u)
+			s |= 7u << (3 * f);
+	return s;
 }
 
 // Check lines (§3.1) of segment s: the 4 long edges of a square prism around it, edge e offset from
@@ -532,8 +554,8 @@ static void local_bounds(hs_hand *hand) {
 }
 
 void hs_hand_update_shape(hs_hand *hand) {
-	local_pose(&hand->def, &hand->glove, hand->sensors, hand->local_points, hand->local_segment, hand);
-	hand->local_ready = 0;
+	unsigned same = local_pose(&hand->def, &hand->glove, hand->sensors, hand->local_points, hand->local_segment, hand);
+	hand->local_ready = (uint16_t)(hand->local_ready & segments_of(same)); // a finger's lines as they were
 	local_bounds(hand);
 }
 

@@ -118,6 +118,7 @@ typedef struct hs_hand {
 	hs_hand_pose palm_pose;
 	uint8_t palm_key[5][5];
 	uint8_t palm_valid;
+	uint8_t palm_wrist[2]; // the wrist sensors of the last shape made through this cache
 } hs_hand;
 
 // The hand's shape in its wrist frame (depends on the sensors only) and its placement.

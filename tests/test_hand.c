@@ -332,6 +332,7 @@ static void test_bounds_reach_the_farthest_end(void **state) {
 	uint32_t x = 12345u;
 	const double radii[3] = {0.002, 0.008, 0.03};
 	for (int trial = 0; trial < 3000; ++trial) {
+		memset(hand, 0, sizeof *hand); // a hand's definition is fixed for its life (its caches follow it)
 		hand->def = hs_default_hand_def();
 		hand->def.left = trial % 2 == 1;
 		hand->def.finger_radius = radii[trial % 3];
@@ -414,8 +415,9 @@ static void test_lines_placed_when_read(void **state) {
 	free(hand);
 }
 
-// A hand keeps each finger's chain for the sensors it reads (hand_internal.h palm_pose): readings
-// that change a few sensors at a time, as a glove's deadband passes them, give the bits of the
+// A hand keeps each finger's chain for the sensors it reads (hand_internal.h palm_pose), and its
+// segments' wrist-frame lines while neither the chain nor the wrist sensors move: readings that
+// change a few sensors at a time, as a glove's deadband passes them, give the bits of the
 // kinematics computed afresh, points and lines, on left and right hands.
 static void test_fingers_kept_between_readings(void **state) {
 	(void)state;
