@@ -755,13 +755,27 @@ static bool end_touches(const hs_world *world, uint32_t touching, int point, con
 	return false;
 }
 
+typedef struct deep_memo {
+	uint32_t known, deep; // the check points tested so far, and those found deep
+} deep_memo;
+
 // True when check point a or a + 1 touches (`touching`) and lies inside the part grown by `grow`
-// now (the check points of a segment's line ends, end_touches).
+// now (the check points of a segment's line ends, end_touches). `memo` keeps each point's answer
+// for the rest of the part's lines.
 static bool ends_deep(const hs_world *world, const hs_hand *hand, uint32_t touching, int a, const frame *body, const hs_shape *shape,
-                      const hs_part *part, double grow) {
-	for (int k = 0; k < 2; ++k)
-		if ((touching >> (a + k) & 1u) && inside_part(world, shape, part, to_body(body, hand->points[a + k]), grow))
+                      const hs_part *part, double grow, deep_memo *memo) {
+	for (int k = 0; k < 2; ++k) {
+		uint32_t bit = 1u << (a + k);
+		if (!(touching & bit))
+			continue;
+		if (!(memo->known & bit)) { // a check point ends two segments: tested once
+			memo->known |= bit;
+			if (inside_part(world, shape, part, to_body(body, hand->points[a + k]), grow))
+				memo->deep |= bit;
+		}
+		if (memo->deep & bit)
 			return true;
+	}
 	return false;
 }
 
@@ -799,13 +813,14 @@ static void detect_lines(hs_world *world, int object, int h, const hs_part *part
 	segment_bounds sb = segment_bounds_of(world, hand, r);
 	int a = 0;             // the first check point of line j's segment
 	bool all_near = false; // the segment's lines are all within r now
+	deep_memo memo = {0, 0};
 	for (int j = 0; j < HS_HAND_LINES; ++j) {
 		const hs_vec3 *l = hand->lines[j], *m = hand->prev_lines[j];
 		if (j % 4 == 0) {
 			a = SEGMENT_FIRST_POINT[j / 4];
 			double d = cull ? segment_distance_sq(center, hand->points[a], hand->points[a + 1]) : 0.0;
 			if ((cull && d > sb.rs * sb.rs && (!swept || moved || !axis_path_near(hand, a, steps, center, sb.rp))) ||
-			    (swept && ends_deep(world, hand, touching, a, body, shape, part, sb.deep)) ||
+			    (swept && ends_deep(world, hand, touching, a, body, shape, part, sb.deep, &memo)) ||
 			    (swept && !moved && steps == 1 && !(hand->embed_lines >> j & 0xFu) &&
 			     segment_clear_of_a_face(world, h, a, body, before, shape, part))) {
 				j += 3; // the segment's other three lines too (far, each beside a touching point, or clear)
