@@ -321,6 +321,15 @@ static void test_left_hand_mirrors(void **state) {
 		assert_vec3_near(q[i], hs_add(at, hs_quat_rotate(rot, pl[i])), EPS);
 }
 
+// A hand as hs_world_add_hand starts it (all zero: no caches), with the default definition on
+// the given side and its glove table.
+static void fresh_hand(hs_hand *hand, bool left) {
+	memset(hand, 0, sizeof *hand); // a hand's definition is fixed for its life (its caches follow it)
+	hand->def = hs_default_hand_def();
+	hand->def.left = left;
+	hs_glove_table_build(&hand->def, &hand->glove);
+}
+
 // The hand's bounding sphere in the wrist frame passes over the segments that cannot hold its
 // farthest line end (hand.c, local_bounds): its radius must still be the largest distance from its
 // centre to any check point or line end, to the bit, for either hand, thin or thick fingers and any
@@ -332,15 +341,12 @@ static void test_bounds_reach_the_farthest_end(void **state) {
 	uint32_t x = 12345u;
 	const double radii[3] = {0.002, 0.008, 0.03};
 	for (int trial = 0; trial < 3000; ++trial) {
-		memset(hand, 0, sizeof *hand); // a hand's definition is fixed for its life (its caches follow it)
-		hand->def = hs_default_hand_def();
-		hand->def.left = trial % 2 == 1;
+		fresh_hand(hand, trial % 2 == 1);
 		hand->def.finger_radius = radii[trial % 3];
 		for (int i = 0; i < HS_GLOVE_SENSORS; ++i) {
 			x = x * 1664525u + 1013904223u; // a fixed LCG: the same readings every run
 			hand->sensors[i] = (uint8_t)(x >> 24);
 		}
-		hs_glove_table_build(&hand->def, &hand->glove);
 		hs_hand_update_shape(hand);
 		// every line, not only those the cache computed (the bounds read the segments that may hold the farthest)
 		hs_vec3 points[HS_HAND_POINTS], lines[HS_HAND_LINES][2];
@@ -373,10 +379,7 @@ static void test_lines_placed_when_read(void **state) {
 	assert_non_null(hand);
 	uint32_t x = 7u;
 	for (int trial = 0; trial < 8; ++trial) {
-		memset(hand, 0, sizeof *hand);
-		hand->def = hs_default_hand_def();
-		hand->def.left = trial % 2 == 1;
-		hs_glove_table_build(&hand->def, &hand->glove);
+		fresh_hand(hand, trial % 2 == 1);
 		uint8_t readings[2][HS_GLOVE_SENSORS];
 		hs_vec3 wrist[2];
 		hs_quat turn[2];
@@ -425,10 +428,7 @@ static void test_fingers_kept_between_readings(void **state) {
 	assert_non_null(hand);
 	uint32_t x = 11u;
 	for (int side = 0; side < 2; ++side) {
-		memset(hand, 0, sizeof *hand);
-		hand->def = hs_default_hand_def();
-		hand->def.left = side == 1;
-		hs_glove_table_build(&hand->def, &hand->glove);
+		fresh_hand(hand, side == 1);
 		hand->wrist_pos = hs_v3(0.1, 0.2, 0.3);
 		hand->wrist_rot = hs_quat_from_axis_angle(hs_normalize(hs_v3(1.0, -2.0, 0.5)), 0.4);
 		int kept = 0;
