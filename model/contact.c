@@ -108,9 +108,10 @@ static inline int scan_nearest(const hs_shape *shape, const hs_part *part, hs_ve
 	return best;
 }
 
-static inline bool scan_beyond(const hs_shape *shape, const hs_part *part, const hs_vec3 q[4]) {
+// True when the four points lie beyond one face of the part by more than `margin`.
+static inline bool scan_beyond(const hs_shape *shape, const hs_part *part, const hs_vec3 q[4], double margin) {
 	for (int f = part->first_face; f < part->first_face + part->face_count; ++f)
-		if (hs_face_beyond(&shape->faces[f], q))
+		if (hs_face_beyond_by(&shape->faces[f], q, margin))
 			return true;
 	return false;
 }
@@ -482,7 +483,7 @@ static bool sweep_beyond_a_face(const hs_world *world, const hs_shape *shape, co
 		if (root >= 0)
 			return hs_face_tree_beyond(tree, root, shape, ends);
 	}
-	return scan_beyond(shape, part, ends);
+	return scan_beyond(shape, part, ends, 0.0);
 }
 
 // The earliest feature a swept line meets so far (swept_line): its place u along the sweep, the
@@ -678,22 +679,15 @@ static void check_clear(const hs_world *world, const hs_shape *shape, const hs_p
 // swept_path finds nothing, and the line is passed over before them.
 static bool sweep_clear_of_a_face(const hs_world *world, const hs_shape *shape, const hs_part *part, const hs_vec3 q[2],
                                   const hs_vec3 p[2]) {
-	if (part->face_count >= HS_FACE_TREE_MIN_FACES)
+	const hs_vec3 ends[4] = {q[0], q[1], p[0], p[1]};
+	if (part->face_count >= HS_FACE_TREE_MIN_FACES || !scan_beyond(shape, part, ends, HS_CULL_SLACK))
 		return false;
-	for (int f = part->first_face; f < part->first_face + part->face_count; ++f) {
-		hs_vec3 n = shape->faces[f].normal;
-		double o = shape->faces[f].offset + HS_CULL_SLACK;
-		if (hs_dot(n, p[0]) > o && hs_dot(n, p[1]) > o && hs_dot(n, q[0]) > o && hs_dot(n, q[1]) > o) {
 #if defined(HS_SELFCHECK)
-			check_clear(world, shape, part, q, p);
+	check_clear(world, shape, part, q, p);
 #endif
-			return true;
-		}
-	}
 	(void)world;
-	return false;
+	return true;
 }
-
 
 #if defined(HS_SELFCHECK)
 // Sanitizer builds: each line of a segment passed over as clear would have been passed over alone.
@@ -724,20 +718,14 @@ static bool segment_clear_of_a_face(const hs_world *world, int h, int a, const f
 	const hs_hand *hand = &world->hands[h];
 	if (part->face_count >= HS_FACE_TREE_MIN_FACES)
 		return false;
-	hs_vec3 e[4] = {to_body(body, hand->points[a]), to_body(body, hand->points[a + 1]),
-	                to_body(before, hand->prev_points[a]), to_body(before, hand->prev_points[a + 1])};
-	double reach = hand->def.finger_radius + 2.0 * HS_CULL_SLACK;
-	for (int f = part->first_face; f < part->first_face + part->face_count; ++f) {
-		hs_vec3 n = shape->faces[f].normal;
-		double o = shape->faces[f].offset + reach;
-		if (hs_dot(n, e[0]) > o && hs_dot(n, e[1]) > o && hs_dot(n, e[2]) > o && hs_dot(n, e[3]) > o) {
+	const hs_vec3 e[4] = {to_body(body, hand->points[a]), to_body(body, hand->points[a + 1]),
+	                      to_body(before, hand->prev_points[a]), to_body(before, hand->prev_points[a + 1])};
+	if (!scan_beyond(shape, part, e, hand->def.finger_radius + 2.0 * HS_CULL_SLACK))
+		return false;
 #if defined(HS_SELFCHECK)
-			check_segment_clear(world, h, a, body, before, shape, part);
+	check_segment_clear(world, h, a, body, before, shape, part);
 #endif
-			return true;
-		}
-	}
-	return false;
+	return true;
 }
 
 // A line with an end inside the part is the check points' business (detect_lines); so is one

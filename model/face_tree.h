@@ -42,13 +42,14 @@ typedef struct hs_face_tree {
 bool hs_face_tree_build(hs_face_tree *tree, const hs_shape *shape);
 void hs_face_tree_free(hs_face_tree *tree);
 
-// All four points lie strictly beyond the face's plane (the sweep test's per-face step, shared by
-// contact.c's scan and the tree).
-static inline bool hs_face_beyond(const hs_face *face, const hs_vec3 q[4]) {
+// All four points lie beyond the face's plane by more than `margin` (the sweep test's per-face
+// step, shared by contact.c's scan and the tree, and contact.c's pass-overs with a margin).
+static inline bool hs_face_beyond_by(const hs_face *face, const hs_vec3 q[4], double margin) {
 	hs_vec3 n = face->normal;
-	double o = face->offset;
+	double o = face->offset + margin;
 	return hs_dot(n, q[0]) > o && hs_dot(n, q[1]) > o && hs_dot(n, q[2]) > o && hs_dot(n, q[3]) > o;
 }
+static inline bool hs_face_beyond(const hs_face *face, const hs_vec3 q[4]) { return hs_face_beyond_by(face, q, 0.0); }
 
 // The root of the part's tree, or -1 when the part is scanned (few faces, or no tree).
 static inline int hs_face_tree_root(const hs_face_tree *tree, const hs_shape *shape, const hs_part *part) {
