@@ -16,6 +16,7 @@
 #include "push.h"
 
 #include "lanes2.h"
+#include "part_box.h"
 
 #if defined(HS_SELFCHECK)
 #include <stdio.h>
@@ -129,10 +130,41 @@ static HS_NOINLINE int nearest_many(const hs_world *world, const hs_shape *shape
 	return root >= 0 ? hs_face_tree_nearest(tree, root, shape, part->first_face, p) : scan_nearest(shape, part, p);
 }
 
+#if defined(HS_SELFCHECK)
+// Sanitizer builds: a box part's queries return what the scan of its faces returns.
+static bool box_inside(const hs_shape *shape, const hs_part *part, hs_vec3 p, double grow) {
+	bool inside = hs_part_box_inside(part, p, grow);
+	if (inside != scan_inside(shape, part, p, grow)) {
+		fprintf(stderr, "selfcheck: the box's inside test differs from the scan's\n");
+		abort();
+	}
+	return inside;
+}
+static bool box_apart(const hs_shape *shape, const hs_part *part, hs_vec3 a, hs_vec3 b, double grow) {
+	bool apart = hs_part_box_apart(part, a, b, grow, HS_CULL_SLACK);
+	if (apart && hs_clip_segment(shape, part, a, b, grow).hit) {
+		fprintf(stderr, "selfcheck: a segment the box test put beyond a face meets the part\n");
+		abort();
+	}
+	return apart;
+}
+#else
+static inline bool box_inside(const hs_shape *shape, const hs_part *part, hs_vec3 p, double grow) {
+	(void)shape;
+	return hs_part_box_inside(part, p, grow);
+}
+static inline bool box_apart(const hs_shape *shape, const hs_part *part, hs_vec3 a, hs_vec3 b, double grow) {
+	(void)shape;
+	return hs_part_box_apart(part, a, b, grow, HS_CULL_SLACK);
+}
+#endif
+
 // Inside the part grown by `grow` (m; 0: the part itself).
 static inline bool inside_part(const hs_world *world, const hs_shape *shape, const hs_part *part, hs_vec3 p, double grow) {
 	if (part->face_count >= HS_FACE_TREE_MIN_FACES)
 		return inside_many(world, shape, part, p, grow);
+	if (hs_part_is_box(part) && hs_part_box_takes(p))
+		return box_inside(shape, part, p, grow);
 	return scan_inside(shape, part, p, grow);
 }
 
@@ -150,6 +182,10 @@ static inline hs_clip clip_part(const hs_world *world, const hs_shape *shape, co
 		int root = hs_face_tree_root(tree, shape, part);
 		if (root >= 0)
 			return hs_face_tree_clip(tree, root, shape, a, b, grow);
+	}
+	if (hs_part_is_box(part) && hs_part_box_takes(a) && hs_part_box_takes(b) && box_apart(shape, part, a, b, grow)) {
+		hs_clip miss = {0.0, 1.0, -1, -1, false};
+		return miss;
 	}
 	return hs_clip_segment(shape, part, a, b, grow);
 }

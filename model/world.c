@@ -8,6 +8,7 @@
 #include "contact.h"
 #include "manipulate.h"
 #include "motion.h"
+#include "part_box.h"
 #include "stacking.h"
 #include "support.h"
 #include "world_internal.h"
@@ -274,6 +275,8 @@ hs_shape_id hs_world_add_shape(hs_world *world, const hs_shape *shape, hs_status
 		set_status(status, HS_ERR_NO_MEMORY);
 		return none;
 	}
+	for (int p = 0; p < copy->part_count; ++p)
+		hs_part_box_find(copy, &copy->parts[p]);
 	if (!index_face_edges(copy, &world->face_edges[world->shape_count]) ||
 	    !hs_face_tree_build(&world->face_trees[world->shape_count], copy)) {
 		free(world->face_edges[world->shape_count].first);

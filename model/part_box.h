@@ -1,0 +1,45 @@
+// part_box.h — the hand check's face loops for a part that is a box with axis-aligned faces
+// (hs_part.box_face), the commonest object (a cube): its inside test coordinate by coordinate
+// instead of six dot products, and the misses of its Cyrus-Beck clip found by comparisons.
+//
+// For a face of normal +x, dot(normal, p) = 1 p.x + 0 p.y + 0 p.z is p.x exactly when p is finite
+// (up to the sign of a zero, which comparisons do not see), and -p.x for -x: the inside test
+// returns what the scan of the faces returns. A point with a coordinate that is not finite (or
+// whose sum overflows) goes to the scan, whose NaN dots decide as they always did.
+#ifndef HS_PART_BOX_H
+#define HS_PART_BOX_H
+
+#include <stdbool.h>
+
+#include "handspring.h"
+
+// Fills part->box_face and part->box_offset (box_face[0] = -1 when the part is no such box).
+void hs_part_box_find(const hs_shape *shape, hs_part *part);
+
+static inline bool hs_part_is_box(const hs_part *part) { return part->box_face[0] >= 0; }
+
+// Whether p takes the box's path: its coordinates are finite and so is their sum.
+static inline bool hs_part_box_takes(hs_vec3 p) {
+	double s = p.x + p.y + p.z;
+	return s - s == 0.0;
+}
+
+// scan_inside (contact.c): no face has dot(normal, p) >= offset + grow.
+static inline bool hs_part_box_inside(const hs_part *part, hs_vec3 p, double grow) {
+	const double *o = part->box_offset;
+	return !(p.x >= o[0] + grow) && !(-p.x >= o[1] + grow) && !(p.y >= o[2] + grow) && !(-p.y >= o[3] + grow) &&
+	       !(p.z >= o[4] + grow) && !(-p.z >= o[5] + grow);
+}
+
+// True when a and b both lie beyond one face of the box grown by `grow` by more than `slack`: then
+// hs_clip_segment misses (that face's t lies outside [0, 1] whatever the rounding, for a slack far
+// above it), found with 12 comparisons instead of its dots and divisions.
+static inline bool hs_part_box_apart(const hs_part *part, hs_vec3 a, hs_vec3 b, double grow, double slack) {
+	const double *o = part->box_offset;
+	double g = grow + slack;
+	return (a.x > o[0] + g && b.x > o[0] + g) || (-a.x > o[1] + g && -b.x > o[1] + g) ||
+	       (a.y > o[2] + g && b.y > o[2] + g) || (-a.y > o[3] + g && -b.y > o[3] + g) ||
+	       (a.z > o[4] + g && b.z > o[4] + g) || (-a.z > o[5] + g && -b.z > o[5] + g);
+}
+
+#endif

@@ -1,0 +1,194 @@
+// test_part_box.c — a part that is a box with axis-aligned faces (model/part_box.h): which
+// parts are found to be such boxes, the coordinate inside test answers as the scan of the faces
+// does (on faces, at ±0, grown, NaN), and two ends beyond one face by more than the slack make the
+// Cyrus-Beck clip miss, while ends beyond by less do not count as apart.
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <setjmp.h>
+#include <cmocka.h>
+
+#include <math.h>
+
+#include "clip.h"
+#include "part_box.h"
+#include "test_util.h"
+
+#define SLACK 1e-6 // contact.c's HS_CULL_SLACK
+
+// The scan, written here as contact.c writes it (the reference).
+static bool scan_inside(const hs_shape *s, const hs_part *part, hs_vec3 p, double grow) {
+	for (int f = part->first_face; f < part->first_face + part->face_count; ++f)
+		if (hs_dot(s->faces[f].normal, p) >= s->faces[f].offset + grow)
+			return false;
+	return true;
+}
+
+static double unit(uint64_t *state) { // [-1, 1), a fixed LCG
+	*state = *state * 6364136223846793005ull + 1442695040888963407ull;
+	return (double)(*state >> 11) / (double)(1ull << 52) - 1.0;
+}
+
+// A coordinate of one of four kinds: anywhere within the span lo..hi widened by its length on
+// each side, exactly lo or hi, just off one of them by less than the slack, or a zero of either
+// sign.
+static double coordinate(uint64_t *rng, double lo, double hi) {
+	int kind = (int)((unit(rng) + 1.0) * 2.0);
+	bool high = unit(rng) >= 0.0;
+	switch (kind) {
+	case 0:
+		return 0.5 * (lo + hi) + 1.5 * (hi - lo) * unit(rng);
+	case 1:
+		return high ? hi : lo;
+	case 2:
+		return (high ? hi : lo) + 0.5 * SLACK * unit(rng);
+	default:
+		return high ? 0.0 : -0.0;
+	}
+}
+
+// A point about the part's box grown by `grow`, its coordinates each of coordinate's kinds.
+static hs_vec3 sample(uint64_t *rng, const hs_part *part, double grow) {
+	const double *o = part->box_offset;
+	return hs_v3(coordinate(rng, -(o[1] + grow), o[0] + grow), coordinate(rng, -(o[3] + grow), o[2] + grow),
+	             coordinate(rng, -(o[5] + grow), o[4] + grow));
+}
+
+static void test_finds_boxes(void **state) {
+	(void)state;
+	hs_shape *box = hs_shape_box(hs_v3(0.3, 0.1, 0.2), NULL);
+	assert_non_null(box);
+	const hs_part *part = &box->parts[0];
+	assert_true(hs_part_is_box(part));
+	const hs_vec3 axis[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+	const double half[3] = {0.15, 0.05, 0.1};
+	for (int k = 0; k < 6; ++k) {
+		const hs_face *f = &box->faces[part->box_face[k]];
+		assert_vec3_near(f->normal, axis[k], 0.0);
+		assert_true(part->box_offset[k] == f->offset);
+		assert_near(part->box_offset[k], half[k / 2], 1e-15);
+	}
+	hs_shape_destroy(box);
+
+	// both parts of the L-block, though one lies beside G (its near face's offset is negative)
+	hs_shape *l = hs_shape_l_block(hs_v3(3, 1, 2), 1, NULL);
+	assert_non_null(l);
+	assert_true(hs_part_is_box(&l->parts[0]));
+	assert_true(hs_part_is_box(&l->parts[1]));
+	bool negative = false;
+	for (int k = 0; k < 6; ++k)
+		negative |= l->parts[1].box_offset[k] < 0.0;
+	assert_true(negative);
+
+	// the world finds them again in its copy, whatever the caller's shape says
+	double offset = l->parts[1].box_offset[0];
+	l->parts[1].box_offset[0] = 99.0;
+	l->parts[0].box_face[0] = -1;
+	hs_world_def def = hs_default_world_def();
+	hs_world *w = hs_world_create(&def, NULL);
+	assert_non_null(w);
+	hs_shape_id id = hs_world_add_shape(w, l, NULL);
+	const hs_shape *copy = hs_world_shape(w, id);
+	assert_non_null(copy);
+	assert_true(hs_part_is_box(&copy->parts[0]));
+	assert_true(copy->parts[1].box_offset[0] == offset);
+	hs_world_destroy(w);
+	hs_shape_destroy(l);
+
+	// a turned cube and a many-faced ellipsoid are not
+	hs_shape *e = hs_shape_ellipsoid(hs_v3(0.1, 0.1, 0.1), NULL);
+	assert_non_null(e);
+	assert_false(hs_part_is_box(&e->parts[0]));
+	hs_shape_destroy(e);
+	const double c = cos(0.3), s = sin(0.3);
+	hs_vec3 v[8];
+	int fv[24] = {0, 1, 3, 2, 4, 6, 7, 5, 0, 4, 5, 1, 2, 3, 7, 6, 0, 2, 6, 4, 1, 5, 7, 3};
+	int fs[6] = {4, 4, 4, 4, 4, 4};
+	for (int i = 0; i < 8; ++i) {
+		double x = i & 1 ? 0.1 : -0.1, y = i & 2 ? 0.1 : -0.1, z = i & 4 ? 0.1 : -0.1;
+		v[i] = hs_v3(c * x - s * y, s * x + c * y, z);
+	}
+	char why[128] = "";
+	hs_shape *turned = hs_shape_polyhedron(v, 8, fv, fs, 6, why, sizeof why, NULL);
+	assert_non_null(turned);
+	assert_int_equal(turned->parts[0].face_count, 6);
+	assert_false(hs_part_is_box(&turned->parts[0]));
+	hs_shape_destroy(turned);
+}
+
+// The inside test against the scan for points about the part, grown by 0, 1 and 2 mm.
+static void inside_as_the_scan(const hs_shape *shape, const hs_part *part, uint64_t seed) {
+	const double grows[3] = {0.0, 1e-3, 2e-3};
+	uint64_t rng = seed;
+	int inside = 0, on_a_face = 0;
+	for (int k = 0; k < 100000; ++k) {
+		double grow = grows[k % 3];
+		hs_vec3 p = sample(&rng, part, grow);
+		assert_true(hs_part_box_takes(p));
+		bool want = scan_inside(shape, part, p, grow);
+		assert_int_equal(hs_part_box_inside(part, p, grow), want);
+		inside += want;
+		on_a_face += p.x == part->box_offset[0] + grow;
+	}
+	assert_in_range(inside, 1000, 99000); // both answers are common
+	assert_true(on_a_face > 1000);
+}
+
+static void test_inside_matches_the_scan(void **state) {
+	(void)state;
+	hs_shape *box = hs_shape_box(hs_v3(0.3, 0.1, 0.2), NULL);
+	hs_shape *l = hs_shape_l_block(hs_v3(3, 1, 2), 1, NULL);
+	assert_non_null(box);
+	assert_non_null(l);
+	inside_as_the_scan(box, &box->parts[0], 2026);
+	inside_as_the_scan(l, &l->parts[1], 11); // a box beside G
+	// a coordinate that is not finite goes to the scan
+	assert_false(hs_part_box_takes(hs_v3(NAN, 0.0, 0.0)));
+	assert_false(hs_part_box_takes(hs_v3(0.0, INFINITY, 0.0)));
+	assert_false(hs_part_box_takes(hs_v3(1e308, 1e308, 0.0))); // the sum overflows
+	hs_shape_destroy(box);
+	hs_shape_destroy(l);
+}
+
+static void test_apart_means_the_clip_misses(void **state) {
+	(void)state;
+	hs_shape *box = hs_shape_box(hs_v3(0.3, 0.1, 0.2), NULL);
+	assert_non_null(box);
+	const hs_part *part = &box->parts[0];
+	uint64_t rng = 77;
+	int apart = 0, hits = 0;
+	for (int k = 0; k < 200000; ++k) {
+		double grow = k % 2 ? 0.0 : 1e-3;
+		hs_vec3 a = sample(&rng, part, grow), b = sample(&rng, part, grow);
+		hs_clip c = hs_clip_segment(box, part, a, b, grow);
+		if (hs_part_box_apart(part, a, b, grow, SLACK)) {
+			++apart;
+			assert_false(c.hit);
+		}
+		hits += c.hit;
+	}
+	assert_true(apart > 5000);
+	assert_true(hits > 20000);
+	// beyond the +x face by 1 mm at both ends: apart; by less than the slack: not (the clip decides)
+	hs_vec3 a = hs_v3(0.151, -0.2, 0.0), b = hs_v3(0.151, 0.2, 0.0);
+	assert_true(hs_part_box_apart(part, a, b, 0.0, SLACK));
+	assert_false(hs_part_box_apart(part, a, b, 2e-3, SLACK)); // grown past them
+	a.x = b.x = 0.15 + 0.5 * SLACK;
+	assert_false(hs_part_box_apart(part, a, b, 0.0, SLACK));
+	assert_false(hs_clip_segment(box, part, a, b, 0.0).hit);
+	// one end beyond -y, the other across: not apart, and it hits
+	a = hs_v3(0.0, -0.2, 0.0);
+	b = hs_v3(0.0, 0.2, 0.0);
+	assert_false(hs_part_box_apart(part, a, b, 0.0, SLACK));
+	assert_true(hs_clip_segment(box, part, a, b, 0.0).hit);
+	hs_shape_destroy(box);
+}
+
+int main(void) {
+	const struct CMUnitTest tests[] = {
+	    cmocka_unit_test(test_finds_boxes),
+	    cmocka_unit_test(test_inside_matches_the_scan),
+	    cmocka_unit_test(test_apart_means_the_clip_misses),
+	};
+	return cmocka_run_group_tests(tests, NULL, NULL);
+}
