@@ -12,6 +12,7 @@
 // "Swept detection, rectification and contact hysteresis"). paper_contacts keeps [H]'s letter.
 #include "clip.h"
 #include "contact.h"
+#include "hand_sweep.h"
 #include "hgrid.h"
 #include "push.h"
 
@@ -364,7 +365,7 @@ static bool same_pose(const hs_body *b) {
 }
 
 static void detect_points(hs_world *world, int object, int h, const hs_part *part, const frame *body,
-                          const frame *before, bool moved, bool cull, double grow) {
+                          const frame *before, bool moved, bool cull, double grow, unsigned far) {
 	const hs_shape *shape = &world->shapes[world->bodies[object].shape];
 	const hs_hand *hand = &world->hands[h];
 	hs_vec3 center = to_world(body, part->center); // cull before the transform
@@ -374,6 +375,10 @@ static void detect_points(hs_world *world, int object, int h, const hs_part *par
 	const hs_body *ob = &world->bodies[object];
 	bool still = !moved && same_pose(ob);
 	for (int i = 0; i < HS_HAND_POINTS; ++i) {
+		if (far >> (i >> 2) & 1u) { // a finger far from the part (far_fingers): its 4 points
+			i |= 3;
+			continue;
+		}
 		if (cull && hs_length_sq(hs_sub(hand->points[i], center)) > r_sq &&
 		    (!swept || moved || !path_near(hand, i, steps, center, r_sq)))
 			continue;
@@ -827,7 +832,7 @@ static segment_bounds segment_bounds_of(const hs_world *world, const hs_hand *ha
 // since before it touched anything, as the check points in detect_points), or swept across it
 // during the frame. A line with an end inside is the check points' business.
 static void detect_lines(hs_world *world, int object, int h, const hs_part *part, const frame *body,
-                         const frame *before, bool moved, bool cull, double grow, uint32_t touching) {
+                         const frame *before, bool moved, bool cull, double grow, uint32_t touching, unsigned far) {
 	const hs_shape *shape = &world->shapes[world->bodies[object].shape];
 	const hs_hand *hand = &world->hands[h];
 	hs_vec3 center = to_world(body, part->center);
@@ -841,6 +846,10 @@ static void detect_lines(hs_world *world, int object, int h, const hs_part *part
 	for (int j = 0; j < HS_HAND_LINES; ++j) {
 		const hs_vec3 *l = hand->lines[j], *m = hand->prev_lines[j];
 		if (j % 4 == 0) {
+			if (far >> (j / 12) & 1u) { // a finger far from the part (far_fingers): its 12 lines
+				j += 11;
+				continue;
+			}
 			a = SEGMENT_FIRST_POINT[j / 4];
 			double d = cull ? segment_distance_sq(center, hand->points[a], hand->points[a + 1]) : 0.0;
 			if ((cull && d > sb.rs * sb.rs && (!swept || moved || !axis_path_near(hand, a, steps, center, sb.rp))) ||
@@ -859,18 +868,14 @@ static void detect_lines(hs_world *world, int object, int h, const hs_part *part
 		hs_vec3 p[2];
 		line_to_body(body, l, p);
 		bool embedded = swept && (hand->embed_lines >> j & 1u);
-		// where no path is swept (a held object; the grown and paper tests) a line that misses the
-		// part now is done whatever the test beside the touching points a frame ago says: clipped
-		// before the line a frame ago is transformed (most lines that pass the spheres end here)
+		// where no path is swept (a held object; the grown and paper tests) a line that misses the part
+		// now is done: clipped before the line a frame ago is transformed (most lines end here)
 		bool miss_ends = (moved || !swept) && !embedded;
 		if (swept && end_touches(world, touching, a, shape, part, p))
 			continue; // beside a touching check point at the frame's end
-		hs_clip c = {0.0, 1.0, -1, -1, false};
-		if (miss_ends) {
-			c = clip_part(world, shape, part, p[0], p[1], grow);
-			if (!c.hit)
-				continue;
-		}
+		hs_clip c = miss_ends ? clip_part(world, shape, part, p[0], p[1], grow) : (hs_clip){0.0, 1.0, -1, -1, false};
+		if (miss_ends && !c.hit)
+			continue;
 		hs_vec3 q[2]; // the line a frame ago
 		line_to_body(before, m, q);
 		if (swept && !moved && !embedded && steps == 1 && sweep_clear_of_a_face(world, shape, part, q, p))
@@ -988,6 +993,46 @@ static int keep_hovering(hs_world *world, int first, int n) {
 	return kept - first;
 }
 
+// The fingers (bit f) whose spheres through the frame (hs_hand_finger_spheres) lie further than
+// `reach` from c, the centre of a part's bounding sphere: reach is its radius grown by `grow` and by
+// twice the release margin (the embedded parts' test, the widest any check point or line answers
+// to), and HS_CULL_SLACK for rounding. Such a finger's points and lines, wherever they went
+// during the frame, come nowhere near the part: every test of them would find nothing.
+static unsigned far_fingers(const hs_hand *hand, hs_vec3 c, double reach) {
+	unsigned far = 0;
+	for (int f = 0; f < 5; ++f) {
+		double r = hand->finger_reach[f] + reach;
+		if (hs_length_sq(hs_sub(hand->finger_center[f], c)) > r * r)
+			far |= 1u << f;
+	}
+	return far;
+}
+
+#if defined(HS_SELFCHECK)
+// Sanitizer builds: every check point of a finger far_fingers passes over, and every placed check
+// line, now and a frame ago, lies further than `reach` from c.
+static void check_far(const hs_hand *hand, unsigned far, hs_vec3 c, double reach) {
+	bool near = false;
+	for (int i = 0; i < HS_HAND_POINTS; ++i)
+		if (far >> (i / 4) & 1u)
+			near |= hs_length_sq(hs_sub(hand->points[i], c)) <= reach * reach ||
+			        hs_length_sq(hs_sub(hand->prev_points[i], c)) <= reach * reach;
+	for (int j = 0; j < HS_HAND_LINES; ++j)
+		if (far >> (j / 12) & 1u)
+			near |= (hand->lines_ready >> (j / 4) & 1u && segment_distance_sq(c, hand->lines[j][0], hand->lines[j][1]) <= reach * reach) ||
+			        (hand->prev_lines_ready >> (j / 4) & 1u &&
+			         segment_distance_sq(c, hand->prev_lines[j][0], hand->prev_lines[j][1]) <= reach * reach);
+	if (near) {
+		fprintf(stderr, "selfcheck: a finger passed over as far from a part comes near it\n");
+		abort();
+	}
+}
+#else
+static inline void check_far(const hs_hand *hand, unsigned far, hs_vec3 c, double reach) {
+	(void)hand, (void)far, (void)c, (void)reach;
+}
+#endif
+
 int hs_contact_detect_grown(hs_world *world, int object, const hs_body *before, double grow) {
 	int first = world->contact_count;
 	const hs_body *body = &world->bodies[object];
@@ -1004,20 +1049,31 @@ int hs_contact_detect_grown(hs_world *world, int object, const hs_body *before, 
 			continue; // bounding-volume rejection before the narrow tests (Fig. 2)
 		if (grow == 0.0) // the grown test repeats a held object's: counted once
 			world->counters.hand_tests++;
+		// finger by finger for an object the hand did not carry (a carried one has them all near,
+		// and its points and lines are passed over by cheaper tests than their paths')
+		bool fingers = world->def.skip_work && !before;
+		if (fingers)
+			hs_hand_finger_spheres(&world->hands[h]);
 		for (int p = 0; p < shape->part_count; ++p) {
 			const hs_part *part = &shape->parts[p];
+			unsigned far = 0;
 			if (world->def.skip_work) {
 				hs_vec3 c = to_world(&now, part->center);
 				double r = part->radius + grow + hand->sweep_radius;
 				if (hs_length_sq(hs_sub(c, hand->sweep_center)) > r * r)
 					continue;
+				double reach = part->radius + grow + 2.0 * world->def.grasp_release_mm * 1e-3 + HS_CULL_SLACK;
+				if (fingers) {
+					far = far_fingers(hand, c, reach);
+					check_far(hand, far, c, reach);
+				}
 			}
 			int from = world->contact_count;
-			detect_points(world, object, h, part, &now, &then, before != NULL, world->def.skip_work, grow);
+			detect_points(world, object, h, part, &now, &then, before != NULL, world->def.skip_work, grow, far);
 			uint32_t touching = hand->touch_points; // touched last frame, or touch this part now
 			for (int k = from; k < world->contact_count; ++k)
 				touching |= 1u << world->contacts[k].part;
-			detect_lines(world, object, h, part, &now, &then, before != NULL, world->def.skip_work, grow, touching);
+			detect_lines(world, object, h, part, &now, &then, before != NULL, world->def.skip_work, grow, touching, far);
 		}
 	}
 	if (grow == 0.0 && !world->def.paper_contacts)

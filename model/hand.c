@@ -563,6 +563,7 @@ void hs_hand_place_points(hs_hand *hand) {
 	hand->place_m = hs_mat3_from_quat(hand->wrist_rot); // as hs_hand_place
 	place_vectors(hand->place_m, hand->wrist_pos, hand->local_points, hand->points, HS_HAND_POINTS);
 	hand->lines_ready = 0;
+	hand->finger_spheres_ready = false;
 }
 
 void hs_hand_place_segment(hs_hand *hand, int s) {
@@ -598,6 +599,7 @@ void hs_hand_update_bounds(hs_hand *hand) {
 }
 
 void hs_hand_keep_previous(hs_hand *hand) {
+	hand->finger_spheres_ready = false;
 	hand->prev_center = hand->center;
 	hand->prev_radius = hand->radius;
 	memcpy(hand->prev_points, hand->points, sizeof hand->points);

@@ -109,6 +109,14 @@ typedef struct hs_hand {
 	hs_vec3 path_lines[HS_HAND_PATH_MAX - 1][HS_HAND_LINES][2];
 	hs_vec3 sweep_center;
 	double sweep_radius;
+	// cache, made by hs_hand_finger_spheres when a contact test first reads it after the points
+	// moved (finger_spheres_ready, cleared by hs_hand_sweep, hs_hand_place_points and
+	// hs_hand_keep_previous): finger f's 4 check points now, a frame ago and on the path between
+	// lie within finger_reach[f] - finger_radius of finger_center[f], so its check lines lie within
+	// finger_reach[f] of it (contact.c passes over a finger far from a part)
+	hs_vec3 finger_center[5];
+	double finger_reach[5];
+	bool finger_spheres_ready;
 	// model cache, built with the hand (hs_glove_table_build): a new reading's kinematics looks its
 	// sines up, the same values the sines of its angles give
 	hs_glove_table glove;

@@ -13,6 +13,7 @@
 #include <stdlib.h>
 
 #include "hand_sweep.h"
+#include "lanes2.h"
 
 // deg per sensor unit (paper §5.1)
 #define DEG_PER_UNIT 0.5
@@ -85,6 +86,7 @@ static void place_between(hs_hand *hand, int k, int steps) {
 
 void hs_hand_sweep(hs_hand *hand, bool chords_only) {
 	hand->path_steps = 1;
+	hand->finger_spheres_ready = false;
 	if (!hand->placed || hand->radius < 0.0) {
 		hand->sweep_center = hand->center;
 		hand->sweep_radius = hand->radius;
@@ -109,4 +111,59 @@ void hs_hand_sweep(hs_hand *hand, bool chords_only) {
 	}
 	hand->sweep_center = c;
 	hand->sweep_radius = sqrt(r_sq) + 1e-6; // as hs_hand_update_bounds: rounding never leaves a part outside
+}
+
+// The 4 check points of finger f in one of the hand's poses through the frame: k = 0 a frame ago,
+// path_steps now, the path's pieces between.
+static const hs_vec3 *finger_points(const hs_hand *hand, int k, int f) {
+	const hs_vec3 *p = k == 0 ? hand->prev_points : k == hand->path_steps ? hand->points : hand->path_points[k - 1];
+	return p + 4 * f;
+}
+
+// The squared distance from c to the farthest of finger f's points in the poses (NaN when one is:
+// the sphere then culls nothing, its centre being NaN too). With SSE2, two points at a time.
+static double finger_farthest_sq(const hs_hand *hand, int f, int poses, hs_vec3 c) {
+	double r_sq = 0.0;
+#if defined(__SSE2__)
+	const __m128d cx = _mm_set1_pd(c.x), cy = _mm_set1_pd(c.y), cz = _mm_set1_pd(c.z);
+	__m128d most = _mm_setzero_pd();
+	for (int k = 0; k < poses; ++k) {
+		const hs_vec3 *p = finger_points(hand, k, f);
+		for (int i = 0; i < 4; i += 2) {
+			hs_lanes2 in = hs_lanes2_load(&p[i], &p[i + 1]);
+			__m128d dx = _mm_sub_pd(in.x, cx), dy = _mm_sub_pd(in.y, cy), dz = _mm_sub_pd(in.z, cz);
+			most = _mm_max_pd(_mm_add_pd(_mm_add_pd(_mm_mul_pd(dx, dx), _mm_mul_pd(dy, dy)), _mm_mul_pd(dz, dz)), most);
+		}
+	}
+	double lanes[2];
+	_mm_storeu_pd(lanes, most);
+	r_sq = lanes[1] > lanes[0] ? lanes[1] : lanes[0];
+#else
+	for (int k = 0; k < poses; ++k) {
+		const hs_vec3 *p = finger_points(hand, k, f);
+		for (int i = 0; i < 4; ++i) {
+			double d = hs_length_sq(hs_sub(p[i], c));
+			r_sq = d > r_sq ? d : r_sq;
+		}
+	}
+#endif
+	return r_sq;
+}
+
+void hs_hand_finger_spheres(hs_hand *hand) {
+	if (hand->finger_spheres_ready)
+		return;
+	int poses = hand->path_steps + 1;
+	for (int f = 0; f < 5; ++f) {
+		hs_vec3 sum = hs_v3(0.0, 0.0, 0.0);
+		for (int k = 0; k < poses; ++k) {
+			const hs_vec3 *p = finger_points(hand, k, f);
+			sum = hs_add(sum, hs_add(hs_add(p[0], p[1]), hs_add(p[2], p[3])));
+		}
+		hs_vec3 c = hs_scale(sum, 1.0 / (4.0 * poses));
+		// the lines' ends lie finger_radius from the points; rounding far below the micrometre
+		hand->finger_center[f] = c;
+		hand->finger_reach[f] = (sqrt(finger_farthest_sq(hand, f, poses, c)) + hand->def.finger_radius) * (1.0 + 1e-9) + 1e-6;
+	}
+	hand->finger_spheres_ready = true;
 }

@@ -12,6 +12,7 @@
 #include <cmocka.h>
 
 #include "hand_internal.h"
+#include "hand_sweep.h"
 #include "hs_harness.h"
 #include "test_util.h"
 
@@ -415,6 +416,55 @@ static void test_lines_placed_when_read(void **state) {
 		assert_memory_equal(lines, hand->lines, sizeof lines);
 		assert_memory_equal(prev_lines, hand->prev_lines, sizeof prev_lines);
 	}
+	free(hand);
+}
+
+// Each finger's sphere through the frame (hs_hand_finger_spheres, contact.c's far_fingers) holds
+// the finger's check points within finger_reach - finger_radius and its check line ends within
+// finger_reach, now, a frame ago and on the path between, for readings far apart (a path of up to
+// HS_HAND_PATH_MAX pieces) and near (one piece); the spheres are made again after the points move.
+static void test_finger_spheres_hold_the_fingers(void **state) {
+	(void)state;
+	hs_hand *hand = calloc(1, sizeof *hand);
+	assert_non_null(hand);
+	uint32_t x = 99u;
+	int pieces = 0;
+	for (int trial = 0; trial < 40; ++trial) {
+		fresh_hand(hand, trial % 2 == 1);
+		for (int f = 0; f < 2; ++f) { // as hs_world_set_hand, then the step's sweep
+			for (int i = 0; i < HS_GLOVE_SENSORS; ++i) {
+				x = x * 1664525u + 1013904223u;
+				hand->sensors[i] = (uint8_t)(trial % 4 == 0 && f == 1 ? hand->sensors[i] ^ (x >> 30) : x >> 24);
+			}
+			hand->wrist_pos = hs_v3(0.05 * f, -0.2, 0.3 + 0.01 * trial);
+			hand->wrist_rot = hs_quat_from_axis_angle(hs_normalize(hs_v3(1.0, 2.0, 3.0)), 0.2 * trial + 0.5 * f);
+			hs_hand_update_shape(hand);
+			hs_hand_place_points(hand);
+			hand->placed = true;
+			hs_hand_update_bounds(hand);
+			if (f == 0)
+				hs_hand_keep_previous(hand);
+		}
+		hs_hand_sweep(hand, false);
+		hs_hand_ready_all(hand);
+		assert_false(hand->finger_spheres_ready);
+		hs_hand_finger_spheres(hand);
+		assert_true(hand->finger_spheres_ready);
+		pieces += hand->path_steps;
+		double rf = hand->def.finger_radius;
+		for (int k = 0; k <= hand->path_steps; ++k) {
+			const hs_vec3 *p = k == 0 ? hand->prev_points : k == hand->path_steps ? hand->points : hand->path_points[k - 1];
+			hs_vec3(*l)[2] = k == 0 ? hand->prev_lines : k == hand->path_steps ? hand->lines : hand->path_lines[k - 1];
+			for (int i = 0; i < HS_HAND_POINTS; ++i)
+				assert_true(hs_distance(p[i], hand->finger_center[i / 4]) <= hand->finger_reach[i / 4] - rf);
+			for (int j = 0; j < HS_HAND_LINES; ++j)
+				for (int e = 0; e < 2; ++e)
+					assert_true(hs_distance(l[j][e], hand->finger_center[j / 12]) <= hand->finger_reach[j / 12]);
+		}
+		hs_hand_place_points(hand);
+		assert_false(hand->finger_spheres_ready);
+	}
+	assert_true(pieces > 40 + 40); // paths of several pieces were tried
 	free(hand);
 }
 
@@ -1175,6 +1225,7 @@ int main(void) {
 	    cmocka_unit_test(test_left_hand_mirrors),
 	    cmocka_unit_test(test_bounds_reach_the_farthest_end),
 	    cmocka_unit_test(test_lines_placed_when_read),
+	    cmocka_unit_test(test_finger_spheres_hold_the_fingers),
 	    cmocka_unit_test(test_fingers_kept_between_readings),
 	    cmocka_unit_test(test_check_lines),
 	    cmocka_unit_test(test_thumb_opposition),
