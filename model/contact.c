@@ -22,6 +22,7 @@
 #if defined(HS_SELFCHECK)
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 #endif
 
 // Grasp when n_i · n_j <= cos(threshold) + eps: with a bare comparison rounding would decide the
@@ -364,6 +365,64 @@ static bool same_pose(const hs_body *b) {
 	       b->rot.x == b->rot_prev.x && b->rot.y == b->rot_prev.y && b->rot.z == b->rot_prev.z;
 }
 
+// The check points (bit i) not further than sqrt(r_sq) from c now, as the cull reads it:
+// !(|p_i - c|^2 > r_sq), NaN near. With SSE2 two points at a time, each lane doing
+// hs_length_sq(hs_sub(p, c))'s operations in its order (the same bits).
+static uint32_t points_near(const hs_vec3 p[HS_HAND_POINTS], hs_vec3 c, double r_sq) {
+	uint32_t near = 0;
+	int i = 0;
+#if defined(__SSE2__)
+	const __m128d cx = _mm_set1_pd(c.x), cy = _mm_set1_pd(c.y), cz = _mm_set1_pd(c.z), r = _mm_set1_pd(r_sq);
+	for (; i + 1 < HS_HAND_POINTS; i += 2) {
+		hs_lanes2 in = hs_lanes2_load(&p[i], &p[i + 1]);
+		__m128d dx = _mm_sub_pd(in.x, cx), dy = _mm_sub_pd(in.y, cy), dz = _mm_sub_pd(in.z, cz);
+		__m128d d = _mm_add_pd(_mm_add_pd(_mm_mul_pd(dx, dx), _mm_mul_pd(dy, dy)), _mm_mul_pd(dz, dz));
+		near |= (uint32_t)_mm_movemask_pd(_mm_cmpngt_pd(d, r)) << i;
+	}
+#endif
+	for (; i < HS_HAND_POINTS; ++i)
+		if (!(hs_length_sq(hs_sub(p[i], c)) > r_sq))
+			near |= 1u << i;
+#if defined(HS_SELFCHECK)
+	for (int k = 0; k < HS_HAND_POINTS; ++k)
+		if ((near >> k & 1u) != !(hs_length_sq(hs_sub(p[k], c)) > r_sq)) {
+			fprintf(stderr, "selfcheck: points_near differs from the scalar cull\n");
+			abort();
+		}
+#endif
+	return near;
+}
+
+// The check points of the fingers in `far` (bit f: points 4 f to 4 f + 3).
+static uint32_t points_of_fingers(unsigned far) {
+	uint32_t points = 0;
+	for (int f = 0; f < 5; ++f)
+		if (far >> f & 1u)
+			points |= 0xFu << (4 * f);
+	return points;
+}
+
+// The finger segments of the fingers in `far` (bit f: segments 3 f to 3 f + 2).
+static uint32_t segments_of_fingers(unsigned far) {
+	uint32_t segments = 0;
+	for (int f = 0; f < 5; ++f)
+		if (far >> f & 1u)
+			segments |= 7u << (3 * f);
+	return segments;
+}
+
+// The index of the lowest set bit of m (not 0).
+static inline int lowest_bit(uint32_t m) {
+#if defined(__GNUC__)
+	return __builtin_ctz(m);
+#else
+	int i = 0;
+	while (!(m >> i & 1u))
+		++i;
+	return i;
+#endif
+}
+
 static void detect_points(hs_world *world, int object, int h, const hs_part *part, const frame *body,
                           const frame *before, bool moved, bool cull, double grow, unsigned far) {
 	const hs_shape *shape = &world->shapes[world->bodies[object].shape];
@@ -372,15 +431,15 @@ static void detect_points(hs_world *world, int object, int h, const hs_part *par
 	double r_sq = (part->radius + grow) * (part->radius + grow);
 	bool paper = world->def.paper_contacts, swept = grow == 0.0 && !paper;
 	int steps = moved ? 1 : hand->path_steps; // a held object moves with the hand: chords suffice
-	const hs_body *ob = &world->bodies[object];
-	bool still = !moved && same_pose(ob);
-	for (int i = 0; i < HS_HAND_POINTS; ++i) {
-		if (far >> (i >> 2) & 1u) { // a finger far from the part (far_fingers): its 4 points
-			i |= 3;
-			continue;
-		}
-		if (cull && hs_length_sq(hs_sub(hand->points[i], center)) > r_sq &&
-		    (!swept || moved || !path_near(hand, i, steps, center, r_sq)))
+	bool still = !moved && same_pose(&world->bodies[object]);
+	// passed over: far fingers' points (far_fingers), and those beyond the sphere now unless paths count
+	uint32_t todo = ((1u << HS_HAND_POINTS) - 1u) & ~points_of_fingers(far);
+	uint32_t near = cull ? points_near(hand->points, center, r_sq) : todo;
+	if (!swept || moved)
+		todo &= near;
+	for (; todo; todo &= todo - 1u) {
+		int i = lowest_bit(todo);
+		if (!(near >> i & 1u) && !path_near(hand, i, steps, center, r_sq))
 			continue;
 		hs_vec3 b = to_body(body, hand->points[i]);
 		bool inside = inside_part(world, shape, part, b, grow);
@@ -828,6 +887,55 @@ static segment_bounds segment_bounds_of(const hs_world *world, const hs_hand *ha
 	return b;
 }
 
+// The squared distance from c to each finger segment's axis (check points a to a + 1) now,
+// segment_distance_sq's bits: with SSE2 two segments at a time, each lane doing
+// hs_segment_param's and the distance's operations in their order (a division too). Returns the
+// segments (bit s) whose axis is not further than sqrt(r_sq): !(d > r_sq), NaN near.
+static uint32_t axes_near(const hs_hand *hand, hs_vec3 c, double r_sq, double d[15]) {
+	uint32_t near = 0;
+	int s = 0;
+#if defined(__SSE2__)
+	const __m128d cx = _mm_set1_pd(c.x), cy = _mm_set1_pd(c.y), cz = _mm_set1_pd(c.z), zero = _mm_setzero_pd(),
+	              one = _mm_set1_pd(1.0);
+	for (; s + 1 < 15; s += 2) {
+		int a0 = SEGMENT_FIRST_POINT[s], a1 = SEGMENT_FIRST_POINT[s + 1];
+		hs_lanes2 a = hs_lanes2_load(&hand->points[a0], &hand->points[a1]);
+		hs_lanes2 b = hs_lanes2_load(&hand->points[a0 + 1], &hand->points[a1 + 1]);
+		__m128d ex = _mm_sub_pd(b.x, a.x), ey = _mm_sub_pd(b.y, a.y), ez = _mm_sub_pd(b.z, a.z);
+		__m128d len_sq = _mm_add_pd(_mm_add_pd(_mm_mul_pd(ex, ex), _mm_mul_pd(ey, ey)), _mm_mul_pd(ez, ez));
+		__m128d dot = _mm_add_pd(_mm_add_pd(_mm_mul_pd(_mm_sub_pd(cx, a.x), ex), _mm_mul_pd(_mm_sub_pd(cy, a.y), ey)),
+		                         _mm_mul_pd(_mm_sub_pd(cz, a.z), ez));
+		__m128d u = _mm_and_pd(_mm_cmpgt_pd(len_sq, zero), _mm_div_pd(dot, len_sq)); // 0 for a point segment
+		u = _mm_andnot_pd(_mm_cmplt_pd(u, zero), u);                                  // u < 0: 0 (NaN kept)
+		__m128d above = _mm_cmpgt_pd(u, one);
+		u = _mm_or_pd(_mm_and_pd(above, one), _mm_andnot_pd(above, u)); // u > 1: 1
+		__m128d dx = _mm_sub_pd(_mm_add_pd(a.x, _mm_mul_pd(u, ex)), cx);
+		__m128d dy = _mm_sub_pd(_mm_add_pd(a.y, _mm_mul_pd(u, ey)), cy);
+		__m128d dz = _mm_sub_pd(_mm_add_pd(a.z, _mm_mul_pd(u, ez)), cz);
+		__m128d dist = _mm_add_pd(_mm_add_pd(_mm_mul_pd(dx, dx), _mm_mul_pd(dy, dy)), _mm_mul_pd(dz, dz));
+		_mm_storel_pd(&d[s], dist);
+		_mm_storeh_pd(&d[s + 1], dist);
+		near |= (uint32_t)_mm_movemask_pd(_mm_cmpngt_pd(dist, _mm_set1_pd(r_sq))) << s;
+	}
+#endif
+	for (; s < 15; ++s) {
+		int a = SEGMENT_FIRST_POINT[s];
+		d[s] = segment_distance_sq(c, hand->points[a], hand->points[a + 1]);
+		if (!(d[s] > r_sq))
+			near |= 1u << s;
+	}
+#if defined(HS_SELFCHECK)
+	for (int k = 0; k < 15; ++k) {
+		double e = segment_distance_sq(c, hand->points[SEGMENT_FIRST_POINT[k]], hand->points[SEGMENT_FIRST_POINT[k] + 1]);
+		if (memcmp(&e, &d[k], sizeof e) != 0 || (near >> k & 1u) != !(e > r_sq)) {
+			fprintf(stderr, "selfcheck: axes_near differs from segment_distance_sq\n");
+			abort();
+		}
+	}
+#endif
+	return near;
+}
+
 // (B) check lines against the part: across it now (reached it this frame, sunk in, or across it
 // since before it touched anything, as the check points in detect_points), or swept across it
 // during the frame. A line with an end inside is the check points' business.
@@ -840,74 +948,73 @@ static void detect_lines(hs_world *world, int object, int h, const hs_part *part
 	bool paper = world->def.paper_contacts, swept = grow == 0.0 && !paper;
 	int steps = moved ? 1 : hand->path_steps; // a held object moves with the hand: chords suffice
 	segment_bounds sb = segment_bounds_of(world, hand, r);
-	int a = 0;             // the first check point of line j's segment
-	bool all_near = false; // the segment's lines are all within r now
 	deep_memo memo = {0, 0};
-	for (int j = 0; j < HS_HAND_LINES; ++j) {
-		const hs_vec3 *l = hand->lines[j], *m = hand->prev_lines[j];
-		if (j % 4 == 0) {
-			if (far >> (j / 12) & 1u) { // a finger far from the part (far_fingers): its 12 lines
-				j += 11;
+	// the segments of fingers far from the part (far_fingers) are passed over; so are those whose
+	// axis lies further than rs from the part's centre now, but for their paths where they count
+	double d_axis[15];
+	uint32_t segments = HS_HAND_ALL_SEGMENTS & ~segments_of_fingers(far);
+	uint32_t near = cull ? axes_near(hand, center, sb.rs * sb.rs, d_axis) : segments;
+	if (!swept || moved)
+		segments &= near;
+	for (; segments; segments &= segments - 1u) {
+		int s = lowest_bit(segments), a = SEGMENT_FIRST_POINT[s]; // a: the segment's first check point
+		double d_sq = cull ? d_axis[s] : 0.0;
+		if ((!(near >> s & 1u) && !axis_path_near(hand, a, steps, center, sb.rp)) ||
+		    (swept && ends_deep(world, hand, touching, a, body, shape, part, sb.deep, &memo)) ||
+		    (swept && !moved && steps == 1 && !(hand->embed_lines >> (4 * s) & 0xFu) &&
+		     segment_clear_of_a_face(world, h, a, body, before, shape, part)))
+			continue; // far, each line beside a touching point, or clear
+		hs_hand_ready_segment(&world->hands[h], s); // its lines are read from here on
+		bool all_near = sb.ri > 0.0 && d_sq <= sb.ri * sb.ri; // the segment's lines are all within r now
+		for (int j = 4 * s; j < 4 * s + 4; ++j) {
+			const hs_vec3 *l = hand->lines[j], *m = hand->prev_lines[j];
+			if (cull && !all_near && segment_distance_sq(center, l[0], l[1]) > r * r &&
+			    (!swept || moved || !line_path_near(hand, j, steps, center, r)))
+				continue;
+			hs_vec3 p[2];
+			line_to_body(body, l, p);
+			bool embedded = swept && (hand->embed_lines >> j & 1u);
+			// where no path is swept (a held object; the grown and paper tests) a line that misses the part
+			// now is done: clipped before the line a frame ago is transformed (most lines end here)
+			bool miss_ends = (moved || !swept) && !embedded;
+			if (swept && end_touches(world, touching, a, shape, part, p))
+				continue; // beside a touching check point at the frame's end
+			hs_clip c = miss_ends ? clip_part(world, shape, part, p[0], p[1], grow) : (hs_clip){0.0, 1.0, -1, -1, false};
+			if (miss_ends && !c.hit)
+				continue;
+			hs_vec3 q[2]; // the line a frame ago
+			line_to_body(before, m, q);
+			if (swept && !moved && !embedded && steps == 1 && sweep_clear_of_a_face(world, shape, part, q, p))
+				continue; // missed it at both ends and swept nothing of it
+			if (swept && end_touches(world, hand->touch_points, a, shape, part, q))
+				continue; // or at its start
+			if (embedded) { // started inside: touches nothing until clear
+				if (clip_part(world, shape, part, p[0], p[1], 2.0 * world->def.grasp_release_mm * 1e-3).hit)
+					world->hands[h].embed_lines_next |= (uint64_t)1 << j;
 				continue;
 			}
-			a = SEGMENT_FIRST_POINT[j / 4];
-			double d = cull ? segment_distance_sq(center, hand->points[a], hand->points[a + 1]) : 0.0;
-			if ((cull && d > sb.rs * sb.rs && (!swept || moved || !axis_path_near(hand, a, steps, center, sb.rp))) ||
-			    (swept && ends_deep(world, hand, touching, a, body, shape, part, sb.deep, &memo)) ||
-			    (swept && !moved && steps == 1 && !(hand->embed_lines >> j & 0xFu) &&
-			     segment_clear_of_a_face(world, h, a, body, before, shape, part))) {
-				j += 3; // the segment's other three lines too (far, each beside a touching point, or clear)
+			if (!miss_ends)
+				c = clip_part(world, shape, part, p[0], p[1], grow);
+			if (!c.hit) {
+				if (swept && !moved) // a held object moves with the hand: nothing passes through it unseen
+					swept_path(world, object, h, j, part, body, steps, q, p);
 				continue;
 			}
-			hs_hand_ready_segment(&world->hands[h], j / 4); // its lines are read from here on
-			all_near = sb.ri > 0.0 && d <= sb.ri * sb.ri;
-		}
-		if (cull && !all_near && segment_distance_sq(center, l[0], l[1]) > r * r &&
-		    (!swept || moved || !line_path_near(hand, j, steps, center, r)))
-			continue;
-		hs_vec3 p[2];
-		line_to_body(body, l, p);
-		bool embedded = swept && (hand->embed_lines >> j & 1u);
-		// where no path is swept (a held object; the grown and paper tests) a line that misses the part
-		// now is done: clipped before the line a frame ago is transformed (most lines end here)
-		bool miss_ends = (moved || !swept) && !embedded;
-		if (swept && end_touches(world, touching, a, shape, part, p))
-			continue; // beside a touching check point at the frame's end
-		hs_clip c = miss_ends ? clip_part(world, shape, part, p[0], p[1], grow) : (hs_clip){0.0, 1.0, -1, -1, false};
-		if (miss_ends && !c.hit)
-			continue;
-		hs_vec3 q[2]; // the line a frame ago
-		line_to_body(before, m, q);
-		if (swept && !moved && !embedded && steps == 1 && sweep_clear_of_a_face(world, shape, part, q, p))
-			continue; // missed it at both ends and swept nothing of it
-		if (swept && end_touches(world, hand->touch_points, a, shape, part, q))
-			continue; // or at its start
-		if (embedded) { // started inside: touches nothing until clear
-			if (clip_part(world, shape, part, p[0], p[1], 2.0 * world->def.grasp_release_mm * 1e-3).hit)
+			if (!across(c))
+				continue; // an end is inside
+			if (paper) { // [H]'s letter: across where it ends the frame
+				line_across(world, object, h, j, part, body, p[0], p[1], c, NULL);
+				continue;
+			}
+			if (!clip_part(world, shape, part, q[0], q[1], grow).hit) { // reached it this frame
+				line_across(world, object, h, j, part, body, p[0], p[1], c, NULL);
+			} else if (grow > 0.0 || (hand->touch_lines >> j & 1u) || line_came_onto(world, object, part, m, grow)) {
+				// in it a frame ago too: sunk in (touching), or the object came onto it
+				hs_vec3 d = hs_scale(hs_add(hs_sub(p[0], q[0]), hs_sub(p[1], q[1])), 0.5);
+				line_across(world, object, h, j, part, body, p[0], p[1], c, &d);
+			} else if (swept) { // in it since before it touched anything: started inside, touches nothing
 				world->hands[h].embed_lines_next |= (uint64_t)1 << j;
-			continue;
-		}
-		if (!miss_ends)
-			c = clip_part(world, shape, part, p[0], p[1], grow);
-		if (!c.hit) {
-			if (swept && !moved) // a held object moves with the hand: nothing passes through it unseen
-				swept_path(world, object, h, j, part, body, steps, q, p);
-			continue;
-		}
-		if (!across(c))
-			continue; // an end is inside
-		if (paper) { // [H]'s letter: across where it ends the frame
-			line_across(world, object, h, j, part, body, p[0], p[1], c, NULL);
-			continue;
-		}
-		if (!clip_part(world, shape, part, q[0], q[1], grow).hit) { // reached it this frame
-			line_across(world, object, h, j, part, body, p[0], p[1], c, NULL);
-		} else if (grow > 0.0 || (hand->touch_lines >> j & 1u) || line_came_onto(world, object, part, m, grow)) {
-			// in it a frame ago too: sunk in (touching), or the object came onto it
-			hs_vec3 d = hs_scale(hs_add(hs_sub(p[0], q[0]), hs_sub(p[1], q[1])), 0.5);
-			line_across(world, object, h, j, part, body, p[0], p[1], c, &d);
-		} else if (swept) { // in it since before it touched anything: started inside, touches nothing
-			world->hands[h].embed_lines_next |= (uint64_t)1 << j;
+			}
 		}
 	}
 }
