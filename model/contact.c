@@ -393,24 +393,6 @@ static uint32_t points_near(const hs_vec3 p[HS_HAND_POINTS], hs_vec3 c, double r
 	return near;
 }
 
-// The check points of the fingers in `far` (bit f: points 4 f to 4 f + 3).
-static uint32_t points_of_fingers(unsigned far) {
-	uint32_t points = 0;
-	for (int f = 0; f < 5; ++f)
-		if (far >> f & 1u)
-			points |= 0xFu << (4 * f);
-	return points;
-}
-
-// The finger segments of the fingers in `far` (bit f: segments 3 f to 3 f + 2).
-static uint32_t segments_of_fingers(unsigned far) {
-	uint32_t segments = 0;
-	for (int f = 0; f < 5; ++f)
-		if (far >> f & 1u)
-			segments |= 7u << (3 * f);
-	return segments;
-}
-
 // The index of the lowest set bit of m (not 0).
 static inline int lowest_bit(uint32_t m) {
 #if defined(__GNUC__)
@@ -433,7 +415,7 @@ static void detect_points(hs_world *world, int object, int h, const hs_part *par
 	int steps = moved ? 1 : hand->path_steps; // a held object moves with the hand: chords suffice
 	bool still = !moved && same_pose(&world->bodies[object]);
 	// passed over: far fingers' points (far_fingers), and those beyond the sphere now unless paths count
-	uint32_t todo = ((1u << HS_HAND_POINTS) - 1u) & ~points_of_fingers(far);
+	uint32_t todo = ((1u << HS_HAND_POINTS) - 1u) & ~hs_finger_parts(far, 4);
 	uint32_t near = cull ? points_near(hand->points, center, r_sq) : todo;
 	if (!swept || moved)
 		todo &= near;
@@ -952,7 +934,7 @@ static void detect_lines(hs_world *world, int object, int h, const hs_part *part
 	// the segments of fingers far from the part (far_fingers) are passed over; so are those whose
 	// axis lies further than rs from the part's centre now, but for their paths where they count
 	double d_axis[15];
-	uint32_t segments = HS_HAND_ALL_SEGMENTS & ~segments_of_fingers(far);
+	uint32_t segments = HS_HAND_ALL_SEGMENTS & ~hs_finger_parts(far, 3);
 	uint32_t near = cull ? axes_near(hand, center, sb.rs * sb.rs, d_axis) : segments;
 	if (!swept || moved)
 		segments &= near;

@@ -405,15 +405,6 @@ static unsigned local_pose(const hs_hand_def *def, const hs_glove_table *table, 
 	return same;
 }
 
-// The segments (bit s) of the fingers in `fingers` (bit f): three each.
-static unsigned segments_of(unsigned fingers) {
-	unsigned s = 0;
-	for (int f = 0; f < 5; ++f)
-		if (fingers >> f & 1u)
-			s |= 7u << (3 * f);
-	return s;
-}
-
 // Check lines (§3.1) of segment s: the 4 long edges of a square prism around it, edge e offset from
 // the axis by r along the segment's local +y, −y, +z, −z. Its ends are the check points mirrored
 // back (a sign: exact).
@@ -555,7 +546,7 @@ static void local_bounds(hs_hand *hand) {
 
 void hs_hand_update_shape(hs_hand *hand) {
 	unsigned same = local_pose(&hand->def, &hand->glove, hand->sensors, hand->local_points, hand->local_segment, hand);
-	hand->local_ready = (uint16_t)(hand->local_ready & segments_of(same)); // a finger's lines as they were
+	hand->local_ready = (uint16_t)(hand->local_ready & hs_finger_parts(same, 3)); // a finger's lines as they were
 	local_bounds(hand);
 }
 

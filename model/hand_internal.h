@@ -146,6 +146,15 @@ void hs_hand_update_shape(hs_hand *hand);
 // Places the check points from the shape cache and the wrist pose; the lines wait (lines_ready 0).
 void hs_hand_place_points(hs_hand *hand);
 #define HS_HAND_ALL_SEGMENTS 0x7fffu
+// The parts of the fingers in `fingers` (bit f) when each finger has `per` in a row: check points
+// (4: 4 f to 4 f + 3) or finger segments (3: 3 f to 3 f + 2).
+static inline uint32_t hs_finger_parts(unsigned fingers, int per) {
+	uint32_t parts = 0, one = (1u << per) - 1u;
+	for (int f = 0; f < 5; ++f)
+		if (fingers >> f & 1u)
+			parts |= one << (per * f);
+	return parts;
+}
 // Places finger segment s's lines now and a frame ago where they are not yet: the same bits as
 // placing all of them with the reading.
 void hs_hand_place_segment(hs_hand *hand, int s);
