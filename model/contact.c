@@ -869,32 +869,38 @@ static segment_bounds segment_bounds_of(const hs_world *world, const hs_hand *ha
 	return b;
 }
 
+#if defined(__SSE2__)
+// segment_distance_sq(c, a, b) of both lanes: hs_segment_param's and the distance's operations in
+// their order, the division too (the same bits).
+static inline __m128d segment_distance_sq2(hs_lanes2 a, hs_lanes2 b, hs_vec3 c) {
+	const __m128d cx = _mm_set1_pd(c.x), cy = _mm_set1_pd(c.y), cz = _mm_set1_pd(c.z), zero = _mm_setzero_pd(),
+	              one = _mm_set1_pd(1.0);
+	__m128d ex = _mm_sub_pd(b.x, a.x), ey = _mm_sub_pd(b.y, a.y), ez = _mm_sub_pd(b.z, a.z);
+	__m128d len_sq = _mm_add_pd(_mm_add_pd(_mm_mul_pd(ex, ex), _mm_mul_pd(ey, ey)), _mm_mul_pd(ez, ez));
+	__m128d dot = _mm_add_pd(_mm_add_pd(_mm_mul_pd(_mm_sub_pd(cx, a.x), ex), _mm_mul_pd(_mm_sub_pd(cy, a.y), ey)),
+	                         _mm_mul_pd(_mm_sub_pd(cz, a.z), ez));
+	__m128d u = _mm_and_pd(_mm_cmpgt_pd(len_sq, zero), _mm_div_pd(dot, len_sq)); // 0 for a point segment
+	u = _mm_andnot_pd(_mm_cmplt_pd(u, zero), u);                                  // u < 0: 0 (NaN kept)
+	__m128d above = _mm_cmpgt_pd(u, one);
+	u = _mm_or_pd(_mm_and_pd(above, one), _mm_andnot_pd(above, u)); // u > 1: 1
+	__m128d dx = _mm_sub_pd(_mm_add_pd(a.x, _mm_mul_pd(u, ex)), cx);
+	__m128d dy = _mm_sub_pd(_mm_add_pd(a.y, _mm_mul_pd(u, ey)), cy);
+	__m128d dz = _mm_sub_pd(_mm_add_pd(a.z, _mm_mul_pd(u, ez)), cz);
+	return _mm_add_pd(_mm_add_pd(_mm_mul_pd(dx, dx), _mm_mul_pd(dy, dy)), _mm_mul_pd(dz, dz));
+}
+#endif
+
 // The squared distance from c to each finger segment's axis (check points a to a + 1) now,
-// segment_distance_sq's bits: with SSE2 two segments at a time, each lane doing
-// hs_segment_param's and the distance's operations in their order (a division too). Returns the
-// segments (bit s) whose axis is not further than sqrt(r_sq): !(d > r_sq), NaN near.
+// segment_distance_sq's bits, two segments at a time with SSE2. Returns the segments (bit s) whose
+// axis is not further than sqrt(r_sq): !(d > r_sq), NaN near.
 static uint32_t axes_near(const hs_hand *hand, hs_vec3 c, double r_sq, double d[15]) {
 	uint32_t near = 0;
 	int s = 0;
 #if defined(__SSE2__)
-	const __m128d cx = _mm_set1_pd(c.x), cy = _mm_set1_pd(c.y), cz = _mm_set1_pd(c.z), zero = _mm_setzero_pd(),
-	              one = _mm_set1_pd(1.0);
 	for (; s + 1 < 15; s += 2) {
 		int a0 = SEGMENT_FIRST_POINT[s], a1 = SEGMENT_FIRST_POINT[s + 1];
-		hs_lanes2 a = hs_lanes2_load(&hand->points[a0], &hand->points[a1]);
-		hs_lanes2 b = hs_lanes2_load(&hand->points[a0 + 1], &hand->points[a1 + 1]);
-		__m128d ex = _mm_sub_pd(b.x, a.x), ey = _mm_sub_pd(b.y, a.y), ez = _mm_sub_pd(b.z, a.z);
-		__m128d len_sq = _mm_add_pd(_mm_add_pd(_mm_mul_pd(ex, ex), _mm_mul_pd(ey, ey)), _mm_mul_pd(ez, ez));
-		__m128d dot = _mm_add_pd(_mm_add_pd(_mm_mul_pd(_mm_sub_pd(cx, a.x), ex), _mm_mul_pd(_mm_sub_pd(cy, a.y), ey)),
-		                         _mm_mul_pd(_mm_sub_pd(cz, a.z), ez));
-		__m128d u = _mm_and_pd(_mm_cmpgt_pd(len_sq, zero), _mm_div_pd(dot, len_sq)); // 0 for a point segment
-		u = _mm_andnot_pd(_mm_cmplt_pd(u, zero), u);                                  // u < 0: 0 (NaN kept)
-		__m128d above = _mm_cmpgt_pd(u, one);
-		u = _mm_or_pd(_mm_and_pd(above, one), _mm_andnot_pd(above, u)); // u > 1: 1
-		__m128d dx = _mm_sub_pd(_mm_add_pd(a.x, _mm_mul_pd(u, ex)), cx);
-		__m128d dy = _mm_sub_pd(_mm_add_pd(a.y, _mm_mul_pd(u, ey)), cy);
-		__m128d dz = _mm_sub_pd(_mm_add_pd(a.z, _mm_mul_pd(u, ez)), cz);
-		__m128d dist = _mm_add_pd(_mm_add_pd(_mm_mul_pd(dx, dx), _mm_mul_pd(dy, dy)), _mm_mul_pd(dz, dz));
+		__m128d dist = segment_distance_sq2(hs_lanes2_load(&hand->points[a0], &hand->points[a1]),
+		                                    hs_lanes2_load(&hand->points[a0 + 1], &hand->points[a1 + 1]), c);
 		_mm_storel_pd(&d[s], dist);
 		_mm_storeh_pd(&d[s + 1], dist);
 		near |= (uint32_t)_mm_movemask_pd(_mm_cmpngt_pd(dist, _mm_set1_pd(r_sq))) << s;
@@ -914,6 +920,31 @@ static uint32_t axes_near(const hs_hand *hand, hs_vec3 c, double r_sq, double d[
 			abort();
 		}
 	}
+#endif
+	return near;
+}
+
+// The check lines of segment s (bit k: line 4 s + k) not further than sqrt(r_sq) from c now, as
+// the line cull reads segment_distance_sq: !(d > r_sq), NaN near; two at a time with SSE2.
+static unsigned lines_near(const hs_hand *hand, int s, hs_vec3 c, double r_sq) {
+	unsigned near = 0;
+	const hs_vec3(*l)[2] = &hand->lines[4 * s];
+#if defined(__SSE2__)
+	for (int k = 0; k < 4; k += 2) {
+		__m128d dist = segment_distance_sq2(hs_lanes2_load(&l[k][0], &l[k + 1][0]), hs_lanes2_load(&l[k][1], &l[k + 1][1]), c);
+		near |= (unsigned)_mm_movemask_pd(_mm_cmpngt_pd(dist, _mm_set1_pd(r_sq))) << k;
+	}
+#else
+	for (int k = 0; k < 4; ++k)
+		if (!(segment_distance_sq(c, l[k][0], l[k][1]) > r_sq))
+			near |= 1u << k;
+#endif
+#if defined(HS_SELFCHECK)
+	for (int k = 0; k < 4; ++k)
+		if ((near >> k & 1u) != !(segment_distance_sq(c, l[k][0], l[k][1]) > r_sq)) {
+			fprintf(stderr, "selfcheck: lines_near differs from segment_distance_sq\n");
+			abort();
+		}
 #endif
 	return near;
 }
@@ -948,10 +979,10 @@ static void detect_lines(hs_world *world, int object, int h, const hs_part *part
 			continue; // far, each line beside a touching point, or clear
 		hs_hand_ready_segment(&world->hands[h], s); // its lines are read from here on
 		bool all_near = sb.ri > 0.0 && d_sq <= sb.ri * sb.ri; // the segment's lines are all within r now
+		unsigned lines = cull && !all_near ? lines_near(hand, s, center, r * r) : 0xFu;
 		for (int j = 4 * s; j < 4 * s + 4; ++j) {
 			const hs_vec3 *l = hand->lines[j], *m = hand->prev_lines[j];
-			if (cull && !all_near && segment_distance_sq(center, l[0], l[1]) > r * r &&
-			    (!swept || moved || !line_path_near(hand, j, steps, center, r)))
+			if (!(lines >> (j - 4 * s) & 1u) && (!swept || moved || !line_path_near(hand, j, steps, center, r)))
 				continue;
 			hs_vec3 p[2];
 			line_to_body(body, l, p);
