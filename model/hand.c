@@ -502,12 +502,6 @@ static double farthest_sq(hs_vec3 c, const hs_vec3 *v, int n, double r_sq) {
 	return r_sq;
 }
 
-// The bounding sphere of a shape in the wrist frame: about the mean check point, over the points
-// and the line ends. A segment's line ends lie finger_radius `rad` from the check points at its
-// ends, so a segment whose check points are nearer than the farthest distance found so far by more
-// than rad (and a relative slack far above rounding) cannot hold the farthest: its 8 ends are
-// passed over, the fingertips' segments taken first (they hold it mostly). A maximum does not
-// depend on the order it is taken in, so the radius is the same bits as over every end.
 // Segment s's lines in the wrist frame, computed once for a reading.
 static void ready_local(hs_hand *hand, int s) {
 	if ((unsigned)hand->local_ready >> s & 1u)
@@ -516,32 +510,19 @@ static void ready_local(hs_hand *hand, int s) {
 	hand->local_ready = (uint16_t)(hand->local_ready | 1u << s);
 }
 
+// The bounding sphere of a shape in the wrist frame: about the mean check point, through the
+// farthest check point and finger_radius beyond, where the line ends beside it lie (each is
+// finger_radius from a check point; the relative slack is far above rounding). The lines are not
+// computed for it: most frames the contact tests read a third of them.
 static void local_bounds(hs_hand *hand) {
 	const hs_vec3 *points = hand->local_points;
-	double rad = hand->def.finger_radius;
 	hs_vec3 c = hs_v3(0, 0, 0);
 	for (int i = 0; i < HS_HAND_POINTS; ++i)
 		c = hs_add(c, points[i]);
 	c = hs_scale(c, 1.0 / HS_HAND_POINTS);
-	double d_sq[HS_HAND_POINTS], r_sq = 0.0;
-	for (int i = 0; i < HS_HAND_POINTS; ++i) { // as farthest_sq: a NaN distance is passed over
-		d_sq[i] = hs_length_sq(hs_sub(points[i], c));
-		r_sq = d_sq[i] > r_sq ? d_sq[i] : r_sq;
-	}
-	// each segment s (fingertips first) with its first check point, 4 (s / 3) + s % 3
-	static const int order[15][2] = {{2, 2},  {5, 6},  {8, 10}, {11, 14}, {14, 18}, {0, 0},   {1, 1},  {3, 4},
-	                                 {4, 5},  {6, 8},  {7, 9},  {9, 12},  {10, 13}, {12, 16}, {13, 17}};
-	for (int k = 0; k < 15; ++k) {
-		int s = order[k][0], a = order[k][1];
-		double most = d_sq[a] > d_sq[a + 1] ? d_sq[a] : d_sq[a + 1];
-		double reach = (sqrt(most) + rad) * (1.0 + 1e-9) + 1e-12; // NaN: not passed over
-		if (!(reach * reach < r_sq)) {
-			ready_local(hand, s);
-			r_sq = farthest_sq(c, &hand->local_lines[4 * s][0], 8, r_sq);
-		}
-	}
+	double r_sq = farthest_sq(c, points, HS_HAND_POINTS, 0.0);
 	hand->local_center = c;
-	hand->local_radius = sqrt(r_sq);
+	hand->local_radius = (sqrt(r_sq) + hand->def.finger_radius) * (1.0 + 1e-9) + 1e-12;
 }
 
 void hs_hand_update_shape(hs_hand *hand) {
