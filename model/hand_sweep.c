@@ -46,6 +46,15 @@ static double wrist_turn_deg(const hs_hand *hand) {
 	return hs_quat_angle(hs_quat_mul(b, hs_quat_conj(a))) * (180.0 / HS_PI);
 }
 
+// True when the frame's turn, chain + wrist_turn_deg, is certainly at most HS_HAND_PATH_DEG: the
+// wrist's angle 2 atan2(v, |w|) is at most 2 v / |w| (atan x <= x), with a slack far above the
+// rounding of either. Most frames the bound settles it and the arc tangent is not taken.
+static bool turn_within_a_piece(const hs_hand *hand, double chain) {
+	hs_quat r = hs_quat_mul(hand->wrist_rot, hs_quat_conj(hand->prev_wrist_rot));
+	double v = sqrt(r.x * r.x + r.y * r.y + r.z * r.z), w = fabs(r.w);
+	return w > 0.0 && chain + 2.0 * (v / w) * (180.0 / HS_PI) * (1.0 + 1e-9) < HS_HAND_PATH_DEG;
+}
+
 // The smallest sphere holding spheres (c0, r0) and (c1, r1).
 static void merge_spheres(hs_vec3 c0, double r0, hs_vec3 c1, double r1, hs_vec3 *c, double *r) {
 	double d = hs_length(hs_sub(c1, c0));
@@ -92,7 +101,12 @@ void hs_hand_sweep(hs_hand *hand, bool chords_only) {
 		hand->sweep_radius = hand->radius;
 		return;
 	}
-	double turn = chords_only ? 0.0 : chain_turn_deg(hand) + wrist_turn_deg(hand);
+	double turn = 0.0; // (only read above HS_HAND_PATH_DEG)
+	if (!chords_only) {
+		double chain = chain_turn_deg(hand);
+		if (!turn_within_a_piece(hand, chain))
+			turn = chain + wrist_turn_deg(hand);
+	}
 	if (turn > HS_HAND_PATH_DEG)
 		hand->path_steps = turn >= HS_HAND_PATH_DEG * HS_HAND_PATH_MAX ? HS_HAND_PATH_MAX
 		                                                                  : (int)ceil(turn / HS_HAND_PATH_DEG);

@@ -469,6 +469,49 @@ static void test_finger_spheres_hold_the_fingers(void **state) {
 	free(hand);
 }
 
+// The path through a frame has a piece per HS_HAND_PATH_DEG the wrist turns (hand_sweep.c): turns
+// just below, at and above 10 deg and its multiples, about several axes, with the glove held
+// still (the fingers' chains add nothing), and with a finger curling 6 deg (12 units of the index
+// PIP, counted twice for its DIP) on top of a 3.9 deg turn.
+static void test_sweep_pieces_follow_the_turn(void **state) {
+	(void)state;
+	hs_hand *hand = calloc(1, sizeof *hand);
+	assert_non_null(hand);
+	const double turns[] = {0.0, 5.0, 9.999, 10.001, 19.99, 20.01, 35.0, 79.9, 80.01, 170.0};
+	const int pieces[] = {1, 1, 1, 2, 2, 3, 4, 8, 8, 8};
+	const hs_vec3 axes[3] = {{0, 0, 1}, {1, 0, 0}, {1, 2, -2}};
+	for (int k = 0; k < (int)(sizeof turns / sizeof turns[0]); ++k)
+		for (int a = 0; a < 3; ++a) {
+			fresh_hand(hand, false);
+			memset(hand->sensors, 100, sizeof hand->sensors);
+			hand->wrist_rot = hs_quat_from_axis_angle(hs_v3(0, 1, 0), 0.4);
+			hs_hand_update_shape(hand);
+			hs_hand_place_points(hand);
+			hand->placed = true;
+			hs_hand_update_bounds(hand);
+			hs_hand_keep_previous(hand);
+			hand->wrist_rot = hs_quat_mul(hs_quat_from_axis_angle(hs_normalize(axes[a]), turns[k] * HS_PI / 180.0),
+			                              hand->prev_wrist_rot);
+			if (k == 1 && a == 2) { // 3.9 deg of wrist and 6 of a finger: a piece; 4.1: two
+				hand->wrist_rot = hs_quat_mul(hs_quat_from_axis_angle(hs_v3(0, 0, 1), 3.9 * HS_PI / 180.0), hand->prev_wrist_rot);
+				hand->sensors[HS_SENSOR_INDEX_PIP] = 106;
+			}
+			hs_hand_update_shape(hand);
+			hs_hand_place_points(hand);
+			hs_hand_update_bounds(hand);
+			hs_hand_sweep(hand, false);
+			assert_int_equal(hand->path_steps, pieces[k]);
+			if (k == 1 && a == 2) {
+				hand->wrist_rot = hs_quat_mul(hs_quat_from_axis_angle(hs_v3(0, 0, 1), 4.1 * HS_PI / 180.0), hand->prev_wrist_rot);
+				hs_hand_sweep(hand, false);
+				assert_int_equal(hand->path_steps, 2);
+			}
+			hs_hand_sweep(hand, true); // the paper's chords
+			assert_int_equal(hand->path_steps, 1);
+		}
+	free(hand);
+}
+
 // A hand keeps each finger's chain for the sensors it reads (hand_internal.h palm_pose), and its
 // segments' wrist-frame lines while neither the chain nor the wrist sensors move: readings that
 // change a few sensors at a time, as a glove's deadband passes them, give the bits of the
@@ -1227,6 +1270,7 @@ int main(void) {
 	    cmocka_unit_test(test_bounds_reach_the_farthest_end),
 	    cmocka_unit_test(test_lines_placed_when_read),
 	    cmocka_unit_test(test_finger_spheres_hold_the_fingers),
+	    cmocka_unit_test(test_sweep_pieces_follow_the_turn),
 	    cmocka_unit_test(test_fingers_kept_between_readings),
 	    cmocka_unit_test(test_check_lines),
 	    cmocka_unit_test(test_thumb_opposition),
