@@ -949,6 +949,63 @@ static unsigned lines_near(const hs_hand *hand, int s, hs_vec3 c, double r_sq) {
 	return near;
 }
 
+#if defined(HS_SELFCHECK)
+// Sanitizer builds: each line of a segment held_lines_clear passed over, placed and moved into
+// the body frame, lies beside a touching check point or misses the part.
+static void check_held_clear(hs_world *world, int h, int s, int a, const frame *body, const hs_shape *shape,
+                             const hs_part *part, uint32_t touching, double grow) {
+	hs_hand_ready_segment(&world->hands[h], s);
+	for (int j = 4 * s; j < 4 * s + 4; ++j) {
+		hs_vec3 p[2];
+		line_to_body(body, world->hands[h].lines[j], p);
+		if (!end_touches(world, touching, a, shape, part, p) && clip_part(world, shape, part, p[0], p[1], grow).hit) {
+			fprintf(stderr, "selfcheck: a held object's line passed over as clear touches the part\n");
+			abort();
+		}
+	}
+}
+#else
+static inline void check_held_clear(hs_world *world, int h, int s, int a, const frame *body, const hs_shape *shape,
+                                    const hs_part *part, uint32_t touching, double grow) {
+	(void)world, (void)h, (void)s, (void)a, (void)body, (void)shape, (void)part, (void)touching, (void)grow;
+}
+#endif
+
+// A held object's finger segment whose 4 check lines would all find nothing, decided from its
+// check points and frame before the lines are placed. A line end is its check point plus the
+// segment's y or z axis times finger_radius (hand.c, segment_lines; mirrored for a left hand):
+// taken so into the body frame it differs from the placed and moved end by rounding alone, far
+// below HS_CULL_SLACK. Each line must, by that slack, lie beside a touching check point inside the
+// part grown by the margin (end_touches), have both ends beyond one face of the box (clip_part's
+// miss), or lie outside the part's bounding sphere. Box parts only; the lines are not embedded.
+static bool held_lines_clear(hs_world *world, int h, int s, int a, const frame *body, const hs_shape *shape,
+                             const hs_part *part, uint32_t touching, double grow) {
+	const hs_hand *hand = &world->hands[h];
+	hs_vec3 e0 = to_body(body, hand->points[a]), e1 = to_body(body, hand->points[a + 1]);
+	if (!hs_part_is_box(part) || !hs_part_box_takes(e0) || !hs_part_box_takes(e1))
+		return false;
+	double rf = hand->def.finger_radius, flip = hand->def.left ? -1.0 : 1.0;
+	hs_vec3 y = hs_quat_rotate(hand->local_segment[s], hs_v3(0.0, rf, 0.0));
+	hs_vec3 z = hs_quat_rotate(hand->local_segment[s], hs_v3(0.0, 0.0, rf));
+	y = hs_mat3_tmul(body->rot, hs_mat3_mul(hand->place_m, hs_v3(y.x, flip * y.y, y.z)));
+	z = hs_mat3_tmul(body->rot, hs_mat3_mul(hand->place_m, hs_v3(z.x, flip * z.y, z.z)));
+	const hs_vec3 off[4] = {y, hs_scale(y, -1.0), z, hs_scale(z, -1.0)};
+	double margin = world->def.grasp_release_mm * 1e-3 - HS_CULL_SLACK, r = part->radius + grow + HS_CULL_SLACK;
+	for (int k = 0; k < 4; ++k) {
+		hs_vec3 p0 = hs_add(e0, off[k]), p1 = hs_add(e1, off[k]);
+		if (!hs_part_box_takes(p0) || !hs_part_box_takes(p1))
+			return false;
+		if (((touching >> a & 1u) && hs_part_box_inside(part, p0, margin)) ||
+		    ((touching >> (a + 1) & 1u) && hs_part_box_inside(part, p1, margin)) ||
+		    hs_part_box_apart(part, p0, p1, grow, 2.0 * HS_CULL_SLACK) || segment_distance_sq(part->center, p0, p1) > r * r)
+			continue;
+		return false;
+	}
+	check_held_clear(world, h, s, a, body, shape, part, touching, grow);
+	return true;
+}
+
+
 // (B) check lines against the part: across it now (reached it this frame, sunk in, or across it
 // since before it touched anything, as the check points in detect_points), or swept across it
 // during the frame. A line with an end inside is the check points' business.
@@ -962,8 +1019,7 @@ static void detect_lines(hs_world *world, int object, int h, const hs_part *part
 	int steps = moved ? 1 : hand->path_steps; // a held object moves with the hand: chords suffice
 	segment_bounds sb = segment_bounds_of(world, hand, r);
 	deep_memo memo = {0, 0};
-	// the segments of fingers far from the part (far_fingers) are passed over; so are those whose
-	// axis lies further than rs from the part's centre now, but for their paths where they count
+	// passed over: far fingers' segments (far_fingers), and those beyond rs now unless paths count
 	double d_axis[15];
 	uint32_t segments = HS_HAND_ALL_SEGMENTS & ~hs_finger_parts(far, 3);
 	uint32_t near = cull ? axes_near(hand, center, sb.rs * sb.rs, d_axis) : segments;
@@ -972,11 +1028,12 @@ static void detect_lines(hs_world *world, int object, int h, const hs_part *part
 	for (; segments; segments &= segments - 1u) {
 		int s = lowest_bit(segments), a = SEGMENT_FIRST_POINT[s]; // a: the segment's first check point
 		double d_sq = cull ? d_axis[s] : 0.0;
+		bool plain = swept && !(hand->embed_lines >> (4 * s) & 0xFu); // none of its lines embedded
 		if ((!(near >> s & 1u) && !axis_path_near(hand, a, steps, center, sb.rp)) ||
 		    (swept && ends_deep(world, hand, touching, a, body, shape, part, sb.deep, &memo)) ||
-		    (swept && !moved && steps == 1 && !(hand->embed_lines >> (4 * s) & 0xFu) &&
-		     segment_clear_of_a_face(world, h, a, body, before, shape, part)))
-			continue; // far, each line beside a touching point, or clear
+		    (plain && !moved && steps == 1 && segment_clear_of_a_face(world, h, a, body, before, shape, part)) ||
+		    (plain && moved && held_lines_clear(world, h, s, a, body, shape, part, touching, grow)))
+			continue; // far, each line beside a touching point, or clear (seen before it is placed)
 		hs_hand_ready_segment(&world->hands[h], s); // its lines are read from here on
 		bool all_near = sb.ri > 0.0 && d_sq <= sb.ri * sb.ri; // the segment's lines are all within r now
 		unsigned lines = cull && !all_near ? lines_near(hand, s, center, r * r) : 0xFu;
