@@ -977,12 +977,13 @@ static inline void check_held_clear(hs_world *world, int h, int s, int a, const 
 // taken so into the body frame it differs from the placed and moved end by rounding alone, far
 // below HS_CULL_SLACK. Each line must, by that slack, lie beside a touching check point inside the
 // part grown by the margin (end_touches), have both ends beyond one face of the box (clip_part's
-// miss), or lie outside the part's bounding sphere. Box parts only; the lines are not embedded.
+// miss), or lie outside the part's bounding sphere. Box parts only (hs_part_is_box); the lines are
+// not embedded.
 static bool held_lines_clear(hs_world *world, int h, int s, int a, const frame *body, const hs_shape *shape,
                              const hs_part *part, uint32_t touching, double grow) {
 	const hs_hand *hand = &world->hands[h];
 	hs_vec3 e0 = to_body(body, hand->points[a]), e1 = to_body(body, hand->points[a + 1]);
-	if (!hs_part_is_box(part) || !hs_part_box_takes(e0) || !hs_part_box_takes(e1))
+	if (!hs_part_box_takes(e0) || !hs_part_box_takes(e1))
 		return false;
 	double rf = hand->def.finger_radius, flip = hand->def.left ? -1.0 : 1.0;
 	hs_vec3 y = hs_quat_rotate(hand->local_segment[s], hs_v3(0.0, rf, 0.0));
@@ -1032,7 +1033,7 @@ static void detect_lines(hs_world *world, int object, int h, const hs_part *part
 		if ((!(near >> s & 1u) && !axis_path_near(hand, a, steps, center, sb.rp)) ||
 		    (swept && ends_deep(world, hand, touching, a, body, shape, part, sb.deep, &memo)) ||
 		    (plain && !moved && steps == 1 && segment_clear_of_a_face(world, h, a, body, before, shape, part)) ||
-		    (plain && moved && held_lines_clear(world, h, s, a, body, shape, part, touching, grow)))
+		    (plain && moved && hs_part_is_box(part) && held_lines_clear(world, h, s, a, body, shape, part, touching, grow)))
 			continue; // far, each line beside a touching point, or clear (seen before it is placed)
 		hs_hand_ready_segment(&world->hands[h], s); // its lines are read from here on
 		bool all_near = sb.ri > 0.0 && d_sq <= sb.ri * sb.ri; // the segment's lines are all within r now
