@@ -1172,15 +1172,18 @@ static int keep_hovering(hs_world *world, int first, int n) {
 }
 
 // The fingers (bit f) whose spheres through the frame (hs_hand_finger_spheres) lie further than
-// `reach` from c, the centre of a part's bounding sphere: reach is its radius grown by `grow` and by
-// twice the release margin (the embedded parts' test, the widest any check point or line answers
-// to), and HS_CULL_SLACK for rounding. Such a finger's points and lines, wherever they went
-// during the frame, come nowhere near the part: every test of them would find nothing.
+// `reach` from c, the centre of a part's bounding sphere (its radius and HS_CULL_SLACK for
+// rounding), none of whose check lines is embedded; for the ungrown test. Such a finger's check
+// points lie beyond the part's sphere along their whole paths, where the points' own cull passes
+// them over; its lines and their sweeps miss the part the sphere holds, so the line tests find no
+// contact (end_touches, a test with a margin, only passes a line over). An embedded line answers
+// to the part grown by twice the margin, which reaches past the sphere at a box's corner (by
+// (sqrt 3 - 1) times the growth): a finger with one keeps its tests.
 static unsigned far_fingers(const hs_hand *hand, hs_vec3 c, double reach) {
 	unsigned far = 0;
 	for (int f = 0; f < 5; ++f) {
 		double r = hand->finger_reach[f] + reach;
-		if (hs_length_sq(hs_sub(hand->finger_center[f], c)) > r * r)
+		if (!(hand->embed_lines >> (12 * f) & 0xFFFu) && hs_length_sq(hs_sub(hand->finger_center[f], c)) > r * r)
 			far |= 1u << f;
 	}
 	return far;
@@ -1227,9 +1230,9 @@ int hs_contact_detect_grown(hs_world *world, int object, const hs_body *before, 
 			continue; // bounding-volume rejection before the narrow tests (Fig. 2)
 		if (grow == 0.0) // the grown test repeats a held object's: counted once
 			world->counters.hand_tests++;
-		// finger by finger for an object the hand did not carry (a carried one has them all near,
-		// and its points and lines are passed over by cheaper tests than their paths')
-		bool fingers = world->def.skip_work && !before;
+		// finger by finger for an object the hand did not carry, in the ungrown test (a carried one
+		// has them all near, and its points and lines are passed over by cheaper tests)
+		bool fingers = world->def.skip_work && !before && grow == 0.0;
 		if (fingers)
 			hs_hand_finger_spheres(&world->hands[h]);
 		for (int p = 0; p < shape->part_count; ++p) {
@@ -1240,10 +1243,9 @@ int hs_contact_detect_grown(hs_world *world, int object, const hs_body *before, 
 				double r = part->radius + grow + hand->sweep_radius;
 				if (hs_length_sq(hs_sub(c, hand->sweep_center)) > r * r)
 					continue;
-				double reach = part->radius + grow + 2.0 * world->def.grasp_release_mm * 1e-3 + HS_CULL_SLACK;
 				if (fingers) {
-					far = far_fingers(hand, c, reach);
-					check_far(hand, far, c, reach);
+					far = far_fingers(hand, c, part->radius + HS_CULL_SLACK);
+					check_far(hand, far, c, part->radius + HS_CULL_SLACK);
 				}
 			}
 			int from = world->contact_count;
