@@ -477,30 +477,6 @@ void hs_hand_kinematics(const hs_hand_def *def, hs_vec3 wrist_position, hs_quat 
 // ---------------------------------------------------------------------------------------------
 // A hand in a world: the caches derived from its sensors and wrist pose (hand_internal.h)
 
-// The largest of r_sq and the squared distances from c to the n vectors (a NaN distance is passed
-// over). With SSE2, two distances at a time, one per lane, each as hs_length_sq(hs_sub(v, c)): a
-// maximum does not depend on the order it is taken in.
-static double farthest_sq(hs_vec3 c, const hs_vec3 *v, int n, double r_sq) {
-	int i = 0;
-#if defined(__SSE2__)
-	const __m128d cx = _mm_set1_pd(c.x), cy = _mm_set1_pd(c.y), cz = _mm_set1_pd(c.z);
-	__m128d most = _mm_set1_pd(r_sq);
-	for (; i + 1 < n; i += 2) {
-		hs_lanes2 in = hs_lanes2_load(&v[i], &v[i + 1]);
-		__m128d dx = _mm_sub_pd(in.x, cx), dy = _mm_sub_pd(in.y, cy), dz = _mm_sub_pd(in.z, cz);
-		__m128d d = _mm_add_pd(_mm_add_pd(_mm_mul_pd(dx, dx), _mm_mul_pd(dy, dy)), _mm_mul_pd(dz, dz));
-		most = _mm_max_pd(d, most); // d > most ? d : most, lane by lane (NaN: most)
-	}
-	double lanes[2];
-	_mm_storeu_pd(lanes, most);
-	r_sq = lanes[1] > lanes[0] ? lanes[1] : lanes[0];
-#endif
-	for (; i < n; ++i) {
-		double d = hs_length_sq(hs_sub(v[i], c));
-		r_sq = d > r_sq ? d : r_sq;
-	}
-	return r_sq;
-}
 
 // Segment s's lines in the wrist frame, computed once for a reading.
 static void ready_local(hs_hand *hand, int s) {
@@ -520,7 +496,7 @@ static void local_bounds(hs_hand *hand) {
 	for (int i = 0; i < HS_HAND_POINTS; ++i)
 		c = hs_add(c, points[i]);
 	c = hs_scale(c, 1.0 / HS_HAND_POINTS);
-	double r_sq = farthest_sq(c, points, HS_HAND_POINTS, 0.0);
+	double r_sq = hs_hand_farthest_sq(c, points, HS_HAND_POINTS, 0.0);
 	hand->local_center = c;
 	hand->local_radius = (sqrt(r_sq) + hand->def.finger_radius) * (1.0 + 1e-9) + 1e-12;
 }

@@ -7,6 +7,7 @@
 #include <stdint.h>
 
 #include "handspring.h"
+#include "lanes2.h"
 
 // The hand's path through a step (hand_sweep.c): a piece per this many degrees a finger chain or
 // the wrist turns, at most HS_HAND_PATH_MAX pieces.
@@ -143,6 +144,31 @@ void hs_hand_place(const hs_vec3 local_points[HS_HAND_POINTS], const hs_vec3 loc
                    hs_vec3 lines[HS_HAND_LINES][2]);
 // Recomputes the wrist-frame shape cache and its bounding sphere from hand->sensors.
 void hs_hand_update_shape(hs_hand *hand);
+// The largest of r_sq and the squared distances from c to the n vectors v (a NaN distance is
+// passed over; a maximum, so the bits do not depend on the order it is taken in).
+// With SSE2, two distances at a time, one per lane, each as hs_length_sq(hs_sub(v, c)).
+static inline double hs_hand_farthest_sq(hs_vec3 c, const hs_vec3 *v, int n, double r_sq) {
+	int i = 0;
+#if defined(__SSE2__)
+	const __m128d cx = _mm_set1_pd(c.x), cy = _mm_set1_pd(c.y), cz = _mm_set1_pd(c.z);
+	__m128d most = _mm_set1_pd(r_sq);
+	for (; i + 1 < n; i += 2) {
+		hs_lanes2 in = hs_lanes2_load(&v[i], &v[i + 1]);
+		__m128d dx = _mm_sub_pd(in.x, cx), dy = _mm_sub_pd(in.y, cy), dz = _mm_sub_pd(in.z, cz);
+		__m128d d = _mm_add_pd(_mm_add_pd(_mm_mul_pd(dx, dx), _mm_mul_pd(dy, dy)), _mm_mul_pd(dz, dz));
+		most = _mm_max_pd(d, most); // d > most ? d : most, lane by lane (NaN: most)
+	}
+	double lanes[2];
+	_mm_storeu_pd(lanes, most);
+	r_sq = lanes[1] > lanes[0] ? lanes[1] : lanes[0];
+#endif
+	for (; i < n; ++i) {
+		double d = hs_length_sq(hs_sub(v[i], c));
+		r_sq = d > r_sq ? d : r_sq;
+	}
+	return r_sq;
+}
+
 // Places the check points from the shape cache and the wrist pose; the lines wait (lines_ready 0).
 void hs_hand_place_points(hs_hand *hand);
 #define HS_HAND_ALL_SEGMENTS 0x7fffu

@@ -13,7 +13,6 @@
 #include <stdlib.h>
 
 #include "hand_sweep.h"
-#include "lanes2.h"
 
 // deg per sensor unit (paper §5.1)
 #define DEG_PER_UNIT 0.5
@@ -70,14 +69,10 @@ static void merge_spheres(hs_vec3 c0, double r0, hs_vec3 c1, double r1, hs_vec3 
 	}
 }
 
+// The farthest squared distance from c of the parts in one pose (hs_hand_farthest_sq).
 static double farthest_sq(hs_vec3 c, const hs_vec3 points[HS_HAND_POINTS], const hs_vec3 lines[HS_HAND_LINES][2],
                           double r_sq) {
-	for (int i = 0; i < HS_HAND_POINTS; ++i)
-		r_sq = fmax(r_sq, hs_length_sq(hs_sub(points[i], c)));
-	for (int j = 0; j < HS_HAND_LINES; ++j)
-		for (int k = 0; k < 2; ++k)
-			r_sq = fmax(r_sq, hs_length_sq(hs_sub(lines[j][k], c)));
-	return r_sq;
+	return hs_hand_farthest_sq(c, &lines[0][0], 2 * HS_HAND_LINES, hs_hand_farthest_sq(c, points, HS_HAND_POINTS, r_sq));
 }
 
 // The parts at k/S of the way: the kinematics of the interpolated reading.
@@ -134,36 +129,6 @@ static const hs_vec3 *finger_points(const hs_hand *hand, int k, int f) {
 	return p + 4 * f;
 }
 
-// The squared distance from c to the farthest of finger f's points in the poses (NaN when one is:
-// the sphere then culls nothing, its centre being NaN too). With SSE2, two points at a time.
-static double finger_farthest_sq(const hs_hand *hand, int f, int poses, hs_vec3 c) {
-	double r_sq = 0.0;
-#if defined(__SSE2__)
-	const __m128d cx = _mm_set1_pd(c.x), cy = _mm_set1_pd(c.y), cz = _mm_set1_pd(c.z);
-	__m128d most = _mm_setzero_pd();
-	for (int k = 0; k < poses; ++k) {
-		const hs_vec3 *p = finger_points(hand, k, f);
-		for (int i = 0; i < 4; i += 2) {
-			hs_lanes2 in = hs_lanes2_load(&p[i], &p[i + 1]);
-			__m128d dx = _mm_sub_pd(in.x, cx), dy = _mm_sub_pd(in.y, cy), dz = _mm_sub_pd(in.z, cz);
-			most = _mm_max_pd(_mm_add_pd(_mm_add_pd(_mm_mul_pd(dx, dx), _mm_mul_pd(dy, dy)), _mm_mul_pd(dz, dz)), most);
-		}
-	}
-	double lanes[2];
-	_mm_storeu_pd(lanes, most);
-	r_sq = lanes[1] > lanes[0] ? lanes[1] : lanes[0];
-#else
-	for (int k = 0; k < poses; ++k) {
-		const hs_vec3 *p = finger_points(hand, k, f);
-		for (int i = 0; i < 4; ++i) {
-			double d = hs_length_sq(hs_sub(p[i], c));
-			r_sq = d > r_sq ? d : r_sq;
-		}
-	}
-#endif
-	return r_sq;
-}
-
 void hs_hand_finger_spheres(hs_hand *hand) {
 	if (hand->finger_spheres_ready)
 		return;
@@ -177,7 +142,10 @@ void hs_hand_finger_spheres(hs_hand *hand) {
 		hs_vec3 c = hs_scale(sum, 1.0 / (4.0 * poses));
 		// the lines' ends lie finger_radius from the points; rounding far below the micrometre
 		hand->finger_center[f] = c;
-		hand->finger_reach[f] = (sqrt(finger_farthest_sq(hand, f, poses, c)) + hand->def.finger_radius) * (1.0 + 1e-9) + 1e-6;
+		double r_sq = 0.0; // (a NaN point makes the centre NaN: the sphere then culls nothing)
+		for (int k = 0; k < poses; ++k)
+			r_sq = hs_hand_farthest_sq(c, finger_points(hand, k, f), 4, r_sq);
+		hand->finger_reach[f] = (sqrt(r_sq) + hand->def.finger_radius) * (1.0 + 1e-9) + 1e-6;
 	}
 	hand->finger_spheres_ready = true;
 }

@@ -331,6 +331,24 @@ static void fresh_hand(hs_hand *hand, bool left) {
 	hs_glove_table_build(&hand->def, &hand->glove);
 }
 
+// A fixed LCG: the same readings every run.
+static uint32_t lcg(uint32_t *x) { return *x = *x * 1664525u + 1013904223u; }
+
+// A reading of the LCG's next 18 values.
+static void lcg_reading(uint32_t *x, uint8_t sensors[HS_GLOVE_SENSORS]) {
+	for (int i = 0; i < HS_GLOVE_SENSORS; ++i)
+		sensors[i] = (uint8_t)(lcg(x) >> 24);
+}
+
+// What hs_world_set_hand does once the reading and the wrist pose are in the hand: its shape, its
+// check points placed, its bounds.
+static void place_reading(hs_hand *hand) {
+	hs_hand_update_shape(hand);
+	hs_hand_place_points(hand);
+	hand->placed = true;
+	hs_hand_update_bounds(hand);
+}
+
 // The hand's bounding sphere in the wrist frame (hand.c, local_bounds) is taken over the check
 // points alone, grown by finger_radius: it must hold every check point and every line end (each
 // finger_radius from a check point), for either hand, thin or thick fingers and any reading, and be
@@ -344,10 +362,7 @@ static void test_bounds_reach_the_farthest_end(void **state) {
 	for (int trial = 0; trial < 3000; ++trial) {
 		fresh_hand(hand, trial % 2 == 1);
 		hand->def.finger_radius = radii[trial % 3];
-		for (int i = 0; i < HS_GLOVE_SENSORS; ++i) {
-			x = x * 1664525u + 1013904223u; // a fixed LCG: the same readings every run
-			hand->sensors[i] = (uint8_t)(x >> 24);
-		}
+		lcg_reading(&x, hand->sensors);
 		hs_hand_update_shape(hand);
 		// every line (the bounds compute none of them)
 		hs_vec3 points[HS_HAND_POINTS], lines[HS_HAND_LINES][2];
@@ -386,10 +401,7 @@ static void test_lines_placed_when_read(void **state) {
 		hs_vec3 wrist[2];
 		hs_quat turn[2];
 		for (int f = 0; f < 2; ++f) {
-			for (int i = 0; i < HS_GLOVE_SENSORS; ++i) {
-				x = x * 1664525u + 1013904223u;
-				readings[f][i] = (uint8_t)(x >> 24);
-			}
+			lcg_reading(&x, readings[f]);
 			wrist[f] = hs_v3(0.1 * f, -0.2, 0.3 + 0.01 * trial);
 			turn[f] = hs_quat_from_axis_angle(hs_normalize(hs_v3(1.0, 2.0, 3.0 + f)), 0.3 * trial + 0.7 * f);
 		}
@@ -397,8 +409,7 @@ static void test_lines_placed_when_read(void **state) {
 			memcpy(hand->sensors, readings[f], sizeof hand->sensors);
 			hand->wrist_pos = wrist[f];
 			hand->wrist_rot = turn[f];
-			hs_hand_update_shape(hand);
-			hs_hand_place_points(hand);
+			place_reading(hand);
 			if (f == 0)
 				hs_hand_keep_previous(hand);
 			hs_hand_ready_segment(hand, (2 + trial) % 15); // read in both frames
@@ -433,16 +444,13 @@ static void test_finger_spheres_hold_the_fingers(void **state) {
 	for (int trial = 0; trial < 40; ++trial) {
 		fresh_hand(hand, trial % 2 == 1);
 		for (int f = 0; f < 2; ++f) { // as hs_world_set_hand, then the step's sweep
-			for (int i = 0; i < HS_GLOVE_SENSORS; ++i) {
-				x = x * 1664525u + 1013904223u;
-				hand->sensors[i] = (uint8_t)(trial % 4 == 0 && f == 1 ? hand->sensors[i] ^ (x >> 30) : x >> 24);
+			for (int i = 0; i < HS_GLOVE_SENSORS; ++i) { // one trial in four: each moves by 3 units at most
+				uint32_t r = lcg(&x);
+				hand->sensors[i] = (uint8_t)(trial % 4 == 0 && f == 1 ? hand->sensors[i] ^ (r >> 30) : r >> 24);
 			}
 			hand->wrist_pos = hs_v3(0.05 * f, -0.2, 0.3 + 0.01 * trial);
 			hand->wrist_rot = hs_quat_from_axis_angle(hs_normalize(hs_v3(1.0, 2.0, 3.0)), 0.2 * trial + 0.5 * f);
-			hs_hand_update_shape(hand);
-			hs_hand_place_points(hand);
-			hand->placed = true;
-			hs_hand_update_bounds(hand);
+			place_reading(hand);
 			if (f == 0)
 				hs_hand_keep_previous(hand);
 		}
@@ -485,10 +493,7 @@ static void test_sweep_pieces_follow_the_turn(void **state) {
 			fresh_hand(hand, false);
 			memset(hand->sensors, 100, sizeof hand->sensors);
 			hand->wrist_rot = hs_quat_from_axis_angle(hs_v3(0, 1, 0), 0.4);
-			hs_hand_update_shape(hand);
-			hs_hand_place_points(hand);
-			hand->placed = true;
-			hs_hand_update_bounds(hand);
+			place_reading(hand);
 			hs_hand_keep_previous(hand);
 			hand->wrist_rot = hs_quat_mul(hs_quat_from_axis_angle(hs_normalize(axes[a]), turns[k] * HS_PI / 180.0),
 			                              hand->prev_wrist_rot);
@@ -496,9 +501,7 @@ static void test_sweep_pieces_follow_the_turn(void **state) {
 				hand->wrist_rot = hs_quat_mul(hs_quat_from_axis_angle(hs_v3(0, 0, 1), 3.9 * HS_PI / 180.0), hand->prev_wrist_rot);
 				hand->sensors[HS_SENSOR_INDEX_PIP] = 106;
 			}
-			hs_hand_update_shape(hand);
-			hs_hand_place_points(hand);
-			hs_hand_update_bounds(hand);
+			place_reading(hand);
 			hs_hand_sweep(hand, false);
 			assert_int_equal(hand->path_steps, pieces[k]);
 			if (k == 1 && a == 2) {
@@ -530,9 +533,9 @@ static void test_fingers_kept_between_readings(void **state) {
 			uint8_t was[HS_GLOVE_SENSORS];
 			memcpy(was, hand->sensors, sizeof was);
 			for (int i = 0; i < HS_GLOVE_SENSORS; ++i) { // each sensor moves in one frame of four
-				x = x * 1664525u + 1013904223u;
-				if (frame == 0 || (x >> 30) == 0)
-					hand->sensors[i] = (uint8_t)(x >> 8);
+				uint32_t r = lcg(&x);
+				if (frame == 0 || (r >> 30) == 0)
+					hand->sensors[i] = (uint8_t)(r >> 8);
 			}
 			kept += memcmp(was + HS_SENSOR_MIDDLE_MCP, hand->sensors + HS_SENSOR_MIDDLE_MCP, 2) == 0;
 			hs_hand_update_shape(hand);
