@@ -110,8 +110,16 @@ static int header_of(const hs_world *w, uint64_t out[HS_STATE_HEADER_WORDS], con
 	return HS_STATE_HEADER_WORDS;
 }
 
+// The walks are inlined into each use: where the mode is a constant (the hash, every frame), the
+// mode tests and the calls for other modes fold away, and the word count stays in a register.
+#if defined(__GNUC__)
+#define HS_STATE_INLINE inline __attribute__((always_inline))
+#else
+#define HS_STATE_INLINE inline
+#endif
+
 // One object: 39 words. The model fields (shape, mass) are in the definition checksum instead.
-static void body_io(hs_state_io *io, const hs_world *w, hs_body *b) {
+static HS_STATE_INLINE void body_io(hs_state_io *io, const hs_world *w, hs_body *b) {
 	hs_state_vec3(io, &b->pos);
 	hs_state_vec3(io, &b->prev);
 	hs_state_rotation(io, &b->rot);
@@ -138,7 +146,7 @@ static void body_io(hs_state_io *io, const hs_world *w, hs_body *b) {
 // come from (the points and lines are rebuilt from them after a load), the wrist poses before
 // those (a release's velocity), its two touch masks and its two embedded masks. Its definition is
 // in the checksum; older_capacity follows from the world's (dt, release_window_s).
-static void hand_io(hs_state_io *io, hs_hand *h) {
+static HS_STATE_INLINE void hand_io(hs_state_io *io, hs_hand *h) {
 	hs_state_vec3(io, &h->wrist_pos);
 	hs_state_rotation(io, &h->wrist_rot);
 	for (int i = 0; i < HS_GLOVE_SENSORS; ++i)
@@ -164,6 +172,16 @@ static void hand_io(hs_state_io *io, hs_hand *h) {
 }
 
 #define HS_HASH_LANES {HS_HASH_SEED, ~HS_HASH_SEED, HS_HASH_SEED >> 1, 1}
+
+// A hand in HASH mode (every frame): the walk on a local copy, whose mode the compiler then knows
+// (hand_io inlined: no call for another mode is left, and the count stays in a register).
+static void hand_hash(hs_state_io *io, hs_hand *h) {
+	hs_state_io local = {.mode = HS_STATE_HASH, .words = io->words};
+	memcpy(local.lane, io->lane, sizeof local.lane);
+	hand_io(&local, h);
+	io->words = local.words;
+	memcpy(io->lane, local.lane, sizeof local.lane);
+}
 
 // Object i's digest: its index and its walk, hashed alone. Objects enter the world's hash as the
 // sum of their digests, so an object that did not change costs nothing to hash again (its digest
@@ -226,7 +244,7 @@ static uint64_t objects_digest(hs_world *w) {
 
 // The whole state after the header: the single list of what a step reads from the last one. The
 // hash takes the objects as the sum of their digests (above); the other modes walk them in order.
-static void world_io(hs_state_io *io, hs_world *w) {
+static HS_STATE_INLINE void world_io(hs_state_io *io, hs_world *w) {
 	io->objects = w->object_count;
 	hs_state_long_range(io, &w->frame, 0, LONG_MAX);
 	hs_state_long_range(io, &w->counters.numeric_faults, 0, LONG_MAX);
@@ -240,7 +258,10 @@ static void world_io(hs_state_io *io, hs_world *w) {
 			body_io(io, w, &w->bodies[i]);
 	}
 	for (int h = 0; h < w->hand_count; ++h)
-		hand_io(io, &w->hands[h]);
+		if (io->mode == HS_STATE_HASH)
+			hand_hash(io, &w->hands[h]);
+		else
+			hand_io(io, &w->hands[h]);
 	if (w->spring)
 		hs_spring_state_io(w->spring, io);
 }
