@@ -598,6 +598,7 @@ void hs_hand_refresh(hs_hand *hand) {
 		memset(hand->prev_lines, 0, sizeof hand->prev_lines);
 		memset(hand->local_points, 0, sizeof hand->local_points);
 		memset(hand->local_lines, 0, sizeof hand->local_lines);
+		hand->palm_valid = 0; // the cached chains no longer stand for this shape (its lines are zero)
 		hand->lines_ready = hand->prev_lines_ready = hand->local_ready = HS_HAND_ALL_SEGMENTS;
 		hand->local_center = hs_v3(0, 0, 0);
 		hand->local_radius = 0.0;
