@@ -393,17 +393,6 @@ static uint32_t points_near(const hs_vec3 p[HS_HAND_POINTS], hs_vec3 c, double r
 	return near;
 }
 
-// The index of the lowest set bit of m (not 0).
-static inline int lowest_bit(uint32_t m) {
-#if defined(__GNUC__)
-	return __builtin_ctz(m);
-#else
-	int i = 0;
-	while (!(m >> i & 1u))
-		++i;
-	return i;
-#endif
-}
 
 static void detect_points(hs_world *world, int object, int h, const hs_part *part, const frame *body,
                           const frame *before, bool moved, bool cull, double grow, unsigned far) {
@@ -420,7 +409,7 @@ static void detect_points(hs_world *world, int object, int h, const hs_part *par
 	if (!swept || moved)
 		todo &= near;
 	for (; todo; todo &= todo - 1u) {
-		int i = lowest_bit(todo);
+		int i = hs_lowest_bit(todo);
 		if (!(near >> i & 1u) && !path_near(hand, i, steps, center, r_sq))
 			continue;
 		hs_vec3 b = to_body(body, hand->points[i]);
@@ -1027,7 +1016,7 @@ static void detect_lines(hs_world *world, int object, int h, const hs_part *part
 	if (!swept || moved)
 		segments &= near;
 	for (; segments; segments &= segments - 1u) {
-		int s = lowest_bit(segments), a = SEGMENT_FIRST_POINT[s]; // a: the segment's first check point
+		int s = hs_lowest_bit(segments), a = SEGMENT_FIRST_POINT[s]; // a: the segment's first check point
 		double d_sq = cull ? d_axis[s] : 0.0;
 		bool plain = swept && !(hand->embed_lines >> (4 * s) & 0xFu); // none of its lines embedded
 		if ((!(near >> s & 1u) && !axis_path_near(hand, a, steps, center, sb.rp)) ||

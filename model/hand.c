@@ -20,6 +20,10 @@
 #include <stddef.h>
 #include <stdint.h>
 #include <string.h>
+#if defined(HS_SELFCHECK)
+#include <stdio.h>
+#include <stdlib.h>
+#endif
 
 #include "hand_internal.h"
 
@@ -260,41 +264,50 @@ static void finger_pose(const reading *r, int k, hand_pose *out) {
 	chain(def, f, base, q, flex, turn, out);
 }
 
-// `in` turned by q into `pose`: each point hs_quat_rotate(q, p), each segment frame
-// hs_quat_mul(q, s). With SSE2, two at a time, one per lane, each lane doing those functions'
-// operations in their order (the same bits).
-static void turn_pose(hs_quat q, const hand_pose *in, hand_pose *pose) {
-	int i = 0, s = 0;
 #if defined(__SSE2__)
-	for (; i + 1 < HS_HAND_POINTS; i += 2)
-		hs_lanes2_store(hs_lanes2_rotate(q, hs_lanes2_load(&in->points[i], &in->points[i + 1])), &pose->points[i],
-		                &pose->points[i + 1]);
+// Two segment frames turned by q: hs_quat_mul(q, b0) and hs_quat_mul(q, b1), one per lane, each
+// lane doing that function's products and sums in its order (the same bits).
+static void turn_two_frames(hs_quat q, const hs_quat *b0, const hs_quat *b1, hs_quat *o0, hs_quat *o1) {
 	const __m128d aw = _mm_set1_pd(q.w), ax = _mm_set1_pd(q.x), ay = _mm_set1_pd(q.y), az = _mm_set1_pd(q.z);
-	for (; s + 1 < 15; s += 2) {
-		const hs_quat *b0 = &in->segment[s], *b1 = &in->segment[s + 1];
-		__m128d bw = _mm_set_pd(b1->w, b0->w), bx = _mm_set_pd(b1->x, b0->x), by = _mm_set_pd(b1->y, b0->y),
-		        bz = _mm_set_pd(b1->z, b0->z);
-		__m128d w = _mm_sub_pd(_mm_sub_pd(_mm_sub_pd(_mm_mul_pd(aw, bw), _mm_mul_pd(ax, bx)), _mm_mul_pd(ay, by)),
-		                       _mm_mul_pd(az, bz));
-		__m128d x = _mm_sub_pd(_mm_add_pd(_mm_add_pd(_mm_mul_pd(aw, bx), _mm_mul_pd(ax, bw)), _mm_mul_pd(ay, bz)),
-		                       _mm_mul_pd(az, by));
-		__m128d y = _mm_add_pd(_mm_add_pd(_mm_sub_pd(_mm_mul_pd(aw, by), _mm_mul_pd(ax, bz)), _mm_mul_pd(ay, bw)),
-		                       _mm_mul_pd(az, bx));
-		__m128d z = _mm_add_pd(_mm_sub_pd(_mm_add_pd(_mm_mul_pd(aw, bz), _mm_mul_pd(ax, by)), _mm_mul_pd(ay, bx)),
-		                       _mm_mul_pd(az, bw));
-		double lw[2], lx[2], ly[2], lz[2];
-		_mm_storeu_pd(lw, w);
-		_mm_storeu_pd(lx, x);
-		_mm_storeu_pd(ly, y);
-		_mm_storeu_pd(lz, z);
-		pose->segment[s] = hs_q(lw[0], lx[0], ly[0], lz[0]);
-		pose->segment[s + 1] = hs_q(lw[1], lx[1], ly[1], lz[1]);
-	}
+	__m128d bw = _mm_set_pd(b1->w, b0->w), bx = _mm_set_pd(b1->x, b0->x), by = _mm_set_pd(b1->y, b0->y),
+	        bz = _mm_set_pd(b1->z, b0->z);
+	__m128d w = _mm_sub_pd(_mm_sub_pd(_mm_sub_pd(_mm_mul_pd(aw, bw), _mm_mul_pd(ax, bx)), _mm_mul_pd(ay, by)),
+	                       _mm_mul_pd(az, bz));
+	__m128d x = _mm_sub_pd(_mm_add_pd(_mm_add_pd(_mm_mul_pd(aw, bx), _mm_mul_pd(ax, bw)), _mm_mul_pd(ay, bz)),
+	                       _mm_mul_pd(az, by));
+	__m128d y = _mm_add_pd(_mm_add_pd(_mm_sub_pd(_mm_mul_pd(aw, by), _mm_mul_pd(ax, bz)), _mm_mul_pd(ay, bw)),
+	                       _mm_mul_pd(az, bx));
+	__m128d z = _mm_add_pd(_mm_sub_pd(_mm_add_pd(_mm_mul_pd(aw, bz), _mm_mul_pd(ax, by)), _mm_mul_pd(ay, bx)),
+	                       _mm_mul_pd(az, bw));
+	double lw[2], lx[2], ly[2], lz[2];
+	_mm_storeu_pd(lw, w);
+	_mm_storeu_pd(lx, x);
+	_mm_storeu_pd(ly, y);
+	_mm_storeu_pd(lz, z);
+	*o0 = hs_q(lw[0], lx[0], ly[0], lz[0]);
+	*o1 = hs_q(lw[1], lx[1], ly[1], lz[1]);
+}
 #endif
-	for (; i < HS_HAND_POINTS; i++)
-		pose->points[i] = hs_quat_rotate(q, in->points[i]);
-	for (; s < 15; s++)
-		pose->segment[s] = hs_quat_mul(q, in->segment[s]);
+
+// The fingers `fingers` (bit f) of `in` turned by q into `pose`: each point hs_quat_rotate(q, p),
+// each segment frame hs_quat_mul(q, s). With SSE2, two at a time, one per lane, each lane doing
+// those functions' operations in their order (the same bits).
+static void turn_pose(hs_quat q, const hand_pose *in, hand_pose *pose, unsigned fingers) {
+	for (; fingers; fingers &= fingers - 1u) {
+		int f = hs_lowest_bit(fingers), i = 4 * f, s = 3 * f;
+#if defined(__SSE2__)
+		for (int k = 0; k < 4; k += 2)
+			hs_lanes2_store(hs_lanes2_rotate(q, hs_lanes2_load(&in->points[i + k], &in->points[i + k + 1])),
+			                &pose->points[i + k], &pose->points[i + k + 1]);
+		turn_two_frames(q, &in->segment[s], &in->segment[s + 1], &pose->segment[s], &pose->segment[s + 1]);
+		pose->segment[s + 2] = hs_quat_mul(q, in->segment[s + 2]);
+#else
+		for (int k = 0; k < 4; k++)
+			pose->points[i + k] = hs_quat_rotate(q, in->points[i + k]);
+		for (int k = 0; k < 3; k++)
+			pose->segment[s + k] = hs_quat_mul(q, in->segment[s + k]);
+#endif
+	}
 }
 
 // The sensors each finger's chain reads (thumb, index .. little; repeated to fill the row).
@@ -321,7 +334,7 @@ static bool finger_kept(hs_hand *cache, int f, const uint8_t *v) {
 // the whole hand in the wrist frame of a right hand; `cache` (NULL: none) keeps each finger's
 // chain for the sensors it reads (the same function of the same values: the same bits). Returns
 // the fingers (bit f) whose points and frames are those of the last shape made through the cache:
-// chain kept, wrist sensors unchanged.
+// chain kept, wrist sensors unchanged; `out` may lack theirs (not turned again).
 static unsigned hand_pose_wrist(const reading *r, hand_pose *out, hs_hand *cache) {
 	const hs_hand_joints *j = &r->j;
 	hand_pose *palm_pose = cache ? &cache->palm_pose : out;
@@ -349,7 +362,7 @@ static unsigned hand_pose_wrist(const reading *r, hand_pose *out, hs_hand *cache
 	}
 	hs_quat palm = hs_quat_mul(turn_about(Z_AXIS, turn_of(r, HS_GLOVE_WRIST, HS_SENSOR_WRIST_YAW, j->wrist_yaw)),
 	                           turn_about(Y_AXIS, turn_of(r, HS_GLOVE_WRIST, HS_SENSOR_WRIST_PITCH, j->wrist_pitch)));
-	turn_pose(palm, palm_pose, out);
+	turn_pose(palm, palm_pose, out, 31u & ~same); // the same fingers' turned points are the last shape's
 	return same;
 }
 
@@ -393,15 +406,20 @@ void hs_glove_table_build(const hs_hand_def *def, hs_glove_table *table) {
 }
 
 // The shape in the wrist frame without its lines: the check points (mirrored for a left hand)
-// and each segment's frame.
+// and each segment's frame. With a cache (the hand), `points` and `segment` are its local_points
+// and local_segment, which hold the last shape made through it: fingers that stayed the same
+// (returned) are not written again.
 static unsigned local_pose(const hs_hand_def *def, const hs_glove_table *table, const uint8_t sensors[HS_GLOVE_SENSORS],
                            hs_vec3 points[HS_HAND_POINTS], hs_quat segment[15], hs_hand *cache) {
 	reading r = {def, hs_hand_joints_from_sensors(def, sensors), table, sensors};
 	hand_pose pose;
 	unsigned same = hand_pose_wrist(&r, &pose, cache);
-	for (int i = 0; i < HS_HAND_POINTS; i++)
-		points[i] = mirror_if(def->left, pose.points[i]);
-	memcpy(segment, pose.segment, sizeof pose.segment);
+	for (unsigned todo = 31u & ~same; todo; todo &= todo - 1u) { // `same`: points and segment hold them
+		int f = hs_lowest_bit(todo);
+		for (int i = 4 * f; i < 4 * f + 4; i++)
+			points[i] = mirror_if(def->left, pose.points[i]);
+		memcpy(&segment[3 * f], &pose.segment[3 * f], 3 * sizeof pose.segment[0]);
+	}
 	return same;
 }
 
@@ -501,8 +519,25 @@ static void local_bounds(hs_hand *hand) {
 	hand->local_radius = (sqrt(r_sq) + hand->def.finger_radius) * (1.0 + 1e-9) + 1e-12;
 }
 
+#if defined(HS_SELFCHECK)
+// Sanitizer builds: the shape made through the cache (some fingers kept from the last one) has the
+// bits of the shape made afresh.
+static void check_shape(const hs_hand *hand) {
+	hs_vec3 points[HS_HAND_POINTS];
+	hs_quat segment[15];
+	local_pose(&hand->def, &hand->glove, hand->sensors, points, segment, NULL);
+	if (memcmp(points, hand->local_points, sizeof points) != 0 || memcmp(segment, hand->local_segment, sizeof segment) != 0) {
+		fprintf(stderr, "selfcheck: a hand's shape through its cache differs from the shape made afresh\n");
+		abort();
+	}
+}
+#else
+static inline void check_shape(const hs_hand *hand) { (void)hand; }
+#endif
+
 void hs_hand_update_shape(hs_hand *hand) {
 	unsigned same = local_pose(&hand->def, &hand->glove, hand->sensors, hand->local_points, hand->local_segment, hand);
+	check_shape(hand);
 	hand->local_ready = (uint16_t)(hand->local_ready & hs_finger_parts(same, 3)); // a finger's lines as they were
 	local_bounds(hand);
 }
@@ -598,7 +633,7 @@ void hs_hand_refresh(hs_hand *hand) {
 		memset(hand->prev_lines, 0, sizeof hand->prev_lines);
 		memset(hand->local_points, 0, sizeof hand->local_points);
 		memset(hand->local_lines, 0, sizeof hand->local_lines);
-		hand->palm_valid = 0; // the cached chains no longer stand for this shape (its lines are zero)
+		hand->palm_valid = 0; // its shape is no longer the last one made through the cache
 		hand->lines_ready = hand->prev_lines_ready = hand->local_ready = HS_HAND_ALL_SEGMENTS;
 		hand->local_center = hs_v3(0, 0, 0);
 		hand->local_radius = 0.0;

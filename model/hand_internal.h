@@ -181,6 +181,17 @@ static inline uint32_t hs_finger_parts(unsigned fingers, int per) {
 			parts |= one << (per * f);
 	return parts;
 }
+// The index of the lowest set bit of m (not 0): the loops over a mask of parts or fingers.
+static inline int hs_lowest_bit(uint32_t m) {
+#if defined(__GNUC__)
+	return __builtin_ctz(m);
+#else
+	int i = 0;
+	while (!(m >> i & 1u))
+		++i;
+	return i;
+#endif
+}
 // Places finger segment s's lines now and a frame ago where they are not yet: the same bits as
 // placing all of them with the reading.
 void hs_hand_place_segment(hs_hand *hand, int s);
