@@ -394,6 +394,27 @@ static void segment_lines(hs_quat q, const hs_vec3 v[4], hs_vec3 a, hs_vec3 b, b
 	}
 }
 
+void hs_glove_deadband(const uint8_t held[HS_GLOVE_SENSORS], int band, const uint8_t raw[HS_GLOVE_SENSORS],
+                       uint8_t used[HS_GLOVE_SENSORS]) {
+	int i = 0;
+#if defined(__SSE2__)
+	// the clamp to [r - band, r + band] on unsigned bytes: a bound beyond 0..255 saturates there,
+	// where it cannot move a byte either
+	const __m128i b = _mm_set1_epi8((char)band);
+	for (; i + 16 <= HS_GLOVE_SENSORS; i += 16) {
+		__m128i r = _mm_loadu_si128((const __m128i *)(const void *)&raw[i]);
+		__m128i v = _mm_loadu_si128((const __m128i *)(const void *)&held[i]);
+		v = _mm_min_epu8(_mm_max_epu8(v, _mm_subs_epu8(r, b)), _mm_adds_epu8(r, b));
+		_mm_storeu_si128((__m128i *)(void *)&used[i], v);
+	}
+#endif
+	for (; i < HS_GLOVE_SENSORS; ++i) {
+		int r = raw[i], v = held[i];
+		v = v < r - band ? r - band : v > r + band ? r + band : v;
+		used[i] = (uint8_t)v;
+	}
+}
+
 void hs_glove_table_build(const hs_hand_def *def, hs_glove_table *table) {
 	for (int v = 0; v < 256; ++v) { // each angle as hs_hand_joints_from_sensors and the poses form it
 		double a = (double)v * HS_RAD_PER_UNIT;

@@ -139,6 +139,11 @@ void hs_hand_local_shape_with(const hs_hand_def *def, const hs_glove_table *tabl
                               hs_vec3 lines[HS_HAND_LINES][2]);
 // Fills the glove table of a hand definition (once, when the hand is built).
 void hs_glove_table_build(const hs_hand_def *def, hs_glove_table *table);
+// The glove's deadband (docs/model.md §1), a play operator per sensor: used[i] is held[i] (the
+// value used last) moved the least that brings it within ±band (0..HS_MAX_GLOVE_DEADBAND) of
+// raw[i], the reading.
+void hs_glove_deadband(const uint8_t held[HS_GLOVE_SENSORS], int band, const uint8_t raw[HS_GLOVE_SENSORS],
+                       uint8_t used[HS_GLOVE_SENSORS]);
 void hs_hand_place(const hs_vec3 local_points[HS_HAND_POINTS], const hs_vec3 local_lines[HS_HAND_LINES][2],
                    hs_vec3 wrist_position, hs_quat wrist_orientation, hs_vec3 points[HS_HAND_POINTS],
                    hs_vec3 lines[HS_HAND_LINES][2]);

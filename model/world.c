@@ -537,21 +537,6 @@ static hs_hand *hand_of(const hs_world *world, hs_hand_id id) {
 	return h >= 0 ? &world->hands[h] : NULL;
 }
 
-// The glove's deadband (docs/model.md §1), a play operator per sensor: the value used stays until the
-// reading leaves ±band around it, then follows the reading at that distance. A glove's per-frame
-// noise (±4 units, ±2°, is ±6 mm at a fingertip from the wrist sensors alone) otherwise moves a
-// still hand every frame: fingertips on a face drag and turn what they touch, and the drags add up
-// frame after frame (a two-fingertip push drifted 2 cm sideways). A still reading now keeps the
-// hand's bits; a moving one lags by `band` units. The first reading is used as it is.
-static void glove_deadband(const hs_hand *hand, int band, const uint8_t reading[HS_GLOVE_SENSORS],
-                           uint8_t used[HS_GLOVE_SENSORS]) {
-	for (int i = 0; i < HS_GLOVE_SENSORS; ++i) {
-		int r = reading[i], v = hand->placed ? hand->sensors[i] : r;
-		v = v < r - band ? r - band : v > r + band ? r + band : v;
-		used[i] = (uint8_t)v;
-	}
-}
-
 hs_status hs_world_set_hand(hs_world *world, hs_hand_id id, hs_vec3 wrist_position, hs_quat wrist_orientation,
                             const uint8_t reading[HS_GLOVE_SENSORS]) {
 	hs_hand *hand = hand_of(world, id);
@@ -559,8 +544,13 @@ hs_status hs_world_set_hand(hs_world *world, hs_hand_id id, hs_vec3 wrist_positi
 		return HS_ERR_INVALID_ARGUMENT;
 	hand->wrist_pos = wrist_position;
 	hand->wrist_rot = hs_quat_normalize(wrist_orientation);
+	// The glove's deadband (docs/model.md §1). Without it a glove's per-frame noise (±4 units, ±2°,
+	// is ±6 mm at a fingertip from the wrist sensors alone) moves a still hand every frame:
+	// fingertips on a face drag and turn what they touch, and the drags add up frame after frame (a
+	// two-fingertip push drifted 2 cm sideways). A still reading keeps the hand's bits; a moving one
+	// lags by the band. The first reading is used as it is.
 	uint8_t sensors[HS_GLOVE_SENSORS];
-	glove_deadband(hand, world->def.glove_deadband, reading, sensors);
+	hs_glove_deadband(hand->placed ? hand->sensors : reading, world->def.glove_deadband, reading, sensors);
 	if (!hand->placed || memcmp(hand->sensors, sensors, sizeof hand->sensors) != 0) {
 		memcpy(hand->sensors, sensors, sizeof hand->sensors); // the glove moved: a new hand shape
 		hs_hand_update_shape(hand);

@@ -1223,6 +1223,29 @@ static void set_all(hs_world *w, hs_hand_id h, int v, uint8_t used[HS_GLOVE_SENS
 	assert_int_equal(hs_world_set_hand(w, h, hs_v3(0, 0, 0), hs_quat_identity(), s), HS_OK);
 }
 
+// hs_glove_deadband against its definition at every (value used, reading, band), in every sensor
+// (the first 16 go through SSE2's saturating byte clamp, the last two one by one): the bounds beyond
+// 0..255 included.
+static void test_glove_deadband_every_value(void **state) {
+	(void)state;
+	uint8_t held[HS_GLOVE_SENSORS], raw[HS_GLOVE_SENSORS], used[HS_GLOVE_SENSORS];
+	long differ = 0;
+	for (int band = 0; band <= HS_MAX_GLOVE_DEADBAND; ++band)
+		for (int v = 0; v < 256; ++v)
+			for (int r0 = 0; r0 < 256; ++r0) {
+				for (int i = 0; i < HS_GLOVE_SENSORS; ++i) {
+					held[i] = (uint8_t)v;
+					raw[i] = (uint8_t)(r0 + 37 * i); // sensor i sees every reading as r0 runs
+				}
+				hs_glove_deadband(held, band, raw, used);
+				for (int i = 0; i < HS_GLOVE_SENSORS; ++i) {
+					int r = raw[i], want = v < r - band ? r - band : v > r + band ? r + band : v;
+					differ += used[i] != want;
+				}
+			}
+	assert_int_equal(differ, 0);
+}
+
 static void test_glove_deadband(void **state) {
 	(void)state;
 	hs_world *w;
@@ -1290,6 +1313,7 @@ int main(void) {
 	    cmocka_unit_test(test_grasp_release_on_opening),
 	    cmocka_unit_test(test_hand_inside_cube_opens),
 	    cmocka_unit_test(test_glove_deadband),
+	    cmocka_unit_test(test_glove_deadband_every_value),
 	    cmocka_unit_test(test_release_over_last_frames),
 	};
 	return cmocka_run_group_tests_name("hand", tests, NULL, NULL);
