@@ -176,15 +176,21 @@ void hs_hgrid_file(hs_hgrid *g, int i, hs_vec3 centre) {
 // Objects of one level filed in the cells lo[] .. hi[] (dims of them, inclusive).
 static int visit_cells(const hs_hgrid *g, int level, const long *lo, const long *hi, int *out, int n) {
 	int dims = g->dims;
-	long c[3] = {0, 0, 0};
-	for (c[2] = dims == 3 ? lo[2] : 0; c[2] <= (dims == 3 ? hi[2] : 0); ++c[2])
-		for (c[1] = lo[1]; c[1] <= hi[1]; ++c[1])
-			for (c[0] = lo[0]; c[0] <= hi[0]; ++c[0])
-				for (int i = g->head[bucket_of(g, level, c)]; i >= 0; i = g->next[i]) {
+	// bucket_of's mix, its terms hoisted out of the inner loops (xor: the same value)
+	unsigned long mask = (unsigned long)(g->buckets - 1), lv = (unsigned long)level * 2654435761ul;
+	long z0 = dims == 3 ? lo[2] : 0, z1 = dims == 3 ? hi[2] : 0;
+	for (long z = z0; z <= z1; ++z) {
+		unsigned long hz = dims == 3 ? lv ^ (unsigned long)z * 83492791ul : lv;
+		for (long y = lo[1]; y <= hi[1]; ++y) {
+			unsigned long hy = hz ^ (unsigned long)y * 19349663ul;
+			for (long x = lo[0]; x <= hi[0]; ++x)
+				for (int i = g->head[(hy ^ (unsigned long)x * 73856093ul) & mask]; i >= 0; i = g->next[i]) {
 					const long *ci = &g->cell[(size_t)i * (size_t)dims];
-					if (ci[0] == c[0] && ci[1] == c[1] && (dims == 2 || ci[2] == c[2]) && g->level[i] == level)
+					if (ci[0] == x && ci[1] == y && (dims == 2 || ci[2] == z) && g->level[i] == level)
 						out[n++] = i; // not a hash neighbour
 				}
+		}
+	}
 	return n;
 }
 
