@@ -130,37 +130,61 @@ static void normalise_pair(posed_part *a, posed_part *b) {
 	a->inv_scale = b->inv_scale = inv;
 }
 
-// World-axis box around a posed part: its body-frame box turned (|R| times the half extents).
-static void part_box(const posed_part *p, hs_vec3 *centre, hs_vec3 *half) {
-	if (p->sphere_radius > 0.0) {
-		*centre = p->center;
-		*half = hs_v3(p->sphere_radius, p->sphere_radius, p->sphere_radius);
+// World-axis box around a part posed at (pos, rot): its body-frame box (c, h) turned (|R| times
+// the half extents); an exact sphere (sphere_radius > 0) about `center` (world).
+static void box_of(hs_vec3 pos, hs_quat rot, hs_vec3 c, hs_vec3 h, double sphere_radius, hs_vec3 center,
+                   hs_vec3 *centre, hs_vec3 *half) {
+	if (sphere_radius > 0.0) {
+		*centre = center;
+		*half = hs_v3(sphere_radius, sphere_radius, sphere_radius);
 		return;
 	}
-	hs_vec3 c = p->box_center, h = p->box_half; // the body-frame box, kept with the part
 	// hs_quat_rotate of the three axes with its products by 0 and 1 left out: only the signs of
 	// zeros can differ, and only magnitudes are read
-	double x = p->rot.x, y = p->rot.y, z = p->rot.z, w = p->rot.w, a = 2.0 * x, b = 2.0 * y, d = 2.0 * z;
+	double x = rot.x, y = rot.y, z = rot.z, w = rot.w, a = 2.0 * x, b = 2.0 * y, d = 2.0 * z;
 	hs_vec3 ux = hs_v3(1.0 + (y * -b - z * d), d * w - x * -b, -b * w + x * d);
 	hs_vec3 uy = hs_v3(-d * w + y * a, 1.0 + (z * -d - x * a), a * w - y * -d);
 	hs_vec3 uz = hs_v3(b * w - z * -a, -a * w + z * b, 1.0 + (x * -a - y * b));
-	*centre = hs_add(p->pos, hs_quat_rotate(p->rot, c));
+	*centre = hs_add(pos, hs_quat_rotate(rot, c));
 	*half = hs_v3(fabs(ux.x) * h.x + fabs(uy.x) * h.y + fabs(uz.x) * h.z,
 	              fabs(ux.y) * h.x + fabs(uy.y) * h.y + fabs(uz.y) * h.z,
 	              fabs(ux.z) * h.x + fabs(uy.z) * h.y + fabs(uz.z) * h.z);
 }
 
+static void part_box(const posed_part *p, hs_vec3 *centre, hs_vec3 *half) {
+	box_of(p->pos, p->rot, p->box_center, p->box_half, p->sphere_radius, p->center, centre, half);
+}
+
 // Cheap rejection before libccd: the parts' world boxes are apart by more than 1e-8 of the pair's
 // size (far beyond libccd's 1e-10 and the touch margins), so GJK and MPR would find no contact
 // either and no result changes. A small part beside a huge one (a 5 cm cube within the bounding
-// sphere of a 400 m box) no longer costs a GJK run.
+// sphere of a 400 m box) no longer costs a GJK run. `margin`: each part's (posed_part).
+static bool boxes_apart_by(hs_vec3 ca, hs_vec3 ha, double ra, hs_vec3 cb, hs_vec3 hb, double rb, double margin) {
+	double m = 1e-8 * (ra + rb) + 4.0 * HS_TOUCH_MARGIN + (margin - HS_TOUCH_MARGIN) * 2.0;
+	return fabs(cb.x - ca.x) > ha.x + hb.x + m || fabs(cb.y - ca.y) > ha.y + hb.y + m ||
+	       fabs(cb.z - ca.z) > ha.z + hb.z + m;
+}
+
 static bool boxes_apart(const posed_part *a, const posed_part *b) {
 	hs_vec3 ca, ha, cb, hb;
 	part_box(a, &ca, &ha);
 	part_box(b, &cb, &hb);
-	double m = 1e-8 * (a->radius + b->radius) + 4.0 * HS_TOUCH_MARGIN + (a->margin - HS_TOUCH_MARGIN) * 2.0;
-	return fabs(cb.x - ca.x) > ha.x + hb.x + m || fabs(cb.y - ca.y) > ha.y + hb.y + m ||
-	       fabs(cb.z - ca.z) > ha.z + hb.z + m;
+	return boxes_apart_by(ca, ha, a->radius, cb, hb, b->radius, a->margin);
+}
+
+void hs_part_world_box(const hs_shape *shape, int part, hs_vec3 pos, hs_quat rot, hs_vec3 *centre, hs_vec3 *half) {
+	const hs_part *p = &shape->parts[part];
+	if (shape->kind == HS_SHAPE_SPHERE) // as pose_part
+		box_of(pos, rot, p->box_center, p->box_half, shape->sphere_radius, hs_add(pos, hs_quat_rotate(rot, p->center)),
+		       centre, half);
+	else
+		box_of(pos, rot, p->box_center, p->box_half, 0.0, pos, centre, half);
+}
+
+bool hs_part_world_boxes_apart(const hs_shape *a, int part_a, hs_vec3 centre_a, hs_vec3 half_a, const hs_shape *b,
+                               int part_b, hs_vec3 centre_b, hs_vec3 half_b) {
+	return boxes_apart_by(centre_a, half_a, a->parts[part_a].radius, centre_b, half_b, b->parts[part_b].radius,
+	                      HS_TOUCH_MARGIN); // hs_shapes_overlap's margin
 }
 
 static bool valid_shape(const hs_shape *s) { return s && s->part_count > 0 && s->parts && s->vertices; }

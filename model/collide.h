@@ -11,4 +11,12 @@
 bool hs_shapes_within(const hs_shape *a, hs_vec3 pos_a, hs_quat rot_a, const hs_shape *b, hs_vec3 pos_b,
                       hs_quat rot_b, double gap, double *depth, hs_vec3 *direction);
 
+// hs_shapes_overlap's cheap rejection, for a caller that keeps the boxes: the world-axis box of
+// part `part` of `shape` posed at (pos, rot) (the same bits as hs_shapes_overlap's), and whether
+// two such boxes lie apart by its margin. When they do, hs_shapes_overlap finds those two parts
+// apart (by their boxes or their bounding spheres) and runs no narrow test on them.
+void hs_part_world_box(const hs_shape *shape, int part, hs_vec3 pos, hs_quat rot, hs_vec3 *centre, hs_vec3 *half);
+bool hs_part_world_boxes_apart(const hs_shape *a, int part_a, hs_vec3 centre_a, hs_vec3 half_a, const hs_shape *b,
+                               int part_b, hs_vec3 centre_b, hs_vec3 half_b);
+
 #endif

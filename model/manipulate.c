@@ -1,6 +1,9 @@
 // manipulate.c — how the hand moves objects (1999 paper §3.2, Fig. 2-3) and how objects
 // interfering with a moved object follow it (§4.3, paper mode).
+#include <string.h>
+
 #include "broadphase.h"
+#include "collide.h"
 #include "contact.h"
 #include "grasp.h"
 #include "hand_sweep.h"
@@ -9,13 +12,36 @@
 #include "push.h"
 #include "support.h"
 
-// Objects i, posed at (pos, rot), and j overlap (libccd; bounding spheres first).
+// Object i's world box at (pos, rot), from its memo when it was made at that pose's bits.
+static int memo_box(const hs_world *world, int i, hs_vec3 pos, hs_quat rot) {
+	hs_box_memo *m = &world->box_memo[i];
+	for (int k = 0; k < m->filled; ++k)
+		if (memcmp(&m->pos[k], &pos, sizeof pos) == 0 && memcmp(&m->rot[k], &rot, sizeof rot) == 0)
+			return k;
+	int k = m->filled < 2 ? m->filled++ : m->older;
+	m->older = (uint8_t)(1 - k);
+	m->pos[k] = pos;
+	m->rot[k] = rot;
+	hs_part_world_box(&world->shapes[world->bodies[i].shape], 0, pos, rot, &m->centre[k], &m->half[k]);
+	return k;
+}
+
+// Objects i, posed at (pos, rot), and j overlap (libccd; bounding spheres first). Two single-part
+// objects (no exact spheres) whose world boxes lie apart are not handed to hs_shapes_overlap: it
+// would find them apart by the same boxes (hs_part_world_boxes_apart), after making them again.
 static bool overlap_at_pose(const hs_world *world, int i, hs_vec3 pos, hs_quat rot, int j) {
 	const hs_body *b = &world->bodies[j];
 	const hs_shape *sa = &world->shapes[world->bodies[i].shape], *sb = &world->shapes[b->shape];
 	double r = sa->radius + sb->radius;
 	if (hs_length_sq(hs_sub(pos, b->pos)) > r * r)
 		return false; // bounding spheres apart: no narrow test
+	if (world->def.skip_work && sa->part_count == 1 && sb->part_count == 1 && sa->kind != HS_SHAPE_SPHERE &&
+	    sb->kind != HS_SHAPE_SPHERE) {
+		int ka = memo_box(world, i, pos, rot), kb = memo_box(world, j, b->pos, b->rot);
+		const hs_box_memo *ma = &world->box_memo[i], *mb = &world->box_memo[j];
+		if (hs_part_world_boxes_apart(sa, 0, ma->centre[ka], ma->half[ka], sb, 0, mb->centre[kb], mb->half[kb]))
+			return false;
+	}
 	return hs_shapes_overlap(sa, pos, rot, sb, b->pos, b->rot);
 }
 

@@ -108,10 +108,11 @@ hs_world *hs_world_create(const hs_world_def *def, hs_status *status) {
 	world->digest = calloc(objects, sizeof *world->digest);
 	world->stale = calloc(objects, sizeof *world->stale);
 	world->stale_flag = calloc(objects, sizeof *world->stale_flag);
+	world->box_memo = calloc(objects, sizeof *world->box_memo);
 	world->all_stale = true;
 	if (!world->shapes || !world->face_edges || !world->face_trees || !world->bodies || !world->queue || !world->hands || !world->contacts || !grid ||
 	    !world->candidates || !world->near || !world->awake || !world->awake_flag || !world->digest || !world->stale ||
-	    !world->stale_flag) {
+	    !world->stale_flag || !world->box_memo) {
 		hs_world_destroy(world);
 		set_status(status, HS_ERR_NO_MEMORY);
 		return NULL;
@@ -151,6 +152,7 @@ void hs_world_destroy(hs_world *world) {
 	free(world->awake);
 	free(world->awake_flag);
 	free(world->digest);
+	free(world->box_memo);
 	free(world->stale);
 	free(world->stale_flag);
 	free(world->scratch_world);

@@ -26,6 +26,13 @@ typedef struct hs_face_edges {
 	int *edges; // 2 x edge_count
 } hs_face_edges;
 
+// An object's world box (hs_part_world_box) at two poses, the older replaced first.
+typedef struct hs_box_memo {
+	hs_vec3 pos[2], centre[2], half[2];
+	hs_quat rot[2];
+	uint8_t filled, older; // entries made (0..2), and the one to replace next
+} hs_box_memo;
+
 struct hs_world {
 	hs_world_def def;   // MODEL
 	uint16_t tag;       // MODEL: this world's tag in its handles (never 0)
@@ -85,6 +92,10 @@ struct hs_world {
 	uint8_t *stale_flag;
 	int stale_count;
 	bool all_stale;
+	// CACHE: the world boxes of single-part objects at their last two poses tested for interference
+	// (manipulate.c): a held object's box is made once a frame, not once per neighbour, and a
+	// resting neighbour's once. Keyed by the pose's bits, so never stale (a shape never changes).
+	hs_box_memo *box_memo;
 	char state_error[160]; // why the last hs_world_load_state refused ("" when it did not)
 };
 

@@ -6,6 +6,7 @@
 #include <setjmp.h>
 #include <cmocka.h>
 
+#include "collide.h"
 #include "test_util.h"
 
 #define SQRT2 1.41421356237309504880
@@ -280,9 +281,28 @@ static hs_quat random_quat(uint64_t *s) {
 	return hs_quat_normalize(q);
 }
 
+// hs_part_world_box holds the box's corners (posed as the vertices are, to its rounding); a pair
+// whose boxes hs_part_world_boxes_apart finds apart is one hs_shapes_overlap finds apart too.
+static bool check_world_boxes(const hs_shape *a, hs_vec3 sa, hs_vec3 pa, hs_quat qa, const hs_shape *b, hs_vec3 pb,
+                              hs_quat qb, bool overlap) {
+	hs_vec3 ca, ha, cb, hb;
+	hs_part_world_box(a, 0, pa, qa, &ca, &ha);
+	hs_part_world_box(b, 0, pb, qb, &cb, &hb);
+	for (int k = 0; k < 8; ++k) {
+		hs_vec3 v = hs_add(pa, hs_quat_rotate(qa, hs_v3((k & 1 ? 0.5 : -0.5) * sa.x, (k & 2 ? 0.5 : -0.5) * sa.y,
+		                                                (k & 4 ? 0.5 : -0.5) * sa.z)));
+		hs_vec3 d = hs_sub(v, ca);
+		double slack = 1e-12 * (1.0 + hs_length(pa));
+		assert_true(fabs(d.x) <= ha.x + slack && fabs(d.y) <= ha.y + slack && fabs(d.z) <= ha.z + slack);
+	}
+	bool apart = hs_part_world_boxes_apart(a, 0, ca, ha, b, 0, cb, hb);
+	assert_false(apart && overlap);
+	return apart;
+}
+
 // `trials` random pairs of boxes with sides in [0.01, 0.5] × scale, centres within 0.6 × scale.
 static void random_boxes_against_sat(uint64_t seed, double scale, int trials) {
-	int hits = 0, misses = 0;
+	int hits = 0, misses = 0, boxes_apart = 0;
 	for (int trial = 0; trial < trials; trial++) {
 		hs_vec3 sa = hs_scale(hs_v3(uniform(&seed, 0.01, 0.5), uniform(&seed, 0.01, 0.5), uniform(&seed, 0.01, 0.5)), scale);
 		hs_vec3 sb = hs_scale(hs_v3(uniform(&seed, 0.01, 0.5), uniform(&seed, 0.01, 0.5), uniform(&seed, 0.01, 0.5)), scale);
@@ -298,14 +318,16 @@ static void random_boxes_against_sat(uint64_t seed, double scale, int trials) {
 		if (got != (sep < 0))
 			print_error("scale %g, trial %d: separation %.3g, overlap %d\n", scale, trial, sep, (int)got);
 		assert_int_equal(got, sep < 0);
+		boxes_apart += check_world_boxes(a, sa, pa, qa, b, pb, qb, got);
 		hits += got;
 		misses += !got;
 		hs_shape_destroy(a);
 		hs_shape_destroy(b);
 	}
-	// both outcomes well represented
+	// both outcomes well represented, and boxes apart among the misses
 	assert_true(hits > trials / 10);
 	assert_true(misses > trials / 10);
+	assert_true(boxes_apart > trials / 20 && boxes_apart < misses);
 }
 
 static void test_random_boxes_against_sat(void **state) {
