@@ -173,14 +173,48 @@ static HS_STATE_INLINE void hand_io(hs_state_io *io, hs_hand *h) {
 
 #define HS_HASH_LANES {HS_HASH_SEED, ~HS_HASH_SEED, HS_HASH_SEED >> 1, 1}
 
-// A hand in HASH mode (every frame): the walk on a local copy, whose mode the compiler then knows
-// (hand_io inlined: no call for another mode is left, and the count stays in a register).
+// A hand's words in HASH mode, as hand_io visits them (every frame: 105 at the default window),
+// gathered to be mixed four lanes at a time. HS_HASH_SELFCHECK builds compare with hand_io's walk.
+#define HAND_WORDS_MAX (56 + 7 * HS_HAND_OLDER_MAX)
+static size_t put_vec3(uint64_t *w, size_t n, hs_vec3 v) {
+	w[n] = hs_state_bits(v.x), w[n + 1] = hs_state_bits(v.y), w[n + 2] = hs_state_bits(v.z);
+	return n + 3;
+}
+static size_t put_quat(uint64_t *w, size_t n, hs_quat q) { // w, x, y, z as hs_state_quat
+	w[n] = hs_state_bits(q.w), w[n + 1] = hs_state_bits(q.x), w[n + 2] = hs_state_bits(q.y), w[n + 3] = hs_state_bits(q.z);
+	return n + 4;
+}
+static size_t hand_words(const hs_hand *h, uint64_t *w) {
+	size_t n = put_quat(w, put_vec3(w, 0, h->wrist_pos), h->wrist_rot);
+	for (int i = 0; i < HS_GLOVE_SENSORS; ++i)
+		w[n++] = h->sensors[i];
+	n = put_quat(w, put_vec3(w, n, h->prev_wrist_pos), h->prev_wrist_rot);
+	for (int i = 0; i < HS_GLOVE_SENSORS; ++i)
+		w[n++] = h->prev_sensors[i];
+	w[n++] = h->placed ? 1u : 0u;
+	w[n++] = (uint64_t)(int64_t)h->older_count;
+	for (int i = 0; i < h->older_capacity; ++i)
+		n = put_quat(w, put_vec3(w, n, h->older_pos[i]), h->older_rot[i]);
+	w[n++] = h->touch_points;
+	w[n++] = h->touch_lines;
+	w[n++] = h->embed_points;
+	w[n++] = h->embed_lines;
+	return n;
+}
+
 static void hand_hash(hs_state_io *io, hs_hand *h) {
-	hs_state_io local = {.mode = HS_STATE_HASH, .words = io->words};
-	memcpy(local.lane, io->lane, sizeof local.lane);
-	hand_io(&local, h);
-	io->words = local.words;
-	memcpy(io->lane, local.lane, sizeof local.lane);
+	uint64_t words[HAND_WORDS_MAX];
+#if defined(HS_HASH_SELFCHECK)
+	hs_state_io walked = *io;
+	hand_io(&walked, h);
+#endif
+	hs_state_hash_words(io, words, hand_words(h, words));
+#if defined(HS_HASH_SELFCHECK)
+	if (walked.words != io->words || memcmp(walked.lane, io->lane, sizeof io->lane) != 0) {
+		fprintf(stderr, "handspring: a hand's gathered words differ from its walk\n");
+		abort();
+	}
+#endif
 }
 
 // Object i's digest: its index and its walk, hashed alone. Objects enter the world's hash as the

@@ -54,6 +54,9 @@ static inline uint64_t hs_state_mix(uint64_t h, uint64_t word) {
 	return h ^ (h >> 29);
 }
 uint64_t hs_state_mix_f64(uint64_t h, double v);
+// Mixes words[0..n) into a HASH walk, as n calls of hs_state_hash_word would: the four lanes in
+// registers, each word's mix independent of the three before it.
+void hs_state_hash_words(hs_state_io *io, const uint64_t *words, size_t n);
 // The hash of a HASH walk: its four lanes and word count folded and avalanched (fmix64).
 uint64_t hs_state_hash_of(const hs_state_io *io);
 

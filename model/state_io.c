@@ -69,6 +69,25 @@ uint64_t hs_state_hash_of(const hs_state_io *io) {
 	return h ^ (h >> 33);
 }
 
+void hs_state_hash_words(hs_state_io *io, const uint64_t *words, size_t n) {
+	size_t s = io->words & 3u, i = 0; // lanes turned so that `a` takes the next word
+	uint64_t a = io->lane[s], b = io->lane[(s + 1) & 3u], c = io->lane[(s + 2) & 3u], d = io->lane[(s + 3) & 3u];
+	for (; i + 4 <= n; i += 4) {
+		a = hs_state_mix(a, words[i]);
+		b = hs_state_mix(b, words[i + 1]);
+		c = hs_state_mix(c, words[i + 2]);
+		d = hs_state_mix(d, words[i + 3]);
+	}
+	if (i < n)
+		a = hs_state_mix(a, words[i++]);
+	if (i < n)
+		b = hs_state_mix(b, words[i++]);
+	if (i < n)
+		c = hs_state_mix(c, words[i++]);
+	io->lane[s] = a, io->lane[(s + 1) & 3u] = b, io->lane[(s + 2) & 3u] = c, io->lane[(s + 3) & 3u] = d;
+	io->words += n;
+}
+
 void hs_state_u64_io(hs_state_io *io, uint64_t *v) {
 	uint64_t w = word(io, *v);
 	if (loading(io))
