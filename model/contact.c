@@ -14,6 +14,7 @@
 #include "contact.h"
 #include "hand_sweep.h"
 #include "hgrid.h"
+#include "inline.h"
 #include "push.h"
 
 #include "lanes2.h"
@@ -33,13 +34,8 @@
 // for coordinates up to HS_MAX_COORDINATE (1e6 m, where a double's step is 1.2e-10 m)
 #define HS_CULL_SLACK 1e-6
 
-// The per-line distance tests, inlined: called apart, their vectors (passed by value) went through
-// the stack on every call.
-#if defined(__GNUC__)
-#define HS_FORCE_INLINE inline __attribute__((always_inline))
-#else
-#define HS_FORCE_INLINE inline
-#endif
+// The per-line distance tests and the frame changes are inlined (HS_FORCE_INLINE): called apart,
+// their vectors (passed by value) went through the stack on every call.
 
 // An object's pose as a position and a rotation matrix: detection moves up to 140 hand points
 // into each object's frame every frame.
@@ -52,10 +48,10 @@ static frame frame_of(const hs_body *body) {
 	frame f = {body->pos, hs_mat3_from_quat(body->rot)};
 	return f;
 }
-static hs_vec3 to_body(const frame *f, hs_vec3 p) { return hs_mat3_tmul(f->rot, hs_sub(p, f->pos)); }
+static HS_FORCE_INLINE hs_vec3 to_body(const frame *f, hs_vec3 p) { return hs_mat3_tmul(f->rot, hs_sub(p, f->pos)); }
 // Both ends of a line: out[k] = to_body(f, p[k]). With SSE2 one end per lane, each doing
 // to_body's subtractions, products and sums in its order (the same bits).
-static void line_to_body(const frame *f, const hs_vec3 p[2], hs_vec3 out[2]) {
+static HS_FORCE_INLINE void line_to_body(const frame *f, const hs_vec3 p[2], hs_vec3 out[2]) {
 #if defined(__SSE2__)
 	const hs_mat3 *m = &f->rot;
 	hs_lanes2 in = hs_lanes2_load(&p[0], &p[1]);
@@ -74,18 +70,11 @@ static void line_to_body(const frame *f, const hs_vec3 p[2], hs_vec3 out[2]) {
 	out[1] = to_body(f, p[1]);
 #endif
 }
-static hs_vec3 to_world(const frame *f, hs_vec3 p) { return hs_add(f->pos, hs_mat3_mul(f->rot, p)); }
+static HS_FORCE_INLINE hs_vec3 to_world(const frame *f, hs_vec3 p) { return hs_add(f->pos, hs_mat3_mul(f->rot, p)); }
 
 // Many-faced parts (HS_FACE_TREE_MIN_FACES or more) are searched through their normal-cone tree
 // (face_tree.h: the faces near the point, with the scan's answers), out of line; the others are
 // scanned inline, as they were.
-#if defined(__GNUC__)
-#define HS_NOINLINE __attribute__((noinline))
-#define HS_INLINE inline __attribute__((always_inline))
-#else
-#define HS_NOINLINE
-#define HS_INLINE inline
-#endif
 
 static const hs_face_tree *tree_of(const hs_world *world, const hs_shape *shape) {
 	return &world->face_trees[shape - world->shapes];

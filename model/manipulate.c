@@ -6,6 +6,7 @@
 #include "collide.h"
 #include "contact.h"
 #include "grasp.h"
+#include "inline.h"
 #include "hand_sweep.h"
 #include "manipulate.h"
 #include "motion.h"
@@ -29,7 +30,7 @@ static int memo_box(const hs_world *world, int i, hs_vec3 pos, hs_quat rot) {
 // Objects i, posed at (pos, rot), and j overlap (libccd; bounding spheres first). Two single-part
 // objects (no exact spheres) whose world boxes lie apart are not handed to hs_shapes_overlap: it
 // would find them apart by the same boxes (hs_part_world_boxes_apart), after making them again.
-static bool overlap_at_pose(const hs_world *world, int i, hs_vec3 pos, hs_quat rot, int j) {
+static HS_FORCE_INLINE bool overlap_at_pose(const hs_world *world, int i, hs_vec3 pos, hs_quat rot, int j) {
 	const hs_body *b = &world->bodies[j];
 	const hs_shape *sa = &world->shapes[world->bodies[i].shape], *sb = &world->shapes[b->shape];
 	double r = sa->radius + sb->radius;
@@ -101,7 +102,7 @@ static int grasping_hand(const hs_world *world, const hs_body *body, const hs_co
 }
 
 // Adds object j to the sorted candidates of this frame's hand pass, once.
-static void add_candidate(hs_world *world, int j) {
+static HS_FORCE_INLINE void add_candidate(hs_world *world, int j) {
 	int k = world->candidate_count;
 	while (k > 0 && world->candidates[k - 1] > j)
 		--k;

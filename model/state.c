@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "broadphase.h"
+#include "inline.h"
 #include "state.h"
 #include "world_internal.h"
 
@@ -110,16 +111,11 @@ static int header_of(const hs_world *w, uint64_t out[HS_STATE_HEADER_WORDS], con
 	return HS_STATE_HEADER_WORDS;
 }
 
-// The walks are inlined into each use: where the mode is a constant (the hash, every frame), the
+// The walks below are inlined into each use (HS_FORCE_INLINE): where the mode is a constant (the hash, every frame), the
 // mode tests and the calls for other modes fold away, and the word count stays in a register.
-#if defined(__GNUC__)
-#define HS_STATE_INLINE inline __attribute__((always_inline))
-#else
-#define HS_STATE_INLINE inline
-#endif
 
 // One object: 39 words. The model fields (shape, mass) are in the definition checksum instead.
-static HS_STATE_INLINE void body_io(hs_state_io *io, const hs_world *w, hs_body *b) {
+static HS_FORCE_INLINE void body_io(hs_state_io *io, const hs_world *w, hs_body *b) {
 	hs_state_vec3(io, &b->pos);
 	hs_state_vec3(io, &b->prev);
 	hs_state_rotation(io, &b->rot);
@@ -146,7 +142,7 @@ static HS_STATE_INLINE void body_io(hs_state_io *io, const hs_world *w, hs_body 
 // come from (the points and lines are rebuilt from them after a load), the wrist poses before
 // those (a release's velocity), its two touch masks and its two embedded masks. Its definition is
 // in the checksum; older_capacity follows from the world's (dt, release_window_s).
-static HS_STATE_INLINE void hand_io(hs_state_io *io, hs_hand *h) {
+static HS_FORCE_INLINE void hand_io(hs_state_io *io, hs_hand *h) {
 	hs_state_vec3(io, &h->wrist_pos);
 	hs_state_rotation(io, &h->wrist_rot);
 	for (int i = 0; i < HS_GLOVE_SENSORS; ++i)
@@ -278,7 +274,7 @@ static uint64_t objects_digest(hs_world *w) {
 
 // The whole state after the header: the single list of what a step reads from the last one. The
 // hash takes the objects as the sum of their digests (above); the other modes walk them in order.
-static HS_STATE_INLINE void world_io(hs_state_io *io, hs_world *w) {
+static HS_FORCE_INLINE void world_io(hs_state_io *io, hs_world *w) {
 	io->objects = w->object_count;
 	hs_state_long_range(io, &w->frame, 0, LONG_MAX);
 	hs_state_long_range(io, &w->counters.numeric_faults, 0, LONG_MAX);
