@@ -11,6 +11,7 @@
 //    five fingers close again by grasp_open_mm: no 2 <-> 3 flicker, no drag while opening.
 #include "contact.h"
 #include "grasp.h"
+#include "inline.h"
 
 hs_vec3 hs_grasp_held_pos(const hs_body *body, const hs_hand *hand) {
 	return hs_add(hand->wrist_pos, hs_quat_rotate(hand->wrist_rot, body->grip_pos));
@@ -29,7 +30,7 @@ static int finger_of(int part) { return part < HS_HAND_POINTS ? part / 4 : (part
 // tip from its finger's base (check point 4f) into *reach. A grasp posture opens by the spread
 // (the thumb moves away from the fingers; its MCP even straightens as it closes), a hand laid flat
 // by the reach (curled fingers extend). No rigid motion of the hand changes either.
-static void hand_opening(const hs_hand *hand, unsigned fingers, double *spread, double *reach) {
+static HS_FORCE_INLINE void hand_opening(const hs_hand *hand, unsigned fingers, double *spread, double *reach) {
 	hs_vec3 tips[5], c = hs_v3(0, 0, 0);
 	int m = 0;
 	*spread = *reach = 0.0;

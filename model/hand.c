@@ -26,6 +26,7 @@
 #endif
 
 #include "hand_internal.h"
+#include "inline.h"
 
 #include "lanes2.h"
 
@@ -191,7 +192,7 @@ static hs_half_turn turn_of(const reading *r, int row, int sensor, double angle)
 // Points and frames of one chain from its base frame `q` and its three flexions; the first
 // flexion (thumb: none, the metacarpal is rigid in its base frame) is in flex[0], and turn[s] is
 // its half turn (read only where the flexion is not 0).
-static void chain(const hs_hand_def *def, int f, hs_vec3 base, hs_quat q, const double flex[3],
+static HS_FORCE_INLINE void chain(const hs_hand_def *def, int f, hs_vec3 base, hs_quat q, const double flex[3],
                   const hs_half_turn turn[3], hand_pose *out) {
 	hs_vec3 p = base;
 	out->points[f * 4] = p;
@@ -473,7 +474,7 @@ void hs_hand_local_shape(const hs_hand_def *def, const uint8_t sensors[HS_GLOVE_
 // out[i] = w + m v[i] for n vectors: hs_add(w, hs_mat3_mul(m, v[i])). With SSE2, two vectors at a
 // time, one in each lane: each lane does that expression's products and sums in its order, so the
 // bits are the same (no fused multiply-add: -ffp-contract=off).
-static void place_vectors(hs_mat3 m, hs_vec3 w, const hs_vec3 *v, hs_vec3 *out, int n) {
+static HS_FORCE_INLINE void place_vectors(hs_mat3 m, hs_vec3 w, const hs_vec3 *v, hs_vec3 *out, int n) {
 	int i = 0;
 #if defined(__SSE2__)
 	const __m128d r0x = _mm_set1_pd(m.r0.x), r0y = _mm_set1_pd(m.r0.y), r0z = _mm_set1_pd(m.r0.z);

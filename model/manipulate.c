@@ -14,7 +14,7 @@
 #include "support.h"
 
 // Object i's world box at (pos, rot), from its memo when it was made at that pose's bits.
-static int memo_box(const hs_world *world, int i, hs_vec3 pos, hs_quat rot) {
+static HS_FORCE_INLINE int memo_box(const hs_world *world, int i, hs_vec3 pos, hs_quat rot) {
 	hs_box_memo *m = &world->box_memo[i];
 	for (int k = 0; k < m->filled; ++k)
 		if (memcmp(&m->pos[k], &pos, sizeof pos) == 0 && memcmp(&m->rot[k], &rot, sizeof rot) == 0)
@@ -46,7 +46,7 @@ static HS_FORCE_INLINE bool overlap_at_pose(const hs_world *world, int i, hs_vec
 	return hs_shapes_overlap(sa, pos, rot, sb, b->pos, b->rot);
 }
 
-static bool bodies_overlap(const hs_world *world, int i, int j) {
+static HS_FORCE_INLINE bool bodies_overlap(const hs_world *world, int i, int j) {
 	return overlap_at_pose(world, i, world->bodies[i].pos, world->bodies[i].rot, j);
 }
 
