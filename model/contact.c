@@ -1119,8 +1119,8 @@ static int drop_trailing(hs_world *world, int first) {
 			trails = m != k && !l->edge && l->hand.index1 == c->hand.index1 && finger_of(l->part) == finger_of(c->part) &&
 			         l->feature == c->feature && touched_before(world, l) && push_depth(l) > push_depth(c);
 		}
-		if (!trails)
-			world->contacts[kept++] = *c;
+		if (!trails && kept++ != k) // (kept in place: no copy)
+			world->contacts[kept - 1] = *c;
 	}
 	world->contact_count = kept;
 	return kept - first;
@@ -1134,16 +1134,18 @@ static int drop_trailing(hs_world *world, int first) {
 static int keep_hovering(hs_world *world, int first, int n) {
 	int kept = first;
 	for (int k = first; k < first + n; ++k) {
-		hs_contact c = world->contacts[k];
-		bool keep = !(c.t < 0.0);
+		const hs_contact *c = &world->contacts[k];
+		bool keep = !(c->t < 0.0);
 		for (int m = first; m < first + n && !keep; ++m) {
 			const hs_contact *l = &world->contacts[m];
-			keep = !(l->t < 0.0) && l->hand.index1 == c.hand.index1 && push_depth(l) > 0.0;
+			keep = !(l->t < 0.0) && l->hand.index1 == c->hand.index1 && push_depth(l) > 0.0;
 		}
-		if (keep) {
-			c.t = c.t < 0.0 ? 0.0 : c.t;
-			world->contacts[kept++] = c;
-		}
+		if (!keep)
+			continue;
+		hs_contact *to = &world->contacts[kept++]; // a copy only when it moves (the one left behind
+		if (to != c)                               // keeps its t for the later contacts' tests)
+			*to = *c;
+		to->t = to->t < 0.0 ? 0.0 : to->t;
 	}
 	world->contact_count = kept;
 	return kept - first;
