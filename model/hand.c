@@ -311,25 +311,32 @@ static void turn_pose(hs_quat q, const hand_pose *in, hand_pose *pose, unsigned 
 	}
 }
 
-// The sensors each finger's chain reads (thumb, index .. little; repeated to fill the row).
-static const int FINGER_SENSORS[5][5] = {
-    {HS_SENSOR_THUMB_ROLL, HS_SENSOR_THUMB_MCP, HS_SENSOR_THUMB_IP, HS_SENSOR_THUMB_ABDUCTION, HS_SENSOR_THUMB_ABDUCTION},
-    {HS_SENSOR_INDEX_MCP, HS_SENSOR_INDEX_PIP, HS_SENSOR_INDEX_MIDDLE_ABDUCTION, HS_SENSOR_INDEX_PIP, HS_SENSOR_INDEX_PIP},
-    {HS_SENSOR_MIDDLE_MCP, HS_SENSOR_MIDDLE_PIP, HS_SENSOR_MIDDLE_PIP, HS_SENSOR_MIDDLE_PIP, HS_SENSOR_MIDDLE_PIP},
-    {HS_SENSOR_RING_MCP, HS_SENSOR_RING_PIP, HS_SENSOR_MIDDLE_RING_ABDUCTION, HS_SENSOR_PALM_ARCH, HS_SENSOR_PALM_ARCH},
-    {HS_SENSOR_LITTLE_MCP, HS_SENSOR_LITTLE_PIP, HS_SENSOR_MIDDLE_RING_ABDUCTION, HS_SENSOR_RING_LITTLE_ABDUCTION,
-     HS_SENSOR_PALM_ARCH}};
+// The sensors each finger's chain reads (bit s: sensor s), thumb, index .. little.
+#define SENSOR(s) (1u << (s))
+static const uint32_t FINGER_SENSORS[5] = {
+    SENSOR(HS_SENSOR_THUMB_ROLL) | SENSOR(HS_SENSOR_THUMB_MCP) | SENSOR(HS_SENSOR_THUMB_IP) |
+        SENSOR(HS_SENSOR_THUMB_ABDUCTION),
+    SENSOR(HS_SENSOR_INDEX_MCP) | SENSOR(HS_SENSOR_INDEX_PIP) | SENSOR(HS_SENSOR_INDEX_MIDDLE_ABDUCTION),
+    SENSOR(HS_SENSOR_MIDDLE_MCP) | SENSOR(HS_SENSOR_MIDDLE_PIP),
+    SENSOR(HS_SENSOR_RING_MCP) | SENSOR(HS_SENSOR_RING_PIP) | SENSOR(HS_SENSOR_MIDDLE_RING_ABDUCTION) |
+        SENSOR(HS_SENSOR_PALM_ARCH),
+    SENSOR(HS_SENSOR_LITTLE_MCP) | SENSOR(HS_SENSOR_LITTLE_PIP) | SENSOR(HS_SENSOR_MIDDLE_RING_ABDUCTION) |
+        SENSOR(HS_SENSOR_RING_LITTLE_ABDUCTION) | SENSOR(HS_SENSOR_PALM_ARCH)};
+#define WRIST_SENSORS (SENSOR(HS_SENSOR_WRIST_PITCH) | SENSOR(HS_SENSOR_WRIST_YAW))
 
-// True when finger f's chain in `cache` was computed from these sensor values; else records them.
-static bool finger_kept(hs_hand *cache, int f, const uint8_t *v) {
-	uint8_t key[5];
-	for (int k = 0; k < 5; ++k)
-		key[k] = v[FINGER_SENSORS[f][k]];
-	if (((unsigned)cache->palm_valid >> f & 1u) && memcmp(key, cache->palm_key[f], sizeof key) == 0)
-		return true;
-	memcpy(cache->palm_key[f], key, sizeof key);
-	cache->palm_valid = (uint8_t)(cache->palm_valid | 1u << f);
-	return false;
+// The sensors (bit s) whose values differ between a and b.
+static uint32_t sensors_changed(const uint8_t a[HS_GLOVE_SENSORS], const uint8_t b[HS_GLOVE_SENSORS]) {
+	uint32_t changed = 0;
+	int i = 0;
+#if defined(__SSE2__)
+	__m128i eq = _mm_cmpeq_epi8(_mm_loadu_si128((const __m128i *)(const void *)a),
+	                            _mm_loadu_si128((const __m128i *)(const void *)b));
+	changed = ~(uint32_t)_mm_movemask_epi8(eq) & 0xFFFFu;
+	i = 16;
+#endif
+	for (; i < HS_GLOVE_SENSORS; ++i)
+		changed |= (uint32_t)(a[i] != b[i]) << i;
+	return changed;
 }
 
 // the whole hand in the wrist frame of a right hand; `cache` (NULL: none) keeps each finger's
@@ -339,18 +346,18 @@ static bool finger_kept(hs_hand *cache, int f, const uint8_t *v) {
 static unsigned hand_pose_wrist(const reading *r, hand_pose *out, hs_hand *cache) {
 	const hs_hand_joints *j = &r->j;
 	hand_pose *palm_pose = cache ? &cache->palm_pose : out;
-	unsigned same = 0;
+	unsigned same = 0, kept = 0; // kept: fingers whose chains the cache holds for these sensors
 	if (cache) {
-		bool wrist = cache->palm_valid && cache->palm_wrist[0] == r->v[HS_SENSOR_WRIST_PITCH] &&
-		             cache->palm_wrist[1] == r->v[HS_SENSOR_WRIST_YAW];
-		cache->palm_wrist[0] = r->v[HS_SENSOR_WRIST_PITCH];
-		cache->palm_wrist[1] = r->v[HS_SENSOR_WRIST_YAW];
-		same = wrist ? 31u : 0u;
+		uint32_t changed = cache->palm_ready ? sensors_changed(cache->palm_sensors, r->v) : ~0u;
+		for (int f = 0; f < 5; f++)
+			kept |= (unsigned)!(changed & FINGER_SENSORS[f]) << f;
+		same = changed & WRIST_SENSORS ? 0u : kept;
+		memcpy(cache->palm_sensors, r->v, sizeof cache->palm_sensors);
+		cache->palm_ready = true;
 	}
 	for (int f = 0; f < 5; f++) {
-		if (cache && finger_kept(cache, f, r->v))
+		if (kept >> f & 1u)
 			continue;
-		same &= ~(1u << f);
 		if (f == 0)
 			thumb_pose(r, palm_pose);
 		else
@@ -655,7 +662,7 @@ void hs_hand_refresh(hs_hand *hand) {
 		memset(hand->prev_lines, 0, sizeof hand->prev_lines);
 		memset(hand->local_points, 0, sizeof hand->local_points);
 		memset(hand->local_lines, 0, sizeof hand->local_lines);
-		hand->palm_valid = 0; // its shape is no longer the last one made through the cache
+		hand->palm_ready = false; // its shape is no longer the last one made through the cache
 		hand->lines_ready = hand->prev_lines_ready = hand->local_ready = HS_HAND_ALL_SEGMENTS;
 		hand->local_center = hs_v3(0, 0, 0);
 		hand->local_radius = 0.0;

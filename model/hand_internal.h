@@ -121,13 +121,13 @@ typedef struct hs_hand {
 	// model cache, built with the hand (hs_glove_table_build): a new reading's kinematics looks its
 	// sines up, the same values the sines of its angles give
 	hs_glove_table glove;
-	// cache: each finger's chain in the palm frame (before the wrist sensors' turn) and the sensor
-	// values it was computed from (palm_key, bit f of palm_valid): a glove's deadband keeps about
-	// half the fingers' readings from one frame to the next, and their chains are not computed again
+	// cache: each finger's chain in the palm frame (before the wrist sensors' turn), made from the
+	// sensor values of the last shape made through it (palm_sensors, once palm_ready): a glove's
+	// deadband keeps about half the fingers' readings from one frame to the next, and their chains
+	// are not computed again
 	hs_hand_pose palm_pose;
-	uint8_t palm_key[5][5];
-	uint8_t palm_valid;
-	uint8_t palm_wrist[2]; // the wrist sensors of the last shape made through this cache
+	uint8_t palm_sensors[HS_GLOVE_SENSORS];
+	bool palm_ready;
 } hs_hand;
 
 // The hand's shape in its wrist frame (depends on the sensors only) and its placement.
