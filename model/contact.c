@@ -964,8 +964,8 @@ static bool held_lines_clear(hs_world *world, int h, int s, int a, const frame *
 	if (!hs_part_box_takes(e0) || !hs_part_box_takes(e1))
 		return false;
 	double rf = hand->def.finger_radius, flip = hand->def.left ? -1.0 : 1.0;
-	hs_vec3 y = hs_quat_rotate(hand->local_segment[s], hs_v3(0.0, rf, 0.0));
-	hs_vec3 z = hs_quat_rotate(hand->local_segment[s], hs_v3(0.0, 0.0, rf));
+	hs_vec3 y = hs_quat_rotate(hand->local.segment[s], hs_v3(0.0, rf, 0.0));
+	hs_vec3 z = hs_quat_rotate(hand->local.segment[s], hs_v3(0.0, 0.0, rf));
 	y = hs_mat3_tmul(body->rot, hs_mat3_mul(hand->place_m, hs_v3(y.x, flip * y.y, y.z)));
 	z = hs_mat3_tmul(body->rot, hs_mat3_mul(hand->place_m, hs_v3(z.x, flip * z.y, z.z)));
 	const hs_vec3 off[4] = {y, hs_scale(y, -1.0), z, hs_scale(z, -1.0)};

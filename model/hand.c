@@ -342,7 +342,7 @@ static uint32_t sensors_changed(const uint8_t a[HS_GLOVE_SENSORS], const uint8_t
 // the whole hand in the wrist frame of a right hand; `cache` (NULL: none) keeps each finger's
 // chain for the sensors it reads (the same function of the same values: the same bits). Returns
 // the fingers (bit f) whose points and frames are those of the last shape made through the cache:
-// chain kept, wrist sensors unchanged; `out` may lack theirs (not turned again).
+// chain kept, wrist sensors unchanged; their points and frames in `out` are left as they are.
 static unsigned hand_pose_wrist(const reading *r, hand_pose *out, hs_hand *cache) {
 	const hs_hand_joints *j = &r->j;
 	hand_pose *palm_pose = cache ? &cache->palm_pose : out;
@@ -364,8 +364,11 @@ static unsigned hand_pose_wrist(const reading *r, hand_pose *out, hs_hand *cache
 			finger_pose(r, f - 1, palm_pose);
 	}
 	if (j->wrist_pitch == 0.0 && j->wrist_yaw == 0.0) { // palm frame = wrist frame
-		if (palm_pose != out)
-			*out = *palm_pose;
+		for (unsigned todo = palm_pose != out ? 31u & ~same : 0u; todo; todo &= todo - 1u) {
+			int f = hs_lowest_bit(todo);
+			memcpy(&out->points[4 * f], &palm_pose->points[4 * f], 4 * sizeof out->points[0]);
+			memcpy(&out->segment[3 * f], &palm_pose->segment[3 * f], 3 * sizeof out->segment[0]);
+		}
 		return same;
 	}
 	hs_quat palm = hs_quat_mul(turn_about(Z_AXIS, turn_of(r, HS_GLOVE_WRIST, HS_SENSOR_WRIST_YAW, j->wrist_yaw)),
@@ -435,19 +438,16 @@ void hs_glove_table_build(const hs_hand_def *def, hs_glove_table *table) {
 }
 
 // The shape in the wrist frame without its lines: the check points (mirrored for a left hand)
-// and each segment's frame. With a cache (the hand), `points` and `segment` are its local_points
-// and local_segment, which hold the last shape made through it: fingers that stayed the same
-// (returned) are not written again.
+// and each segment's frame. With a cache (the hand), `out` is its local shape, which holds the
+// last shape made through it: fingers that stayed the same (returned) are not written again.
 static unsigned local_pose(const hs_hand_def *def, const hs_glove_table *table, const uint8_t sensors[HS_GLOVE_SENSORS],
-                           hs_vec3 points[HS_HAND_POINTS], hs_quat segment[15], hs_hand *cache) {
+                           hand_pose *out, hs_hand *cache) {
 	reading r = {def, hs_hand_joints_from_sensors(def, sensors), table, sensors};
-	hand_pose pose;
-	unsigned same = hand_pose_wrist(&r, &pose, cache);
-	for (unsigned todo = 31u & ~same; todo; todo &= todo - 1u) { // `same`: points and segment hold them
+	unsigned same = hand_pose_wrist(&r, out, cache);
+	for (unsigned todo = def->left ? 31u & ~same : 0u; todo; todo &= todo - 1u) {
 		int f = hs_lowest_bit(todo);
 		for (int i = 4 * f; i < 4 * f + 4; i++)
-			points[i] = mirror_if(def->left, pose.points[i]);
-		memcpy(&segment[3 * f], &pose.segment[3 * f], 3 * sizeof pose.segment[0]);
+			out->points[i] = mirror_if(true, out->points[i]);
 	}
 	return same;
 }
@@ -467,10 +467,11 @@ static void local_segment_lines(const hs_hand_def *def, const hs_vec3 points[HS_
 void hs_hand_local_shape_with(const hs_hand_def *def, const hs_glove_table *table,
                               const uint8_t sensors[HS_GLOVE_SENSORS], hs_vec3 points[HS_HAND_POINTS],
                               hs_vec3 lines[HS_HAND_LINES][2]) {
-	hs_quat segment[15];
-	local_pose(def, table, sensors, points, segment, NULL);
+	hand_pose pose;
+	local_pose(def, table, sensors, &pose, NULL);
+	memcpy(points, pose.points, sizeof pose.points);
 	for (int s = 0; s < 15; s++)
-		local_segment_lines(def, points, segment, s, &lines[s * 4]);
+		local_segment_lines(def, pose.points, pose.segment, s, &lines[s * 4]);
 }
 
 void hs_hand_local_shape(const hs_hand_def *def, const uint8_t sensors[HS_GLOVE_SENSORS],
@@ -529,7 +530,7 @@ void hs_hand_kinematics(const hs_hand_def *def, hs_vec3 wrist_position, hs_quat 
 static void ready_local(hs_hand *hand, int s) {
 	if ((unsigned)hand->local_ready >> s & 1u)
 		return;
-	local_segment_lines(&hand->def, hand->local_points, hand->local_segment, s, &hand->local_lines[4 * s]);
+	local_segment_lines(&hand->def, hand->local.points, hand->local.segment, s, &hand->local_lines[4 * s]);
 	hand->local_ready = (uint16_t)(hand->local_ready | 1u << s);
 }
 
@@ -538,7 +539,7 @@ static void ready_local(hs_hand *hand, int s) {
 // finger_radius from a check point; the relative slack is far above rounding). The lines are not
 // computed for it: most frames the contact tests read a third of them.
 static void local_bounds(hs_hand *hand) {
-	const hs_vec3 *points = hand->local_points;
+	const hs_vec3 *points = hand->local.points;
 	hs_vec3 c = hs_v3(0, 0, 0);
 	for (int i = 0; i < HS_HAND_POINTS; ++i)
 		c = hs_add(c, points[i]);
@@ -552,10 +553,9 @@ static void local_bounds(hs_hand *hand) {
 // Sanitizer builds: the shape made through the cache (some fingers kept from the last one) has the
 // bits of the shape made afresh.
 static void check_shape(const hs_hand *hand) {
-	hs_vec3 points[HS_HAND_POINTS];
-	hs_quat segment[15];
-	local_pose(&hand->def, &hand->glove, hand->sensors, points, segment, NULL);
-	if (memcmp(points, hand->local_points, sizeof points) != 0 || memcmp(segment, hand->local_segment, sizeof segment) != 0) {
+	hand_pose fresh;
+	local_pose(&hand->def, &hand->glove, hand->sensors, &fresh, NULL);
+	if (memcmp(&fresh, &hand->local, sizeof fresh) != 0) {
 		fprintf(stderr, "selfcheck: a hand's shape through its cache differs from the shape made afresh\n");
 		abort();
 	}
@@ -565,7 +565,7 @@ static inline void check_shape(const hs_hand *hand) { (void)hand; }
 #endif
 
 void hs_hand_update_shape(hs_hand *hand) {
-	unsigned same = local_pose(&hand->def, &hand->glove, hand->sensors, hand->local_points, hand->local_segment, hand);
+	unsigned same = local_pose(&hand->def, &hand->glove, hand->sensors, &hand->local, hand);
 	check_shape(hand);
 	hand->local_ready = (uint16_t)(hand->local_ready & hs_finger_parts(same, 3)); // a finger's lines as they were
 	local_bounds(hand);
@@ -573,7 +573,7 @@ void hs_hand_update_shape(hs_hand *hand) {
 
 void hs_hand_place_points(hs_hand *hand) {
 	hand->place_m = hs_mat3_from_quat(hand->wrist_rot); // as hs_hand_place
-	place_vectors(hand->place_m, hand->wrist_pos, hand->local_points, hand->points, HS_HAND_POINTS);
+	place_vectors(hand->place_m, hand->wrist_pos, hand->local.points, hand->points, HS_HAND_POINTS);
 	hand->lines_ready = 0;
 	hand->finger_spheres_ready = false;
 }
@@ -620,8 +620,8 @@ void hs_hand_keep_previous(hs_hand *hand) {
 			memcpy(hand->prev_lines[4 * s], hand->lines[4 * s], sizeof hand->lines[0] * 4);
 	hand->prev_lines_ready = hand->lines_ready; // the others from the shape they would be placed from
 	hand->prev_place_m = hand->place_m;
-	memcpy(hand->prev_local_points, hand->local_points, sizeof hand->local_points);
-	memcpy(hand->prev_local_segment, hand->local_segment, sizeof hand->local_segment);
+	memcpy(hand->prev_local_points, hand->local.points, sizeof hand->local.points);
+	memcpy(hand->prev_local_segment, hand->local.segment, sizeof hand->local.segment);
 	hand->prev_wrist_pos = hand->wrist_pos;
 	hand->prev_wrist_rot = hand->wrist_rot;
 	memcpy(hand->prev_sensors, hand->sensors, sizeof hand->sensors);
@@ -660,7 +660,7 @@ void hs_hand_refresh(hs_hand *hand) {
 		memset(hand->prev_points, 0, sizeof hand->prev_points);
 		memset(hand->lines, 0, sizeof hand->lines);
 		memset(hand->prev_lines, 0, sizeof hand->prev_lines);
-		memset(hand->local_points, 0, sizeof hand->local_points);
+		memset(hand->local.points, 0, sizeof hand->local.points);
 		memset(hand->local_lines, 0, sizeof hand->local_lines);
 		hand->palm_ready = false; // its shape is no longer the last one made through the cache
 		hand->lines_ready = hand->prev_lines_ready = hand->local_ready = HS_HAND_ALL_SEGMENTS;
@@ -673,13 +673,13 @@ void hs_hand_refresh(hs_hand *hand) {
 	}
 	// the previous points and bounds: the same calls that placed them, on the previous reading;
 	// its lines from the shape kept for them
-	local_pose(&hand->def, &hand->glove, hand->prev_sensors, hand->local_points, hand->local_segment, hand);
+	local_pose(&hand->def, &hand->glove, hand->prev_sensors, &hand->local, hand);
 	hand->local_ready = 0;
 	local_bounds(hand);
 	hand->prev_place_m = hs_mat3_from_quat(hand->prev_wrist_rot);
-	place_vectors(hand->prev_place_m, hand->prev_wrist_pos, hand->local_points, hand->prev_points, HS_HAND_POINTS);
-	memcpy(hand->prev_local_points, hand->local_points, sizeof hand->local_points);
-	memcpy(hand->prev_local_segment, hand->local_segment, sizeof hand->local_segment);
+	place_vectors(hand->prev_place_m, hand->prev_wrist_pos, hand->local.points, hand->prev_points, HS_HAND_POINTS);
+	memcpy(hand->prev_local_points, hand->local.points, sizeof hand->local.points);
+	memcpy(hand->prev_local_segment, hand->local.segment, sizeof hand->local.segment);
 	hand->prev_lines_ready = 0;
 	hand->center = hs_add(hand->prev_wrist_pos, hs_quat_rotate(hand->prev_wrist_rot, hand->local_center));
 	hand->radius = hand->local_radius + 1e-6;

@@ -94,8 +94,8 @@ typedef struct hs_hand {
 	double radius;
 	// cache: the shape in the wrist frame for `sensors`, recomputed only when the glove reading
 	// changes: the check points, each segment's frame, and the lines of the segments in local_ready
-	hs_vec3 local_points[HS_HAND_POINTS], local_lines[HS_HAND_LINES][2];
-	hs_quat local_segment[15];
+	hs_hand_pose local; // check points and segment frames
+	hs_vec3 local_lines[HS_HAND_LINES][2];
 	uint16_t local_ready;
 	hs_vec3 local_center; // its bounding sphere in the wrist frame
 	double local_radius;

@@ -367,10 +367,10 @@ static void test_bounds_reach_the_farthest_end(void **state) {
 		// every line (the bounds compute none of them)
 		hs_vec3 points[HS_HAND_POINTS], lines[HS_HAND_LINES][2];
 		hs_hand_local_shape_with(&hand->def, &hand->glove, hand->sensors, points, lines);
-		assert_memory_equal(points, hand->local_points, sizeof points);
+		assert_memory_equal(points, hand->local.points, sizeof points);
 		double most = 0.0;
 		for (int i = 0; i < HS_HAND_POINTS; ++i) {
-			double d = hs_length_sq(hs_sub(hand->local_points[i], hand->local_center));
+			double d = hs_length_sq(hs_sub(hand->local.points[i], hand->local_center));
 			most = d > most ? d : most;
 		}
 		for (int j = 0; j < HS_HAND_LINES; ++j)

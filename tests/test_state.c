@@ -209,7 +209,7 @@ static void test_load_unset_hand_then_set(void **state) {
 	hs_hand_ready_all(&fresh.world->hands[0]);
 	assert_memory_equal(a->points, b->points, sizeof a->points);
 	assert_memory_equal(a->lines, b->lines, sizeof a->lines);
-	assert_memory_equal(a->local_points, b->local_points, sizeof a->local_points);
+	assert_memory_equal(a->local.points, b->local.points, sizeof a->local.points);
 	assert_true(a->center.x == b->center.x && a->radius == b->radius);
 	assert_true(hs_world_hash(r.world) == hs_world_hash(fresh.world));
 	free(unset);
