@@ -968,12 +968,15 @@ static bool held_lines_clear(hs_world *world, int h, int s, int a, const frame *
 	hs_vec3 z = hs_quat_rotate(hand->local.segment[s], hs_v3(0.0, 0.0, rf));
 	y = hs_mat3_tmul(body->rot, hs_mat3_mul(hand->place_m, hs_v3(y.x, flip * y.y, y.z)));
 	z = hs_mat3_tmul(body->rot, hs_mat3_mul(hand->place_m, hs_v3(z.x, flip * z.y, z.z)));
+	// the offsets are finite and a few finger radii long: added to ends whose coordinates and sum are
+	// finite, they cannot make one overflow (that takes an addend near 2^970), so the line ends take
+	// the box's path whenever e0 and e1 do
+	if (!hs_part_box_takes(y) || !hs_part_box_takes(z))
+		return false;
 	const hs_vec3 off[4] = {y, hs_scale(y, -1.0), z, hs_scale(z, -1.0)};
 	double margin = world->def.grasp_release_mm * 1e-3 - HS_CULL_SLACK, r = part->radius + grow + HS_CULL_SLACK;
 	for (int k = 0; k < 4; ++k) {
 		hs_vec3 p0 = hs_add(e0, off[k]), p1 = hs_add(e1, off[k]);
-		if (!hs_part_box_takes(p0) || !hs_part_box_takes(p1))
-			return false;
 		if (((touching >> a & 1u) && hs_part_box_inside(part, p0, margin)) ||
 		    ((touching >> (a + 1) & 1u) && hs_part_box_inside(part, p1, margin)) ||
 		    hs_part_box_apart(part, p0, p1, grow, 2.0 * HS_CULL_SLACK) || segment_distance_sq(part->center, p0, p1) > r * r)
