@@ -111,8 +111,9 @@ static int header_of(const hs_world *w, uint64_t out[HS_STATE_HEADER_WORDS], con
 	return HS_STATE_HEADER_WORDS;
 }
 
-// The walks below are inlined into each use (HS_FORCE_INLINE): where the mode is a constant (the hash, every frame), the
-// mode tests and the calls for other modes fold away, and the word count stays in a register.
+// The walks below are inlined into each use (HS_FORCE_INLINE): where the mode is a constant (the
+// hash, every frame), the mode tests and the calls for other modes fold away, and the word count
+// stays in a register.
 
 // One object: 39 words. The model fields (shape, mass) are in the definition checksum instead.
 static HS_FORCE_INLINE void body_io(hs_state_io *io, const hs_world *w, hs_body *b) {
@@ -177,7 +178,8 @@ static size_t put_vec3(uint64_t *w, size_t n, hs_vec3 v) {
 	return n + 3;
 }
 static size_t put_quat(uint64_t *w, size_t n, hs_quat q) { // w, x, y, z as hs_state_quat
-	w[n] = hs_state_bits(q.w), w[n + 1] = hs_state_bits(q.x), w[n + 2] = hs_state_bits(q.y), w[n + 3] = hs_state_bits(q.z);
+	w[n] = hs_state_bits(q.w), w[n + 1] = hs_state_bits(q.x);
+	w[n + 2] = hs_state_bits(q.y), w[n + 3] = hs_state_bits(q.z);
 	return n + 4;
 }
 static size_t hand_words(const hs_hand *h, uint64_t *w) {
