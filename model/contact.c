@@ -949,25 +949,49 @@ static inline void check_held_clear(hs_world *world, int h, int s, int a, const 
 }
 #endif
 
+// The turn from a hand's wrist frame (mirrored for a left hand) into a held object's body frame,
+// scaled by finger_radius: body rot^T · place_m · diag(1, ±1, 1) · finger_radius, as its three
+// columns; made once per detection, at the first segment held_lines_clear looks at.
+typedef struct held_turn {
+	bool ready;
+	hs_vec3 c[3];
+} held_turn;
+
+static HS_NOINLINE void held_turn_make(held_turn *t, const frame *body, const hs_hand *hand) {
+	hs_mat3 p = hand->place_m;
+	double rf = hand->def.finger_radius, ry = hand->def.left ? -rf : rf;
+	t->c[0] = hs_mat3_tmul(body->rot, hs_v3(rf * p.r0.x, rf * p.r1.x, rf * p.r2.x));
+	t->c[1] = hs_mat3_tmul(body->rot, hs_v3(ry * p.r0.y, ry * p.r1.y, ry * p.r2.y));
+	t->c[2] = hs_mat3_tmul(body->rot, hs_v3(rf * p.r0.z, rf * p.r1.z, rf * p.r2.z));
+	t->ready = true;
+}
+
+static HS_FORCE_INLINE hs_vec3 held_turn_apply(const held_turn *t, hs_vec3 v) {
+	return hs_add(hs_add(hs_scale(t->c[0], v.x), hs_scale(t->c[1], v.y)), hs_scale(t->c[2], v.z));
+}
+
 // A held object's finger segment whose 4 check lines would all find nothing, decided from its
 // check points and frame before the lines are placed. A line end is its check point plus the
 // segment's y or z axis times finger_radius (hand.c, segment_lines; mirrored for a left hand):
-// taken so into the body frame it differs from the placed and moved end by rounding alone, far
-// below HS_CULL_SLACK. Each line must, by that slack, lie beside a touching check point inside the
+// the axes read off the segment's quaternion and taken into the body frame by one turn
+// (held_turn), it differs from the placed and moved end by rounding alone, far below
+// HS_CULL_SLACK. Each line must, by that slack, lie beside a touching check point inside the
 // part grown by the margin (end_touches), have both ends beyond one face of the box (clip_part's
 // miss), or lie outside the part's bounding sphere. Box parts only (hs_part_is_box); the lines are
 // not embedded.
 static bool held_lines_clear(hs_world *world, int h, int s, int a, const frame *body, const hs_shape *shape,
-                             const hs_part *part, uint32_t touching, double grow) {
+                             const hs_part *part, uint32_t touching, double grow, held_turn *turn) {
 	const hs_hand *hand = &world->hands[h];
 	hs_vec3 e0 = to_body(body, hand->points[a]), e1 = to_body(body, hand->points[a + 1]);
 	if (!hs_part_box_takes(e0) || !hs_part_box_takes(e1))
 		return false;
-	double rf = hand->def.finger_radius, flip = hand->def.left ? -1.0 : 1.0;
-	hs_vec3 y = hs_quat_rotate(hand->local.segment[s], hs_v3(0.0, rf, 0.0));
-	hs_vec3 z = hs_quat_rotate(hand->local.segment[s], hs_v3(0.0, 0.0, rf));
-	y = hs_mat3_tmul(body->rot, hs_mat3_mul(hand->place_m, hs_v3(y.x, flip * y.y, y.z)));
-	z = hs_mat3_tmul(body->rot, hs_mat3_mul(hand->place_m, hs_v3(z.x, flip * z.y, z.z)));
+	hs_quat q = hand->local.segment[s]; // its y and z axes: the rotation's second and third columns
+	hs_vec3 y = hs_v3(2.0 * (q.x * q.y - q.w * q.z), 1.0 - 2.0 * (q.x * q.x + q.z * q.z), 2.0 * (q.y * q.z + q.w * q.x));
+	hs_vec3 z = hs_v3(2.0 * (q.x * q.z + q.w * q.y), 2.0 * (q.y * q.z - q.w * q.x), 1.0 - 2.0 * (q.x * q.x + q.y * q.y));
+	if (!turn->ready)
+		held_turn_make(turn, body, hand);
+	y = held_turn_apply(turn, y);
+	z = held_turn_apply(turn, z);
 	// the offsets are finite and a few finger radii long: added to ends whose coordinates and sum are
 	// finite, they cannot make one overflow (that takes an addend near 2^970), so the line ends take
 	// the box's path whenever e0 and e1 do
@@ -1001,6 +1025,7 @@ static void detect_lines(hs_world *world, int object, int h, const hs_part *part
 	int steps = moved ? 1 : hand->path_steps; // a held object moves with the hand: chords suffice
 	segment_bounds sb = segment_bounds_of(world, hand, r);
 	deep_memo memo = {0, 0};
+	held_turn turn = {.ready = false};
 	// passed over: far fingers' segments (far_fingers), and those beyond rs now unless paths count
 	double d_axis[15];
 	uint32_t segments = HS_HAND_ALL_SEGMENTS & ~hs_finger_parts(far, 3);
@@ -1014,7 +1039,7 @@ static void detect_lines(hs_world *world, int object, int h, const hs_part *part
 		if ((!(near >> s & 1u) && !axis_path_near(hand, a, steps, center, sb.rp)) ||
 		    (swept && ends_deep(world, hand, touching, a, body, shape, part, sb.deep, &memo)) ||
 		    (plain && !moved && steps == 1 && segment_clear_of_a_face(world, h, a, body, before, shape, part)) ||
-		    (plain && moved && hs_part_is_box(part) && held_lines_clear(world, h, s, a, body, shape, part, touching, grow)))
+		    (plain && moved && hs_part_is_box(part) && held_lines_clear(world, h, s, a, body, shape, part, touching, grow, &turn)))
 			continue; // far, each line beside a touching point, or clear (seen before it is placed)
 		hs_hand_ready_segment(&world->hands[h], s); // its lines are read from here on
 		bool all_near = sb.ri > 0.0 && d_sq <= sb.ri * sb.ri; // the segment's lines are all within r now
