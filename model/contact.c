@@ -36,7 +36,7 @@
 
 // The per-line distance tests and the frame changes are inlined (HS_FORCE_INLINE): called apart,
 // their vectors (passed by value) went through the stack on every call.
-
+//
 // An object's pose as a position and a rotation matrix: detection moves up to 140 hand points
 // into each object's frame every frame.
 typedef struct frame {
@@ -73,9 +73,8 @@ static HS_FORCE_INLINE void line_to_body(const frame *f, const hs_vec3 p[2], hs_
 static HS_FORCE_INLINE hs_vec3 to_world(const frame *f, hs_vec3 p) { return hs_add(f->pos, hs_mat3_mul(f->rot, p)); }
 
 // Many-faced parts (HS_FACE_TREE_MIN_FACES or more) are searched through their normal-cone tree
-// (face_tree.h: the faces near the point, with the scan's answers), out of line; the others are
-// scanned inline, as they were.
-
+// (face_tree.h: the faces near the point, with the scan's answers), out of line (HS_NOINLINE); the
+// others are scanned inline, as they were.
 static const hs_face_tree *tree_of(const hs_world *world, const hs_shape *shape) {
 	return &world->face_trees[shape - world->shapes];
 }
@@ -381,7 +380,6 @@ static uint32_t points_near(const hs_vec3 p[HS_HAND_POINTS], hs_vec3 c, double r
 #endif
 	return near;
 }
-
 
 static void detect_points(hs_world *world, int object, int h, const hs_part *part, const frame *body,
                           const frame *before, bool moved, bool cull, double grow, unsigned far) {
