@@ -1009,7 +1009,6 @@ static bool held_lines_clear(hs_world *world, int h, int s, int a, const frame *
 	return true;
 }
 
-
 // (B) check lines against the part: across it now (reached it this frame, sunk in, or across it
 // since before it touched anything, as the check points in detect_points), or swept across it
 // during the frame. A line with an end inside is the check points' business.

@@ -525,7 +525,6 @@ void hs_hand_kinematics(const hs_hand_def *def, hs_vec3 wrist_position, hs_quat 
 // ---------------------------------------------------------------------------------------------
 // A hand in a world: the caches derived from its sensors and wrist pose (hand_internal.h)
 
-
 // Segment s's lines in the wrist frame, computed once for a reading.
 static void ready_local(hs_hand *hand, int s) {
 	if ((unsigned)hand->local_ready >> s & 1u)
@@ -587,7 +586,7 @@ void hs_hand_place_segment(hs_hand *hand, int s) {
 	}
 	if (!(hand->prev_lines_ready & bit)) { // not read last frame: from the shape kept with it
 		hs_vec3 local[4][2];
-		local_segment_lines(&hand->def, hand->prev_local_points, hand->prev_local_segment, s, local);
+		local_segment_lines(&hand->def, hand->prev_local.points, hand->prev_local.segment, s, local);
 		place_vectors(hand->prev_place_m, hand->prev_wrist_pos, &local[0][0], &hand->prev_lines[4 * s][0], 8);
 		hand->prev_lines_ready = (uint16_t)(hand->prev_lines_ready | bit);
 	}
@@ -620,8 +619,7 @@ void hs_hand_keep_previous(hs_hand *hand) {
 			memcpy(hand->prev_lines[4 * s], hand->lines[4 * s], sizeof hand->lines[0] * 4);
 	hand->prev_lines_ready = hand->lines_ready; // the others from the shape they would be placed from
 	hand->prev_place_m = hand->place_m;
-	memcpy(hand->prev_local_points, hand->local.points, sizeof hand->local.points);
-	memcpy(hand->prev_local_segment, hand->local.segment, sizeof hand->local.segment);
+	hand->prev_local = hand->local;
 	hand->prev_wrist_pos = hand->wrist_pos;
 	hand->prev_wrist_rot = hand->wrist_rot;
 	memcpy(hand->prev_sensors, hand->sensors, sizeof hand->sensors);
@@ -678,8 +676,7 @@ void hs_hand_refresh(hs_hand *hand) {
 	local_bounds(hand);
 	hand->prev_place_m = hs_mat3_from_quat(hand->prev_wrist_rot);
 	place_vectors(hand->prev_place_m, hand->prev_wrist_pos, hand->local.points, hand->prev_points, HS_HAND_POINTS);
-	memcpy(hand->prev_local_points, hand->local.points, sizeof hand->local.points);
-	memcpy(hand->prev_local_segment, hand->local.segment, sizeof hand->local.segment);
+	hand->prev_local = hand->local;
 	hand->prev_lines_ready = 0;
 	hand->center = hs_add(hand->prev_wrist_pos, hs_quat_rotate(hand->prev_wrist_rot, hand->local_center));
 	hand->radius = hand->local_radius + 1e-6;

@@ -85,10 +85,9 @@ typedef struct hs_hand {
 	hs_vec3 lines[HS_HAND_LINES][2], prev_lines[HS_HAND_LINES][2];
 	uint16_t lines_ready, prev_lines_ready;
 	// what a segment's lines are placed from: the wrist matrix, and for a frame ago the shape in the
-	// wrist frame too (prev_local_*; the current one is local_points, local_segment)
+	// wrist frame too (prev_local; the current one is `local`)
 	hs_mat3 place_m, prev_place_m;
-	hs_vec3 prev_local_points[HS_HAND_POINTS];
-	hs_quat prev_local_segment[15];
+	hs_hand_pose prev_local;
 	// cache: bounding sphere of the check points and lines (radius < 0: touches nothing)
 	hs_vec3 center;
 	double radius;
