@@ -13,6 +13,10 @@
 
 #include "handspring.h"
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 // Fills part->box_face and part->box_offset (box_face[0] = -1 when the part is no such box).
 void hs_part_box_find(const hs_shape *shape, hs_part *part);
 
@@ -27,8 +31,19 @@ static inline bool hs_part_box_takes(hs_vec3 p) {
 // scan_inside (contact.c): no face has dot(normal, p) >= offset + grow.
 static inline bool hs_part_box_inside(const hs_part *part, hs_vec3 p, double grow) {
 	const double *o = part->box_offset;
+#if defined(__SSE2__)
+	// without a branch (the points are noisy input): each lane one face's comparison, the same
+	// operands (negation flips the sign bit alone, as unary minus does) and the same NaN answers
+	__m128d g = _mm_set1_pd(grow), neg = _mm_set_pd(-0.0, 0.0);
+	__m128d out = _mm_or_pd(
+	    _mm_or_pd(_mm_cmpge_pd(_mm_xor_pd(_mm_set1_pd(p.x), neg), _mm_add_pd(_mm_loadu_pd(o), g)),
+	              _mm_cmpge_pd(_mm_xor_pd(_mm_set1_pd(p.y), neg), _mm_add_pd(_mm_loadu_pd(o + 2), g))),
+	    _mm_cmpge_pd(_mm_xor_pd(_mm_set1_pd(p.z), neg), _mm_add_pd(_mm_loadu_pd(o + 4), g)));
+	return _mm_movemask_pd(out) == 0;
+#else
 	return !(p.x >= o[0] + grow) && !(-p.x >= o[1] + grow) && !(p.y >= o[2] + grow) && !(-p.y >= o[3] + grow) &&
 	       !(p.z >= o[4] + grow) && !(-p.z >= o[5] + grow);
+#endif
 }
 
 // True when a and b both lie beyond one face of the box grown by `grow` by more than `slack`: then
