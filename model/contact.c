@@ -18,6 +18,7 @@
 #include "push.h"
 
 #include "lanes2.h"
+#include "lanes4.h"
 #include "part_box.h"
 
 #if defined(HS_SELFCHECK)
@@ -353,12 +354,28 @@ static bool same_pose(const hs_body *b) {
 	       b->rot.x == b->rot_prev.x && b->rot.y == b->rot_prev.y && b->rot.z == b->rot_prev.z;
 }
 
+#if HS_LANES4
+// points_near four points at a time (AVX).
+HS_AVX static uint32_t points_near_avx(const hs_vec3 p[HS_HAND_POINTS], hs_vec3 c, double r_sq) {
+	uint32_t near = 0;
+	for (int i = 0; i < HS_HAND_POINTS; i += 4)
+		near |= hs_lanes4_not_above(hs_lanes4_distance_sq(hs_lanes4_load(&p[i]), c), r_sq) << i;
+	return near;
+}
+#endif
+
 // The check points (bit i) not further than sqrt(r_sq) from c now, as the cull reads it:
-// !(|p_i - c|^2 > r_sq), NaN near. With SSE2 two points at a time, each lane doing
+// !(|p_i - c|^2 > r_sq), NaN near. With AVX four points at a time, with SSE2 two, each lane doing
 // hs_length_sq(hs_sub(p, c))'s operations in its order (the same bits).
 static uint32_t points_near(const hs_vec3 p[HS_HAND_POINTS], hs_vec3 c, double r_sq) {
 	uint32_t near = 0;
 	int i = 0;
+#if HS_LANES4
+	if (hs_cpu_has_avx()) {
+		near = points_near_avx(p, c, r_sq);
+		i = HS_HAND_POINTS;
+	}
+#endif
 #if defined(__SSE2__)
 	const __m128d cx = _mm_set1_pd(c.x), cy = _mm_set1_pd(c.y), cz = _mm_set1_pd(c.z), r = _mm_set1_pd(r_sq);
 	for (; i + 1 < HS_HAND_POINTS; i += 2) {
@@ -715,8 +732,9 @@ static bool axis_path_near(const hs_hand *hand, int a, int steps, hs_vec3 c, dou
 	return false;
 }
 
-// The first check point of finger segment s (finger s / 3, segment s % 3): 4 (s / 3) + s % 3.
-static const int SEGMENT_FIRST_POINT[15] = {0, 1, 2, 4, 5, 6, 8, 9, 10, 12, 13, 14, 16, 17, 18};
+// The first check point of finger segment s (finger s / 3, segment s % 3): 4 (s / 3) + s % 3; a
+// 16th entry repeats segment 14's for axes_near's fourth group of four.
+static const int SEGMENT_FIRST_POINT[16] = {0, 1, 2, 4, 5, 6, 8, 9, 10, 12, 13, 14, 16, 17, 18, 18};
 
 #if defined(HS_SELFCHECK)
 // Sanitizer builds: what sweep_clear_of_a_face skipped would have found nothing.
@@ -866,12 +884,32 @@ static inline __m128d segment_distance_sq2(hs_lanes2 a, hs_lanes2 b, hs_vec3 c) 
 }
 #endif
 
+#if HS_LANES4
+// axes_near four segments at a time (AVX); the 16th lane repeats segment 14 (d has 16 places).
+HS_AVX static uint32_t axes_near_avx(const hs_hand *hand, hs_vec3 c, double r_sq, double d[16]) {
+	uint32_t near = 0;
+	for (int s = 0; s < 16; s += 4) {
+		__m256d dist = hs_lanes4_segment_distance_sq(hs_lanes4_gather(hand->points, &SEGMENT_FIRST_POINT[s], 0),
+		                                             hs_lanes4_gather(hand->points, &SEGMENT_FIRST_POINT[s], 1), c);
+		_mm256_storeu_pd(&d[s], dist);
+		near |= hs_lanes4_not_above(dist, r_sq) << s;
+	}
+	return near & HS_HAND_ALL_SEGMENTS;
+}
+#endif
+
 // The squared distance from c to each finger segment's axis (check points a to a + 1) now,
-// segment_distance_sq's bits, two segments at a time with SSE2. Returns the segments (bit s) whose
-// axis is not further than sqrt(r_sq): !(d > r_sq), NaN near.
-static uint32_t axes_near(const hs_hand *hand, hs_vec3 c, double r_sq, double d[15]) {
+// segment_distance_sq's bits, four segments at a time with AVX, two with SSE2. Returns the
+// segments (bit s) whose axis is not further than sqrt(r_sq): !(d > r_sq), NaN near.
+static uint32_t axes_near(const hs_hand *hand, hs_vec3 c, double r_sq, double d[16]) {
 	uint32_t near = 0;
 	int s = 0;
+#if HS_LANES4
+	if (hs_cpu_has_avx()) {
+		near = axes_near_avx(hand, c, r_sq, d);
+		s = 15;
+	}
+#endif
 #if defined(__SSE2__)
 	for (; s + 1 < 15; s += 2) {
 		int a0 = SEGMENT_FIRST_POINT[s], a1 = SEGMENT_FIRST_POINT[s + 1];
@@ -1024,7 +1062,7 @@ static void detect_lines(hs_world *world, int object, int h, const hs_part *part
 	deep_memo memo = {0, 0};
 	held_turn turn = {.ready = false};
 	// passed over: far fingers' segments (far_fingers), and those beyond rs now unless paths count
-	double d_axis[15];
+	double d_axis[16]; // axes_near's AVX path fills a 16th
 	uint32_t segments = HS_HAND_ALL_SEGMENTS & ~hs_finger_parts(far, 3);
 	uint32_t near = cull ? axes_near(hand, center, sb.rs * sb.rs, d_axis) : segments;
 	if (!swept || moved)

@@ -8,7 +8,7 @@
 #   determinism.sh --quick   gcc -O2 (reference), gcc -O0, clang -O2, the gcc -O2 binary run with
 #                            glibc's FMA code paths off, and i386 and aarch64 when
 #                            scripts/deps-cross.sh has installed them (make check: check-reliability)
-#   determinism.sh --full    also gcc -O3, clang -O0/-O3, gcc and clang -O2 -march=native,
+#   determinism.sh --full    also gcc -O3, clang -O0/-O3, gcc and clang -O2 -march=native, gcc-noavx,
 #                            i386 (-m32 -msse2 -mfpmath=sse), aarch64 (under qemu-aarch64) and the
 #                            ASan+UBSan builds                          (make determinism)
 #   (--pair is the old name of --quick)
@@ -18,6 +18,8 @@
 #   gcc-native, clang-native   OPT=-O2 CFLAGS=-march=native: FMA, AVX2/AVX-512 on this CPU. The
 #                        Makefile's FP flags keep the compilers from fusing a*b+c (-ffp-contract=off,
 #                        and -fno-tree-vectorize -fno-tree-slp-vectorize against GCC 12's vfmaddsub)
+#   gcc-noavx            OPT=-O2 CFLAGS=-DHS_NO_AVX: the SSE2 paths of the loops that take AVX
+#                        where the CPU has it (model/lanes4.h), on this CPU
 #   nofma                the gcc-O2 binary run with GLIBC_TUNABLES=glibc.cpu.hwcaps=-AVX2,-FMA: the
 #                        libm code paths glibc takes on a CPU without FMA
 #   i386                 i686-linux-gnu-gcc -m32 -msse2 -mfpmath=sse -O2 (SSE2 doubles, no x87).
@@ -45,7 +47,7 @@ mode=${1:---quick}
 
 case "$mode" in
 --quick | --pair) builds="gcc-O2 gcc-O0 clang-O2 nofma i386? aarch64?" ;;
---full) builds="gcc-O2 gcc-O0 gcc-O3 clang-O0 clang-O2 clang-O3 gcc-native clang-native nofma i386 aarch64 gcc-asan clang-asan" ;;
+--full) builds="gcc-O2 gcc-O0 gcc-O3 clang-O0 clang-O2 clang-O3 gcc-native clang-native gcc-noavx nofma i386 aarch64 gcc-asan clang-asan" ;;
 *)
 	echo "usage: determinism.sh [--quick|--full]" >&2
 	exit 2
@@ -122,6 +124,9 @@ spec() {
 		;;
 	gcc-native | clang-native)
 		cc=${1%-native} cflags=-march=native
+		;;
+	gcc-noavx)
+		cc=gcc cflags=-DHS_NO_AVX
 		;;
 	gcc-asan | clang-asan)
 		cc=${1%-asan} opt=-O1 san=1
