@@ -1006,6 +1006,94 @@ static HS_FORCE_INLINE hs_vec3 held_turn_apply(const held_turn *t, hs_vec3 v) {
 	return hs_add(hs_add(hs_scale(t->c[0], v.x), hs_scale(t->c[1], v.y)), hs_scale(t->c[2], v.z));
 }
 
+// A held segment's check lines as held_lines_clear tests them: line k from e0 + off[k] to
+// e1 + off[k], off = y, -y, z, -z; an end beside a touching check point (touch0, touch1) within
+// `margin` of the box, both beyond one face by grow + 2 HS_CULL_SLACK, or the line further than
+// r from the part's centre: clear.
+typedef struct held_ends {
+	hs_vec3 e0, e1, y, z;
+	bool touch0, touch1;
+	double margin, grow, r;
+} held_ends;
+
+static inline bool held_each_clear(const hs_part *part, const held_ends *l) {
+	const hs_vec3 off[4] = {l->y, hs_scale(l->y, -1.0), l->z, hs_scale(l->z, -1.0)};
+	for (int k = 0; k < 4; ++k) {
+		hs_vec3 p0 = hs_add(l->e0, off[k]), p1 = hs_add(l->e1, off[k]);
+		if ((l->touch0 && hs_part_box_inside(part, p0, l->margin)) || (l->touch1 && hs_part_box_inside(part, p1, l->margin)) ||
+		    hs_part_box_apart(part, p0, p1, l->grow, 2.0 * HS_CULL_SLACK) ||
+		    segment_distance_sq(part->center, p0, p1) > l->r * l->r)
+			continue;
+		return false;
+	}
+	return true;
+}
+
+#if HS_LANES4
+// Each lane's point p (-p in n) beyond each face of the box grown by g, as hs_part_box_apart
+// compares: out[0] p.x > o[0] + g, out[1] -p.x > o[1] + g, and so on.
+HS_AVX static inline void box_beyond4(const double o[6], hs_lanes4 p, hs_lanes4 n, double g, __m256d out[6]) {
+	out[0] = _mm256_cmp_pd(p.x, _mm256_set1_pd(o[0] + g), _CMP_GT_OQ);
+	out[1] = _mm256_cmp_pd(n.x, _mm256_set1_pd(o[1] + g), _CMP_GT_OQ);
+	out[2] = _mm256_cmp_pd(p.y, _mm256_set1_pd(o[2] + g), _CMP_GT_OQ);
+	out[3] = _mm256_cmp_pd(n.y, _mm256_set1_pd(o[3] + g), _CMP_GT_OQ);
+	out[4] = _mm256_cmp_pd(p.z, _mm256_set1_pd(o[4] + g), _CMP_GT_OQ);
+	out[5] = _mm256_cmp_pd(n.z, _mm256_set1_pd(o[5] + g), _CMP_GT_OQ);
+}
+
+// The lanes (bits 0-3) whose point p (-p in n) is not inside the box grown by g: some face with
+// p.x >= o[0] + g, -p.x >= o[1] + g, ..., as hs_part_box_inside compares.
+HS_AVX static inline unsigned box_outside4(const double o[6], hs_lanes4 p, hs_lanes4 n, double g) {
+	__m256d x = _mm256_or_pd(_mm256_cmp_pd(p.x, _mm256_set1_pd(o[0] + g), _CMP_GE_OQ),
+	                         _mm256_cmp_pd(n.x, _mm256_set1_pd(o[1] + g), _CMP_GE_OQ));
+	__m256d y = _mm256_or_pd(_mm256_cmp_pd(p.y, _mm256_set1_pd(o[2] + g), _CMP_GE_OQ),
+	                         _mm256_cmp_pd(n.y, _mm256_set1_pd(o[3] + g), _CMP_GE_OQ));
+	__m256d z = _mm256_or_pd(_mm256_cmp_pd(p.z, _mm256_set1_pd(o[4] + g), _CMP_GE_OQ),
+	                         _mm256_cmp_pd(n.z, _mm256_set1_pd(o[5] + g), _CMP_GE_OQ));
+	return (unsigned)_mm256_movemask_pd(_mm256_or_pd(_mm256_or_pd(x, y), z));
+}
+
+HS_AVX static inline hs_lanes4 negate4(hs_lanes4 p) {
+	const __m256d sign = _mm256_set1_pd(-0.0); // the sign flipped alone, as unary minus
+	hs_lanes4 n = {_mm256_xor_pd(p.x, sign), _mm256_xor_pd(p.y, sign), _mm256_xor_pd(p.z, sign)};
+	return n;
+}
+
+// held_each_clear's four lines in the four lanes (AVX), each comparison the scalar one's (the
+// same answers; the ends are finite, held_lines_clear): the touching ends first, as there.
+HS_AVX static bool held_four_clear(const hs_part *part, const held_ends *l) {
+	const hs_vec3 y = l->y, z = l->z;
+	const __m256d ox = _mm256_set_pd(-z.x, z.x, -y.x, y.x), oy = _mm256_set_pd(-z.y, z.y, -y.y, y.y),
+	              oz = _mm256_set_pd(-z.z, z.z, -y.z, y.z);
+	hs_lanes4 p0 = {_mm256_add_pd(_mm256_set1_pd(l->e0.x), ox), _mm256_add_pd(_mm256_set1_pd(l->e0.y), oy),
+	                _mm256_add_pd(_mm256_set1_pd(l->e0.z), oz)};
+	hs_lanes4 p1 = {_mm256_add_pd(_mm256_set1_pd(l->e1.x), ox), _mm256_add_pd(_mm256_set1_pd(l->e1.y), oy),
+	                _mm256_add_pd(_mm256_set1_pd(l->e1.z), oz)};
+	hs_lanes4 n0 = negate4(p0), n1 = negate4(p1);
+	const double *o = part->box_offset;
+	unsigned clear = 0;
+	if (l->touch0)
+		clear |= ~box_outside4(o, p0, n0, l->margin) & 0xFu;
+	if (l->touch1)
+		clear |= ~box_outside4(o, p1, n1, l->margin) & 0xFu;
+	if (clear == 0xFu)
+		return true;
+	__m256d b0[6], b1[6];
+	double g = l->grow + 2.0 * HS_CULL_SLACK;
+	box_beyond4(o, p0, n0, g, b0);
+	box_beyond4(o, p1, n1, g, b1);
+	__m256d apart = _mm256_or_pd(_mm256_or_pd(_mm256_and_pd(b0[0], b1[0]), _mm256_and_pd(b0[1], b1[1])),
+	                             _mm256_or_pd(_mm256_and_pd(b0[2], b1[2]), _mm256_and_pd(b0[3], b1[3])));
+	apart = _mm256_or_pd(apart, _mm256_or_pd(_mm256_and_pd(b0[4], b1[4]), _mm256_and_pd(b0[5], b1[5])));
+	clear |= (unsigned)_mm256_movemask_pd(apart);
+	if (clear == 0xFu)
+		return true;
+	__m256d d = hs_lanes4_segment_distance_sq(p0, p1, part->center);
+	clear |= (unsigned)_mm256_movemask_pd(_mm256_cmp_pd(d, _mm256_set1_pd(l->r * l->r), _CMP_GT_OQ));
+	return clear == 0xFu;
+}
+#endif
+
 // A held object's finger segment whose 4 check lines would all find nothing, decided from its
 // check points and frame before the lines are placed. A line end is its check point plus the
 // segment's y or z axis times finger_radius (hand.c, segment_lines; mirrored for a left hand):
@@ -1015,8 +1103,9 @@ static HS_FORCE_INLINE hs_vec3 held_turn_apply(const held_turn *t, hs_vec3 v) {
 // part grown by the margin (end_touches), have both ends beyond one face of the box (clip_part's
 // miss), or lie outside the part's bounding sphere. Box parts only (hs_part_is_box); the lines are
 // not embedded.
-static bool held_lines_clear(hs_world *world, int h, int s, int a, const frame *body, const hs_shape *shape,
-                             const hs_part *part, uint32_t touching, double grow, held_turn *turn) {
+static HS_FORCE_INLINE bool held_lines_clear_in(hs_world *world, int h, int s, int a, const frame *body,
+                                                const hs_shape *shape, const hs_part *part, uint32_t touching, double grow,
+                                                held_turn *turn, bool four) {
 	const hs_hand *hand = &world->hands[h];
 	hs_vec3 e0 = to_body(body, hand->points[a]), e1 = to_body(body, hand->points[a + 1]);
 	if (!hs_part_box_takes(e0) || !hs_part_box_takes(e1))
@@ -1033,19 +1122,40 @@ static bool held_lines_clear(hs_world *world, int h, int s, int a, const frame *
 	// the box's path whenever e0 and e1 do
 	if (!hs_part_box_takes(y) || !hs_part_box_takes(z))
 		return false;
-	const hs_vec3 off[4] = {y, hs_scale(y, -1.0), z, hs_scale(z, -1.0)};
-	double margin = world->def.grasp_release_mm * 1e-3 - HS_CULL_SLACK, r = part->radius + grow + HS_CULL_SLACK;
-	for (int k = 0; k < 4; ++k) {
-		hs_vec3 p0 = hs_add(e0, off[k]), p1 = hs_add(e1, off[k]);
-		if (((touching >> a & 1u) && hs_part_box_inside(part, p0, margin)) ||
-		    ((touching >> (a + 1) & 1u) && hs_part_box_inside(part, p1, margin)) ||
-		    hs_part_box_apart(part, p0, p1, grow, 2.0 * HS_CULL_SLACK) || segment_distance_sq(part->center, p0, p1) > r * r)
-			continue;
-		return false;
+	held_ends ends = {e0, e1, y, z, touching >> a & 1u, touching >> (a + 1) & 1u,
+	                  world->def.grasp_release_mm * 1e-3 - HS_CULL_SLACK, grow, part->radius + grow + HS_CULL_SLACK};
+#if HS_LANES4
+	bool clear = four ? held_four_clear(part, &ends) : held_each_clear(part, &ends);
+#else
+	(void)four;
+	bool clear = held_each_clear(part, &ends);
+#endif
+#if defined(HS_SELFCHECK)
+	if (clear != held_each_clear(part, &ends)) {
+		fprintf(stderr, "selfcheck: held_lines_clear's lanes differ from its loop\n");
+		abort();
 	}
+#endif
+	if (!clear)
+		return false;
 	check_held_clear(world, h, s, a, body, shape, part, touching, grow);
 	return true;
 }
+
+static bool held_lines_clear(hs_world *world, int h, int s, int a, const frame *body, const hs_shape *shape,
+                             const hs_part *part, uint32_t touching, double grow, held_turn *turn) {
+	return held_lines_clear_in(world, h, s, a, body, shape, part, touching, grow, turn, false);
+}
+
+#if HS_LANES4
+HS_AVX static bool held_lines_clear_avx(hs_world *world, int h, int s, int a, const frame *body, const hs_shape *shape,
+                                        const hs_part *part, uint32_t touching, double grow, held_turn *turn) {
+	return held_lines_clear_in(world, h, s, a, body, shape, part, touching, grow, turn, true);
+}
+#define HELD_LINES_CLEAR (hs_cpu_has_avx() ? held_lines_clear_avx : held_lines_clear)
+#else
+#define HELD_LINES_CLEAR held_lines_clear
+#endif
 
 // (B) check lines against the part: across it now (reached it this frame, sunk in, or across it
 // since before it touched anything, as the check points in detect_points), or swept across it
@@ -1074,7 +1184,7 @@ static void detect_lines(hs_world *world, int object, int h, const hs_part *part
 		if ((!(near >> s & 1u) && !axis_path_near(hand, a, steps, center, sb.rp)) ||
 		    (swept && ends_deep(world, hand, touching, a, body, shape, part, sb.deep, &memo)) ||
 		    (plain && !moved && steps == 1 && segment_clear_of_a_face(world, h, a, body, before, shape, part)) ||
-		    (plain && moved && hs_part_is_box(part) && held_lines_clear(world, h, s, a, body, shape, part, touching, grow, &turn)))
+		    (plain && moved && hs_part_is_box(part) && HELD_LINES_CLEAR(world, h, s, a, body, shape, part, touching, grow, &turn)))
 			continue; // far, each line beside a touching point, or clear (seen before it is placed)
 		hs_hand_ready_segment(&world->hands[h], s); // its lines are read from here on
 		bool all_near = sb.ri > 0.0 && d_sq <= sb.ri * sb.ri; // the segment's lines are all within r now
