@@ -355,11 +355,16 @@ static bool same_pose(const hs_body *b) {
 }
 
 #if HS_LANES4
+// The hand's check points i to i + 3 in the four lanes (from its point rows).
+HS_AVX static inline hs_lanes4 point_lanes(const hs_hand *hand, int i) {
+	return hs_lanes4_rows(&hand->point_rows[0][i], HS_HAND_POINTS + 4);
+}
+
 // points_near four points at a time (AVX).
-HS_AVX static uint32_t points_near_avx(const hs_vec3 p[HS_HAND_POINTS], hs_vec3 c, double r_sq) {
+HS_AVX static uint32_t points_near_avx(const hs_hand *hand, hs_vec3 c, double r_sq) {
 	uint32_t near = 0;
 	for (int i = 0; i < HS_HAND_POINTS; i += 4)
-		near |= hs_lanes4_not_above(hs_lanes4_distance_sq(hs_lanes4_load(&p[i]), c), r_sq) << i;
+		near |= hs_lanes4_not_above(hs_lanes4_distance_sq(point_lanes(hand, i), c), r_sq) << i;
 	return near;
 }
 #endif
@@ -367,12 +372,13 @@ HS_AVX static uint32_t points_near_avx(const hs_vec3 p[HS_HAND_POINTS], hs_vec3 
 // The check points (bit i) not further than sqrt(r_sq) from c now, as the cull reads it:
 // !(|p_i - c|^2 > r_sq), NaN near. With AVX four points at a time, with SSE2 two, each lane doing
 // hs_length_sq(hs_sub(p, c))'s operations in its order (the same bits).
-static uint32_t points_near(const hs_vec3 p[HS_HAND_POINTS], hs_vec3 c, double r_sq) {
+static uint32_t points_near(const hs_hand *hand, hs_vec3 c, double r_sq) {
+	const hs_vec3 *p = hand->points;
 	uint32_t near = 0;
 	int i = 0;
 #if HS_LANES4
 	if (hs_cpu_has_avx()) {
-		near = points_near_avx(p, c, r_sq);
+		near = points_near_avx(hand, c, r_sq);
 		i = HS_HAND_POINTS;
 	}
 #endif
@@ -389,6 +395,12 @@ static uint32_t points_near(const hs_vec3 p[HS_HAND_POINTS], hs_vec3 c, double r
 		if (!(hs_length_sq(hs_sub(p[i], c)) > r_sq))
 			near |= 1u << i;
 #if defined(HS_SELFCHECK)
+	for (int k = 0; k < HS_HAND_POINTS; ++k)
+		if (memcmp(&hand->point_rows[0][k], &p[k].x, sizeof p[k].x) != 0 || memcmp(&hand->point_rows[1][k], &p[k].y, sizeof p[k].y) != 0 ||
+		    memcmp(&hand->point_rows[2][k], &p[k].z, sizeof p[k].z) != 0) {
+			fprintf(stderr, "selfcheck: the hand's point rows differ from its points\n");
+			abort();
+		}
 	for (int k = 0; k < HS_HAND_POINTS; ++k)
 		if ((near >> k & 1u) != !(hs_length_sq(hs_sub(p[k], c)) > r_sq)) {
 			fprintf(stderr, "selfcheck: points_near differs from the scalar cull\n");
@@ -409,7 +421,7 @@ static void detect_points(hs_world *world, int object, int h, const hs_part *par
 	bool still = !moved && same_pose(&world->bodies[object]);
 	// passed over: far fingers' points (far_fingers), and those beyond the sphere now unless paths count
 	uint32_t todo = ((1u << HS_HAND_POINTS) - 1u) & ~hs_finger_parts(far, 4);
-	uint32_t near = cull ? points_near(hand->points, center, r_sq) : todo;
+	uint32_t near = cull ? points_near(hand, center, r_sq) : todo;
 	if (!swept || moved)
 		todo &= near;
 	for (; todo; todo &= todo - 1u) {
@@ -732,9 +744,8 @@ static bool axis_path_near(const hs_hand *hand, int a, int steps, hs_vec3 c, dou
 	return false;
 }
 
-// The first check point of finger segment s (finger s / 3, segment s % 3): 4 (s / 3) + s % 3; a
-// 16th entry repeats segment 14's for axes_near's fourth group of four.
-static const int SEGMENT_FIRST_POINT[16] = {0, 1, 2, 4, 5, 6, 8, 9, 10, 12, 13, 14, 16, 17, 18, 18};
+// The first check point of finger segment s (finger s / 3, segment s % 3): 4 (s / 3) + s % 3.
+static const int SEGMENT_FIRST_POINT[15] = {0, 1, 2, 4, 5, 6, 8, 9, 10, 12, 13, 14, 16, 17, 18};
 
 #if defined(HS_SELFCHECK)
 // Sanitizer builds: what sweep_clear_of_a_face skipped would have found nothing.
@@ -885,16 +896,17 @@ static inline __m128d segment_distance_sq2(hs_lanes2 a, hs_lanes2 b, hs_vec3 c) 
 #endif
 
 #if HS_LANES4
-// axes_near four segments at a time (AVX); the 16th lane repeats segment 14 (d has 16 places).
+// axes_near a finger at a time (AVX): lanes 0-2 its three segments (check points 4 f + k to
+// 4 f + k + 1, from the point rows), lane 3 nothing (its distance is overwritten or spare; d has
+// 16 places).
 HS_AVX static uint32_t axes_near_avx(const hs_hand *hand, hs_vec3 c, double r_sq, double d[16]) {
 	uint32_t near = 0;
-	for (int s = 0; s < 16; s += 4) {
-		__m256d dist = hs_lanes4_segment_distance_sq(hs_lanes4_gather(hand->points, &SEGMENT_FIRST_POINT[s], 0),
-		                                             hs_lanes4_gather(hand->points, &SEGMENT_FIRST_POINT[s], 1), c);
-		_mm256_storeu_pd(&d[s], dist);
-		near |= hs_lanes4_not_above(dist, r_sq) << s;
+	for (int f = 0; f < 5; ++f) {
+		__m256d dist = hs_lanes4_segment_distance_sq(point_lanes(hand, 4 * f), point_lanes(hand, 4 * f + 1), c);
+		_mm256_storeu_pd(&d[3 * f], dist);
+		near |= (hs_lanes4_not_above(dist, r_sq) & 7u) << (3 * f);
 	}
-	return near & HS_HAND_ALL_SEGMENTS;
+	return near;
 }
 #endif
 

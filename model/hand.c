@@ -482,7 +482,8 @@ void hs_hand_local_shape(const hs_hand_def *def, const uint8_t sensors[HS_GLOVE_
 // out[i] = w + m v[i] for n vectors: hs_add(w, hs_mat3_mul(m, v[i])). With SSE2, two vectors at a
 // time, one in each lane: each lane does that expression's products and sums in its order, so the
 // bits are the same (no fused multiply-add: -ffp-contract=off).
-static HS_FORCE_INLINE void place_vectors(hs_mat3 m, hs_vec3 w, const hs_vec3 *v, hs_vec3 *out, int n) {
+static HS_FORCE_INLINE void place_vectors_rows(hs_mat3 m, hs_vec3 w, const hs_vec3 *v, hs_vec3 *out, int n,
+                                               double (*rows)[HS_HAND_POINTS + 4]) {
 	int i = 0;
 #if defined(__SSE2__)
 	const __m128d r0x = _mm_set1_pd(m.r0.x), r0y = _mm_set1_pd(m.r0.y), r0z = _mm_set1_pd(m.r0.z);
@@ -496,10 +497,25 @@ static HS_FORCE_INLINE void place_vectors(hs_mat3 m, hs_vec3 w, const hs_vec3 *v
 		__m128d oy = _mm_add_pd(wy, _mm_add_pd(_mm_add_pd(_mm_mul_pd(r1x, x), _mm_mul_pd(r1y, y)), _mm_mul_pd(r1z, z)));
 		__m128d oz = _mm_add_pd(wz, _mm_add_pd(_mm_add_pd(_mm_mul_pd(r2x, x), _mm_mul_pd(r2y, y)), _mm_mul_pd(r2z, z)));
 		hs_lanes2_store((hs_lanes2){ox, oy, oz}, &out[i], &out[i + 1]);
+		if (rows) {
+			_mm_storeu_pd(&rows[0][i], ox);
+			_mm_storeu_pd(&rows[1][i], oy);
+			_mm_storeu_pd(&rows[2][i], oz);
+		}
 	}
 #endif
-	for (; i < n; i++)
+	for (; i < n; i++) {
 		out[i] = hs_add(w, hs_mat3_mul(m, v[i]));
+		if (rows) {
+			rows[0][i] = out[i].x;
+			rows[1][i] = out[i].y;
+			rows[2][i] = out[i].z;
+		}
+	}
+}
+
+static HS_FORCE_INLINE void place_vectors(hs_mat3 m, hs_vec3 w, const hs_vec3 *v, hs_vec3 *out, int n) {
+	place_vectors_rows(m, w, v, out, n, NULL);
 }
 
 void hs_hand_place(const hs_vec3 local_points[HS_HAND_POINTS], const hs_vec3 local_lines[HS_HAND_LINES][2],
@@ -572,9 +588,17 @@ void hs_hand_update_shape(hs_hand *hand) {
 
 void hs_hand_place_points(hs_hand *hand) {
 	hand->place_m = hs_mat3_from_quat(hand->wrist_rot); // as hs_hand_place
-	place_vectors(hand->place_m, hand->wrist_pos, hand->local.points, hand->points, HS_HAND_POINTS);
+	place_vectors_rows(hand->place_m, hand->wrist_pos, hand->local.points, hand->points, HS_HAND_POINTS, hand->point_rows);
 	hand->lines_ready = 0;
 	hand->finger_spheres_ready = false;
+}
+
+void hs_hand_points_moved(hs_hand *hand) {
+	for (int i = 0; i < HS_HAND_POINTS; ++i) {
+		hand->point_rows[0][i] = hand->points[i].x;
+		hand->point_rows[1][i] = hand->points[i].y;
+		hand->point_rows[2][i] = hand->points[i].z;
+	}
 }
 
 void hs_hand_place_segment(hs_hand *hand, int s) {
@@ -655,6 +679,7 @@ int hs_hand_older_capacity(double window_s, double dt) {
 void hs_hand_refresh(hs_hand *hand) {
 	if (!hand->placed) { // as hs_world_add_hand left it
 		memset(hand->points, 0, sizeof hand->points);
+		memset(hand->point_rows, 0, sizeof hand->point_rows);
 		memset(hand->prev_points, 0, sizeof hand->prev_points);
 		memset(hand->lines, 0, sizeof hand->lines);
 		memset(hand->prev_lines, 0, sizeof hand->prev_lines);

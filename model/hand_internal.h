@@ -82,6 +82,9 @@ typedef struct hs_hand {
 	// there. Most frames the contact tests reach a third of the segments (the rest are culled by
 	// their check points), and the lines are most of what placing a hand costs.
 	hs_vec3 points[HS_HAND_POINTS], prev_points[HS_HAND_POINTS];
+	// the same points as rows of x, y and z (placed with them), for the four-lane culls (contact.c):
+	// finger f's four at [4 f, 4 f + 3]; the spare places are read past the last finger, never used
+	double point_rows[3][HS_HAND_POINTS + 4];
 	hs_vec3 lines[HS_HAND_LINES][2], prev_lines[HS_HAND_LINES][2];
 	uint16_t lines_ready, prev_lines_ready;
 	// what a segment's lines are placed from: the wrist matrix, and for a frame ago the shape in the
@@ -175,6 +178,8 @@ static inline double hs_hand_farthest_sq(hs_vec3 c, const hs_vec3 *v, int n, dou
 
 // Places the check points from the shape cache and the wrist pose; the lines wait (lines_ready 0).
 void hs_hand_place_points(hs_hand *hand);
+// Makes point_rows the points again: for code that writes a hand's points itself (the tests).
+void hs_hand_points_moved(hs_hand *hand);
 #define HS_HAND_ALL_SEGMENTS 0x7fffu
 // The parts of the fingers in `fingers` (bit f) when each finger has `per` in a row: check points
 // (4: 4 f to 4 f + 3) or finger segments (3: 3 f to 3 f + 2).

@@ -22,18 +22,11 @@ typedef struct hs_lanes4 {
 
 static inline bool hs_cpu_has_avx(void) { return __builtin_cpu_supports("avx"); }
 
-// p[i[0] + k] in the lowest lane to p[i[3] + k] in the highest.
-HS_AVX static inline hs_lanes4 hs_lanes4_gather(const hs_vec3 *p, const int i[4], int k) {
-	const hs_vec3 *a = &p[i[0] + k], *b = &p[i[1] + k], *c = &p[i[2] + k], *d = &p[i[3] + k];
-	hs_lanes4 l = {_mm256_set_pd(d->x, c->x, b->x, a->x), _mm256_set_pd(d->y, c->y, b->y, a->y),
-	               _mm256_set_pd(d->z, c->z, b->z, a->z)};
+// Four vectors kept as rows of x, y and z `stride` apart (hand.c, point_rows): x[0 .. 3],
+// x[stride ..], x[2 stride ..].
+HS_AVX static inline hs_lanes4 hs_lanes4_rows(const double *x, int stride) {
+	hs_lanes4 l = {_mm256_loadu_pd(x), _mm256_loadu_pd(x + stride), _mm256_loadu_pd(x + 2 * stride)};
 	return l;
-}
-
-// p[0] .. p[3] in lanes 0 .. 3.
-HS_AVX static inline hs_lanes4 hs_lanes4_load(const hs_vec3 *p) {
-	static const int ROW[4] = {0, 1, 2, 3};
-	return hs_lanes4_gather(p, ROW, 0);
 }
 
 // !(d > r) of each lane as bits 0 .. 3: NaN near (SSE2's cmpngt).

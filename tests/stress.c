@@ -684,11 +684,13 @@ static int exact_world(scene *sc, hs_quat q, hs_vec3 g, int kind, double thresho
 		hand->points[3] = W(0.049, 0.0, 0.02);
 		hand->prev_points[7] = W(0.02, 0.0, 0.06);
 		hand->points[7] = W(0.02, 0.0, 0.049);
+		hs_hand_points_moved(hand);
 	} else if (kind == 1) { // a point entering exactly through a vertex, one exactly through an edge
 		hand->prev_points[3] = W(0.07, 0.07, 0.07);
 		hand->points[3] = W(0.03, 0.03, 0.03);
 		hand->prev_points[7] = W(0.07, 0.0, 0.07);
 		hand->points[7] = W(0.03, 0.0, 0.03);
+		hs_hand_points_moved(hand);
 	} else if (kind == 2) { // check lines through a vertex, along an edge, across an edge
 		hand->lines[0][0] = W(0.1, 0.1, 0.1);
 		hand->lines[0][1] = W(-0.1, -0.1, -0.1);
@@ -700,6 +702,7 @@ static int exact_world(scene *sc, hs_quat q, hs_vec3 g, int kind, double thresho
 		hand->prev_points[3] = hand->points[3] = W(0.05, 0.05, 0.05);
 		hand->prev_points[7] = hand->points[7] = W(0.05, 0.0, 0.05);
 		hand->prev_points[11] = hand->points[11] = W(0.0, 0.0, 0.05);
+		hs_hand_points_moved(hand);
 	}
 #undef W
 	return i;

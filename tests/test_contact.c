@@ -30,6 +30,7 @@ static hs_world *cube_world(void) { return cube_world_dt(1.0 / 60); }
 static void move_point(hs_world *w, int i, hs_vec3 from, hs_vec3 to) {
 	w->hands[0].prev_points[i] = from;
 	w->hands[0].points[i] = to;
+	hs_hand_points_moved(&w->hands[0]);
 }
 
 static hs_contact contact(const hs_world *w, int k) { return w->contacts[k]; }
@@ -350,11 +351,13 @@ static void test_grasp_follow_release(void **state) {
 		hs_vec3 tip7 = hs_quat_rotate(hand->wrist_rot, hs_v3(0.45, 0, 2));
 		hand->points[3] = hs_add(tip3, lift);
 		hand->points[7] = hs_add(tip7, lift);
+		hs_hand_points_moved(hand);
 		hs_world_step(w);
 		assert_int_equal(w->bodies[0].contact, HS_CONTACT_GRASP);
 		assert_vec3_near(w->bodies[0].pos, hs_add(hs_quat_rotate(hand->wrist_rot, hs_v3(0, 0, 2)), lift), 1e-14);
 	}
 	hand->points[3] = hand->points[7] = FAR; // the hand opens while it goes on rising and turning
+	hs_hand_points_moved(hand);
 	hand->wrist_pos = hs_v3(0, 0, 0.4);
 	hand->wrist_rot = hs_quat_from_axis_angle(hs_v3(0, 0, 1), 40 * HS_PI / 180);
 	hs_vec3 carried = hs_add(hs_quat_rotate(hand->wrist_rot, hs_v3(0, 0, 2)), hand->wrist_pos);
@@ -382,11 +385,13 @@ static int carry_path_and_release(hs_world *w, hs_vec3 u_dt, hs_vec3 a_dt2, int 
 		hand->wrist_pos = shift;
 		hand->points[3] = hs_add(hs_v3(-0.45, 0, 2), shift);
 		hand->points[7] = hs_add(hs_v3(0.45, 0, 2), shift);
+		hs_hand_points_moved(hand);
 		hand->center = hs_add(hs_v3(0, 0, 2), shift);
 		hs_world_step(w);
 		assert_int_equal(w->bodies[0].contact, HS_CONTACT_GRASP);
 	}
 	hand->points[3] = hand->points[7] = FAR; // the hand opens while it goes on moving
+	hs_hand_points_moved(hand);
 	hand->wrist_pos = hs_mul_add(hs_scale(u_dt, frames + 1), 0.5 * (frames + 1) * (frames + 1), a_dt2);
 	return frames + 1;
 }
@@ -562,6 +567,7 @@ static void pyramid_by_one_finger(bool any_contacts) {
 		hand->wrist_pos = lift;
 		hand->points[6] = hs_add(dip, lift);
 		hand->points[7] = hs_add(hs_v3(0.03, 0, 1.985), lift);
+		hs_hand_points_moved(hand);
 		hs_world_step(w);
 		if (any_contacts) { // held: it follows the wrist
 			assert_int_equal(w->bodies[0].contact, HS_CONTACT_GRASP);
@@ -591,8 +597,10 @@ static void test_grasp_continues_on_two_fingers_only(void **state) {
 	hs_world_step(w);
 	assert_int_equal(w->bodies[0].contact, HS_CONTACT_GRASP);
 	w->hands[0].points[7] = FAR;
+	hs_hand_points_moved(&w->hands[0]);
 	w->hands[0].prev_points[2] = hs_v3(0.6, 0.1, 2); // the thumb's IP joint in the +x face
 	w->hands[0].points[2] = hs_v3(0.45, 0.1, 2);
+	hs_hand_points_moved(&w->hands[0]);
 	hs_world_step(w);
 	assert_int_not_equal(w->bodies[0].contact, HS_CONTACT_GRASP);
 	assert_int_equal(w->bodies[0].grasped_by, 0);
@@ -645,6 +653,7 @@ static void test_grasp_holds_fast_hand(void **state) {
 		hand->wrist_pos = hs_add(hs_v3(0, 0, 2), shift);
 		hand->points[3] = hs_add(hs_v3(-0.45, 0, 2), shift);
 		hand->points[7] = hs_add(hs_v3(0.45, 0, 2), shift);
+		hs_hand_points_moved(hand);
 		hand->center = hs_add(hs_v3(0, 0, 2), shift);
 		hs_world_step(w);
 		assert_int_equal(w->bodies[0].contact, HS_CONTACT_GRASP);

@@ -42,6 +42,7 @@ static void test_press_down_leaves_box(void **state) {
 		for (int frame = 0; frame < 30; ++frame) { // it came down onto the box in frame 0, then stays
 			w->hands[0].prev_points[7] = frame == 0 ? hs_add(tip, hs_v3(0, 0, 0.01)) : tip;
 			w->hands[0].points[7] = tip;
+			hs_hand_points_moved(&w->hands[0]);
 			hs_manipulate(w);
 			assert_int_equal(b->contact, HS_CONTACT_PUSH_ONE);
 			assert_vec3_near(b->pos, hs_v3(0, 0, 0.05), 1e-18); // off both axes: rounding of the yaw
@@ -57,6 +58,7 @@ static void test_press_down_leaves_box(void **state) {
 	}
 	hs_world *w = box_world(hs_v3(0.1, 0.1, 0.1)); // a fingertip that starts there touches nothing
 	w->hands[0].prev_points[7] = w->hands[0].points[7] = hs_v3(0.04, 0, 0.099);
+	hs_hand_points_moved(&w->hands[0]);
 	hs_manipulate(w);
 	assert_int_equal(w->bodies[0].contact, HS_CONTACT_NONE);
 	hs_world_destroy(w);
@@ -161,6 +163,7 @@ static void test_push_remembers_finger_speed(void **state) {
 		double y = k == 2 ? 0.03 : 0.0;
 		w->hands[0].prev_points[7] = hs_v3(from[k], y, 0.05); // at G's height: slides, no swing
 		w->hands[0].points[7] = hs_v3(from[k] + 0.02, y, 0.05);
+		hs_hand_points_moved(&w->hands[0]);
 		hs_manipulate(w);
 		assert_int_equal(b->contact, HS_CONTACT_PUSH_ONE);
 		hs_vec3 moved = hs_sub(b->pos, hs_v3(0, 0, 0.05));
@@ -176,6 +179,7 @@ static void test_push_remembers_finger_speed(void **state) {
 	b->prev = hs_v3(-0.001, 0, 0.05);
 	w->hands[0].prev_points[7] = hs_v3(-0.06, 0, 0.05);
 	w->hands[0].points[7] = hs_v3(-0.04, 0, 0.05);
+	hs_hand_points_moved(&w->hands[0]);
 	hs_manipulate(w);
 	assert_vec3_near(b->prev, hs_v3(0, 0, 0.05), 0.0);
 	hs_world_destroy(w);
@@ -231,12 +235,14 @@ static void test_push_end_stops_on_floor(void **state) {
 	b->prev = hs_v3(-0.001, 0, 0.05); // moving already: no speed-up of the remembered motion
 	w->hands[0].prev_points[7] = hs_v3(-0.0505, 0, 0.05);
 	w->hands[0].points[7] = hs_v3(-0.049, 0, 0.05);
+	hs_hand_points_moved(&w->hands[0]);
 	hs_manipulate(w);
 	assert_int_equal(b->contact, HS_CONTACT_PUSH_ONE);
 	assert_vec3_near(b->pos, hs_v3(0.001, 0, 0.05), 1e-15);
 	hs_vec3 at = b->pos;
 	w->hands[0].prev_points[7] = w->hands[0].points[7];
 	w->hands[0].points[7] = hs_v3(-0.08, 0, 0.05); // drawn back
+	hs_hand_points_moved(&w->hands[0]);
 	hs_manipulate(w);
 	assert_int_equal(b->contact, HS_CONTACT_NONE);
 	assert_true(b->pos.x == at.x && b->pos.y == at.y && b->pos.z == at.z);
@@ -297,6 +303,7 @@ static void test_leaving_part_keeps_motion(void **state) {
 		w->hands[0].touch_points = 1u << 7;                 // touching last frame, 1 mm in
 		w->hands[0].prev_points[7] = hs_v3(-0.049, 0, 0.05);
 		w->hands[0].points[7] = hs_v3(-0.0495, 0, 0.05);    // drawn back, still inside
+		hs_hand_points_moved(&w->hands[0]);
 		hs_manipulate(w);
 		assert_int_equal(b->contact, HS_CONTACT_PUSH_ONE);
 		assert_true(b->pos.x == 0.0 && b->pos.y == 0.0 && b->pos.z == 0.05);

@@ -25,6 +25,7 @@ static inline hs_world *rig_world(const hs_world_def *def, hs_shape *shape, hs_v
 	hs_hand *hand = &w->hands[0];
 	for (int i = 0; i < HS_HAND_POINTS; ++i)
 		hand->points[i] = hand->prev_points[i] = RIG_FAR;
+	hs_hand_points_moved(hand);
 	for (int j = 0; j < HS_HAND_LINES; ++j)
 		hand->lines[j][0] = hand->lines[j][1] = hand->prev_lines[j][0] = hand->prev_lines[j][1] = RIG_FAR;
 	hand->center = hand->prev_center = hand->sweep_center = hand_center;
