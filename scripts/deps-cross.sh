@@ -8,7 +8,8 @@
 #    gcc-i686-linux-gnu + libc6-dev-i386-cross    the i386 build (-m32 -msse2 -mfpmath=sse)
 #    gcc-aarch64-linux-gnu + libc6-dev-arm64-cross  the aarch64 build
 #    libc6-i386                                  runs the i386 tool (/lib/ld-linux.so.2, /lib32)
-#    qemu-user                                   runs the aarch64 tool (qemu-aarch64)
+#    qemu-user                                   runs the aarch64 tool (qemu-aarch64), and the i386
+#                                                one where the kernel cannot (qemu-i386)
 #    Debian's cross compilers, not gcc-multilib: gcc-12-multilib and gcc-12-aarch64-linux-gnu
 #    conflict in bookworm, and the cross compilers carry their own C library.
 # 2. The libraries the tool links (libccd, libyaml, GSL) for i386 and arm64, in a private sysroot

@@ -22,8 +22,11 @@
 #                        where the CPU has it (model/lanes4.h), on this CPU
 #   nofma                the gcc-O2 binary run with GLIBC_TUNABLES=glibc.cpu.hwcaps=-AVX2,-FMA: the
 #                        libm code paths glibc takes on a CPU without FMA
-#   i386                 i686-linux-gnu-gcc -m32 -msse2 -mfpmath=sse -O2 (SSE2 doubles, no x87).
-#                        Built with -Werror like every other build.
+#   i386                 i686-linux-gnu-gcc -m32 -msse2 -mfpmath=sse -O2 (SSE2 doubles, no x87),
+#                        -D_FILE_OFFSET_BITS=64 (64-bit file offsets and inode numbers: without
+#                        them readdir fails with EOVERFLOW on large filesystems and under qemu).
+#                        Built with -Werror like every other build. Run by qemu-i386 where the
+#                        kernel cannot run i386 programs itself (no IA32 emulation)
 #   aarch64              aarch64-linux-gnu-gcc -O2, run by qemu-aarch64
 #   gcc-asan, clang-asan the sanitizer builds (-O1)
 # The foreign builds use the cross compilers and the sysroots of scripts/deps-cross.sh (run by
@@ -114,6 +117,13 @@ EOF
 	[ "$("$det/nofma_probe")" != "$(env "GLIBC_TUNABLES=$NOFMA_TUNABLES" "$det/nofma_probe")" ]
 }
 
+# Can this kernel run an i386 program? (Not every x86-64 kernel has IA32 emulation.)
+i386_runs() {
+	printf 'int main(void) { return 0; }\n' >"$det/i386_probe.c"
+	i686-linux-gnu-gcc -m32 -o "$det/i386_probe" "$det/i386_probe.c" >/dev/null 2>&1 || return 1
+	"$det/i386_probe" >/dev/null 2>&1
+}
+
 # spec NAME: sets cc opt cflags ldflags san pathpre runner envset base (the build whose binary
 # this one runs) and skip (why it cannot be made here, or empty)
 spec() {
@@ -140,10 +150,19 @@ spec() {
 		fi
 		;;
 	i386)
-		cc=i686-linux-gnu-gcc cflags="-m32 -msse2 -mfpmath=sse"
+		cc=i686-linux-gnu-gcc cflags="-m32 -msse2 -mfpmath=sse -D_FILE_OFFSET_BITS=64"
 		root="$det/sysroot-i386"
 		pathpre="$root/bin" ldflags="-Wl,--disable-new-dtags,-rpath,$root/usr/lib/i386-linux-gnu -Wl,-rpath-link,$root/usr/lib/i386-linux-gnu"
-		cross_ready || skip="no i686 cross compiler or i386 sysroot: run scripts/deps-cross.sh ($(tail -n 1 "$det/cross-check.log"))"
+		if ! cross_ready; then
+			skip="no i686 cross compiler or i386 sysroot: run scripts/deps-cross.sh ($(tail -n 1 "$det/cross-check.log"))"
+		elif ! i386_runs; then # a kernel without IA32 emulation (some VMs): the same binary under qemu
+			if command -v qemu-i386 >/dev/null 2>&1; then
+				runner=qemu-i386
+				note "i386: this kernel does not run i386 programs: the i386 build runs under qemu-i386"
+			else
+				skip="this kernel does not run i386 programs and qemu-i386 is missing (Debian package qemu-user)"
+			fi
+		fi
 		;;
 	aarch64)
 		cc=aarch64-linux-gnu-gcc
