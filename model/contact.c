@@ -395,12 +395,14 @@ static uint32_t points_near(const hs_hand *hand, hs_vec3 c, double r_sq) {
 		if (!(hs_length_sq(hs_sub(p[i], c)) > r_sq))
 			near |= 1u << i;
 #if defined(HS_SELFCHECK)
-	for (int k = 0; k < HS_HAND_POINTS; ++k)
-		if (memcmp(&hand->point_rows[0][k], &p[k].x, sizeof p[k].x) != 0 || memcmp(&hand->point_rows[1][k], &p[k].y, sizeof p[k].y) != 0 ||
-		    memcmp(&hand->point_rows[2][k], &p[k].z, sizeof p[k].z) != 0) {
+	for (int k = 0; k < HS_HAND_POINTS; ++k) {
+		const double row[3] = {hand->point_rows[0][k], hand->point_rows[1][k], hand->point_rows[2][k]};
+		const double point[3] = {p[k].x, p[k].y, p[k].z};
+		if (memcmp(row, point, sizeof row) != 0) {
 			fprintf(stderr, "selfcheck: the hand's point rows differ from its points\n");
 			abort();
 		}
+	}
 	for (int k = 0; k < HS_HAND_POINTS; ++k)
 		if ((near >> k & 1u) != !(hs_length_sq(hs_sub(p[k], c)) > r_sq)) {
 			fprintf(stderr, "selfcheck: points_near differs from the scalar cull\n");

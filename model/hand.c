@@ -479,9 +479,10 @@ void hs_hand_local_shape(const hs_hand_def *def, const uint8_t sensors[HS_GLOVE_
 	hs_hand_local_shape_with(def, NULL, sensors, points, lines);
 }
 
-// out[i] = w + m v[i] for n vectors: hs_add(w, hs_mat3_mul(m, v[i])). With SSE2, two vectors at a
-// time, one in each lane: each lane does that expression's products and sums in its order, so the
-// bits are the same (no fused multiply-add: -ffp-contract=off).
+// out[i] = w + m v[i] for n vectors: hs_add(w, hs_mat3_mul(m, v[i])); with `rows`, the same values
+// also as rows of x, y and z (the hand's point_rows). With SSE2, two vectors at a time, one in each
+// lane: each lane does that expression's products and sums in its order, so the bits are the same
+// (no fused multiply-add: -ffp-contract=off).
 static HS_FORCE_INLINE void place_vectors_rows(hs_mat3 m, hs_vec3 w, const hs_vec3 *v, hs_vec3 *out, int n,
                                                double (*rows)[HS_HAND_POINTS + 4]) {
 	int i = 0;
