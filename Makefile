@@ -170,7 +170,7 @@ $(BUILD)/obj/tests/%.o: tests/%.c tests/test_util.h tests/test_rig.h $(MODEL_H) 
 CHECK_JOBS  ?= 2
 CHECK_FIRST := $(filter $(addprefix $(BUILD)/tests/,test_bad_input test_spring_rest test_golden test_api),$(TESTS))
 TEST_RUNS   := $(addsuffix .run,$(CHECK_FIRST) $(filter-out $(CHECK_FIRST),$(TESTS)))
-.PHONY: check-core test-runs $(TEST_RUNS)
+.PHONY: check-core check-built test-runs $(TEST_RUNS)
 check-core: $(LIB) $(HLIB) $(TOOL) $(TESTS)
 	@$(MAKE) --no-print-directory -k -j$(CHECK_JOBS) --output-sync=target test-runs
 test-runs: $(TEST_RUNS)
@@ -181,7 +181,9 @@ $(TEST_RUNS): %.run: # the binaries are check-core's: made before
 # suite built and run again under AddressSanitizer + UndefinedBehaviorSanitizer, the
 # reliability subset, and the README's examples against an installed copy.
 check: deps
+	@$(MAKE) --no-print-directory -j$(CHECK_JOBS) check-built
 	@$(MAKE) --no-print-directory check-core
+	@$(MAKE) --no-print-directory -j$(CHECK_JOBS) check-built BUILD=$(BUILD)/asan SANITIZE=1 OPT=-O1
 	@$(MAKE) --no-print-directory check-core BUILD=$(BUILD)/asan SANITIZE=1 OPT=-O1
 	@$(MAKE) --no-print-directory check-reliability
 	@$(MAKE) --no-print-directory check-readme
@@ -313,6 +315,10 @@ clean:
 # tests/reliability.mk; without it the subset is empty.
 .PHONY: check-reliability stress fuzz determinism
 -include tests/reliability.mk
+
+# what the suites run, built on CHECK_JOBS cores first (make check; the stress program of
+# tests/reliability.mk too)
+check-built: all $(TESTS) $(STRESS)
 check-reliability::
 	@:
 
