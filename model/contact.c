@@ -139,7 +139,19 @@ static bool box_apart(const hs_shape *shape, const hs_part *part, hs_vec3 a, hs_
 	}
 	return apart;
 }
+static int box_nearest(const hs_shape *shape, const hs_part *part, hs_vec3 p) {
+	int face = hs_part_box_nearest(part, p);
+	if (face != scan_nearest(shape, part, p)) {
+		fprintf(stderr, "selfcheck: the box's nearest face differs from the scan's\n");
+		abort();
+	}
+	return face;
+}
 #else
+static inline int box_nearest(const hs_shape *shape, const hs_part *part, hs_vec3 p) {
+	(void)shape;
+	return hs_part_box_nearest(part, p);
+}
 static inline bool box_inside(const hs_shape *shape, const hs_part *part, hs_vec3 p, double grow) {
 	(void)shape;
 	return hs_part_box_inside(part, p, grow);
@@ -162,6 +174,8 @@ static inline bool inside_part(const hs_world *world, const hs_shape *shape, con
 static inline int nearest_face(const hs_world *world, const hs_shape *shape, const hs_part *part, hs_vec3 p) {
 	if (part->face_count >= HS_FACE_TREE_MIN_FACES)
 		return nearest_many(world, shape, part, p);
+	if (hs_part_is_box(part) && hs_part_box_takes(p))
+		return box_nearest(shape, part, p);
 	return scan_nearest(shape, part, p);
 }
 

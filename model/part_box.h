@@ -46,6 +46,39 @@ static inline bool hs_part_box_inside(const hs_part *part, hs_vec3 p, double gro
 #endif
 }
 
+// scan_nearest (contact.c) of a point that takes the box's path: the first face in face order of
+// the least depth offset - dot(normal, p). With an axis normal the dot is the coordinate or its
+// negation (up to the sign of a zero, which the subtraction from the offset does not keep), so each
+// depth is o[k] - p.c or o[k] - (-p.c), as there; the least found without a branch (the points
+// are noisy input), a tie settled by the face index.
+static inline int hs_part_box_nearest(const hs_part *part, hs_vec3 p) {
+	const double *o = part->box_offset;
+	unsigned least = 0;
+#if defined(__SSE2__)
+	__m128d neg = _mm_set_pd(-0.0, 0.0);
+	__m128d dx = _mm_sub_pd(_mm_loadu_pd(o), _mm_xor_pd(_mm_set1_pd(p.x), neg));
+	__m128d dy = _mm_sub_pd(_mm_loadu_pd(o + 2), _mm_xor_pd(_mm_set1_pd(p.y), neg));
+	__m128d dz = _mm_sub_pd(_mm_loadu_pd(o + 4), _mm_xor_pd(_mm_set1_pd(p.z), neg));
+	__m128d m = _mm_min_pd(_mm_min_pd(dx, dy), dz);
+	m = _mm_min_pd(m, _mm_shuffle_pd(m, m, 1));
+	least = (unsigned)_mm_movemask_pd(_mm_cmpeq_pd(dx, m)) | (unsigned)_mm_movemask_pd(_mm_cmpeq_pd(dy, m)) << 2 |
+	        (unsigned)_mm_movemask_pd(_mm_cmpeq_pd(dz, m)) << 4;
+#else
+	const double d[6] = {o[0] - p.x, o[1] - -p.x, o[2] - p.y, o[3] - -p.y, o[4] - p.z, o[5] - -p.z};
+	double m = d[0];
+	for (int k = 1; k < 6; ++k)
+		m = d[k] < m ? d[k] : m;
+	for (int k = 0; k < 6; ++k)
+		least |= (unsigned)(d[k] == m) << k;
+#endif
+	int best = -1;
+	for (; least; least &= least - 1u) {
+		int f = part->box_face[__builtin_ctz(least)];
+		best = best < 0 || f < best ? f : best;
+	}
+	return best;
+}
+
 // True when a and b both lie beyond one face of the box grown by `grow` by more than `slack`: then
 // hs_clip_segment misses (that face's t lies outside [0, 1] whatever the rounding, for a slack far
 // above it), found with 12 comparisons instead of its dots and divisions.

@@ -1,6 +1,6 @@
 // test_part_box.c — a part that is a box with axis-aligned faces (model/part_box.h): which
-// parts are found to be such boxes, the coordinate inside test answers as the scan of the faces
-// does (on faces, at ±0, grown, NaN), and two ends beyond one face by more than the slack make the
+// parts are found to be such boxes, the coordinate inside test and nearest face answer as the
+// scans of the faces do (on faces, at ±0, grown, NaN, ties), and two ends beyond one face by more than the slack make the
 // Cyrus-Beck clip miss, while ends beyond by less do not count as apart.
 #include <stdarg.h>
 #include <stddef.h>
@@ -22,6 +22,20 @@ static bool scan_inside(const hs_shape *s, const hs_part *part, hs_vec3 p, doubl
 		if (hs_dot(s->faces[f].normal, p) >= s->faces[f].offset + grow)
 			return false;
 	return true;
+}
+
+// The nearest face's scan, as contact.c writes it: the first face of the least depth.
+static int scan_nearest(const hs_shape *s, const hs_part *part, hs_vec3 p) {
+	int best = part->first_face;
+	double best_depth = INFINITY;
+	for (int f = part->first_face; f < part->first_face + part->face_count; ++f) {
+		double depth = s->faces[f].offset - hs_dot(s->faces[f].normal, p);
+		if (depth < best_depth) {
+			best_depth = depth;
+			best = f;
+		}
+	}
+	return best;
 }
 
 static double unit(uint64_t *state) { // [-1, 1), a fixed LCG
@@ -150,6 +164,50 @@ static void test_inside_matches_the_scan(void **state) {
 	hs_shape_destroy(l);
 }
 
+// The nearest face against the scan for points about the part (inside and out, on faces, at ±0);
+// returns how many had two faces or more at the least depth (ties, settled by the face index).
+static int nearest_as_the_scan(const hs_shape *shape, const hs_part *part, uint64_t seed) {
+	uint64_t rng = seed;
+	int ties = 0;
+	for (int k = 0; k < 100000; ++k) {
+		hs_vec3 p = sample(&rng, part, 0.0);
+		int want = scan_nearest(shape, part, p);
+		assert_int_equal(hs_part_box_nearest(part, p), want);
+		int least = 0;
+		for (int f = part->first_face; f < part->first_face + part->face_count; ++f)
+			least += shape->faces[f].offset - hs_dot(shape->faces[f].normal, p) ==
+			         shape->faces[want].offset - hs_dot(shape->faces[want].normal, p);
+		ties += least > 1;
+	}
+	return ties;
+}
+
+static void test_nearest_matches_the_scan(void **state) {
+	(void)state;
+	hs_shape *box = hs_shape_box(hs_v3(0.3, 0.1, 0.2), NULL);
+	hs_shape *cube = hs_shape_box(hs_v3(0.2, 0.2, 0.2), NULL);
+	hs_shape *l = hs_shape_l_block(hs_v3(3, 1, 2), 1, NULL);
+	assert_non_null(box);
+	assert_non_null(cube);
+	assert_non_null(l);
+	assert_true(nearest_as_the_scan(box, &box->parts[0], 2027) > 100);
+	assert_true(nearest_as_the_scan(cube, &cube->parts[0], 5) > 100);
+	assert_true(nearest_as_the_scan(l, &l->parts[1], 12) > 100);
+	// a cube's centre is as deep under all six faces: the first of them; off it along +x, the +x face
+	const hs_part *c = &cube->parts[0];
+	assert_int_equal(hs_part_box_nearest(c, hs_v3(0.0, 0.0, 0.0)), c->first_face);
+	assert_int_equal(hs_part_box_nearest(c, hs_v3(-0.0, -0.0, -0.0)), c->first_face);
+	assert_int_equal(hs_part_box_nearest(c, hs_v3(0.01, 0.0, 0.0)), c->box_face[0]);
+	assert_int_equal(hs_part_box_nearest(c, hs_v3(0.0, 0.0, -0.09)), c->box_face[5]);
+	// on the +x/+y edge's diagonal: the lower of the two faces' indices
+	int xy = c->box_face[0] < c->box_face[2] ? c->box_face[0] : c->box_face[2];
+	assert_int_equal(hs_part_box_nearest(c, hs_v3(0.05, 0.05, 0.0)), xy);
+	assert_int_equal(scan_nearest(cube, c, hs_v3(0.05, 0.05, 0.0)), xy);
+	hs_shape_destroy(box);
+	hs_shape_destroy(cube);
+	hs_shape_destroy(l);
+}
+
 static void test_apart_means_the_clip_misses(void **state) {
 	(void)state;
 	hs_shape *box = hs_shape_box(hs_v3(0.3, 0.1, 0.2), NULL);
@@ -188,6 +246,7 @@ int main(void) {
 	const struct CMUnitTest tests[] = {
 	    cmocka_unit_test(test_finds_boxes),
 	    cmocka_unit_test(test_inside_matches_the_scan),
+	    cmocka_unit_test(test_nearest_matches_the_scan),
 	    cmocka_unit_test(test_apart_means_the_clip_misses),
 	};
 	return cmocka_run_group_tests(tests, NULL, NULL);
