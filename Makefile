@@ -159,7 +159,7 @@ $(BUILD)/tests/%: $(BUILD)/obj/tests/%.o $(LIBS)
 	@mkdir -p $(dir $@)
 	$(CC) $(LDFLAGS) -o $@ $^ -lcmocka $(LDLIBS_ALL)
 
-$(BUILD)/obj/tests/%.o: tests/%.c tests/test_util.h tests/test_rig.h $(MODEL_H) $(HARNESS_H) | deps
+$(BUILD)/obj/tests/%.o: tests/%.c tests/test_util.h tests/test_rig.h tests/test_scans.h $(MODEL_H) $(HARNESS_H) | deps
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS_TESTS) -c $< -o $@
 

@@ -15,6 +15,7 @@
 
 #include "clip.h"
 #include "face_tree.h"
+#include "test_scans.h"
 #include "test_util.h"
 
 // A UV ball of slices × stacks faces (fans at the poles, planar trapezoids between), its vertices
@@ -56,27 +57,7 @@ static hs_shape *uv_ball(int slices, int stacks, double r, hs_vec3 stretch) {
 	return s;
 }
 
-// The scans, written here as contact.c writes them (the reference).
-static bool scan_inside(const hs_shape *s, const hs_part *part, hs_vec3 p, double grow) {
-	for (int f = part->first_face; f < part->first_face + part->face_count; ++f)
-		if (hs_dot(s->faces[f].normal, p) >= s->faces[f].offset + grow)
-			return false;
-	return true;
-}
-
-static int scan_nearest(const hs_shape *s, const hs_part *part, hs_vec3 p) {
-	int best = part->first_face;
-	double best_depth = INFINITY;
-	for (int f = part->first_face; f < part->first_face + part->face_count; ++f) {
-		double depth = s->faces[f].offset - hs_dot(s->faces[f].normal, p);
-		if (depth < best_depth) {
-			best_depth = depth;
-			best = f;
-		}
-	}
-	return best;
-}
-
+// The sweep's scan, as contact.c writes it (the reference; the others are in test_scans.h).
 static bool scan_beyond(const hs_shape *s, const hs_part *part, const hs_vec3 q[4]) {
 	for (int f = part->first_face; f < part->first_face + part->face_count; ++f) {
 		hs_vec3 n = s->faces[f].normal;

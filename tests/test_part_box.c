@@ -12,31 +12,10 @@
 
 #include "clip.h"
 #include "part_box.h"
+#include "test_scans.h"
 #include "test_util.h"
 
 #define SLACK 1e-6 // contact.c's HS_CULL_SLACK
-
-// The scan, written here as contact.c writes it (the reference).
-static bool scan_inside(const hs_shape *s, const hs_part *part, hs_vec3 p, double grow) {
-	for (int f = part->first_face; f < part->first_face + part->face_count; ++f)
-		if (hs_dot(s->faces[f].normal, p) >= s->faces[f].offset + grow)
-			return false;
-	return true;
-}
-
-// The nearest face's scan, as contact.c writes it: the first face of the least depth.
-static int scan_nearest(const hs_shape *s, const hs_part *part, hs_vec3 p) {
-	int best = part->first_face;
-	double best_depth = INFINITY;
-	for (int f = part->first_face; f < part->first_face + part->face_count; ++f) {
-		double depth = s->faces[f].offset - hs_dot(s->faces[f].normal, p);
-		if (depth < best_depth) {
-			best_depth = depth;
-			best = f;
-		}
-	}
-	return best;
-}
 
 static double unit(uint64_t *state) { // [-1, 1), a fixed LCG
 	*state = *state * 6364136223846793005ull + 1442695040888963407ull;
