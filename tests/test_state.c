@@ -14,6 +14,7 @@
 #include <cmocka.h>
 
 #include "handspring.h"
+#include "broadphase.h"
 #include "test_util.h"
 #include "spring_system.h"
 #include "world_internal.h"
@@ -59,7 +60,7 @@ static hs_release_fit rig_release_fit = HS_RELEASE_FIT_MEAN;
 static hand_rig hand_world(double cube_size, int extra_objects, bool skip_work) {
 	hand_rig r;
 	hs_world_def def = hs_default_world_def();
-	def.max_objects = 8;
+	def.max_objects = 4 + extra_objects > 8 ? 4 + extra_objects : 8;
 	def.skip_work = skip_work;
 	def.grasp_any_contacts = rig_any_contacts;
 	def.dt = 1.0 / rig_fps;
@@ -189,6 +190,29 @@ static void test_hand_world_continues_identically(void **state) {
 	hs_world_destroy(r2.world);
 }
 
+
+// A world of more objects than broadphase.c scans whole (HS_GRID_MIN_OBJECTS, 16): its grid's
+// queries find fewer objects than all, and the hand's grasp and throw give the same hash every
+// frame with skip_work on (the grid, sleep, bounding volumes) and off.
+static void test_grid_world_same_bits(void **state) {
+	(void)state;
+	hand_rig on = hand_world(0.05, 20, true), off = hand_world(0.05, 20, false);
+	uint64_t a[N_FRAMES + M_FRAMES], b[N_FRAMES + M_FRAMES];
+	step_hand(&on, on.world, 0, N_FRAMES + M_FRAMES, a);
+	step_hand(&off, off.world, 0, N_FRAMES + M_FRAMES, b);
+	for (int k = 0; k < N_FRAMES + M_FRAMES; ++k)
+		if (a[k] != b[k])
+			fail_msg("frame %d: skip_work on %016llx, off %016llx", k + 1, (unsigned long long)a[k], (unsigned long long)b[k]);
+	int n = on.world->object_count, *found = malloc((size_t)n * sizeof *found);
+	assert_non_null(found);
+	assert_int_equal(n, 24);
+	int near = hs_grid_query(on.world, hs_v3(-1.0, 0.0, 0.025), 0.05, found); // the first of the row
+	assert_true(near >= 1 && near < n);
+	assert_int_equal(hs_grid_query(off.world, hs_v3(-1.0, 0.0, 0.025), 0.05, found), n); // off: all
+	free(found);
+	hs_world_destroy(on.world);
+	hs_world_destroy(off.world);
+}
 
 // A state saved before the hand was first set, loaded into a world whose hand has been set since:
 // the hand's cache of finger chains (not state) must not stand for the shape the load cleared.
@@ -641,6 +665,7 @@ int main(void) {
 	const struct CMUnitTest tests[] = {
 	    cmocka_unit_test(test_hand_world_continues_identically),
 	    cmocka_unit_test(test_load_unset_hand_then_set),
+	    cmocka_unit_test(test_grid_world_same_bits),
 	    cmocka_unit_test(test_spring_world_continues_identically),
 	    cmocka_unit_test(test_spring_world_with_noise_continues_identically),
 	    cmocka_unit_test(test_refusals),
