@@ -58,7 +58,6 @@ bool hs_object_interferes(hs_world *world, int object) {
 			return true;
 	return false;
 }
-
 // Eq. 1-2: C on the surface is moved to B, the finger point now. CB = T + R with T ∥ CG:
 // translate by T, turn about the axis through G along R × CG by atan(|R| / |CG|), so C moves along R.
 void hs_push_at_one_point(hs_body *body, hs_vec3 c, hs_vec3 b) {
@@ -139,14 +138,21 @@ static void carry_along(hs_world *world, int moved, int current, rigid_move m) {
 		// where i was before this move (its inverse motion about the mover's G)
 		hs_vec3 was = hs_add(m.from, hs_quat_rotate(back, hs_sub(moved_body->pos, m.to)));
 		hs_quat was_rot = hs_quat_normalize(hs_quat_mul(back, moved_body->rot));
-		int n = hs_grid_query(world, moved_body->pos, world->shapes[moved_body->shape].radius, world->near);
+		double ra = world->shapes[moved_body->shape].radius;
+		int n = hs_grid_query(world, moved_body->pos, ra, world->near);
 		for (int k = 0; k < n; ++k) {
 			int j = world->near[k];
 			hs_body *b = &world->bodies[j];
+			if (j == moved || b->held || b->carried)
+				continue;
+			// both bounding-sphere tests the two overlap tests begin with, at once (i does not move in
+			// this loop: j is never i, which is moved or carried)
+			double r = ra + world->shapes[b->shape].radius;
+			if (hs_length_sq(hs_sub(moved_body->pos, b->pos)) > r * r && hs_length_sq(hs_sub(was, b->pos)) > r * r)
+				continue;
 			// interfering where i is now, or where it was before this move (an object resting on a
 			// held one that the hand lowers a little: under tracker noise it was left hovering)
-			if (j == moved || b->held || b->carried ||
-			    !(bodies_overlap(world, i, j) || overlap_at_pose(world, i, was, was_rot, j)))
+			if (!(bodies_overlap(world, i, j) || overlap_at_pose(world, i, was, was_rot, j)))
 				continue;
 			hs_vec3 at = hs_add(m.to, hs_quat_rotate(m.turn, hs_sub(b->pos, m.from)));
 			b->prev = hs_add(b->prev, hs_sub(at, b->pos)); // carried, not thrown: no inertia is gained
