@@ -855,13 +855,12 @@ typedef struct deep_memo {
 // for the rest of the part's lines.
 static bool ends_deep(const hs_world *world, const hs_hand *hand, uint32_t touching, int a, const frame *body, const hs_shape *shape,
                       const hs_part *part, double grow, deep_memo *memo) {
-	for (int k = 0; k < 2; ++k) {
-		uint32_t bit = 1u << (a + k);
-		if (!(touching & bit))
-			continue;
+	for (uint32_t ends = touching & 3u << a; ends; ends &= ends - 1u) { // a, then a + 1
+		int i = hs_lowest_bit(ends);
+		uint32_t bit = 1u << i;
 		if (!(memo->known & bit)) { // a check point ends two segments: tested once
 			memo->known |= bit;
-			if (inside_part(world, shape, part, to_body(body, hand->points[a + k]), grow))
+			if (inside_part(world, shape, part, to_body(body, hand->points[i]), grow))
 				memo->deep |= bit;
 		}
 		if (memo->deep & bit)
