@@ -1284,7 +1284,7 @@ hs_vec3 hs_contact_rectify(const hs_world *world, hs_vec3 p) {
 	return p;
 }
 
-int hs_contact_detect(hs_world *world, int object, const hs_body *before) {
+int hs_contact_detect(hs_world *world, int object, const hs_pose *before) {
 	return hs_contact_detect_grown(world, object, before, 0.0);
 }
 
@@ -1391,7 +1391,7 @@ static inline void check_far(const hs_hand *hand, unsigned far, hs_vec3 c, doubl
 }
 #endif
 
-int hs_contact_detect_grown(hs_world *world, int object, const hs_body *before, double grow) {
+int hs_contact_detect_grown(hs_world *world, int object, const hs_pose *before, double grow) {
 	int first = world->contact_count;
 	const hs_body *body = &world->bodies[object];
 	const hs_shape *shape = &world->shapes[body->shape];
@@ -1400,7 +1400,9 @@ int hs_contact_detect_grown(hs_world *world, int object, const hs_body *before, 
 		++h;
 	if (h == world->hand_count)
 		return 0;
-	frame now = frame_of(body), then = before ? frame_of(before) : now;
+	frame now = frame_of(body), then = now;
+	if (before)
+		then = (frame){before->pos, hs_mat3_from_quat(before->rot)};
 	for (; h < world->hand_count; ++h) {
 		const hs_hand *hand = &world->hands[h];
 		if (!hs_contact_hand_near(world, body, hand, grow))

@@ -15,13 +15,19 @@ static inline bool hs_contact_hand_near(const hs_world *world, const hs_body *bo
 	return !world->def.skip_work || hs_length_sq(hs_sub(body->pos, hand->sweep_center)) <= reach * reach;
 }
 
+// Where an object's G is and how it is turned.
+typedef struct hs_pose {
+	hs_vec3 pos;
+	hs_quat rot;
+} hs_pose;
+
 // Appends the contacts of every hand with the object to world->contacts; returns how many.
 // `before` is the object's pose one frame ago when it has moved since (NULL: it has not).
-int hs_contact_detect(hs_world *world, int object, const hs_body *before);
+int hs_contact_detect(hs_world *world, int object, const hs_pose *before);
 // The same against the object's parts grown by `grow` (m): a finger part within `grow` of the
 // surface touches it (the grasp's release margin, docs/model.md §3). Contact points are
 // projected on the faces themselves.
-int hs_contact_detect_grown(hs_world *world, int object, const hs_body *before, double grow);
+int hs_contact_detect_grown(hs_world *world, int object, const hs_pose *before, double grow);
 // §3.2 rectification of a check point: p moved to the nearest face of the convex part of the
 // first object (in index order) it lies in, or p itself (hs_world_hand_rectified_points).
 hs_vec3 hs_contact_rectify(const hs_world *world, hs_vec3 p);

@@ -89,7 +89,7 @@ static bool holder_holds(const hs_world *world, const hs_contact *cs, int n, uin
 // (ungrown) are in world->contacts from `first` and *n says how many. The ungrown contacts are a
 // subset of the grown ones, so they are tried first: the grown test runs only when they do not
 // hold (a finger lifted off within the margin), which keeps a held object at one detection a frame.
-static bool grasp_continues(hs_world *world, int i, const hs_body *before, int first, int *n) {
+static bool grasp_continues(hs_world *world, int i, const hs_pose *before, int first, int *n) {
 	hs_body *body = &world->bodies[i];
 	uint32_t holder = (uint32_t)body->grasped_by;
 	const hs_hand *hand = &world->hands[holder - 1];
@@ -162,7 +162,7 @@ hs_contact_state hs_grasp_detect(hs_world *world, int i, int first, int *n, bool
 	hs_body *body = &world->bodies[i];
 	*continues = false;
 	if (body->grasped_by > 0 && !body->released_by) {
-		hs_body before = *body;
+		hs_pose before = {body->pos, body->rot};
 		hs_grasp_follow_wrist(body, &world->hands[body->grasped_by - 1]);
 		if (grasp_continues(world, i, &before, first, n)) {
 			*continues = true;
