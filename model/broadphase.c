@@ -28,10 +28,11 @@ void hs_grid_build(hs_world *world) {
 // A world of this many objects or fewer is scanned whole: each caller's bounding-sphere test of
 // every object costs less than hashing the cells of its query (the seed scene, 10 cubes: 233
 // instructions a frame less over its three queries; 16 cubes: 930). The same bits either way.
-#define HS_GRID_MIN_OBJECTS 16
+#define HS_GRID_SCAN_MAX 16
 
 int hs_grid_query(const hs_world *world, hs_vec3 center, double radius, int *out) {
-	if (!world->def.skip_work || !world->grid_built || world->object_count <= HS_GRID_MIN_OBJECTS) { // the full scan, in index order
+	bool scan = !world->def.skip_work || !world->grid_built || world->object_count <= HS_GRID_SCAN_MAX;
+	if (scan) { // the full scan, in index order
 		for (int i = 0; i < world->object_count; ++i)
 			out[i] = i;
 		return world->object_count;

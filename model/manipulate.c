@@ -27,15 +27,19 @@ static HS_FORCE_INLINE int memo_box(const hs_world *world, int i, hs_vec3 pos, h
 	return k;
 }
 
+// The bounding spheres (radii summing to r) of an object at pos and object b lie apart: no overlap.
+static HS_FORCE_INLINE bool spheres_apart(double r, hs_vec3 pos, const hs_body *b) {
+	return hs_length_sq(hs_sub(pos, b->pos)) > r * r;
+}
+
 // Objects i, posed at (pos, rot), and j overlap (libccd; bounding spheres first). Two single-part
 // objects (no exact spheres) whose world boxes lie apart are not handed to hs_shapes_overlap: it
 // would find them apart by the same boxes (hs_part_world_boxes_apart), after making them again.
 static HS_FORCE_INLINE bool overlap_at_pose(const hs_world *world, int i, hs_vec3 pos, hs_quat rot, int j) {
 	const hs_body *b = &world->bodies[j];
 	const hs_shape *sa = &world->shapes[world->bodies[i].shape], *sb = &world->shapes[b->shape];
-	double r = sa->radius + sb->radius;
-	if (hs_length_sq(hs_sub(pos, b->pos)) > r * r)
-		return false; // bounding spheres apart: no narrow test
+	if (spheres_apart(sa->radius + sb->radius, pos, b))
+		return false; // no narrow test
 	if (world->def.skip_work && sa->part_count == 1 && sb->part_count == 1 && sa->kind != HS_SHAPE_SPHERE &&
 	    sb->kind != HS_SHAPE_SPHERE) {
 		int ka = memo_box(world, i, pos, rot), kb = memo_box(world, j, b->pos, b->rot);
@@ -58,6 +62,7 @@ bool hs_object_interferes(hs_world *world, int object) {
 			return true;
 	return false;
 }
+
 // Eq. 1-2: C on the surface is moved to B, the finger point now. CB = T + R with T ∥ CG:
 // translate by T, turn about the axis through G along R × CG by atan(|R| / |CG|), so C moves along R.
 void hs_push_at_one_point(hs_body *body, hs_vec3 c, hs_vec3 b) {
@@ -145,10 +150,10 @@ static void carry_along(hs_world *world, int moved, int current, rigid_move m) {
 			hs_body *b = &world->bodies[j];
 			if (j == moved || b->held || b->carried)
 				continue;
-			// both bounding-sphere tests the two overlap tests begin with, at once (i does not move in
-			// this loop: j is never i, which is moved or carried)
+			// the sphere tests the two overlap tests begin with, both at once (i does not move in this
+			// loop: j is never i, which is moved or carried)
 			double r = ra + world->shapes[b->shape].radius;
-			if (hs_length_sq(hs_sub(moved_body->pos, b->pos)) > r * r && hs_length_sq(hs_sub(was, b->pos)) > r * r)
+			if (spheres_apart(r, moved_body->pos, b) && spheres_apart(r, was, b))
 				continue;
 			// interfering where i is now, or where it was before this move (an object resting on a
 			// held one that the hand lowers a little: under tracker noise it was left hovering)

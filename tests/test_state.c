@@ -191,7 +191,7 @@ static void test_hand_world_continues_identically(void **state) {
 }
 
 
-// A world of more objects than broadphase.c scans whole (HS_GRID_MIN_OBJECTS, 16): its grid's
+// A world of more objects than broadphase.c scans whole (HS_GRID_SCAN_MAX, 16): its grid's
 // queries find fewer objects than all, and the hand's grasp and throw give the same hash every
 // frame with skip_work on (the grid, sleep, bounding volumes) and off.
 static void test_grid_world_same_bits(void **state) {
