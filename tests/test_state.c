@@ -56,11 +56,13 @@ static bool rig_any_contacts; // the grasp rule of the hand worlds built next (d
 static double rig_fps = 60.0;  // their frame rate (drive_hand's time follows it)
 static double rig_release_window = 0.05;
 static hs_release_fit rig_release_fit = HS_RELEASE_FIT_MEAN;
+static int rig_max_objects = 0; // their capacity, when more than they start with
 
 static hand_rig hand_world(double cube_size, int extra_objects, bool skip_work) {
 	hand_rig r;
 	hs_world_def def = hs_default_world_def();
 	def.max_objects = 4 + extra_objects > 8 ? 4 + extra_objects : 8;
+	def.max_objects = rig_max_objects > def.max_objects ? rig_max_objects : def.max_objects;
 	def.skip_work = skip_work;
 	def.grasp_any_contacts = rig_any_contacts;
 	def.dt = 1.0 / rig_fps;
@@ -210,6 +212,48 @@ static void test_grid_world_same_bits(void **state) {
 	assert_true(near >= 1 && near < n);
 	assert_int_equal(hs_grid_query(off.world, hs_v3(-1.0, 0.0, 0.025), 0.05, found), n); // off: all
 	free(found);
+	hs_world_destroy(on.world);
+	hs_world_destroy(off.world);
+}
+
+// A world small enough to be scanned whole files no moved object in its grid (broadphase.c): one
+// that grows past HS_GRID_SCAN_MAX while its objects are held and flying files them all at its
+// next step. Every object is then found where it is, and the bits are those of skip_work off.
+static void test_grid_world_grown_past_the_scan(void **state) {
+	(void)state;
+	rig_max_objects = 24;
+	hand_rig on = hand_world(0.05, 0, true), off = hand_world(0.05, 0, false);
+	rig_max_objects = 0;
+	step_hand(&on, on.world, 0, N_FRAMES, NULL); // the cube held and lifted, the block in flight
+	step_hand(&off, off.world, 0, N_FRAMES, NULL);
+	hs_world *w[2] = {on.world, off.world};
+	for (int k = 0; k < 2; ++k) {
+		hs_shape_id cube = add_shape(w[k], hs_shape_box(hs_v3(0.05, 0.05, 0.05), NULL));
+		for (int i = 0; i < 20; ++i) // a row along the swing, past its end
+			add_object(w[k], cube, hs_v3(0.2 + 0.1 * i, 0.12, 0.025), hs_v3(0, 0, 0));
+	}
+	uint64_t a[M_FRAMES], b[M_FRAMES];
+	step_hand(&on, on.world, N_FRAMES, 1, a);
+	step_hand(&off, off.world, N_FRAMES, 1, b);
+	int n = on.world->object_count, *found = malloc((size_t)n * sizeof *found);
+	assert_non_null(found);
+	assert_int_equal(n, 24);
+	for (int i = 0; i < n; ++i) { // the held cube and the block included, where they are now
+		const hs_body *body = &on.world->bodies[i];
+		int near = hs_grid_query(on.world, body->pos, on.world->shapes[body->shape].radius, found), k = 0;
+		while (k < near && found[k] != i)
+			++k;
+		if (k == near)
+			fail_msg("object %d not found where it is", i);
+		assert_true(near < n);
+	}
+	free(found);
+	step_hand(&on, on.world, N_FRAMES + 1, M_FRAMES - 1, a + 1);
+	step_hand(&off, off.world, N_FRAMES + 1, M_FRAMES - 1, b + 1);
+	for (int k = 0; k < M_FRAMES; ++k)
+		if (a[k] != b[k])
+			fail_msg("frame %d: skip_work on %016llx, off %016llx", N_FRAMES + k + 1, (unsigned long long)a[k],
+			         (unsigned long long)b[k]);
 	hs_world_destroy(on.world);
 	hs_world_destroy(off.world);
 }
@@ -666,6 +710,7 @@ int main(void) {
 	    cmocka_unit_test(test_hand_world_continues_identically),
 	    cmocka_unit_test(test_load_unset_hand_then_set),
 	    cmocka_unit_test(test_grid_world_same_bits),
+	    cmocka_unit_test(test_grid_world_grown_past_the_scan),
 	    cmocka_unit_test(test_spring_world_continues_identically),
 	    cmocka_unit_test(test_spring_world_with_noise_continues_identically),
 	    cmocka_unit_test(test_refusals),
