@@ -639,9 +639,10 @@ void hs_hand_keep_previous(hs_hand *hand) {
 	hand->prev_center = hand->center;
 	hand->prev_radius = hand->radius;
 	memcpy(hand->prev_points, hand->points, sizeof hand->points);
-	for (int s = 0; s < 15; ++s) // the placed segments' lines
-		if ((unsigned)hand->lines_ready >> s & 1u)
-			memcpy(hand->prev_lines[4 * s], hand->lines[4 * s], sizeof hand->lines[0] * 4);
+	for (unsigned todo = hand->lines_ready; todo; todo &= todo - 1u) { // the placed segments' lines
+		int s = hs_lowest_bit(todo);
+		memcpy(hand->prev_lines[4 * s], hand->lines[4 * s], sizeof hand->lines[0] * 4);
+	}
 	hand->prev_lines_ready = hand->lines_ready; // the others from the shape they would be placed from
 	hand->prev_place_m = hand->place_m;
 	hand->prev_local = hand->local;
