@@ -6,6 +6,9 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 #include "broadphase.h"
 #include "inline.h"
@@ -182,13 +185,31 @@ static size_t put_quat(uint64_t *w, size_t n, hs_quat q) { // w, x, y, z as hs_s
 	w[n + 2] = hs_state_bits(q.y), w[n + 3] = hs_state_bits(q.z);
 	return n + 4;
 }
+// A reading's sensors, a word each (zero-extended); with SSE2 the first 16 by unpacking with zeros.
+static size_t put_sensors(uint64_t *w, size_t n, const uint8_t v[HS_GLOVE_SENSORS]) {
+	int i = 0;
+#if defined(__SSE2__)
+	const __m128i zero = _mm_setzero_si128();
+	__m128i b = _mm_loadu_si128((const __m128i *)(const void *)v);
+	__m128i h[2] = {_mm_unpacklo_epi8(b, zero), _mm_unpackhi_epi8(b, zero)}; // 16 bits
+	for (size_t k = 0; k < 2; ++k) {
+		__m128i d[2] = {_mm_unpacklo_epi16(h[k], zero), _mm_unpackhi_epi16(h[k], zero)}; // 32 bits
+		for (size_t m = 0; m < 2; ++m) {
+			_mm_storeu_si128((__m128i *)(void *)&w[n + 8 * k + 4 * m], _mm_unpacklo_epi32(d[m], zero));
+			_mm_storeu_si128((__m128i *)(void *)&w[n + 8 * k + 4 * m + 2], _mm_unpackhi_epi32(d[m], zero));
+		}
+	}
+	i = 16;
+	_Static_assert(HS_GLOVE_SENSORS >= 16, "16 sensors unpacked at once");
+#endif
+	for (; i < HS_GLOVE_SENSORS; ++i)
+		w[n + (size_t)i] = v[i];
+	return n + HS_GLOVE_SENSORS;
+}
+
 static size_t hand_words(const hs_hand *h, uint64_t *w) {
-	size_t n = put_quat(w, put_vec3(w, 0, h->wrist_pos), h->wrist_rot);
-	for (int i = 0; i < HS_GLOVE_SENSORS; ++i)
-		w[n++] = h->sensors[i];
-	n = put_quat(w, put_vec3(w, n, h->prev_wrist_pos), h->prev_wrist_rot);
-	for (int i = 0; i < HS_GLOVE_SENSORS; ++i)
-		w[n++] = h->prev_sensors[i];
+	size_t n = put_sensors(w, put_quat(w, put_vec3(w, 0, h->wrist_pos), h->wrist_rot), h->sensors);
+	n = put_sensors(w, put_quat(w, put_vec3(w, n, h->prev_wrist_pos), h->prev_wrist_rot), h->prev_sensors);
 	w[n++] = h->placed ? 1u : 0u;
 	w[n++] = (uint64_t)(int64_t)h->older_count;
 	for (int i = 0; i < h->older_capacity; ++i)
