@@ -32,15 +32,30 @@ void hs_grid_build(hs_world *world) {
 		hs_grid_update(world, i);
 }
 
+static bool scanned_whole(const hs_world *world) {
+	return !world->def.skip_work || !world->grid_built || world->object_count <= HS_GRID_SCAN_MAX;
+}
+
 int hs_grid_query(const hs_world *world, hs_vec3 center, double radius, int *out) {
-	bool scan = !world->def.skip_work || !world->grid_built || world->object_count <= HS_GRID_SCAN_MAX;
-	if (scan) { // the full scan, in index order
+	if (scanned_whole(world)) { // the full scan, in index order
 		for (int i = 0; i < world->object_count; ++i)
 			out[i] = i;
 		return world->object_count;
 	}
 	hs_vec3 r = hs_v3(radius, radius, radius); // objects are filed by their centres (x, y)
 	return hs_hgrid_query(&world->grid, hs_sub(center, r), hs_add(center, r), out);
+}
+
+int hs_grid_near(hs_world *world, hs_vec3 center, double radius) {
+	if (scanned_whole(world)) { // the seed scene's three queries a frame: filled once
+		for (int i = world->near_identity; i < world->object_count; ++i)
+			world->near[i] = i;
+		if (world->near_identity < world->object_count)
+			world->near_identity = world->object_count;
+		return world->object_count;
+	}
+	world->near_identity = 0;
+	return hs_grid_query(world, center, radius, world->near);
 }
 
 static void insert_sorted(int *list, int *count, int value) {

@@ -13,6 +13,9 @@ void hs_grid_update(hs_world *world, int i);
 // Objects whose centre may lie within radius + their own bounding radius of center (in x, y), in
 // index order (every object when skip_work is off). Returns how many were written to out.
 int hs_grid_query(const hs_world *world, hs_vec3 center, double radius, int *out);
+// hs_grid_query into world->near. A world scanned whole keeps its answer (every index in order)
+// there from one query to the next: only a grid's answer overwrites it.
+int hs_grid_near(hs_world *world, hs_vec3 center, double radius);
 // Marks object i awake and puts it on the awake list.
 void hs_wake(hs_world *world, int i);
 // Drops objects that fell asleep from the awake list.

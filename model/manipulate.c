@@ -56,7 +56,7 @@ static HS_FORCE_INLINE bool bodies_overlap(const hs_world *world, int i, int j) 
 
 bool hs_object_interferes(hs_world *world, int object) {
 	const hs_body *body = &world->bodies[object];
-	int n = hs_grid_query(world, body->pos, world->shapes[body->shape].radius, world->near);
+	int n = hs_grid_near(world, body->pos, world->shapes[body->shape].radius);
 	for (int k = 0; k < n; ++k)
 		if (world->near[k] != object && bodies_overlap(world, object, world->near[k]))
 			return true;
@@ -144,7 +144,7 @@ static void carry_along(hs_world *world, int moved, int current, rigid_move m) {
 		hs_vec3 was = hs_add(m.from, hs_quat_rotate(back, hs_sub(moved_body->pos, m.to)));
 		hs_quat was_rot = hs_quat_normalize(hs_quat_mul(back, moved_body->rot));
 		double ra = world->shapes[moved_body->shape].radius;
-		int n = hs_grid_query(world, moved_body->pos, ra, world->near);
+		int n = hs_grid_near(world, moved_body->pos, ra);
 		for (int k = 0; k < n; ++k) {
 			int j = world->near[k];
 			hs_body *b = &world->bodies[j];
@@ -281,7 +281,7 @@ static void collect_candidates(hs_world *world) {
 	world->candidate_count = 0;
 	for (int h = 0; h < world->hand_count; ++h) {
 		const hs_hand *hand = &world->hands[h];
-		int n = hs_grid_query(world, hand->sweep_center, hand->sweep_radius, world->near);
+		int n = hs_grid_near(world, hand->sweep_center, hand->sweep_radius);
 		for (int k = 0; k < n; ++k) {
 			const hs_body *b = &world->bodies[world->near[k]];
 			if (!untouched(b) || hs_contact_hand_near(world, b, hand, 0.0))

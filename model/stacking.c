@@ -114,7 +114,7 @@ bool hs_stack_rectify(hs_world *world, int object) {
 	bool inside = false;
 	for (int pass = 0; pass < 4; ++pass) { // leaving one may not leave another: look again
 		bool moved = false;
-		int n = hs_grid_query(world, body->pos, world->shapes[body->shape].radius, world->near);
+		int n = hs_grid_near(world, body->pos, world->shapes[body->shape].radius);
 		for (int k = 0; k < n; ++k)
 			if (is_under(world, object, world->near[k], body->pos.z))
 				moved = rectify_against(world, body, &world->bodies[world->near[k]]) || moved;
@@ -131,7 +131,7 @@ static double first_contact(hs_world *world, int object, hs_vec3 from, hs_vec3 d
 	const hs_body *body = &world->bodies[object];
 	double r = world->shapes[body->shape].radius, len = hs_length(d);
 	hs_vec3 mid = hs_mul_add(from, 0.5, d);
-	int n = hs_grid_query(world, mid, r + 0.5 * len, world->near);
+	int n = hs_grid_near(world, mid, r + 0.5 * len);
 	double step = INFINITY;
 	for (int k = 0; k < n; ++k) {
 		int j = world->near[k];

@@ -145,7 +145,7 @@ void hs_support_step(hs_world *world, int object) {
 	double tol = world->def.floor_tolerance;
 	double lift = 0.0;
 	bool touching = false;
-	int near_count = hs_grid_query(world, body->pos, world->shapes[body->shape].radius + tol, world->near);
+	int near_count = hs_grid_near(world, body->pos, world->shapes[body->shape].radius + tol);
 	for (int k = 0; k < near_count; ++k) {
 		int j = world->near[k];
 		if (!is_support(world, object, j, tol))
@@ -220,7 +220,7 @@ void hs_support_wake_neighbours(hs_world *world, int object) {
 	old.rot = body->rot_prev;
 	// what rested on it where it was at the frame's start: its motion this frame is the margin
 	double tol = world->def.floor_tolerance + hs_length(hs_sub(body->pos, body->prev));
-	int n = hs_grid_query(world, body->pos, world->shapes[body->shape].radius + tol, world->near);
+	int n = hs_grid_near(world, body->pos, world->shapes[body->shape].radius + tol);
 	for (int k = 0; k < n; ++k) {
 		int j = world->near[k];
 		if (j == object || !near_spheres(world, object, j, tol))
