@@ -11,12 +11,18 @@
 // A world of this many objects or fewer is scanned whole: each caller's bounding-sphere test of
 // every object costs less than hashing the cells of its query (the seed scene, 10 cubes: 233
 // instructions a frame less over its three queries; 16 cubes: 930). The same bits either way.
-// Its grid is never read, so a moved object is not filed (233 instructions a frame less in the
-// seed scene); adding objects past it files them all at the next step (grid_dirty).
 #define HS_GRID_SCAN_MAX 16
 
+// Whether queries read the grid once it is built: a larger world with skip_work on. Otherwise no
+// moved object is filed in it (233 instructions a frame less in the seed scene); a world that
+// grows past the limit files every object at its next step (grid_dirty). skip_work is fixed
+// when the world is made.
+static bool grid_read(const hs_world *world) {
+	return world->def.skip_work && world->object_count > HS_GRID_SCAN_MAX;
+}
+
 void hs_grid_update(hs_world *world, int i) {
-	if (!world->grid_built || world->object_count <= HS_GRID_SCAN_MAX)
+	if (!world->grid_built || !grid_read(world))
 		return; // not built yet (the first step builds it), or not read
 	hs_hgrid_file(&world->grid, i, world->bodies[i].pos);
 }
@@ -32,30 +38,28 @@ void hs_grid_build(hs_world *world) {
 		hs_grid_update(world, i);
 }
 
-static bool scanned_whole(const hs_world *world) {
-	return !world->def.skip_work || !world->grid_built || world->object_count <= HS_GRID_SCAN_MAX;
-}
+// A query answers by a full scan, in index order (the grid not read, or not built yet).
+static bool scanned(const hs_world *world) { return !world->grid_built || !grid_read(world); }
 
-int hs_grid_query(const hs_world *world, hs_vec3 center, double radius, int *out) {
-	if (scanned_whole(world)) { // the full scan, in index order
-		for (int i = 0; i < world->object_count; ++i)
-			out[i] = i;
-		return world->object_count;
-	}
+static int grid_answer(const hs_world *world, hs_vec3 center, double radius, int *out) {
 	hs_vec3 r = hs_v3(radius, radius, radius); // objects are filed by their centres (x, y)
 	return hs_hgrid_query(&world->grid, hs_sub(center, r), hs_add(center, r), out);
 }
 
+int hs_grid_query(const hs_world *world, hs_vec3 center, double radius, int *out) {
+	if (!scanned(world))
+		return grid_answer(world, center, radius, out);
+	memcpy(out, world->every, (size_t)world->object_count * sizeof *out);
+	return world->object_count;
+}
+
 int hs_grid_near(hs_world *world, hs_vec3 center, double radius) {
-	if (scanned_whole(world)) { // the seed scene's three queries a frame: filled once
-		for (int i = world->near_identity; i < world->object_count; ++i)
-			world->near[i] = i;
-		if (world->near_identity < world->object_count)
-			world->near_identity = world->object_count;
+	if (scanned(world)) { // every index, listed when the world was made: nothing written
+		world->near = world->every;
 		return world->object_count;
 	}
-	world->near_identity = 0;
-	return hs_grid_query(world, center, radius, world->near);
+	world->near = world->found;
+	return grid_answer(world, center, radius, world->found);
 }
 
 static void insert_sorted(int *list, int *count, int value) {

@@ -102,7 +102,12 @@ hs_world *hs_world_create(const hs_world_def *def, hs_status *status) {
 	world->contacts = calloc((size_t)world->contact_capacity, sizeof *world->contacts);
 	bool grid = hs_hgrid_alloc(&world->grid, (int)objects, 2);
 	world->candidates = calloc(objects, sizeof *world->candidates);
-	world->near = calloc(objects, sizeof *world->near);
+	world->every = malloc(objects * sizeof *world->every);
+	world->found = calloc(objects, sizeof *world->found);
+	if (world->every)
+		for (size_t i = 0; i < objects; ++i)
+			world->every[i] = (int)i;
+	world->near = world->every;
 	world->awake = calloc(objects, sizeof *world->awake);
 	world->awake_flag = calloc(objects, sizeof *world->awake_flag);
 	world->digest = calloc(objects, sizeof *world->digest);
@@ -111,7 +116,7 @@ hs_world *hs_world_create(const hs_world_def *def, hs_status *status) {
 	world->box_memo = calloc(objects, sizeof *world->box_memo);
 	world->all_stale = true;
 	if (!world->shapes || !world->face_edges || !world->face_trees || !world->bodies || !world->queue || !world->hands || !world->contacts || !grid ||
-	    !world->candidates || !world->near || !world->awake || !world->awake_flag || !world->digest || !world->stale ||
+	    !world->candidates || !world->every || !world->found || !world->awake || !world->awake_flag || !world->digest || !world->stale ||
 	    !world->stale_flag || !world->box_memo) {
 		hs_world_destroy(world);
 		set_status(status, HS_ERR_NO_MEMORY);
@@ -148,7 +153,8 @@ void hs_world_destroy(hs_world *world) {
 	free(world->contacts);
 	hs_hgrid_free(&world->grid);
 	free(world->candidates);
-	free(world->near);
+	free(world->every);
+	free(world->found);
 	free(world->awake);
 	free(world->awake_flag);
 	free(world->digest);

@@ -71,8 +71,9 @@ struct hs_world {
 	int *queue;          // objects to move along with a moved one (§4.3), max_objects long
 	int *candidates;     // objects a hand may touch this frame, in index order
 	int candidate_count;
-	int *near;           // grid query results, max_objects long (hs_grid_near)
-	int near_identity;   // near[0 .. near_identity) hold their own index (a scan's answer, kept)
+	const int *near;     // the last query's answer (hs_grid_near): `every` or `found`
+	int *every;          // 0 .. max_objects - 1, filled when the world is made: a full scan's answer
+	int *found;          // a grid query's answer, max_objects long
 	// CACHE: broad phase (broadphase.c), objects filed by the floor cell of their centre, each at
 	// the level of its bounding radius (hgrid.c)
 	hs_hgrid grid;

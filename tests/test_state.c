@@ -217,15 +217,18 @@ static void test_grid_world_same_bits(void **state) {
 }
 
 // A world small enough to be scanned whole files no moved object in its grid (broadphase.c): one
-// that grows past HS_GRID_SCAN_MAX while its objects are held and flying files them all at its
-// next step. Every object is then found where it is, and the bits are those of skip_work off.
-static void test_grid_world_grown_past_the_scan(void **state) {
-	(void)state;
+// that grows past HS_GRID_SCAN_MAX while its cube is held and its block in flight files them all
+// at its next step. Every object is then found where it is, and the bits are those of skip_work
+// off; at 60 and at 12 frames/s (the script's times follow the rate).
+static void grown_past_the_scan(double fps) {
 	rig_max_objects = 24;
+	rig_fps = fps;
 	hand_rig on = hand_world(0.05, 0, true), off = hand_world(0.05, 0, false);
 	rig_max_objects = 0;
-	step_hand(&on, on.world, 0, N_FRAMES, NULL); // the cube held and lifted, the block in flight
-	step_hand(&off, off.world, 0, N_FRAMES, NULL);
+	int before = (int)(N_FRAMES * fps / 60.0), after = (int)(M_FRAMES * fps / 60.0); // 1.67 s, then 2.67 s
+	step_hand(&on, on.world, 0, before, NULL);
+	step_hand(&off, off.world, 0, before, NULL);
+	assert_true(on.world->bodies[on.target.index1 - 1].grasped_by > 0); // held as the world grows
 	hs_world *w[2] = {on.world, off.world};
 	for (int k = 0; k < 2; ++k) {
 		hs_shape_id cube = add_shape(w[k], hs_shape_box(hs_v3(0.05, 0.05, 0.05), NULL));
@@ -233,8 +236,8 @@ static void test_grid_world_grown_past_the_scan(void **state) {
 			add_object(w[k], cube, hs_v3(0.2 + 0.1 * i, 0.12, 0.025), hs_v3(0, 0, 0));
 	}
 	uint64_t a[M_FRAMES], b[M_FRAMES];
-	step_hand(&on, on.world, N_FRAMES, 1, a);
-	step_hand(&off, off.world, N_FRAMES, 1, b);
+	step_hand(&on, on.world, before, 1, a);
+	step_hand(&off, off.world, before, 1, b);
 	int n = on.world->object_count, *found = malloc((size_t)n * sizeof *found);
 	assert_non_null(found);
 	assert_int_equal(n, 24);
@@ -244,18 +247,25 @@ static void test_grid_world_grown_past_the_scan(void **state) {
 		while (k < near && found[k] != i)
 			++k;
 		if (k == near)
-			fail_msg("object %d not found where it is", i);
+			fail_msg("%g frames/s: object %d not found where it is", fps, i);
 		assert_true(near < n);
 	}
 	free(found);
-	step_hand(&on, on.world, N_FRAMES + 1, M_FRAMES - 1, a + 1);
-	step_hand(&off, off.world, N_FRAMES + 1, M_FRAMES - 1, b + 1);
-	for (int k = 0; k < M_FRAMES; ++k)
+	step_hand(&on, on.world, before + 1, after - 1, a + 1);
+	step_hand(&off, off.world, before + 1, after - 1, b + 1);
+	for (int k = 0; k < after; ++k)
 		if (a[k] != b[k])
-			fail_msg("frame %d: skip_work on %016llx, off %016llx", N_FRAMES + k + 1, (unsigned long long)a[k],
-			         (unsigned long long)b[k]);
+			fail_msg("%g frames/s, frame %d: skip_work on %016llx, off %016llx", fps, before + k + 1,
+			         (unsigned long long)a[k], (unsigned long long)b[k]);
 	hs_world_destroy(on.world);
 	hs_world_destroy(off.world);
+	rig_fps = 60.0;
+}
+
+static void test_grid_world_grown_past_the_scan(void **state) {
+	(void)state;
+	grown_past_the_scan(60.0);
+	grown_past_the_scan(12.0);
 }
 
 // A state saved before the hand was first set, loaded into a world whose hand has been set since:
