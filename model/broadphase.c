@@ -36,6 +36,7 @@ void hs_grid_build(hs_world *world) {
 	world->grid_built = true;
 	for (int i = 0; i < world->object_count; ++i)
 		hs_grid_update(world, i);
+	hs_hgrid_pack(&world->grid); // the cells the objects occupy, read without hashing
 }
 
 // A query answers by a full scan, in index order (the grid not read, or not built yet).

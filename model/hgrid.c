@@ -23,22 +23,26 @@ bool hs_hgrid_alloc(hs_hgrid *g, int capacity, int dims) {
 	g->buckets = 16;
 	while ((size_t)g->buckets < 2 * cap)
 		g->buckets *= 2;
+	g->pool = 4 * (long)g->buckets; // packed windows: at least 8 cells per object
+	g->pool = g->pool < INT_MAX / 2 ? g->pool : INT_MAX / 2; // slots are ints
 	g->head = malloc((size_t)g->buckets * sizeof *g->head);
+	g->dense = malloc((size_t)g->pool * sizeof *g->dense);
 	g->next = calloc(cap, sizeof *g->next);
-	g->bucket = calloc(cap, sizeof *g->bucket);
+	g->slot = calloc(cap, sizeof *g->slot);
 	g->level = calloc(cap, sizeof *g->level);
 	g->by_level = calloc(cap, sizeof *g->by_level);
 	g->cell = calloc(cap * (size_t)dims, sizeof *g->cell);
 	g->half = calloc(cap, sizeof *g->half);
 	g->scratch = calloc(cap, sizeof *g->scratch);
 	g->merge = calloc(cap, sizeof *g->merge);
-	return g->head && g->next && g->bucket && g->level && g->by_level && g->cell && g->half && g->scratch && g->merge;
+	return g->head && g->dense && g->next && g->slot && g->level && g->by_level && g->cell && g->half && g->scratch && g->merge;
 }
 
 void hs_hgrid_free(hs_hgrid *g) {
 	free(g->head);
 	free(g->next);
-	free(g->bucket);
+	free(g->slot);
+	free(g->dense);
 	free(g->level);
 	free(g->by_level);
 	free(g->cell);
@@ -97,7 +101,7 @@ void hs_hgrid_build(hs_hgrid *g, int n) {
 		g->reach[level] = g->half[i] > g->reach[level] ? g->half[i] : g->reach[level];
 		per_level[level]++;
 		g->levels = level + 1 > g->levels ? level + 1 : g->levels;
-		g->bucket[i] = -1;
+		g->slot[i] = -1;
 	}
 	g->first[0] = 0;
 	for (int l = 0; l < HS_HGRID_LEVELS; ++l)
@@ -108,6 +112,8 @@ void hs_hgrid_build(hs_hgrid *g, int n) {
 		g->by_level[fill[g->level[i]]++] = i;
 	for (int b = 0; b < g->buckets; ++b)
 		g->head[b] = -1;
+	memset(g->win_n, 0, sizeof g->win_n); // no level packed, none hashed
+	memset(g->outside, 0, sizeof g->outside);
 	hs_hgrid_reset_occupied(g);
 }
 
@@ -140,21 +146,43 @@ static int bucket_of(const hs_hgrid *g, int level, const long *c) {
 	return (int)(h & (unsigned long)(g->buckets - 1));
 }
 
+// The first object of slot s (s ≠ -1): a hash bucket, or a packed window's cell.
+static int *slot_head(hs_hgrid *g, int s) { return s >= 0 ? &g->head[s] : &g->dense[-2 - s]; }
+
 static void unlink_object(hs_hgrid *g, int i) {
-	int b = g->bucket[i];
-	if (b < 0)
+	int s = g->slot[i];
+	if (s == -1)
 		return;
-	int *link = &g->head[b];
+	int *link = slot_head(g, s);
 	while (*link != i)
 		link = &g->next[*link];
 	*link = g->next[i];
-	g->bucket[i] = -1;
+	g->outside[g->level[i]] -= s >= 0;
+	g->slot[i] = -1;
+}
+
+// Files object i in cell c: its level's window when the cell is inside, else the hash.
+static void link_object(hs_hgrid *g, int i, const long *c) {
+	int level = g->level[i];
+	const long *lo = g->win_lo[level], *n = g->win_n[level];
+	long k = 0;
+	bool inside = n[0] > 0;
+	for (int d = g->dims - 1; d >= 0 && inside; --d) {
+		inside = c[d] >= lo[d] && c[d] - lo[d] < n[d];
+		k = k * n[d] + (c[d] - lo[d]);
+	}
+	int s = inside ? (int)(-2 - (g->win_base[level] + k)) : bucket_of(g, level, c);
+	g->outside[level] += !inside;
+	int *head = slot_head(g, s);
+	g->next[i] = *head;
+	*head = i;
+	g->slot[i] = s;
 }
 
 void hs_hgrid_file(hs_hgrid *g, int i, hs_vec3 centre) {
 	double inv = g->inv[g->level[i]], x[3] = {centre.x, centre.y, centre.z};
 	long c[3];
-	bool same = g->bucket[i] >= 0;
+	bool same = g->slot[i] != -1;
 	long(*occ)[3] = g->occupied[g->level[i]];
 	for (int d = 0; d < g->dims; ++d) {
 		c[d] = cell_coord(x[d], inv);
@@ -165,32 +193,128 @@ void hs_hgrid_file(hs_hgrid *g, int i, hs_vec3 centre) {
 	if (same)
 		return;
 	unlink_object(g, i);
-	int b = bucket_of(g, g->level[i], c);
-	g->next[i] = g->head[b];
-	g->head[b] = i;
-	g->bucket[i] = b;
+	link_object(g, i, c);
 	for (int d = 0; d < g->dims; ++d)
 		g->cell[(size_t)i * (size_t)g->dims + (size_t)d] = c[d];
 }
 
-// Objects of one level filed in the cells lo[] .. hi[] (dims of them, inclusive).
-static int visit_cells(const hs_hgrid *g, int level, const long *lo, const long *hi, int *out, int n) {
-	int dims = g->dims;
-	// bucket_of's mix, its terms hoisted out of the inner loops (xor: the same value)
-	unsigned long mask = (unsigned long)(g->buckets - 1), lv = (unsigned long)level * 2654435761ul;
-	long z0 = dims == 3 ? lo[2] : 0, z1 = dims == 3 ? hi[2] : 0;
-	for (long z = z0; z <= z1; ++z) {
-		unsigned long hz = dims == 3 ? lv ^ (unsigned long)z * 83492791ul : lv;
-		for (long y = lo[1]; y <= hi[1]; ++y) {
-			unsigned long hy = hz ^ (unsigned long)y * 19349663ul;
-			for (long x = lo[0]; x <= hi[0]; ++x)
-				for (int i = g->head[(hy ^ (unsigned long)x * 73856093ul) & mask]; i >= 0; i = g->next[i]) {
-					const long *ci = &g->cell[(size_t)i * (size_t)dims];
-					if (ci[0] == x && ci[1] == y && (dims == 2 || ci[2] == z) && g->level[i] == level)
-						out[n++] = i; // not a hash neighbour
-				}
-		}
+// Level L's window: the cells it occupies, widened on each side by a cell and an eighth of their
+// extent when `margin` (objects that move a little stay inside). Returns its cells, 0 when none
+// of the level is filed.
+static double window_of(const hs_hgrid *g, int level, bool margin, long *lo, long *n) {
+	double cells = 1.0;
+	for (int d = 0; d < 3; ++d) {
+		lo[d] = 0;
+		n[d] = 1;
+		if (d >= g->dims)
+			continue;
+		long a = g->occupied[level][0][d], b = g->occupied[level][1][d];
+		if (a > b)
+			return 0.0;
+		double extent = (double)b - (double)a + 1.0, m = margin ? floor(extent / 8.0) + 1.0 : 0.0;
+		cells *= extent + 2.0 * m;
+		if (cells > (double)g->pool)
+			return cells; // too large: the fields are not used
+		lo[d] = a - (long)m;
+		n[d] = (long)(extent + 2.0 * m);
 	}
+	return cells;
+}
+
+void hs_hgrid_pack(hs_hgrid *g) {
+	bool hashed = false;
+	for (int level = 0; level < g->levels; ++level)
+		hashed = hashed || g->outside[level] > 0;
+	if (!hashed)
+		return; // every filed object is in its level's window already
+	long used = 0;
+	for (int level = 0; level < g->levels; ++level) {
+		long lo[3], n[3];
+		double room = (double)(g->pool - used), cells = window_of(g, level, true, lo, n);
+		if (cells > room)
+			cells = window_of(g, level, false, lo, n);
+		g->win_n[level][0] = 0;
+		if (!(cells > 0.0 && cells <= room))
+			continue; // nothing filed, or no room: the level stays hashed
+		memcpy(g->win_lo[level], lo, sizeof lo);
+		memcpy(g->win_n[level], n, sizeof n);
+		g->win_base[level] = used;
+		for (long end = used + (long)cells; used < end; ++used)
+			g->dense[used] = -1;
+	}
+	for (int b = 0; b < g->buckets; ++b)
+		g->head[b] = -1;
+	memset(g->outside, 0, sizeof g->outside);
+	for (int i = 0; i < g->count; ++i)
+		if (g->slot[i] != -1)
+			link_object(g, i, &g->cell[(size_t)i * (size_t)g->dims]);
+}
+
+// Objects of one level hashed in the cells x0 .. x1 of row (y, z).
+static int visit_hashed(const hs_hgrid *g, int level, long x0, long x1, long y, long z, int *out, int n) {
+	int dims = g->dims;
+	// bucket_of's mix (xor: the same value in any order)
+	unsigned long mask = (unsigned long)(g->buckets - 1), h = (unsigned long)level * 2654435761ul;
+	h ^= (unsigned long)y * 19349663ul;
+	if (dims == 3)
+		h ^= (unsigned long)z * 83492791ul;
+	for (long x = x0; x <= x1; ++x)
+		for (int i = g->head[(h ^ (unsigned long)x * 73856093ul) & mask]; i >= 0; i = g->next[i]) {
+			const long *ci = &g->cell[(size_t)i * (size_t)dims];
+			if (ci[0] == x && ci[1] == y && (dims == 2 || ci[2] == z) && g->level[i] == level)
+				out[n++] = i; // not a hash neighbour
+		}
+	return n;
+}
+
+// Objects of one level in the cells lo[] .. hi[] when all of it is in its packed window: the
+// range's cells inside the window (each cell's list is exact), row by row.
+static int visit_window(const hs_hgrid *g, int level, const long *lo, const long *hi, int *out, int n) {
+	const long *wl = g->win_lo[level], *wn = g->win_n[level];
+	bool z = g->dims == 3; // the range in window cells, clipped to the window
+	long x0 = lo[0] - wl[0], x1 = hi[0] - wl[0], y0 = lo[1] - wl[1], y1 = hi[1] - wl[1];
+	long z0 = z ? lo[2] - wl[2] : 0, z1 = z ? hi[2] - wl[2] : 0;
+	x0 = x0 > 0 ? x0 : 0;
+	y0 = y0 > 0 ? y0 : 0;
+	z0 = z0 > 0 ? z0 : 0;
+	x1 = x1 < wn[0] - 1 ? x1 : wn[0] - 1;
+	y1 = y1 < wn[1] - 1 ? y1 : wn[1] - 1;
+	z1 = z1 < wn[2] - 1 ? z1 : wn[2] - 1;
+	const int *cells = g->dense + g->win_base[level];
+	for (long k = z0; k <= z1; ++k)
+		for (long y = y0; y <= y1; ++y) {
+			const int *row = cells + (k * wn[1] + y) * wn[0];
+			for (long x = x0; x <= x1; ++x)
+				for (int i = row[x]; i >= 0; i = g->next[i])
+					out[n++] = i;
+		}
+	return n;
+}
+
+// Objects of one level filed in the cells lo[] .. hi[] (dims of them, inclusive): from its packed
+// window's cells where the range meets it (each cell's list is exact), from the hash elsewhere
+// (only when some object of the level is hashed: none is in the window's cells).
+static int visit_cells(const hs_hgrid *g, int level, const long *lo, const long *hi, int *out, int n) {
+	const long *wl = g->win_lo[level], *wn = g->win_n[level];
+	bool hashed = g->outside[level] > 0;
+	long z0 = g->dims == 3 ? lo[2] : 0, z1 = g->dims == 3 ? hi[2] : 0;
+	long x0 = lo[0] > wl[0] ? lo[0] : wl[0], x1 = hi[0] < wl[0] + wn[0] - 1 ? hi[0] : wl[0] + wn[0] - 1;
+	for (long z = z0; z <= z1; ++z)
+		for (long y = lo[1]; y <= hi[1]; ++y) {
+			bool row = wn[0] > 0 && y >= wl[1] && y - wl[1] < wn[1] && z >= wl[2] && z - wl[2] < wn[2];
+			if (!row || x0 > x1) { // the window has no cell in this row of the range
+				n = hashed ? visit_hashed(g, level, lo[0], hi[0], y, z, out, n) : n;
+				continue;
+			}
+			if (hashed) { // the row's cells left and right of the window
+				n = visit_hashed(g, level, lo[0], x0 - 1, y, z, out, n);
+				n = visit_hashed(g, level, x1 + 1, hi[0], y, z, out, n);
+			}
+			long row0 = g->win_base[level] + ((z - wl[2]) * wn[1] + (y - wl[1])) * wn[0] - wl[0]; // + x: cell x
+			for (long x = x0; x <= x1; ++x)
+				for (int i = g->dense[row0 + x]; i >= 0; i = g->next[i])
+					out[n++] = i;
+		}
 	return n;
 }
 
@@ -226,7 +350,7 @@ int hs_hgrid_query(const hs_hgrid *g, hs_vec3 lo, hs_vec3 hi, int *out) {
 		if (count == 0)
 			continue;
 		double inv = g->inv[level], r = g->reach[level], cells = 1.0;
-		long c0[3], c1[3];
+		long c0[3] = {0, 0, 0}, c1[3] = {0, 0, 0};
 		for (int d = 0; d < g->dims; ++d) {
 			c0[d] = cell_coord(a[d] - r, inv);
 			c1[d] = cell_coord(b[d] + r, inv);
@@ -236,6 +360,9 @@ int hs_hgrid_query(const hs_hgrid *g, hs_vec3 lo, hs_vec3 hi, int *out) {
 		if (cells > (double)count) { // more cells than objects: the level's list (sorted) is cheaper
 			memcpy(out + n, g->by_level + g->first[level], (size_t)count * sizeof *out);
 			n += count;
+		} else if (g->win_n[level][0] > 0 && g->outside[level] == 0) { // all of the level packed
+			n = visit_window(g, level, c0, c1, out, n);
+			hs_sort_indices(out + start, n - start);
 		} else { // (the choice above is made on the unclipped range: the same result as before)
 			for (int d = 0; d < g->dims; ++d) { // no object filed outside the occupied cells
 				c0[d] = c0[d] > g->occupied[level][0][d] ? c0[d] : g->occupied[level][0][d];

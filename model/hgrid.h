@@ -6,7 +6,8 @@
 // twice the median half-extent (a typical object's width, as the old single cell was for equal
 // objects, whatever one huge object does), each level above doubles it. A query visits, per level, the cells its box widened by that
 // level's largest half-extent covers — or, when those are more than the level's objects, the
-// level's own list. Results come sorted by index: a query never changes what its caller computes,
+// level's own list. A packed level (hs_hgrid_pack) keeps the cells it occupies in a dense window,
+// read without hashing. Results come sorted by index: a query never changes what its caller computes,
 // only how much it looks at. Everything is allocated once (hs_hgrid_alloc); nothing per query.
 #ifndef HS_HGRID_H
 #define HS_HGRID_H
@@ -29,9 +30,19 @@ typedef struct hs_hgrid {
 	double reach[HS_HGRID_LEVELS];  // m: largest half-extent filed at each level
 	int first[HS_HGRID_LEVELS + 1]; // level L's objects are by_level[first[L] .. first[L + 1])
 	long occupied[HS_HGRID_LEVELS][2][3]; // cells filed at each level since the last reset: [lo, hi] per axis
+	// Packed levels (hs_hgrid_pack): a window of cells laid out densely in `dense`, read without
+	// hashing; win_n[L][0] == 0: level L is not packed. Objects filed outside a level's window
+	// go to the hash (outside[L] of them).
+	long win_lo[HS_HGRID_LEVELS][3]; // the window's first cell per axis
+	long win_n[HS_HGRID_LEVELS][3];  // its cells per axis
+	long win_base[HS_HGRID_LEVELS];  // its first cell in dense
+	int outside[HS_HGRID_LEVELS];    // objects of each level filed in the hash
+	long pool;        // cells of dense
+	int *dense;       // pool: the packed windows' cells → first object (-1: none)
 	int *by_level;    // objects by level, in index order within each
 	int *head;        // bucket → first object (-1: none)
-	int *next, *bucket, *level;
+	int *next, *level;
+	int *slot;        // per object: -1 not filed, ≥ 0 its hash bucket, ≤ -2 its cell -2 - slot in dense
 	long *cell;       // dims per object
 	double *half;     // m: half-extent per object, written by the caller before hs_hgrid_build
 	double *scratch;  // capacity: the sizes, sorted for the median
@@ -46,6 +57,10 @@ void hs_hgrid_free(hs_hgrid *g);
 void hs_hgrid_build(hs_hgrid *g, int n);
 // Files object i by its centre (again after it moved; a no-op when it stays in its cell).
 void hs_hgrid_file(hs_hgrid *g, int i, hs_vec3 centre);
+// Lays the levels' filed objects out densely over the cells they occupy (as far as the pool
+// holds), so that queries there read cells without hashing; call it after filing every object.
+// Objects filed later outside a window are hashed. Queries answer the same either way.
+void hs_hgrid_pack(hs_hgrid *g);
 // Forgets which cells were filed before; the caller then files every object again. Queries visit
 // only the cells between the lowest and highest filed since (objects on a floor: one layer).
 void hs_hgrid_reset_occupied(hs_hgrid *g);

@@ -55,6 +55,7 @@ void hs_spring_file_all(hs_world *world, hs_spring_system *sys) {
 	for (int i = 0; i < n; ++i)
 		if (!file_one(world, sys, i))
 			sys->nb_state = HS_NEAR_STALE;
+	hs_hgrid_pack(&sys->grid); // the cells the boxes occupy, read without hashing
 }
 
 void hs_spring_refile(hs_world *world, hs_spring_system *sys, int i) {
