@@ -4,9 +4,15 @@
 //
 // Results never depend on it: every query returns its objects in index order, the order in
 // which a full scan would meet them, so a world with skip_work off gives the same bits.
+#include <math.h>
 #include <string.h>
+#if defined(HS_SELFCHECK)
+#include <stdio.h>
+#include <stdlib.h>
+#endif
 
 #include "broadphase.h"
+#include "inline.h"
 
 // A world of this many objects or fewer is scanned whole: each caller's bounding-sphere test of
 // every object costs less than hashing the cells of its query (the seed scene, 10 cubes: 233
@@ -23,7 +29,9 @@ static bool grid_read(const hs_world *world) {
 
 void hs_grid_update(hs_world *world, int i) {
 	if (!world->grid_built || !grid_read(world))
-		return; // not built yet (the first step builds it), or not read
+		return; // not built yet (the first step builds it), or not read (nor its lists)
+	if (!world->awake_flag[i]) // a resting object filed anew (a load, objects added, or carried):
+		world->near_epoch++;   // the neighbour lists may miss it
 	hs_hgrid_file(&world->grid, i, world->bodies[i].pos);
 }
 
@@ -54,13 +62,125 @@ int hs_grid_query(const hs_world *world, hs_vec3 center, double radius, int *out
 	return world->object_count;
 }
 
+// The neighbour lists: a query whose box (x, y: center ± radius) lies inside a list's box is
+// answered from that list's resting objects and the awake list, each object's centre tested
+// against the query's box grown by its own half-extent (the grid's contract, not its cells). A
+// resting object moves only through hs_grid_update, and one that comes to rest leaves the awake
+// list (hs_awake_compact): either makes every list stale (near_epoch). A list's box is its first
+// query's grown by a skin of a typical object's width (the grid's level-0 cell), so a hand that
+// moves a few mm a frame reuses it for many frames. Every answer holds all the objects the
+// callers' own tests can pass, in index order: no result depends on the lists.
+
+// Rounding allowance of the centre tests (m), far below any caller's tolerance.
+static double slack(hs_vec3 c, double reach) { return 1e-9 * (1.0 + fabs(c.x) + fabs(c.y) + reach); }
+
+static bool centre_near(const hs_world *world, int i, hs_vec3 c, double r, double allow) {
+	hs_vec3 p = world->bodies[i].pos;
+	double reach = r + world->grid.half[i];
+	reach += allow * slack(c, reach);
+	return fabs(p.x - c.x) <= reach && fabs(p.y - c.y) <= reach;
+}
+
+// Merges a list's objects with the awake list (both ascending; an object on both once), keeping
+// those near the query.
+static int list_answer(hs_world *world, const hs_near_list *l, hs_vec3 c, double r) {
+	const int *awake = world->awake;
+	int n = 0, a = 0, b = 0, na = world->awake_count;
+	while (a < l->count || b < na) {
+		int i;
+		if (b == na || (a < l->count && l->index[a] < awake[b]))
+			i = l->index[a++];
+		else {
+			i = awake[b++];
+			a += a < l->count && l->index[a] == i;
+		}
+		if (centre_near(world, i, c, r, 1.0))
+			world->found[n++] = i;
+	}
+#if defined(HS_SELFCHECK)
+	// sanitizer builds: every object the contract asks for is in the answer (a stale list is not)
+	for (int j = 0, k = 0; j < world->object_count; ++j) {
+		while (k < n && world->found[k] < j)
+			++k;
+		hs_vec3 p = world->bodies[j].pos;
+		if (hypot(p.x - c.x, p.y - c.y) <= r + world->grid.half[j] && (k == n || world->found[k] != j)) {
+			fprintf(stderr, "selfcheck: object %d missing from a neighbour list's answer\n", j);
+			abort();
+		}
+	}
+#endif
+	return n;
+}
+
+static hs_near_list *list_holding(hs_world *world, hs_vec3 c, double r) {
+	for (int k = 0; k < HS_NEAR_BOXES; ++k) {
+		hs_near_list *l = &world->near_lists[k];
+		if (l->epoch == world->near_epoch && c.x - r >= l->lo[0] && c.x + r <= l->hi[0] && c.y - r >= l->lo[1] &&
+		    c.y + r <= l->hi[1])
+			return l;
+	}
+	return NULL;
+}
+
+// Lists the resting objects near the query's box grown by the skin, in place of the least recently
+// used list; or, when more than a list holds, answers from the grid's answer alone (found).
+static int list_and_answer(hs_world *world, hs_vec3 c, double r) {
+	double grown = r + world->grid.cell0;
+	int n = grid_answer(world, c, grown, world->found);
+	hs_near_list *l = &world->near_lists[0];
+	for (int k = 1; k < HS_NEAR_BOXES; ++k)
+		l = world->near_lists[k].used < l->used ? &world->near_lists[k] : l;
+	l->epoch = 0;
+	l->count = 0;
+	for (int k = 0; k < n; ++k) {
+		int i = world->found[k];
+		if (world->awake_flag[i] || !centre_near(world, i, c, grown, 4.0))
+			continue;
+		if (l->count == HS_NEAR_LISTED) { // a crowd: the grid's answer, kept where near the query
+			int kept = 0;
+			for (int j = 0; j < n; ++j)
+				if (centre_near(world, world->found[j], c, r, 1.0))
+					world->found[kept++] = world->found[j];
+			return kept;
+		}
+		l->index[l->count++] = i;
+	}
+	l->lo[0] = c.x - grown;
+	l->hi[0] = c.x + grown;
+	l->lo[1] = c.y - grown;
+	l->hi[1] = c.y + grown;
+	l->epoch = world->near_epoch;
+	l->used = ++world->near_clock;
+	return list_answer(world, l, c, r);
+}
+
+// (not inlined: a world scanned whole pays no more than its test)
+static HS_NOINLINE int grid_near(hs_world *world, hs_vec3 center, double radius) {
+	world->near = world->found;
+	if (world->awake_count > HS_NEAR_AWAKE_MAX) // many in motion: the lists would hold few
+		return grid_answer(world, center, radius, world->found);
+	hs_near_list *l = list_holding(world, center, radius);
+	if (!l)
+		return list_and_answer(world, center, radius);
+	l->used = ++world->near_clock;
+	world->near_hits++;
+	return list_answer(world, l, center, radius);
+}
+
 int hs_grid_near(hs_world *world, hs_vec3 center, double radius) {
 	if (scanned(world)) { // every index, listed when the world was made: nothing written
 		world->near = world->every;
 		return world->object_count;
 	}
-	world->near = world->found;
-	return grid_answer(world, center, radius, world->found);
+	return grid_near(world, center, radius);
+}
+
+int hs_grid_near_either(hs_world *world, hs_vec3 a, hs_vec3 b, double radius) {
+	if (scanned(world)) {
+		world->near = world->every;
+		return world->object_count;
+	}
+	return grid_near(world, hs_scale(hs_add(a, b), 0.5), radius + 0.5 * hs_length(hs_sub(b, a)));
 }
 
 static void insert_sorted(int *list, int *count, int value) {
@@ -87,8 +207,10 @@ void hs_awake_compact(hs_world *world) {
 		int i = world->awake[k];
 		const hs_body *b = &world->bodies[i];
 		hs_digest_stale(world, i); // the step changes no other object (skip_work changes no result)
-		if (b->asleep && !b->held && !b->carried)
+		if (b->asleep && !b->held && !b->carried) {
 			world->awake_flag[i] = 0;
+			world->near_epoch++; // at rest where no neighbour list looked for it
+		}
 		else
 			world->awake[kept++] = i;
 	}
@@ -106,6 +228,6 @@ void hs_broadphase_reset(hs_world *world) {
 		if (awake)
 			world->awake[world->awake_count++] = i;
 	}
-	world->grid_dirty = true; // filed again at the next step
+	world->grid_dirty = true; // filed again at the next step (the neighbour lists made stale)
 	hs_digest_all_stale(world);
 }

@@ -16,6 +16,8 @@ int hs_grid_query(const hs_world *world, hs_vec3 center, double radius, int *out
 // hs_grid_query's answer in world->near: a world scanned whole points it at the list of every
 // index made with the world (nothing written per query), the grid's answer is written to `found`.
 int hs_grid_near(hs_world *world, hs_vec3 center, double radius);
+// hs_grid_near of the objects near either of two points (within radius plus their own).
+int hs_grid_near_either(hs_world *world, hs_vec3 a, hs_vec3 b, double radius);
 // Marks object i awake and puts it on the awake list.
 void hs_wake(hs_world *world, int i);
 // Drops objects that fell asleep from the awake list.

@@ -144,7 +144,7 @@ static void carry_along(hs_world *world, int moved, int current, rigid_move m) {
 		hs_vec3 was = hs_add(m.from, hs_quat_rotate(back, hs_sub(moved_body->pos, m.to)));
 		hs_quat was_rot = hs_quat_normalize(hs_quat_mul(back, moved_body->rot));
 		double ra = world->shapes[moved_body->shape].radius;
-		int n = hs_grid_near(world, moved_body->pos, ra);
+		int n = hs_grid_near_either(world, moved_body->pos, was, ra); // both are tested below
 		for (int k = 0; k < n; ++k) {
 			int j = world->near[k];
 			hs_body *b = &world->bodies[j];

@@ -254,15 +254,7 @@ static void on_floor(hs_world *world, hs_body *body) {
 	settle_or_tip(world, body, gm, true);
 }
 
-// Support mode: an object asleep on a support stays as it is, as the awake list's skip leaves it
-// (a world with skip_work off gives the same bits, broadphase.c); a moved support wakes it.
-static bool asleep_on_support(const hs_world *world, const hs_body *body) {
-	return world->def.stacking == HS_STACKING_SUPPORT && !body->grounded && body->asleep;
-}
-
 void hs_motion_step(hs_world *world, hs_body *body) {
-	if (asleep_on_support(world, body))
-		return;
 	if (body->grounded)
 		on_floor(world, body);
 	else

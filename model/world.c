@@ -108,6 +108,7 @@ hs_world *hs_world_create(const hs_world_def *def, hs_status *status) {
 		for (size_t i = 0; i < objects; ++i)
 			world->every[i] = (int)i;
 	world->near = world->every;
+	world->near_epoch = 1; // a neighbour list never made (epoch 0) never answers
 	world->awake = calloc(objects, sizeof *world->awake);
 	world->awake_flag = calloc(objects, sizeof *world->awake_flag);
 	world->digest = calloc(objects, sizeof *world->digest);
@@ -392,10 +393,16 @@ static bool body_is_finite(const hs_body *body) {
 // the floor (§4.2), the fall swept over the objects under it, and in support mode its supports.
 static void step_object(hs_world *world, int i) {
 	hs_body *body = &world->bodies[i];
+	// An object asleep off the floor rests on another one and stays as it is, as the awake list's
+	// skip leaves it (skip_work off gives the same bits): in support mode on its support (a moved
+	// support wakes it), in paper mode where it stopped at an interference (§4.3).
+	if (body->asleep && !body->grounded)
+		return;
 	hs_vec3 from = body->pos;
 	if (!body->asleep && world->def.stacking == HS_STACKING_PAPER && hs_object_interferes(world, i)) {
 		hs_stack_rectify(world, i);
 		hs_motion_keep_above_floor(world, body);
+		body->grounded = body->floor_contacts > 0; // it may rest above the floor (carried up)
 		body->prev = body->pos;
 		body->spin = hs_quat_identity();
 		body->asleep = 1;
@@ -462,6 +469,8 @@ hs_status hs_world_step(hs_world *world) {
 	for (int k = 0; k < moved; ++k) // the awake list may grow only once the loop is over
 		hs_support_wake_neighbours(world, world->queue[k]);
 	hs_awake_compact(world);
+	if (!skip) // every object was visited, asleep or not: any may have changed
+		hs_digest_all_stale(world);
 	for (int h = 0; h < world->hand_count; ++h) { // a hand not set again stays where it is
 		hs_hand_age_wrist(&world->hands[h]);
 		hs_hand_keep_previous(&world->hands[h]);
