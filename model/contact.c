@@ -375,39 +375,49 @@ HS_AVX static inline hs_lanes4 point_lanes(const hs_hand *hand, int i) {
 }
 
 // points_near four points at a time (AVX).
-HS_AVX static uint32_t points_near_avx(const hs_hand *hand, hs_vec3 c, double r_sq) {
-	uint32_t near = 0;
-	for (int i = 0; i < HS_HAND_POINTS; i += 4)
-		near |= hs_lanes4_not_above(hs_lanes4_distance_sq(point_lanes(hand, i), c), r_sq) << i;
+HS_AVX static uint32_t points_near_avx(const hs_hand *hand, hs_vec3 c, double r_sq, double keep_sq, uint32_t *kept) {
+	uint32_t near = 0, within = 0;
+	for (int i = 0; i < HS_HAND_POINTS; i += 4) {
+		__m256d d = hs_lanes4_distance_sq(point_lanes(hand, i), c);
+		near |= hs_lanes4_not_above(d, r_sq) << i;
+		within |= hs_lanes4_not_above(d, keep_sq) << i;
+	}
+	*kept = within;
 	return near;
 }
 #endif
 
 // The check points (bit i) not further than sqrt(r_sq) from c now, as the cull reads it:
-// !(|p_i - c|^2 > r_sq), NaN near. With AVX four points at a time, with SSE2 two, each lane doing
-// hs_length_sq(hs_sub(p, c))'s operations in its order (the same bits).
-static uint32_t points_near(const hs_hand *hand, hs_vec3 c, double r_sq) {
+// !(|p_i - c|^2 > r_sq), NaN near; in *kept those not further than sqrt(keep_sq). With AVX four
+// points at a time, with SSE2 two, each lane doing hs_length_sq(hs_sub(p, c))'s operations in its
+// order (the same bits).
+static uint32_t points_near(const hs_hand *hand, hs_vec3 c, double r_sq, double keep_sq, uint32_t *kept) {
 	const hs_vec3 *p = hand->points;
-	uint32_t near = 0;
+	uint32_t near = 0, within = 0;
 	int i = 0;
 #if HS_LANES4
 	if (hs_cpu_has_avx()) {
-		near = points_near_avx(hand, c, r_sq);
+		near = points_near_avx(hand, c, r_sq, keep_sq, &within);
 		i = HS_HAND_POINTS;
 	}
 #endif
 #if defined(__SSE2__)
-	const __m128d cx = _mm_set1_pd(c.x), cy = _mm_set1_pd(c.y), cz = _mm_set1_pd(c.z), r = _mm_set1_pd(r_sq);
+	const __m128d cx = _mm_set1_pd(c.x), cy = _mm_set1_pd(c.y), cz = _mm_set1_pd(c.z), r = _mm_set1_pd(r_sq),
+	              kr = _mm_set1_pd(keep_sq);
 	for (; i + 1 < HS_HAND_POINTS; i += 2) {
 		hs_lanes2 in = hs_lanes2_load(&p[i], &p[i + 1]);
 		__m128d dx = _mm_sub_pd(in.x, cx), dy = _mm_sub_pd(in.y, cy), dz = _mm_sub_pd(in.z, cz);
 		__m128d d = _mm_add_pd(_mm_add_pd(_mm_mul_pd(dx, dx), _mm_mul_pd(dy, dy)), _mm_mul_pd(dz, dz));
 		near |= (uint32_t)_mm_movemask_pd(_mm_cmpngt_pd(d, r)) << i;
+		within |= (uint32_t)_mm_movemask_pd(_mm_cmpngt_pd(d, kr)) << i;
 	}
 #endif
-	for (; i < HS_HAND_POINTS; ++i)
-		if (!(hs_length_sq(hs_sub(p[i], c)) > r_sq))
-			near |= 1u << i;
+	for (; i < HS_HAND_POINTS; ++i) {
+		double d = hs_length_sq(hs_sub(p[i], c));
+		near |= (uint32_t)!(d > r_sq) << i;
+		within |= (uint32_t)!(d > keep_sq) << i;
+	}
+	*kept = within;
 #if defined(HS_SELFCHECK)
 	for (int k = 0; k < HS_HAND_POINTS; ++k) {
 		const double row[3] = {hand->point_rows[0][k], hand->point_rows[1][k], hand->point_rows[2][k]};
@@ -418,7 +428,8 @@ static uint32_t points_near(const hs_hand *hand, hs_vec3 c, double r_sq) {
 		}
 	}
 	for (int k = 0; k < HS_HAND_POINTS; ++k)
-		if ((near >> k & 1u) != !(hs_length_sq(hs_sub(p[k], c)) > r_sq)) {
+		if ((near >> k & 1u) != !(hs_length_sq(hs_sub(p[k], c)) > r_sq) ||
+		    (within >> k & 1u) != !(hs_length_sq(hs_sub(p[k], c)) > keep_sq)) {
 			fprintf(stderr, "selfcheck: points_near differs from the scalar cull\n");
 			abort();
 		}
@@ -426,18 +437,41 @@ static uint32_t points_near(const hs_hand *hand, hs_vec3 c, double r_sq) {
 	return near;
 }
 
+// The check points near the part now (bit i; all when not culling): within its sphere grown by
+// `grow` (its corners reach further: part_reach.h); and, in the swept test, a point that touched
+// (or started inside) within the sphere grown by the release margin (or twice it) as well, where
+// it still counts.
+static uint32_t points_near_part(const hs_world *world, const hs_hand *hand, const hs_part *part, hs_vec3 center,
+                                 double grow, bool swept) {
+	double r = part->radius + part->grow_reach * grow;
+	double keep = part->radius + part->grow_reach * (grow + hs_contact_keep(world, hand));
+	uint32_t within = 0, near = points_near(hand, center, r * r, keep * keep, &within);
+	return swept ? near | (within & (hand->touch_points | hand->embed_points)) : near;
+}
+
+// The finger segments (bit s) with an embedded check line: such a line stays so within twice the
+// margin of the part, beyond its sphere (detect_lines), so its segment is not culled.
+static uint32_t segments_embedded(const hs_hand *hand) {
+	uint32_t segments = 0;
+	if (hand->embed_lines)
+		for (int k = 0; k < HS_HAND_LINES / 4; ++k)
+			segments |= (uint32_t)((hand->embed_lines >> (4 * k) & 0xFu) != 0) << k;
+	return segments;
+}
+
 static void detect_points(hs_world *world, int object, int h, const hs_part *part, const frame *body,
                           const frame *before, bool moved, bool cull, double grow, unsigned far) {
 	const hs_shape *shape = &world->shapes[world->bodies[object].shape];
 	const hs_hand *hand = &world->hands[h];
 	hs_vec3 center = to_world(body, part->center); // cull before the transform
-	double r_sq = (part->radius + grow) * (part->radius + grow);
+	double r = part->radius + part->grow_reach * grow, r_sq = r * r; // grown: its corners reach further
 	bool paper = world->def.paper_contacts, swept = grow == 0.0 && !paper;
 	int steps = moved ? 1 : hand->path_steps; // a held object moves with the hand: chords suffice
 	bool still = !moved && same_pose(&world->bodies[object]);
 	// passed over: far fingers' points (far_fingers), and those beyond the sphere now unless paths count
 	uint32_t todo = ((1u << HS_HAND_POINTS) - 1u) & ~hs_finger_parts(far, 4);
-	uint32_t near = cull ? points_near(hand, center, r_sq) : todo;
+	uint32_t near = cull ? points_near_part(world, hand, part, center, grow, swept) : todo;
+	double margin = world->def.grasp_release_mm * 1e-3;
 	if (!swept || moved)
 		todo &= near;
 	for (; todo; todo &= todo - 1u) {
@@ -452,7 +486,6 @@ static void detect_points(hs_world *world, int object, int h, const hs_part *par
 			continue;
 		}
 		bool touched = swept && (hand->touch_points >> i & 1u);
-		double margin = world->def.grasp_release_mm * 1e-3;
 		if (swept && (hand->embed_points >> i & 1u)) { // started inside: touches nothing until clear
 			if (inside_part(world, shape, part, b, 2.0 * margin))
 				world->hands[h].embed_points_next |= 1u << i;
@@ -1147,7 +1180,7 @@ static HS_FORCE_INLINE bool held_lines_clear_in(hs_world *world, int h, int s, i
 	if (!hs_part_box_takes(y) || !hs_part_box_takes(z))
 		return false;
 	held_ends ends = {e0, e1, y, z, touching >> a & 1u, touching >> (a + 1) & 1u,
-	                  world->def.grasp_release_mm * 1e-3 - HS_CULL_SLACK, grow, part->radius + grow + HS_CULL_SLACK};
+	                  world->def.grasp_release_mm * 1e-3 - HS_CULL_SLACK, grow, part->radius + part->grow_reach * grow + HS_CULL_SLACK};
 #if HS_LANES4
 	bool clear = four ? held_four_clear(part, &ends) : held_each_clear(part, &ends);
 #else
@@ -1189,7 +1222,7 @@ static void detect_lines(hs_world *world, int object, int h, const hs_part *part
 	const hs_shape *shape = &world->shapes[world->bodies[object].shape];
 	const hs_hand *hand = &world->hands[h];
 	hs_vec3 center = to_world(body, part->center);
-	double r = part->radius + grow;
+	double r = part->radius + part->grow_reach * grow; // grown: its corners reach further
 	bool paper = world->def.paper_contacts, swept = grow == 0.0 && !paper;
 	int steps = moved ? 1 : hand->path_steps; // a held object moves with the hand: chords suffice
 	segment_bounds sb = segment_bounds_of(world, hand, r);
@@ -1198,7 +1231,7 @@ static void detect_lines(hs_world *world, int object, int h, const hs_part *part
 	// passed over: far fingers' segments (far_fingers), and those beyond rs now unless paths count
 	double d_axis[16]; // axes_near's AVX path fills a 16th
 	uint32_t segments = HS_HAND_ALL_SEGMENTS & ~hs_finger_parts(far, 3);
-	uint32_t near = cull ? axes_near(hand, center, sb.rs * sb.rs, d_axis) : segments;
+	uint32_t near = (cull ? axes_near(hand, center, sb.rs * sb.rs, d_axis) : segments) | (swept ? segments_embedded(hand) : 0);
 	if (!swept || moved)
 		segments &= near;
 	for (; segments; segments &= segments - 1u) {
@@ -1211,7 +1244,7 @@ static void detect_lines(hs_world *world, int object, int h, const hs_part *part
 		    (plain && moved && hs_part_is_box(part) && HELD_LINES_CLEAR(world, h, s, a, body, shape, part, touching, grow, &turn)))
 			continue; // far, each line beside a touching point, or clear (seen before it is placed)
 		hs_hand_ready_segment(&world->hands[h], s); // its lines are read from here on
-		bool all_near = sb.ri > 0.0 && d_sq <= sb.ri * sb.ri; // the segment's lines are all within r now
+		bool all_near = (sb.ri > 0.0 && d_sq <= sb.ri * sb.ri) || (swept && !plain); // all within r now
 		unsigned lines = cull && !all_near ? lines_near(hand, s, center, r * r) : 0xFu;
 		for (int j = 4 * s; j < 4 * s + 4; ++j) {
 			const hs_vec3 *l = hand->lines[j], *m = hand->prev_lines[j];
@@ -1356,10 +1389,12 @@ static int keep_hovering(hs_world *world, int first, int n) {
 // contact (end_touches, a test with a margin, only passes a line over). An embedded line answers
 // to the part grown by twice the margin, which reaches past the sphere at a box's corner (by
 // (sqrt 3 - 1) times the growth): a finger with one keeps its tests.
-static unsigned far_fingers(const hs_hand *hand, hs_vec3 c, double reach) {
+static unsigned far_fingers(const hs_world *world, const hs_hand *hand, const hs_part *part, hs_vec3 c, double reach) {
 	unsigned far = 0;
+	uint32_t kept = hand->touch_points | hand->embed_points; // counted beyond the sphere (detect_points)
+	double keep = part->grow_reach * hs_contact_keep(world, hand);
 	for (int f = 0; f < 5; ++f) {
-		double r = hand->finger_reach[f] + reach;
+		double r = hand->finger_reach[f] + reach + (kept >> (4 * f) & 0xFu ? keep : 0.0);
 		if (!(hand->embed_lines >> (12 * f) & 0xFFFu) && hs_length_sq(hs_sub(hand->finger_center[f], c)) > r * r)
 			far |= 1u << f;
 	}
@@ -1419,11 +1454,10 @@ int hs_contact_detect_grown(hs_world *world, int object, const hs_pose *before, 
 			unsigned far = 0;
 			if (world->def.skip_work) {
 				hs_vec3 c = to_world(&now, part->center);
-				double r = part->radius + grow + hand->sweep_radius;
-				if (hs_length_sq(hs_sub(c, hand->sweep_center)) > r * r)
+				if (!hs_contact_sphere_near(world, hand, c, part->radius, part->grow_reach, grow))
 					continue;
 				if (fingers) {
-					far = far_fingers(hand, c, part->radius + HS_CULL_SLACK);
+					far = far_fingers(world, hand, part, c, part->radius + HS_CULL_SLACK);
 					check_far(hand, far, c, part->radius + HS_CULL_SLACK);
 				}
 			}

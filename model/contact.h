@@ -10,9 +10,39 @@
 
 // True when the hand's path through the frame may reach the body's bounding sphere grown by
 // `grow`, or work is not skipped: the bounding-volume test before a hand's narrow tests (Fig. 2).
+// How far beyond a part a finger part can still count (contact.c): a check point that touched stays
+// touching within the release margin, a check point or line that started inside stays so within
+// twice it; the bounding-volume tests reach that much further while the hand has such parts.
+static inline double hs_contact_keep(const hs_world *world, const hs_hand *hand) {
+	if (world->def.paper_contacts)
+		return 0.0;
+	bool embedded = hand->embed_points || hand->embed_lines;
+	return 1e-3 * world->def.grasp_release_mm * (embedded ? 2.0 : hand->touch_points ? 1.0 : 0.0);
+}
+
+// True when the hand's path through the frame may reach a part or body of bounding sphere (c, r)
+// and growth factor k (part_reach.h) grown by `grow`, or one of the hand's parts that still count
+// beyond it (hs_contact_keep) lies within reach of it now.
+static inline bool hs_contact_sphere_near(const hs_world *world, const hs_hand *hand, hs_vec3 c, double r, double k,
+                                          double grow) {
+	double d_sq = hs_length_sq(hs_sub(c, hand->sweep_center)), reach = r + k * grow + hand->sweep_radius;
+	if (d_sq <= reach * reach)
+		return true;
+	double keep = k * hs_contact_keep(world, hand);
+	if (!(keep > 0.0) || d_sq > (reach + keep) * (reach + keep))
+		return false;
+	if (hand->embed_lines) // (seldom: not looked at more closely)
+		return true;
+	double r_keep = (r + k * grow + keep) * (r + k * grow + keep);
+	for (uint32_t kept = hand->touch_points | hand->embed_points; kept; kept &= kept - 1u)
+		if (hs_length_sq(hs_sub(hand->points[hs_lowest_bit(kept)], c)) <= r_keep)
+			return true;
+	return false;
+}
+
 static inline bool hs_contact_hand_near(const hs_world *world, const hs_body *body, const hs_hand *hand, double grow) {
-	double reach = world->shapes[body->shape].radius + grow + hand->sweep_radius;
-	return !world->def.skip_work || hs_length_sq(hs_sub(body->pos, hand->sweep_center)) <= reach * reach;
+	return !world->def.skip_work || hs_contact_sphere_near(world, hand, body->pos, world->shapes[body->shape].radius,
+	                                                       world->shape_grow_reach[body->shape], grow);
 }
 
 // Where an object's G is and how it is turned.

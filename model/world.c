@@ -9,6 +9,7 @@
 #include "manipulate.h"
 #include "motion.h"
 #include "part_box.h"
+#include "part_reach.h"
 #include "stacking.h"
 #include "support.h"
 #include "world_internal.h"
@@ -93,6 +94,7 @@ hs_world *hs_world_create(const hs_world_def *def, hs_status *status) {
 	world->shapes = calloc((size_t)def->max_shapes, sizeof *world->shapes);
 	world->face_edges = calloc((size_t)def->max_shapes, sizeof *world->face_edges);
 	world->face_trees = calloc((size_t)def->max_shapes, sizeof *world->face_trees);
+	world->shape_grow_reach = calloc((size_t)def->max_shapes, sizeof *world->shape_grow_reach);
 	size_t objects = def->max_objects > 0 ? (size_t)def->max_objects : 1;
 	world->bodies = calloc(objects, sizeof *world->bodies);
 	world->queue = calloc(objects, sizeof *world->queue);
@@ -116,7 +118,7 @@ hs_world *hs_world_create(const hs_world_def *def, hs_status *status) {
 	world->stale_flag = calloc(objects, sizeof *world->stale_flag);
 	world->box_memo = calloc(objects, sizeof *world->box_memo);
 	world->all_stale = true;
-	if (!world->shapes || !world->face_edges || !world->face_trees || !world->bodies || !world->queue || !world->hands || !world->contacts || !grid ||
+	if (!world->shapes || !world->face_edges || !world->face_trees || !world->shape_grow_reach || !world->bodies || !world->queue || !world->hands || !world->contacts || !grid ||
 	    !world->candidates || !world->every || !world->found || !world->awake || !world->awake_flag || !world->digest || !world->stale ||
 	    !world->stale_flag || !world->box_memo) {
 		hs_world_destroy(world);
@@ -148,6 +150,7 @@ void hs_world_destroy(hs_world *world) {
 	free(world->shapes);
 	free(world->face_edges);
 	free(world->face_trees);
+	free(world->shape_grow_reach);
 	free(world->bodies);
 	free(world->queue);
 	free(world->hands);
@@ -284,8 +287,13 @@ hs_shape_id hs_world_add_shape(hs_world *world, const hs_shape *shape, hs_status
 		set_status(status, HS_ERR_NO_MEMORY);
 		return none;
 	}
-	for (int p = 0; p < copy->part_count; ++p)
+	world->shape_grow_reach[world->shape_count] = 1.0;
+	for (int p = 0; p < copy->part_count; ++p) {
 		hs_part_box_find(copy, &copy->parts[p]);
+		copy->parts[p].grow_reach = hs_part_grow_reach(copy, &copy->parts[p]);
+		world->shape_grow_reach[world->shape_count] =
+		    fmax(world->shape_grow_reach[world->shape_count], copy->parts[p].grow_reach);
+	}
 	if (!index_face_edges(copy, &world->face_edges[world->shape_count]) ||
 	    !hs_face_tree_build(&world->face_trees[world->shape_count], copy)) {
 		free(world->face_edges[world->shape_count].first);

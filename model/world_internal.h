@@ -51,6 +51,7 @@ struct hs_world {
 	int shape_count;    // MODEL
 	hs_shape *shapes;   // MODEL: deep copies, def.max_shapes of them
 	hs_face_edges *face_edges; // MODEL: each shape's edges by face (contact.c), built with its copy
+	double *shape_grow_reach; // MODEL: each shape's largest part grow_reach (part_reach.h)
 	hs_face_tree *face_trees;  // MODEL: each shape's many-faced parts as normal-cone trees (face_tree.h), built with its copy
 	int object_count;   // MODEL
 	hs_body *bodies;    // STATE (but shape, mass), def.max_objects of them

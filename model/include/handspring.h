@@ -68,6 +68,10 @@ typedef struct hs_part {
 	/// offset; box_face[0] = -1 for any other part. The hand check tests it coordinate by coordinate.
 	int box_face[6];
 	double box_offset[6];
+	/// Set with box_face: the part with its faces moved out by g lies within radius + g ·
+	/// grow_reach of center (√3 for a box: its corners move out diagonally). The hand check's
+	/// bounding-volume tests grow by it.
+	double grow_reach;
 } hs_part;
 
 /// A planar convex face: vertex indices (counter-clockwise seen from outside) and its plane.
