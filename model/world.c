@@ -401,11 +401,6 @@ static bool body_is_finite(const hs_body *body) {
 // the floor (§4.2), the fall swept over the objects under it, and in support mode its supports.
 static void step_object(hs_world *world, int i) {
 	hs_body *body = &world->bodies[i];
-	// An object asleep off the floor rests on another one and stays as it is, as the awake list's
-	// skip leaves it (skip_work off gives the same bits): in support mode on its support (a moved
-	// support wakes it), in paper mode where it stopped at an interference (§4.3).
-	if (body->asleep && !body->grounded)
-		return;
 	hs_vec3 from = body->pos;
 	if (!body->asleep && world->def.stacking == HS_STACKING_PAPER && hs_object_interferes(world, i)) {
 		hs_stack_rectify(world, i);
@@ -462,8 +457,12 @@ hs_status hs_world_step(hs_world *world) {
 		hs_body *body = &world->bodies[i];
 		if (body->held || body->carried)
 			continue;
-		if (body->asleep && skip)
-			continue; // fell asleep this frame: leaves the awake list below
+		// asleep: stays as it is until woken — on the floor, on a support (support mode), where it
+		// stopped at an interference (paper mode, §4.3) — with skip_work off too (the same bits:
+		// its pose and its last turn, rot_prev, kept); one that fell asleep this frame leaves the
+		// awake list below
+		if (body->asleep)
+			continue;
 		hs_body saved = *body;
 		step_object(world, i);
 		if (!body_is_finite(body)) { // never let a NaN spread: freeze the object and count it
@@ -477,7 +476,7 @@ hs_status hs_world_step(hs_world *world) {
 	for (int k = 0; k < moved; ++k) // the awake list may grow only once the loop is over
 		hs_support_wake_neighbours(world, world->queue[k]);
 	hs_awake_compact(world);
-	if (!skip) // every object was visited, asleep or not: any may have changed
+	if (!skip) // every object was looked at (the awake list does not bound what may have changed)
 		hs_digest_all_stale(world);
 	for (int h = 0; h < world->hand_count; ++h) { // a hand not set again stays where it is
 		hs_hand_age_wrist(&world->hands[h]);
