@@ -167,19 +167,19 @@ static HS_NOINLINE int grid_near(hs_world *world, hs_vec3 center, double radius)
 	return list_answer(world, l, center, radius);
 }
 
+// A world scanned whole answers with every index, listed when the world was made: nothing written.
+static int every_index(hs_world *world) {
+	world->near = world->every;
+	return world->object_count;
+}
+
 int hs_grid_near(hs_world *world, hs_vec3 center, double radius) {
-	if (scanned(world)) { // every index, listed when the world was made: nothing written
-		world->near = world->every;
-		return world->object_count;
-	}
-	return grid_near(world, center, radius);
+	return scanned(world) ? every_index(world) : grid_near(world, center, radius);
 }
 
 int hs_grid_near_either(hs_world *world, hs_vec3 a, hs_vec3 b, double radius) {
-	if (scanned(world)) {
-		world->near = world->every;
-		return world->object_count;
-	}
+	if (scanned(world))
+		return every_index(world);
 	return grid_near(world, hs_scale(hs_add(a, b), 0.5), radius + 0.5 * hs_length(hs_sub(b, a)));
 }
 

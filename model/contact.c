@@ -437,14 +437,12 @@ static uint32_t points_near(const hs_hand *hand, hs_vec3 c, double r_sq, double 
 	return near;
 }
 
-// The check points near the part now (bit i; all when not culling): within its sphere grown by
-// `grow` (its corners reach further: part_reach.h); and, in the swept test, a point that touched
-// (or started inside) within the sphere grown by the release margin (or twice it) as well, where
-// it still counts.
+// The check points near the part now: within r, its sphere grown by `grow` (its corners reach
+// further: part_reach.h); and, in the swept test, a point that touched (or started inside) within
+// the sphere grown further by the release margin (or twice it), where it still counts.
 static uint32_t points_near_part(const hs_world *world, const hs_hand *hand, const hs_part *part, hs_vec3 center,
-                                 double grow, bool swept) {
-	double r = part->radius + part->grow_reach * grow;
-	double keep = part->radius + part->grow_reach * (grow + hs_contact_keep(world, hand));
+                                 double r, bool swept) {
+	double keep = r + part->grow_reach * hs_contact_keep(world, hand);
 	uint32_t within = 0, near = points_near(hand, center, r * r, keep * keep, &within);
 	return swept ? near | (within & (hand->touch_points | hand->embed_points)) : near;
 }
@@ -470,7 +468,7 @@ static void detect_points(hs_world *world, int object, int h, const hs_part *par
 	bool still = !moved && same_pose(&world->bodies[object]);
 	// passed over: far fingers' points (far_fingers), and those beyond the sphere now unless paths count
 	uint32_t todo = ((1u << HS_HAND_POINTS) - 1u) & ~hs_finger_parts(far, 4);
-	uint32_t near = cull ? points_near_part(world, hand, part, center, grow, swept) : todo;
+	uint32_t near = cull ? points_near_part(world, hand, part, center, r, swept) : todo;
 	double margin = world->def.grasp_release_mm * 1e-3;
 	if (!swept || moved)
 		todo &= near;
@@ -1383,9 +1381,9 @@ static int keep_hovering(hs_world *world, int first, int n) {
 
 // The fingers (bit f) whose spheres through the frame (hs_hand_finger_spheres) lie further than
 // `reach` from c, the centre of a part's bounding sphere (its radius and HS_CULL_SLACK for
-// rounding), none of whose check lines is embedded; for the ungrown test. Such a finger's check
-// points lie beyond the part's sphere along their whole paths, where the points' own cull passes
-// them over; its lines and their sweeps miss the part the sphere holds, so the line tests find no
+// rounding) — further by the part's keep (hs_contact_keep × grow_reach) for a finger with a
+// touching or embedded check point — none of whose check lines is embedded; for the ungrown
+// test. Such a finger's check points lie where the points' own cull passes them over; its lines and their sweeps miss the part the sphere holds, so the line tests find no
 // contact (end_touches, a test with a margin, only passes a line over). An embedded line answers
 // to the part grown by twice the margin, which reaches past the sphere at a box's corner (by
 // (sqrt 3 - 1) times the growth): a finger with one keeps its tests.

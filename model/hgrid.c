@@ -267,6 +267,14 @@ static int visit_hashed(const hs_hgrid *g, int level, long x0, long x1, long y, 
 	return n;
 }
 
+// The objects filed in cells x0 .. x1 of one row of a packed window (its cell 0 at row).
+static inline int window_row(const hs_hgrid *g, const int *row, long x0, long x1, int *out, int n) {
+	for (long x = x0; x <= x1; ++x)
+		for (int i = row[x]; i >= 0; i = g->next[i])
+			out[n++] = i;
+	return n;
+}
+
 // Objects of one level in the cells lo[] .. hi[] when all of it is in its packed window: the
 // range's cells inside the window (each cell's list is exact), row by row.
 static int visit_window(const hs_hgrid *g, int level, const long *lo, const long *hi, int *out, int n) {
@@ -282,12 +290,8 @@ static int visit_window(const hs_hgrid *g, int level, const long *lo, const long
 	z1 = z1 < wn[2] - 1 ? z1 : wn[2] - 1;
 	const int *cells = g->dense + g->win_base[level];
 	for (long k = z0; k <= z1; ++k)
-		for (long y = y0; y <= y1; ++y) {
-			const int *row = cells + (k * wn[1] + y) * wn[0];
-			for (long x = x0; x <= x1; ++x)
-				for (int i = row[x]; i >= 0; i = g->next[i])
-					out[n++] = i;
-		}
+		for (long y = y0; y <= y1; ++y)
+			n = window_row(g, cells + (k * wn[1] + y) * wn[0], x0, x1, out, n);
 	return n;
 }
 
@@ -310,10 +314,8 @@ static int visit_cells(const hs_hgrid *g, int level, const long *lo, const long 
 				n = visit_hashed(g, level, lo[0], x0 - 1, y, z, out, n);
 				n = visit_hashed(g, level, x1 + 1, hi[0], y, z, out, n);
 			}
-			long row0 = g->win_base[level] + ((z - wl[2]) * wn[1] + (y - wl[1])) * wn[0] - wl[0]; // + x: cell x
-			for (long x = x0; x <= x1; ++x)
-				for (int i = g->dense[row0 + x]; i >= 0; i = g->next[i])
-					out[n++] = i;
+			const int *cells = g->dense + g->win_base[level] + ((z - wl[2]) * wn[1] + (y - wl[1])) * wn[0];
+			n = window_row(g, cells, x0 - wl[0], x1 - wl[0], out, n);
 		}
 	return n;
 }
