@@ -6,8 +6,8 @@
 #include "scenario_internal.h"
 #include "scenario_parser.h"
 
-enum { R_DT, R_SEEDS, R_GLOVE, R_WRIST, R_WRIST_DEG, R_COUNT };
-static const char *const robust_keys[R_COUNT] = {"dt", "seeds", "glove_units", "wrist_mm", "wrist_deg"};
+enum { R_DT, R_SEEDS, R_GLOVE, R_WRIST, R_WRIST_DEG, R_PHASES, R_COUNT };
+static const char *const robust_keys[R_COUNT] = {"dt", "seeds", "glove_units", "wrist_mm", "wrist_deg", "phases"};
 
 // dt: a list of 1 to HS_ROBUST_MAX_DTS frame times, each as the scenario's `dt` takes it.
 static bool read_dts(hs_scenario_parser *p, const yaml_node_t *node, hs_robust *r) {
@@ -48,7 +48,7 @@ static bool read_levels(hs_scenario_parser *p, const hs_fields *f, hs_robust *r)
 bool hs_read_robust(hs_scenario_parser *p, const yaml_node_t *node, bool hands) {
 	hs_robust *r = &p->s->robust;
 	if (node->type != YAML_MAPPING_NODE)
-		return hs_yaml_fail(&p->y, node, "'robust' must be a mapping (dt, seeds, glove_units, wrist_mm, wrist_deg), got %s",
+		return hs_yaml_fail(&p->y, node, "'robust' must be a mapping (dt, seeds, glove_units, wrist_mm, wrist_deg, phases), got %s",
 		                    hs_yaml_got(node).text);
 	hs_fields f;
 	if (!hs_yaml_mapping(&p->y, node, robust_keys, R_COUNT, "robust", &f))
@@ -71,6 +71,8 @@ bool hs_read_robust(hs_scenario_parser *p, const yaml_node_t *node, bool hands) 
 		if (f.key[i] && !hands)
 			return hs_yaml_fail(&p->y, f.key[i], "'%s' needs 'hands': the levels are of hand input noise",
 			                    robust_keys[i]);
+	if (f.value[R_PHASES] && !hs_yaml_bool(&p->y, f.value[R_PHASES], "phases", &r->phases))
+		return false;
 	r->has_levels = f.value[R_GLOVE] || f.value[R_WRIST] || f.value[R_WRIST_DEG];
 	return read_levels(p, &f, r);
 }

@@ -132,6 +132,12 @@ static bool read_scenario(hs_scenario_parser *p, const yaml_node_t *root) {
 		return false;
 	hs_world_def def = hs_default_world_def();
 	def.dt = s->dt;
+	if (p->options && p->options->phase != 0.0) {
+		if (!(p->options->phase > 0.0 && p->options->phase < 1.0))
+			return hs_set_error(p->y.err, p->y.path, 0, "the phase must be within [0, 1) of a frame, got %g",
+			                    p->options->phase);
+		s->phase = p->options->phase;
+	}
 	if (f.value[S_GRAVITY] && !hs_read_gravity(p, f.value[S_GRAVITY], &def))
 		return false;
 	s->gravity = def.gravity;
@@ -240,7 +246,7 @@ hs_scenario *hs_scenario_load_source(const hs_scenario_source *src, const hs_sce
 	if (ok) {
 		p.s->source_hash = src->hash;
 		p.s->overridden = options && (options->dt > 0.0 || options->noise || options->model_count > 0 ||
-		                              options->throw_error);
+		                              options->throw_error || options->phase > 0.0);
 	}
 	free(p.sorted);
 	if (!ok || !start(p.s, path, err)) {
@@ -306,7 +312,8 @@ int hs_scenario_expectation_count(const hs_scenario *s) {
 bool hs_scenario_step(hs_scenario *s) {
 	if (!s || s->frame >= s->frames || s->step_status != HS_OK)
 		return false;
-	double t = (double)(s->frame + 1) * s->dt; // inputs are given for the end of the coming frame
+	// inputs are given for the end of the coming frame, on the scripts' clock (phase × dt late)
+	double t = ((double)(s->frame + 1) - s->phase) * s->dt;
 	hs_hands_drive(s->world, &s->hands, t, s->noise, &s->noise_options);
 	hs_stylus_drive(s->world, &s->stylus, t, s->noise_options.stylus ? s->noise : NULL);
 	hs_status status = hs_world_step(s->world);

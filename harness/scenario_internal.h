@@ -22,6 +22,7 @@ typedef struct hs_robust {
 	double dts[HS_ROBUST_MAX_DTS]; // s
 	char dt_text[HS_ROBUST_MAX_DTS][16]; // as written, for the table
 	int seeds;                     // cells use seeds 1..seeds
+	bool phases;                   // seed k also runs the scripts (k - 1) / seeds of a frame late
 	bool has_levels;               // any of the three below was given (the others are then 0)
 	hs_noise_options levels;
 } hs_robust;
@@ -29,6 +30,7 @@ typedef struct hs_robust {
 struct hs_scenario {
 	char *name, *description;
 	double dt, duration; // s
+	double phase;        // the input scripts run phase × dt late (hs_scenario_options.phase)
 	long frames;         // to run: llround(duration / dt)
 	long frame;          // run so far
 	hs_world *world;

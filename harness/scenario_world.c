@@ -252,15 +252,37 @@ static bool read_release(hs_scenario_parser *p, const yaml_node_t *fit, const ya
 	return true;
 }
 
+// A number option of `model` within [lo, hi] (its unit in `unit`), when given.
+static bool read_bounded(hs_scenario_parser *p, const yaml_node_t *v, const char *name, double lo, double hi,
+                         const char *unit, double *out) {
+	if (!v)
+		return true;
+	if (!hs_yaml_number(&p->y, v, name, out))
+		return false;
+	if (!(*out >= lo && *out <= hi))
+		return hs_yaml_fail(&p->y, v, "'%s' must be within [%g, %g] %s, got %s", name, lo, hi, unit, hs_yaml_show(v).text);
+	return true;
+}
+
+// How a grasp starts and what a lost hand does (docs/model.md §3 "Grasp start", "Tracking loss"):
+// grasp_opposed, grasp_close_mm, tracking_hold_s.
+static bool read_grasp_start(hs_scenario_parser *p, const hs_fields *f, int first, hs_world_def *def) {
+	if (f->value[first] && !hs_yaml_bool(&p->y, f->value[first], "grasp_opposed", &def->grasp_opposed))
+		return false;
+	return read_bounded(p, f->value[first + 1], "grasp_close_mm", 0.0, 1000.0, "mm", &def->grasp_close_mm) &&
+	       read_bounded(p, f->value[first + 2], "tracking_hold_s", 0.0, HS_MAX_TRACKING_HOLD, "s", &def->tracking_hold_s);
+}
+
 bool hs_read_model(hs_scenario_parser *p, const yaml_node_t *node, hs_world_def *def) {
 	static const char *const names[] = {"grasp_threshold_deg", "stacking",       "floor_tolerance",
 	                                    "skip_work",           "spring",         "input_noise",
 	                                    "grasp_rule",          "contacts",       "glove_deadband",
-	                                    "release_fit",         "release_window_s"};
+	                                    "release_fit",         "release_window_s", "grasp_opposed",
+	                                    "grasp_close_mm",      "tracking_hold_s"};
 	if (node->type != YAML_MAPPING_NODE)
 		return hs_yaml_fail(&p->y, node, "'model' must be a mapping, got %s", hs_yaml_got(node).text);
 	hs_fields f;
-	if (!hs_yaml_mapping(&p->y, node, names, 11, "model", &f))
+	if (!hs_yaml_mapping(&p->y, node, names, 14, "model", &f) || !read_grasp_start(p, &f, 11, def))
 		return false;
 	bool stacking_support = def->stacking == HS_STACKING_SUPPORT;
 	// the realistic rule first, the paper's letter second (docs/model.md §3, §6)

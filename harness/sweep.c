@@ -2,6 +2,8 @@
 // clause, then each frame time of the `robust` block × noise seeds 1..seeds judged on the clauses
 // marked `robust: true` (exact closed-form clauses hold only at the nominal dt and without noise).
 // Each cell is a fresh load of the file with the overrides: nothing carries from one cell to the next.
+// With `phases: true`, seed k also shifts the input scripts by (k - 1) / seeds of a frame
+// (hs_scenario_options.phase), so no outcome may hang on where the frames fall relative to a stroke.
 #include <string.h>
 
 #include "expect.h"
@@ -26,6 +28,8 @@ static bool run_cell(hs_scenario *s, bool robust_only, char cell[24]) {
 static void print_header(FILE *out, const hs_scenario *s, const hs_robust *r) {
 	const hs_noise_options *n = &r->levels;
 	fprintf(out, "sweep %s: %d dt x %d seeds", s->name, r->dt_count, r->seeds);
+	if (r->phases)
+		fprintf(out, " (seed k: the scripts (k - 1)/%d of a frame late)", r->seeds);
 	if (s->springs)
 		fprintf(out, ", stylus noise (0.03 inch, 0.15 deg RMS)\n");
 	else if (s->hands.count == 0)
@@ -46,7 +50,10 @@ static int sweep_row(const char *path, const hs_robust *r, int row, FILE *out, h
 	int pass = 0;
 	fprintf(out, "%-10s", r->dt_text[row]);
 	for (int k = 1; k <= r->seeds; ++k) {
-		hs_scenario_options o = {.dt = r->dts[row], .noise = true, .noise_seed = (unsigned long)k};
+		// with `phases`, seed k runs the scripts (k - 1) / seeds of a frame late: each row sees as many
+		// phases as seeds
+		hs_scenario_options o = {.dt = r->dts[row], .noise = true, .noise_seed = (unsigned long)k,
+		                         .phase = r->phases ? (double)(k - 1) / r->seeds : 0.0};
 		hs_scenario *cell = hs_scenario_load_with(path, &o, err);
 		if (!cell) {
 			fprintf(out, "\n");

@@ -9,6 +9,7 @@
 //  - once it has ended, the releasing hand's contacts do not act on the object (no push, no new
 //    grasp) until that hand is clear of it by grasp_release_mm, another finger touches it, or its
 //    five fingers close again by grasp_open_mm: no 2 <-> 3 flicker, no drag while opening.
+#include "broadphase.h"
 #include "contact.h"
 #include "grasp.h"
 #include "inline.h"
@@ -49,6 +50,97 @@ static HS_FORCE_INLINE void hand_opening(const hs_hand *hand, unsigned fingers, 
 	*reach /= m;
 }
 
+// The pair index of two different fingers a < b (HS_FINGER_PAIRS of them): 0-3 the thumb with
+// the index to the little finger, 4-6 the index with the next three, 7-8 the middle, 9 ring-little.
+static int finger_pair(int a, int b) {
+	static const int first[4] = {0, 4, 7, 9};
+	return first[a] + (b - a - 1);
+}
+
+void hs_grasp_track_pairs(hs_world *world) {
+	double forget = HS_PAIR_FORGET * world->def.dt;
+	for (int h = 0; h < world->hand_count; ++h) {
+		hs_hand *hand = &world->hands[h];
+		for (int a = 0; a < 4; ++a)
+			for (int b = a + 1; b < 5; ++b) {
+				int k = finger_pair(a, b);
+				double d = hs_length(hs_sub(hand->points[4 * a + 3], hand->points[4 * b + 3]));
+				double kept = hand->pair_open[k] - forget;
+				hand->pair_open[k] = d > kept ? d : kept;
+			}
+	}
+}
+
+void hs_grasp_reset_pairs(hs_hand *hand) {
+	for (int a = 0; a < 4; ++a)
+		for (int b = a + 1; b < 5; ++b)
+			hand->pair_open[finger_pair(a, b)] = hs_length(hs_sub(hand->points[4 * a + 3], hand->points[4 * b + 3]));
+}
+
+// True when contacts a and b press toward each other across the object (docs/model.md §3 "Grasp
+// start"): each one's push into the object (−normal) lies within the opposition cone of the line
+// from it to the other, world->oppose_cos the cosine of that cone's half-angle.
+static bool opposed(const hs_world *world, const hs_contact *a, const hs_contact *b) {
+	hs_vec3 d = hs_sub(b->point, a->point);
+	double len = hs_length(d);
+	if (!(len > 1e-9)) // one point: nothing to squeeze between
+		return false;
+	double limit = world->oppose_cos * len;
+	return -hs_dot(a->normal, d) >= limit && hs_dot(b->normal, d) >= limit;
+}
+
+// How much a pair's tips may part in a frame and still count as closing: HS_PAIR_STILL (m, the
+// noise of a glove or tracker past its deadband) and HS_PAIR_DRIFT (m/s) times the frame time.
+#define HS_PAIR_STILL 2e-3
+#define HS_PAIR_DRIFT 0.05
+
+// True when fingers a < b of the hand have closed by grasp_close_mm from the most open they were
+// lately (hs_hand.pair_open) and are not opening now (their tips parted by at most HS_PAIR_STILL
+// plus HS_PAIR_DRIFT dt since the last frame): a hand that closed on one object and opens again is not closing.
+static bool pair_closing(const hs_world *world, const hs_hand *hand, int a, int b) {
+	double d = hs_length(hs_sub(hand->points[4 * a + 3], hand->points[4 * b + 3]));
+	double before = hs_length(hs_sub(hand->prev_points[4 * a + 3], hand->prev_points[4 * b + 3]));
+	return hand->pair_open[finger_pair(a, b)] - d >= world->def.grasp_close_mm * 1e-3 &&
+	       d <= before + HS_PAIR_STILL + HS_PAIR_DRIFT * world->def.dt;
+}
+
+// True when the fingers of contacts a and b (one hand, different fingers) have closed by
+// grasp_close_mm from the most open they were lately (hs_hand.pair_open).
+static bool closing(const hs_world *world, const hs_contact *a, const hs_contact *b) {
+	if (a->hand.index1 != b->hand.index1) // two hands squeezing from either side
+		return true;
+	int fa = finger_of(a->part), fb = finger_of(b->part);
+	if (fa == fb) // the paper's any-two rule (grasp_rule: any) on one finger: no pair to close
+		return true;
+	if (fa > fb) {
+		int t = fa;
+		fa = fb;
+		fb = t;
+	}
+	return pair_closing(world, &world->hands[a->hand.index1 - 1], fa, fb);
+}
+
+// A new grasp (§3.2 (2) with the realistic start, docs/model.md §3): two contacts whose normals lie
+// at least the threshold apart (on different fingers or hands unless grasp_rule is any), pressing
+// toward each other across the object (grasp_opposed), on fingers that are closing (grasp_close_mm)
+// unless the object is `taking_over` from a hand that let it go this frame: another hand already
+// squeezing it (a handover) holds it on without closing again.
+bool hs_grasp_starts(const hs_world *world, const hs_contact *cs, int n, bool taking_over) {
+	bool any = world->def.grasp_any_contacts, oppose = world->def.grasp_opposed;
+	bool close = world->def.grasp_close_mm > 0.0 && !taking_over;
+	for (int i = 0; i < n; ++i)
+		for (int j = i + 1; j < n; ++j) {
+			const hs_contact *a = &cs[i], *b = &cs[j];
+			if (!(any || a->hand.index1 != b->hand.index1 || finger_of(a->part) != finger_of(b->part)))
+				continue;
+			if (hs_dot(a->normal, b->normal) > world->grasp_limit)
+				continue;
+			if ((!oppose || opposed(world, a, b)) && (!close || closing(world, a, b)))
+				return true;
+		}
+	return false;
+}
+
 // Spread plus reach of all five fingers: how open the whole hand is (m).
 static double whole_hand_opening(const hs_hand *hand) {
 	double spread, reach;
@@ -67,6 +159,22 @@ void hs_grasp_begin(hs_world *world, hs_body *body, int h, const hs_contact *cs,
 			body->grip_fingers |= (uint8_t)(1u << finger_of(cs[k].part));
 	hand_opening(hand, body->grip_fingers, &body->grip_spread, &body->grip_reach);
 	body->released_by = 0;
+}
+
+void hs_grasp_let_go_in_place(hs_world *world, int h) {
+	for (int i = 0; i < world->object_count; ++i) {
+		hs_body *b = &world->bodies[i];
+		if (b->grasped_by != h + 1)
+			continue;
+		b->grasped_by = 0;
+		b->released_by = h + 1; // its fingers, still around it, do not take it again at once
+		b->grip_spread = whole_hand_opening(&world->hands[h]);
+		b->prev = b->pos; // no velocity: it drops from where it is
+		b->rot_prev = b->rot;
+		b->spin = hs_quat_identity();
+		hs_wake(world, i);
+		hs_digest_stale(world, i);
+	}
 }
 
 // True when the holder's contacts among cs[0..n) still hold: any of them when the grasp was made
@@ -96,6 +204,10 @@ static bool grasp_continues(hs_world *world, int i, const hs_pose *before, int f
 	unsigned fingers = body->grip_fingers;
 	double spread, reach, margin = world->def.grasp_open_mm * 1e-3;
 	hand_opening(hand, fingers, &spread, &reach);
+	// measured from the most closed grip since the grasp began: a hand that closes on after the
+	// grasp and then opens lets go once it opened by the margin, not only past where it began
+	body->grip_spread = spread < body->grip_spread ? spread : body->grip_spread;
+	body->grip_reach = reach < body->grip_reach ? reach : body->grip_reach;
 	if (spread - body->grip_spread > margin || reach - body->grip_reach > margin)
 		return false;
 	*n = hs_contact_detect(world, i, before);
@@ -121,9 +233,18 @@ static bool hand_within_margin(hs_world *world, int i, uint32_t r, int at) {
 	return near;
 }
 
+// True when some pair of fingertips of hand h has closed by grasp_close_mm (hs_hand.pair_open).
+static bool hand_closing(const hs_world *world, int h) {
+	for (int a = 0; a < 4; ++a)
+		for (int b = a + 1; b < 5; ++b)
+			if (pair_closing(world, &world->hands[h], a, b))
+				return true;
+	return false;
+}
+
 // After a grasp ended, the releasing hand's contacts are set aside (§3.2 with a release rule,
 // docs/model.md §3) until no part of that hand is within grasp_release_mm of the object, another of its fingers than
-// those that held it touches it, or its five fingers close (whole_hand_opening) by grasp_open_mm
+// those that held it touches it while the hand closes, or its five fingers close (whole_hand_opening) by grasp_open_mm
 // from the most open since the release (kept in grip_spread): it closes on the object again. Returns the
 // count of contacts left.
 static int set_aside_released(hs_world *world, int i, int first, int n) {
@@ -146,7 +267,10 @@ static int set_aside_released(hs_world *world, int i, int first, int n) {
 		else if (!(((unsigned)body->grip_fingers >> finger_of(cs[k].part)) & 1u))
 			other_finger = true;
 	}
-	bool closes = other_finger || body->grip_spread - spread > world->def.grasp_open_mm * 1e-3;
+	// another finger counts only on a hand that is closing (with grasp_close_mm): an opening hand's
+	// other fingers brushing the object it just let go shoved it
+	bool closes = (other_finger && (!(world->def.grasp_close_mm > 0.0) || hand_closing(world, (int)r - 1))) ||
+	              body->grip_spread - spread > world->def.grasp_open_mm * 1e-3;
 	if (kept == n && !closes && hand_within_margin(world, i, r, first + n))
 		return n; // the object falls clear of a finger it rested on: still that hand's release
 	if (kept == n || closes) { // the rule lapses
@@ -156,6 +280,32 @@ static int set_aside_released(hs_world *world, int i, int first, int n) {
 	}
 	world->contact_count = first + kept;
 	return kept;
+}
+
+// The contact state of an object no hand holds (docs/model.md §3 "Grasp start"): a grasp by the
+// contacts' normals (Fig. 2) begins only as hs_grasp_starts allows, else they push at several
+// points. A push by a closing hand becomes a grasp when the object grown by grasp_release_mm is
+// grasped (a pinch of a small object: the first fingertip to touch would push it away from the
+// others before they reach it).
+static hs_contact_state start_or_push(hs_world *world, int i, int first, int *n, hs_contact_state state) {
+	if (state == HS_CONTACT_GRASP)
+		return hs_grasp_starts(world, &world->contacts[first], *n, false) ? state : HS_CONTACT_PUSH_MANY;
+	if (state == HS_CONTACT_NONE || !(world->def.grasp_close_mm > 0.0) || world->bodies[i].released_by)
+		return state;
+	bool closing_hand = false;
+	for (int k = 0; k < *n && !closing_hand; ++k)
+		closing_hand = hand_closing(world, (int)world->contacts[first + k].hand.index1 - 1);
+	if (!closing_hand)
+		return state;
+	world->contact_count = first;
+	int grown = hs_contact_detect_grown(world, i, NULL, world->def.grasp_release_mm * 1e-3);
+	if (hs_grasp_starts(world, &world->contacts[first], grown, false)) {
+		*n = grown;
+		return HS_CONTACT_GRASP;
+	}
+	world->contact_count = first;
+	*n = hs_contact_detect(world, i, NULL);
+	return state;
 }
 
 hs_contact_state hs_grasp_detect(hs_world *world, int i, int first, int *n, bool *continues) {
@@ -177,6 +327,8 @@ hs_contact_state hs_grasp_detect(hs_world *world, int i, int first, int *n, bool
 		*n = set_aside_released(world, i, first, *n);
 		hs_contact_state state =
 		    hs_contact_classify(&world->contacts[first], *n, world->grasp_limit, world->def.grasp_any_contacts);
+		if (state == HS_CONTACT_GRASP && !hs_grasp_starts(world, &world->contacts[first], *n, true))
+			state = HS_CONTACT_PUSH_MANY;
 		if (state == HS_CONTACT_NONE) { // it flies from its last held pose (manipulate.c, release)
 			body->pos = before.pos;
 			body->rot = before.rot;
@@ -185,5 +337,6 @@ hs_contact_state hs_grasp_detect(hs_world *world, int i, int first, int *n, bool
 	}
 	*n = hs_contact_detect(world, i, NULL);
 	*n = set_aside_released(world, i, first, *n);
-	return hs_contact_classify(&world->contacts[first], *n, world->grasp_limit, world->def.grasp_any_contacts);
+	return start_or_push(world, i, first, n,
+	                     hs_contact_classify(&world->contacts[first], *n, world->grasp_limit, world->def.grasp_any_contacts));
 }

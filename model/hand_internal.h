@@ -18,6 +18,8 @@
 // HS_HAND_OLDER (the default 50 ms window needs 5 at 120 frames/s), more when the world's
 // release_window_s needs them (hs_hand.older_capacity), at most HS_HAND_OLDER_MAX.
 #define HS_HAND_OLDER 7
+// Pairs of different fingers (5 choose 2), hs_finger_pair.
+#define HS_FINGER_PAIRS 10
 #define HS_HAND_OLDER_MAX (HS_MAX_RELEASE_FRAMES - 1)
 
 // The sine and cosine of half a joint angle (what hs_quat_from_axis_angle computes).
@@ -54,6 +56,14 @@ typedef struct hs_hand {
 	hs_quat prev_wrist_rot;
 	uint8_t prev_sensors[HS_GLOVE_SENSORS];
 	bool placed; // set at least once: before that its previous points are its current ones
+	// tracking (hs_world_set_hand_tracked): untracked is the input for the next step; lost_frames
+	// counts the steps run untracked since it was last seen (docs/model.md §3 "Tracking loss")
+	bool untracked;
+	int lost_frames;
+	// the most open each pair of fingertips has been lately (m; pair k of hs_finger_pair): the
+	// larger of their distance now and the last peak less 20 mm/s. A new grasp needs its two fingers
+	// to have closed from it by grasp_close_mm (grasp.c)
+	double pair_open[HS_FINGER_PAIRS];
 	// the wrist poses at the ends of the steps before the last one, newest first (older_pos[0]: two
 	// frames ago), older_count of them: a release takes the hand's motion over its last frames.
 	// MODEL: older_capacity, how many are kept (hs_hand_older_capacity of the world's definition);

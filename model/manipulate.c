@@ -218,13 +218,57 @@ static hs_vec3 quadratic_slope(const hs_body *body, const hs_hand *hand, int fra
 	return hs_sub(hs_scale(b2, 2.0 * c / n2), hs_scale(b1, 1.0 / n1));
 }
 
+// The wrist's mean motion per frame, where it carried the object, over `frames` frames ending
+// `back` frames before this frame's end (*v_dt), and its mean turn per frame over them (*turn).
+static void carried_motion(const hs_body *body, const hs_hand *hand, int back, int frames, hs_vec3 *v_dt, hs_quat *turn) {
+	hs_vec3 end_pos, then_pos;
+	hs_quat end_rot, then_rot;
+	hs_hand_past_wrist(hand, back, &end_pos, &end_rot);
+	hs_hand_past_wrist(hand, back + frames, &then_pos, &then_rot);
+	hs_vec3 end = hs_add(end_pos, hs_quat_rotate(end_rot, body->grip_pos));
+	hs_vec3 then = hs_add(then_pos, hs_quat_rotate(then_rot, body->grip_pos));
+	*v_dt = hs_scale(hs_sub(end, then), 1.0 / frames);
+	hs_quat q = hs_quat_normalize(hs_quat_mul(end_rot, hs_quat_conj(then_rot)));
+	*turn = frames == 1 ? q : hs_quat_normalize(hs_quat_slerp(hs_quat_identity(), q, 1.0 / frames));
+}
+
+// A hand moving at least this fast (m/s) while it held the object can throw it (release_motion).
+#define HS_RELEASE_MOVING 0.1
+// cos 45°: the release frame's motion continues the held motion within this angle (release_motion).
+#define HS_RELEASE_CONTINUES 0.70710678118654752
+
+// The motion a released object leaves with (docs/model.md §4 "Release"): the wrist's over the
+// window that ends with this frame, in which the hand opened (*v_dt, *turn, as carried_motion),
+// when that motion continues the one the hand had while it still held the object (the same window
+// a frame earlier: moving at HS_RELEASE_MOVING or more, within 45°): a throw opens the hand mid-swing,
+// and at 12 frames/s the frame before the opening can be half a swing behind. Otherwise the slower
+// of the two: a hand that opens and moves off sideways in the same frame, both fingertips leaving
+// the object, does not throw it, and a hand that stopped and opened sets it down.
+static void release_motion(const hs_world *world, const hs_body *body, const hs_hand *hand, hs_vec3 *v_dt, hs_quat *turn) {
+	int frames = release_frames(world, hand);
+	carried_motion(body, hand, 0, frames, v_dt, turn);
+	if (world->def.release_fit == HS_RELEASE_FIT_QUADRATIC && frames >= 2) // as the bench's lsq
+		*v_dt = quadratic_slope(body, hand, frames);
+	int held = frames < hand->older_count ? frames : hand->older_count; // past(1 + held) must exist
+	if (held < 1)
+		return;
+	hs_vec3 h_dt;
+	hs_quat h_turn;
+	carried_motion(body, hand, 1, held, &h_dt, &h_turn);
+	double held_len = hs_length(h_dt), open_len = hs_length(*v_dt);
+	bool moving = held_len >= HS_RELEASE_MOVING * world->def.dt;
+	if (moving && hs_dot(*v_dt, h_dt) >= HS_RELEASE_CONTINUES * open_len * held_len)
+		return;
+	if (held_len < open_len) {
+		*v_dt = h_dt;
+		*turn = h_turn;
+	}
+}
+
 // Eq. 3 on release. A grasp that ends starts eq. 3 on the exact parabola of the release velocity
-// v (DESIGN.md "Release"), as hs_world_add_object does for an initial velocity: P(t - dt) =
+// v (docs/model.md §4 "Release"), as hs_world_add_object does for an initial velocity: P(t - dt) =
 // P(t) - v dt + g dt²/2, so the flight does not depend on the frame rate. v is the hand's motion
-// over its last frames (release_frames of them, the one in which it let go the last): by default
-// (HS_RELEASE_FIT_MEAN) where its wrist carries the object now, less where it carried it then, over
-// that time (the object is in the hand when the frame starts and leaves it during the frame); with
-// HS_RELEASE_FIT_QUADRATIC and 2 frames or more, quadratic_slope. The object's own last frame
+// over its last frames (release_motion). The object's own last frame
 // (the paper's letter: eq. 3 continued from its last two positions) lags the hand by a frame: at
 // 12 frames/s, with the hand opened 10 ms after the end of a 0.1 s swing, its last held frame is
 // mid-swing and a throw aimed 2 m away landed 1.11 m short. The spin is the wrist's mean turn over
@@ -234,22 +278,9 @@ static void release(hs_world *world, hs_body *body, hs_contact_state last) {
 	if (body->grasped_by > 0) {
 		const hs_hand *hand = &world->hands[body->grasped_by - 1];
 		double dt = world->def.dt;
-		hs_vec3 v_dt, then_pos;
-		hs_quat turn, then_rot;
-		int frames = release_frames(world, hand);
-		hs_hand_past_wrist(hand, frames, &then_pos, &then_rot);
-		if (frames == 1) { // the frame it let go in: where the wrist carried the object less where it was
-			v_dt = hs_sub(hs_grasp_held_pos(body, hand), body->pos);
-			turn = hs_quat_normalize(hs_quat_mul(hand->wrist_rot, hs_quat_conj(then_rot)));
-		} else { // the mean over its last frames
-			hs_vec3 then = hs_add(then_pos, hs_quat_rotate(then_rot, body->grip_pos));
-			v_dt = hs_scale(hs_sub(hs_grasp_held_pos(body, hand), then), 1.0 / frames);
-			hs_quat q = hs_quat_normalize(hs_quat_mul(hand->wrist_rot, hs_quat_conj(then_rot)));
-			turn = hs_quat_normalize(hs_quat_slerp(hs_quat_identity(), q, 1.0 / frames));
-		}
-		// one frame keeps the mean (two points); two fit the quadratic through three, as the bench's lsq
-		if (world->def.release_fit == HS_RELEASE_FIT_QUADRATIC && frames >= 2)
-			v_dt = quadratic_slope(body, hand, frames);
+		hs_vec3 v_dt;
+		hs_quat turn;
+		release_motion(world, body, hand, &v_dt, &turn);
 		body->prev = hs_add(hs_sub(body->pos, v_dt), hs_scale(world->def.gravity, 0.5 * dt * dt));
 		body->spin = turn;
 	} else {

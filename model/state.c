@@ -141,10 +141,11 @@ static HS_FORCE_INLINE void body_io(hs_state_io *io, const hs_world *w, hs_body 
 	hs_state_int_range(io, &b->released_by, 0, w->hand_count);
 }
 
-// One hand: 56 words and 7 for each of its older_capacity older wrist poses (105 at the default
+// One hand: 68 words and 7 for each of its older_capacity older wrist poses (117 at the default
 // release window: HS_HAND_OLDER of them), the two readings its check points now and a frame ago
-// come from (the points and lines are rebuilt from them after a load), the wrist poses before
-// those (a release's velocity), its two touch masks and its two embedded masks. Its definition is
+// come from (the points and lines are rebuilt from them after a load), its tracking state and its
+// fingertip pairs' recent peaks, the wrist poses before those (a release's velocity), its two
+// touch masks and its two embedded masks. Its definition is
 // in the checksum; older_capacity follows from the world's (dt, release_window_s).
 static HS_FORCE_INLINE void hand_io(hs_state_io *io, hs_hand *h) {
 	hs_state_vec3(io, &h->wrist_pos);
@@ -156,6 +157,10 @@ static HS_FORCE_INLINE void hand_io(hs_state_io *io, hs_hand *h) {
 	for (int i = 0; i < HS_GLOVE_SENSORS; ++i)
 		hs_state_u8(io, &h->prev_sensors[i]);
 	hs_state_bool(io, &h->placed);
+	hs_state_bool(io, &h->untracked);
+	hs_state_int_range(io, &h->lost_frames, 0, INT_MAX);
+	for (int k = 0; k < HS_FINGER_PAIRS; ++k)
+		hs_state_f64(io, &h->pair_open[k]);
 	hs_state_int_range(io, &h->older_count, 0, h->older_capacity);
 	for (int i = 0; i < h->older_capacity; ++i) { // all of them (those not yet reached are zero): a fixed size
 		hs_state_vec3(io, &h->older_pos[i]);
@@ -173,9 +178,9 @@ static HS_FORCE_INLINE void hand_io(hs_state_io *io, hs_hand *h) {
 
 #define HS_HASH_LANES {HS_HASH_SEED, ~HS_HASH_SEED, HS_HASH_SEED >> 1, 1}
 
-// A hand's words in HASH mode, as hand_io visits them (every frame: 105 at the default window),
+// A hand's words in HASH mode, as hand_io visits them (every frame: 117 at the default window),
 // gathered to be mixed four lanes at a time. HS_HASH_SELFCHECK builds compare with hand_io's walk.
-#define HAND_WORDS_MAX (56 + 7 * HS_HAND_OLDER_MAX)
+#define HAND_WORDS_MAX (68 + 7 * HS_HAND_OLDER_MAX)
 static size_t put_vec3(uint64_t *w, size_t n, hs_vec3 v) {
 	w[n] = hs_state_bits(v.x), w[n + 1] = hs_state_bits(v.y), w[n + 2] = hs_state_bits(v.z);
 	return n + 3;
@@ -211,6 +216,10 @@ static size_t hand_words(const hs_hand *h, uint64_t *w) {
 	size_t n = put_sensors(w, put_quat(w, put_vec3(w, 0, h->wrist_pos), h->wrist_rot), h->sensors);
 	n = put_sensors(w, put_quat(w, put_vec3(w, n, h->prev_wrist_pos), h->prev_wrist_rot), h->prev_sensors);
 	w[n++] = h->placed ? 1u : 0u;
+	w[n++] = h->untracked ? 1u : 0u;
+	w[n++] = (uint64_t)(int64_t)h->lost_frames;
+	for (int k = 0; k < HS_FINGER_PAIRS; ++k)
+		w[n++] = hs_state_bits(h->pair_open[k]);
 	w[n++] = (uint64_t)(int64_t)h->older_count;
 	for (int i = 0; i < h->older_capacity; ++i)
 		n = put_quat(w, put_vec3(w, n, h->older_pos[i]), h->older_rot[i]);

@@ -6,12 +6,14 @@
 
 #include "broadphase.h"
 #include "contact.h"
+#include "grasp.h"
 #include "manipulate.h"
 #include "motion.h"
 #include "part_box.h"
 #include "part_reach.h"
 #include "stacking.h"
 #include "support.h"
+#include "tracking.h"
 #include "world_internal.h"
 
 // Tags of the worlds of this process, 1 to 65535 and round again (0 is the null handle's): a
@@ -39,6 +41,9 @@ hs_world_def hs_default_world_def(void) {
 	def.glove_deadband = 3;
 	def.release_window_s = 0.05;
 	def.release_fit = HS_RELEASE_FIT_MEAN;
+	def.grasp_opposed = true;
+	def.grasp_close_mm = 10.0;
+	def.tracking_hold_s = 0.2;
 	return def;
 }
 
@@ -73,7 +78,9 @@ static bool valid_def(const hs_world_def *def) {
 	       (def->stacking == HS_STACKING_PAPER || def->stacking == HS_STACKING_SUPPORT) &&
 	       isfinite(def->release_window_s) && def->release_window_s >= 0.0 &&
 	       def->release_window_s <= HS_MAX_RELEASE_WINDOW &&
-	       (def->release_fit == HS_RELEASE_FIT_MEAN || def->release_fit == HS_RELEASE_FIT_QUADRATIC);
+	       (def->release_fit == HS_RELEASE_FIT_MEAN || def->release_fit == HS_RELEASE_FIT_QUADRATIC) &&
+	       isfinite(def->grasp_close_mm) && def->grasp_close_mm >= 0.0 && def->grasp_close_mm <= 1000.0 &&
+	       isfinite(def->tracking_hold_s) && def->tracking_hold_s >= 0.0 && def->tracking_hold_s <= HS_MAX_TRACKING_HOLD;
 }
 
 hs_world *hs_world_create(const hs_world_def *def, hs_status *status) {
@@ -91,6 +98,8 @@ hs_world *hs_world_create(const hs_world_def *def, hs_status *status) {
 	world->first_fault_frame = -1;
 	world->first_fault_object = -1;
 	world->grasp_limit = hs_grasp_limit(def->grasp_threshold_deg);
+	world->oppose_cos = hs_cos((100.0 - 0.5 * def->grasp_threshold_deg) * (HS_PI / 180.0));
+	world->hold_frames = (int)floor(def->tracking_hold_s / def->dt + 0.5);
 	world->shapes = calloc((size_t)def->max_shapes, sizeof *world->shapes);
 	world->face_edges = calloc((size_t)def->max_shapes, sizeof *world->face_edges);
 	world->face_trees = calloc((size_t)def->max_shapes, sizeof *world->face_trees);
@@ -445,8 +454,10 @@ hs_status hs_world_step(hs_world *world) {
 		hs_grid_build(world);
 		world->grid_dirty = false;
 	}
-	if (world->hand_count > 0) // a scene without hands never runs the hand subsystem
+	if (world->hand_count > 0) { // a scene without hands never runs the hand subsystem
+		hs_tracking_update(world);
 		hs_manipulate(world);
+	}
 	bool skip = world->def.skip_work;
 	int visits = skip ? world->awake_count : world->object_count;
 	if (skip) // the sleeping objects cost nothing (the awake list holds the others, in index order)
@@ -583,8 +594,18 @@ hs_status hs_world_set_hand(hs_world *world, hs_hand_id id, hs_vec3 wrist_positi
 	bool first = !hand->placed;
 	hand->placed = true;
 	hs_hand_update_bounds(hand);
-	if (first) // no motion before the first pose
+	if (first) { // no motion before the first pose, no closing either
 		hs_hand_keep_previous(hand);
+		hs_grasp_reset_pairs(hand);
+	}
+	return HS_OK;
+}
+
+hs_status hs_world_set_hand_tracked(hs_world *world, hs_hand_id id, bool tracked) {
+	hs_hand *hand = hand_of(world, id);
+	if (!hand)
+		return HS_ERR_INVALID_ARGUMENT;
+	hand->untracked = !tracked;
 	return HS_OK;
 }
 

@@ -58,6 +58,8 @@ struct hs_world {
 	int hand_count;     // MODEL
 	hs_hand *hands;     // STATE (but def and caches), def.max_hands of them
 	double grasp_limit; // MODEL: hs_grasp_limit(def.grasp_threshold_deg)
+	double oppose_cos;  // MODEL: cos(90° − threshold / 2 + 10°), a grasp's opposition cone (grasp.c)
+	int hold_frames;    // MODEL: round(tracking_hold_s / dt), the frames a lost hand keeps its grasps (tracking.c)
 	long frame;         // STATE
 	hs_world_counters counters; // numeric_faults is STATE, the rest are work counters
 	long first_fault_frame;     // STATE: frame of the first numeric fault (-1: none)

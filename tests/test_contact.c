@@ -540,6 +540,7 @@ static void test_release_options_refused(void **state) {
 static hs_world *pyramid_world(bool any_contacts) {
 	hs_world_def def = hs_default_world_def();
 	def.grasp_any_contacts = any_contacts;
+	def.grasp_opposed = !any_contacts; // the paper's letter whole: no opposition asked either
 	return rig_world(&def, hs_shape_pyramid(0.08, 0.08, NULL), hs_v3(0, 0, 2), hs_v3(0, 0, 2));
 }
 

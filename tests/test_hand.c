@@ -982,6 +982,10 @@ static grasp_rig grasp_world_with(double dt, double cube_size, double wide, uint
 	hs_world_def def = hs_default_world_def();
 	def.dt = dt;
 	def.paper_contacts = paper_contacts;
+	if (paper_contacts) { // the paper's letter whole: a grasp starts on the normals alone
+		def.grasp_opposed = false;
+		def.grasp_close_mm = 0.0;
+	}
 	r.world = hs_world_create(&def, NULL);
 	assert_non_null(r.world);
 	hs_object_def od = hs_default_object_def();

@@ -13,7 +13,11 @@
 // placed, its parts at RIG_FAR, its bounding sphere about `hand_center` and its finger radius so
 // large that the bounding tests never decide (they are not what these tests are about).
 static inline hs_world *rig_world(const hs_world_def *def, hs_shape *shape, hs_vec3 position, hs_vec3 hand_center) {
-	hs_world *w = hs_world_create(def, NULL);
+	// the rig's parts are put in place one by one, not by a hand that closes: a grasp here needs no
+	// closing (grasp_close_mm 0); test_grasp_start tests the closing rule with whole hands
+	hs_world_def rig = *def;
+	rig.grasp_close_mm = 0.0;
+	hs_world *w = hs_world_create(&rig, NULL);
 	assert_non_null(w);
 	hs_object_def od = hs_default_object_def();
 	od.shape = hs_world_add_shape(w, shape, NULL);

@@ -51,7 +51,7 @@ static const char *const usage_list =
 
 static const char *const usage_run =
     "usage: handspring run FILE [--out TRAJ.csv] [--hands-out HANDS.csv] [--save-at FRAME --state-out PATH]\n"
-    "                           [--resume PATH] [--dt DT] [--noise-seed N]\n"
+    "                           [--resume PATH] [--dt DT] [--noise-seed N] [--phase F]\n"
     "Runs the scenario FILE and prints its name, frames, objects, one PASS/FAIL line per expectation\n"
     "with the measured value, and the final state hash.\n"
     "  --out TRAJ.csv     also write the trajectory (one row per object per frame, frame 0 included);\n"
@@ -75,6 +75,8 @@ static const char *const usage_run =
     "                     +-4 units per sensor and the tracker's 0.762 mm, 0.15 deg on the wrist (or the\n"
     "                     levels of the file's robust block or model.input_noise), a stylus the tracker's\n"
     "                     noise. Neither goes with --save-at or --resume (a state file names the file only).\n"
+    "  --phase F          run the input scripts F of a frame late (0 <= F < 1): the same motions with\n"
+    "                     the frames falling elsewhere on them (as a sweep's seeds do); not with --resume\n"
     "Exit status: 0 every expectation passed, 1 one failed, 2 bad input (one error line on stderr).\n";
 
 static const char *const usage_sweep =
@@ -185,13 +187,20 @@ static bool parse_seed(const char *text, unsigned long *seed) {
 	return *text != '\0';
 }
 
-// --dt and --noise-seed at argv[*i]: true when it was one of them (*status set on a usage error).
+// --dt, --noise-seed and --phase at argv[*i]: true when it was one of them (*status set on a usage error).
 static bool parse_load_option(int argc, char **argv, int *i, hs_scenario_options *o, int *status) {
 	bool missing = false;
 	const char *v = NULL;
 	if (option_value(argc, argv, i, "--dt", &v, &missing)) {
 		if (missing || !hs_scenario_parse_dt(v, &o->dt))
 			*status = usage_error("run", usage_run, "%s needs a frame time within [1/2000, 1/12] s (e.g. 1/60)", "--dt");
+		return true;
+	}
+	if (option_value(argc, argv, i, "--phase", &v, &missing)) {
+		char *end = NULL;
+		o->phase = missing ? -1.0 : strtod(v, &end);
+		if (missing || end == v || *end || !(o->phase >= 0.0 && o->phase < 1.0))
+			*status = usage_error("run", usage_run, "%s needs a fraction of a frame within [0, 1)", "--phase");
 		return true;
 	}
 	if (option_value(argc, argv, i, "--noise-seed", &v, &missing)) {
@@ -254,8 +263,8 @@ static int parse_run(int argc, char **argv, run_options *o) {
 		return usage_error("run", usage_run, "%s", "missing the scenario FILE");
 	if ((o->save_at >= 0) != (o->state_out != NULL))
 		return usage_error("run", usage_run, "%s", "--save-at and --state-out go together");
-	if ((o->load.dt > 0.0 || o->load.noise) && (o->state_out || o->resume))
-		return usage_error("run", usage_run, "%s", "--dt and --noise-seed do not go with --save-at or --resume");
+	if ((o->load.dt > 0.0 || o->load.noise || o->load.phase > 0.0) && (o->state_out || o->resume))
+		return usage_error("run", usage_run, "%s", "--dt, --noise-seed and --phase do not go with --save-at or --resume");
 	return -1;
 }
 

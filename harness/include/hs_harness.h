@@ -53,6 +53,9 @@ typedef struct hs_scenario_options {
 	const char *model_path;
 	/// A thrower's error on this run (NULL: none): see hs_throw_error.
 	const struct hs_throw_error *throw_error;
+	/// Fraction of a frame, within [0, 1): the input scripts (hands, stylus) run this much of a frame
+	/// late, so their events fall elsewhere between two frames (scenarios/README.md, Robustness).
+	double phase;
 } hs_scenario_options;
 
 /// A human thrower's error on one throw (docs/campaigns.md): one hand's script is changed from

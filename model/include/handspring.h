@@ -181,6 +181,7 @@ typedef enum hs_stacking {
 #define HS_MAX_GLOVE_DEADBAND 32 ///< sensor units (16 deg)
 #define HS_MAX_RELEASE_WINDOW 0.5 ///< s, hs_world_def.release_window_s
 #define HS_MAX_RELEASE_FRAMES 64  ///< frames a release's velocity is taken over at most: a longer window (0.5 s above 128 frames/s) is clamped to this many frames
+#define HS_MAX_TRACKING_HOLD 10.0 ///< s, hs_world_def.tracking_hold_s
 
 /// How a grasp's release velocity is estimated from the wrist's last frames (docs/model.md §4
 /// "Release"; the 1999 paper's eq. 3 continues from the object's last two positions instead).
@@ -206,6 +207,9 @@ typedef struct hs_world_def {
 	int glove_deadband;         ///< sensor units, 0..HS_MAX_GLOVE_DEADBAND: a glove sensor moves the hand only once its reading leaves ±this around the value last used, which then follows it at this distance (default 3; 0: every raw reading, the 1999 paper's letter; docs/model.md §1)
 	double release_window_s;    ///< s, 0..HS_MAX_RELEASE_WINDOW: a released grasp flies with the hand's velocity over its last round(this / dt) frames, at least 1, at most HS_MAX_RELEASE_FRAMES (default 0.05: 1 frame at 12 frames/s, 3 at 60, 6 at 120; docs/model.md §4 "Release")
 	hs_release_fit release_fit; ///< how that velocity is taken from those frames (default HS_RELEASE_FIT_MEAN); the spin is the wrist's mean turn over them either way
+	bool grasp_opposed;         ///< true (default): a new grasp's two contacts must press toward each other across the object, each within 90° − threshold / 2 + 10° of the line between them (a flat hand on a top and a side face is no grasp); false: the normals' angle alone (the 1999 paper's letter; docs/model.md §3 "Grasp start")
+	double grasp_close_mm;      ///< mm, 0..1000: a new grasp's two fingers (of one hand) must have closed by this much: their tips this much nearer than their most open lately (that peak forgets 20 mm/s); 0: no closing needed (the 1999 paper's letter). Default 10
+	double tracking_hold_s;     ///< s, 0..HS_MAX_TRACKING_HOLD: a hand whose tracking is lost (hs_world_set_hand_tracked) keeps its grasps this long, then lets them go in place and touches nothing until tracked again (default 0.2)
 } hs_world_def;
 
 hs_world_def hs_default_world_def(void);
@@ -443,6 +447,13 @@ hs_hand_id hs_world_hand_at(const hs_world *world, int i);
 /// used until the reading leaves ±glove_deadband around it, then follows the reading at that distance.
 hs_status hs_world_set_hand(hs_world *world, hs_hand_id hand, hs_vec3 wrist_position,
                             hs_quat wrist_orientation, const uint8_t sensors[HS_GLOVE_SENSORS]);
+/// Says whether the hand's tracker sees the hand for the next step (hands start tracked). An
+/// untracked hand should be set (hs_world_set_hand) to the last pose it was seen in: it keeps its
+/// grasps for tracking_hold_s, then lets them go where they are (no velocity) and touches nothing
+/// until it is tracked again. The first tracked step after a loss moves nothing by the jump (the
+/// hand is placed anew, as at its first pose), and a grasp the hand still kept is let go in place
+/// when the hand came back more than 5 cm from where it was lost (docs/model.md §3 "Tracking loss").
+hs_status hs_world_set_hand_tracked(hs_world *world, hs_hand_id hand, bool tracked);
 /// The hand's check points after the last step.
 hs_status hs_world_hand_points(const hs_world *world, hs_hand_id hand, hs_vec3 points[HS_HAND_POINTS]);
 /// The hand's check points after the last step, rectified (1999 paper §3.2: "the joint angles of

@@ -1,0 +1,40 @@
+// tracking.c — hands the tracker loses and finds again (docs/model.md §3 "Tracking loss").
+//
+// An optical tracker loses a hand for a few frames (occlusion, the hand leaving the view) and
+// finds it again, often elsewhere. The 1999 paper's glove never drops out, so it has no rule for
+// this. Here a lost hand is held where it was last seen (the caller sets that pose); it keeps what
+// it holds for tracking_hold_s (a blink of the tracker is no reason to drop a carried object), then
+// lets it go in place, with no velocity (a throw needs a hand the tracker saw moving), and touches
+// nothing (hs_contact_hand_near) until it is seen again. The first frame it is seen again it is
+// placed anew, as at its first pose: its path through the gap is unknown, so the jump sweeps no
+// object and gives no release velocity; a grasp it still kept is let go in place when it came back
+// more than HS_TRACKING_JUMP from where it was lost (the object would jump with it).
+#include <limits.h>
+
+#include "grasp.h"
+#include "hand_internal.h"
+#include "tracking.h"
+
+#define HS_TRACKING_JUMP 0.05 // m
+
+void hs_tracking_update(hs_world *world) {
+	for (int h = 0; h < world->hand_count; ++h) {
+		hs_hand *hand = &world->hands[h];
+		if (hand->untracked) {
+			if (hand->lost_frames < INT_MAX)
+				hand->lost_frames++;
+			if (hand->lost_frames == world->hold_frames + 1)
+				hs_grasp_let_go_in_place(world, h);
+			continue;
+		}
+		if (hand->lost_frames == 0)
+			continue;
+		bool kept = hand->lost_frames <= world->hold_frames;
+		if (kept && hs_length(hs_sub(hand->wrist_pos, hand->prev_wrist_pos)) > HS_TRACKING_JUMP)
+			hs_grasp_let_go_in_place(world, h);
+		hs_hand_keep_previous(hand);
+		hand->older_count = 0;
+		hs_grasp_reset_pairs(hand);
+		hand->lost_frames = 0;
+	}
+}
