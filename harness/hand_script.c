@@ -294,16 +294,28 @@ static bool read_keys(hs_scenario_parser *p, const yaml_node_t *keys, const hs_h
 	return true;
 }
 
-// The format of a recorded file: its first line's start (a glove file when it names none).
+// The format of a recorded file: its header's start (a glove file when it names none), the header
+// being the first line that is not blank or a comment (scenarios/README.md: comments may come
+// before it). A file that cannot be read is left to the glove reader, which says why.
 static hs_joint_format format_of(const char *path) {
-	char first[32] = "";
-	FILE *f = fopen(path, "r");
-	if (f) {
-		if (!fgets(first, sizeof first, f))
-			first[0] = '\0';
-		fclose(f);
+	FILE *f = hs_open_input(path); // never waits for a FIFO's writer
+	if (!f)
+		return HS_JOINTS_NONE;
+	hs_line_reader reader;
+	hs_line_reader_open(&reader, f);
+	hs_joint_format format = HS_JOINTS_NONE;
+	char *line;
+	size_t len;
+	while (hs_line_next(&reader, &line, &len) == HS_LINE_OK) {
+		while (len > 0 && line[len - 1] == '\r')
+			line[--len] = '\0';
+		if (len > 0 && line[0] != '#') {
+			format = hs_joint_format_of(line);
+			break;
+		}
 	}
-	return hs_joint_format_of(first);
+	hs_line_reader_close(&reader);
+	return format;
 }
 
 static bool read_hand_record(hs_scenario_parser *p, const yaml_node_t *node, const hs_hand_def *def,
