@@ -227,6 +227,7 @@ bool hs_joint_record_load(const char *path, hs_joint_format format, const hs_han
 		else
 			refine(def, s, local);
 		key->t = v[0];
+		key->tracked = true;
 		for (int i = 0; i < HS_GLOVE_SENSORS; ++i)
 			key->sensors[i] = s[i];
 		script->key_count++;

@@ -101,7 +101,14 @@ static hs_scenario *must_load(const char *name, const char *record) {
 static void assert_same_keys(const hs_scenario *a, const hs_scenario *b) {
 	const hs_hand_script *x = &a->hands.scripts[0], *y = &b->hands.scripts[0];
 	assert_int_equal(x->key_count, y->key_count);
-	assert_memory_equal(x->keys, y->keys, (size_t)x->key_count * sizeof *x->keys);
+	for (int k = 0; k < x->key_count; ++k) {
+		const hs_hand_key *p = &x->keys[k], *q = &y->keys[k];
+		assert_true(p->tracked == q->tracked);
+		assert_memory_equal(&p->t, &q->t, sizeof p->t);
+		assert_memory_equal(&p->wrist, &q->wrist, sizeof p->wrist);
+		assert_memory_equal(&p->rot, &q->rot, sizeof p->rot);
+		assert_memory_equal(p->sensors, q->sensors, sizeof p->sensors);
+	}
 }
 
 // A comment or blank line before the header: the file is still read as what its header says
@@ -128,9 +135,52 @@ static void test_comments_before_header(void **state) {
 	free(commented);
 }
 
+// The untracked hold: between a tracked key and the next tracked one with untracked keys in the
+// gap, the script holds the last tracked pose and sensors and says untracked; it does not
+// interpolate toward the next tracked key. Tracked to tracked is linear as always.
+static void test_untracked_hold(void **state) {
+	(void)state;
+	hs_hand_key keys[4];
+	memset(keys, 0, sizeof keys);
+	for (int k = 0; k < 4; ++k) {
+		keys[k].t = k;
+		keys[k].rot = hs_quat_identity();
+		keys[k].tracked = k != 2;
+	}
+	keys[0].wrist = hs_v3(0, 0, 0.3);
+	keys[1].wrist = hs_v3(0.1, 0, 0.3);
+	keys[2].wrist = keys[1].wrist; // untracked: holds key 1's pose, as the loader writes it
+	keys[3].wrist = hs_v3(0.5, 0, 0.3);
+	keys[1].sensors[4] = keys[2].sensors[4] = 40;
+	keys[3].sensors[4] = 120;
+	hs_hand_script script = {4, keys};
+	hs_vec3 w;
+	hs_quat q;
+	uint8_t s[HS_GLOVE_SENSORS];
+	assert_true(hs_hand_script_sample(&script, -1.0, &w, &q, s)); // before the first key: it holds
+	assert_true(hs_hand_script_sample(&script, 0.5, &w, &q, s));
+	assert_near(w.x, 0.05, 1e-15);
+	assert_int_equal(s[4], 20);
+	assert_true(hs_hand_script_sample(&script, 1.0, &w, &q, s)); // at the tracked key itself
+	assert_true(w.x == 0.1 && s[4] == 40);
+	for (double t = 1.25; t < 3.0; t += 0.25) { // after key 1, in the gap: held, untracked
+		assert_false(hs_hand_script_sample(&script, t, &w, &q, s));
+		assert_true(w.x == 0.1 && w.z == 0.3 && s[4] == 40);
+		assert_true(q.w == 1.0 && q.x == 0.0);
+	}
+	assert_true(hs_hand_script_sample(&script, 3.0, &w, &q, s)); // the next tracked key: no blend into it
+	assert_true(w.x == 0.5 && s[4] == 120);
+	assert_true(hs_hand_script_sample(&script, 9.0, &w, &q, s));
+	keys[3].tracked = false; // a recording that ends untracked stays untracked
+	assert_false(hs_hand_script_sample(&script, 9.0, &w, &q, s));
+	keys[0].tracked = false; // and one that starts untracked is untracked before its first key
+	assert_false(hs_hand_script_sample(&script, -1.0, &w, &q, s));
+}
+
 int main(void) {
 	const struct CMUnitTest tests[] = {
 	    cmocka_unit_test(test_comments_before_header),
+	    cmocka_unit_test(test_untracked_hold),
 	};
 	return cmocka_run_group_tests(tests, make_temp_dir, remove_temp_dir);
 }
