@@ -5,8 +5,6 @@
 #include <string.h>
 
 #include "hand_script.h"
-#include "file_read.h"
-#include "joint_input.h"
 #include "record.h"
 #include "scenario_internal.h"
 #include "scenario_parser.h"
@@ -310,42 +308,6 @@ static bool read_keys(hs_scenario_parser *p, const yaml_node_t *keys, const hs_h
 	return true;
 }
 
-// The format of a recorded file: its header's start (a glove file when it names none), the header
-// being the first line that is not blank or a comment (scenarios/README.md: comments may come
-// before it). A file that cannot be read is left to the glove reader, which says why.
-static hs_joint_format format_of(const char *path) {
-	FILE *f = hs_open_input(path); // never waits for a FIFO's writer
-	if (!f)
-		return HS_JOINTS_NONE;
-	hs_line_reader reader;
-	hs_line_reader_open(&reader, f);
-	hs_joint_format format = HS_JOINTS_NONE;
-	char *line;
-	size_t len;
-	while (hs_line_next(&reader, &line, &len) == HS_LINE_OK) {
-		while (len > 0 && line[len - 1] == '\r')
-			line[--len] = '\0';
-		if (len > 0 && line[0] != '#') {
-			format = hs_joint_format_of(line);
-			break;
-		}
-	}
-	hs_line_reader_close(&reader);
-	return format;
-}
-
-static bool read_hand_record(hs_scenario_parser *p, const yaml_node_t *node, const hs_hand_def *def,
-                             hs_hand_script *script) {
-	char *full = hs_yaml_sibling_file(&p->y, node, "record");
-	if (!full)
-		return false;
-	hs_joint_format format = format_of(full);
-	bool ok = format == HS_JOINTS_NONE ? hs_record_load(full, script, p->y.err)
-	                                   : hs_joint_record_load(full, format, def, script, p->y.err);
-	free(full);
-	return ok;
-}
-
 static bool read_hand(hs_scenario_parser *p, const yaml_node_t *node, int index) {
 	hs_hands *hands = &p->s->hands;
 	if (node->type != YAML_MAPPING_NODE)
@@ -360,8 +322,8 @@ static bool read_hand(hs_scenario_parser *p, const yaml_node_t *node, int index)
 		return false;
 	hs_hand_script *script = &hands->scripts[index];
 	if (f.value[H_KEYS] ? !read_keys(p, f.value[H_KEYS], &def, script)
-	                    : !read_hand_record(p, f.value[H_RECORD], &def, script))
-		return false;
+	                    : !hs_read_hand_record(p, f.value[H_RECORD], index, f.value[H_SIDE] != NULL, &def))
+		return false; // a joint recording may have fitted the definition to its hand: it is added as fitted
 	hs_status status = HS_OK;
 	hands->defs[index] = def;
 	hands->ids[index] = hs_world_add_hand(p->s->world, &def, &status);
@@ -389,7 +351,8 @@ bool hs_read_hands(hs_scenario_parser *p, const yaml_node_t *node) {
 	hands->ids = calloc((size_t)n, sizeof *hands->ids);
 	hands->scripts = calloc((size_t)n, sizeof *hands->scripts);
 	hands->defs = calloc((size_t)n, sizeof *hands->defs);
-	if (!hands->names || !hands->ids || !hands->scripts || !hands->defs)
+	hands->fits = calloc((size_t)n, sizeof *hands->fits);
+	if (!hands->names || !hands->ids || !hands->scripts || !hands->defs || !hands->fits)
 		return hs_yaml_fail(&p->y, node, "out of memory");
 	hands->count = (int)n;
 	for (int h = 0; h < hands->count; ++h)
@@ -422,7 +385,9 @@ void hs_hands_free(hs_hands *hands) {
 	for (int h = 0; h < hands->count; ++h) {
 		free(hands->names ? hands->names[h] : NULL);
 		free(hands->scripts ? hands->scripts[h].keys : NULL);
+		free(hands->fits ? hands->fits[h].record : NULL);
 	}
+	free(hands->fits);
 	free(hands->names);
 	free(hands->ids);
 	free(hands->scripts);

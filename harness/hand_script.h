@@ -50,6 +50,15 @@ typedef struct hs_thrower {
 bool hs_thrower_sample(const hs_thrower *thrower, const hs_hand_script *script, double t, hs_vec3 *wrist,
                        hs_quat *rot, uint8_t sensors[HS_GLOVE_SENSORS]);
 
+// What loading a hand's joint recording found (hs_scenario_hand_fit; scenarios/README.md,
+// "Recorded joint positions").
+typedef struct hs_hand_fit {
+	bool joints;   // the hand is driven by a joint recording
+	char *record;  // the file as the scenario names it
+	long samples;  // tracked samples
+	double rms_mm; // the fit's RMS distance over their recorded check points
+} hs_hand_fit;
+
 // The hands of a scenario and their scripts.
 typedef struct hs_hands {
 	int count;
@@ -57,6 +66,7 @@ typedef struct hs_hands {
 	hs_hand_id *ids;
 	hs_hand_script *scripts;
 	hs_hand_def *defs; // as added to the world
+	hs_hand_fit *fits;
 	hs_thrower thrower; // a campaign's throw error (inactive: none)
 } hs_hands;
 

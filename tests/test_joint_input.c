@@ -111,6 +111,106 @@ static void assert_same_keys(const hs_scenario *a, const hs_scenario *b) {
 	}
 }
 
+// A recording cut from a catalog file: `rows` samples of `cols` numbers.
+typedef struct rec {
+	int rows, cols;
+	bool xr; // OpenXR (else MediaPipe)
+	double *v;
+} rec;
+
+static rec rec_read(const char *path, int rows) {
+	char *text = catalog_lines(path, rows);
+	rec r = {0, 0, strstr(path, "openxr") != NULL, NULL};
+	r.cols = r.xr ? 183 : 64;
+	r.v = malloc((size_t)rows * (size_t)r.cols * sizeof *r.v);
+	assert_non_null(r.v);
+	char *line = strchr(text, '\n') + 1; // past the header
+	for (; r.rows < rows && *line; ++r.rows) {
+		char *end;
+		for (int c = 0; c < r.cols; ++c, line = end + 1)
+			r.v[r.rows * r.cols + c] = strtod(line, &end);
+	}
+	free(text);
+	return r;
+}
+
+// Column c of a recording holds a position coordinate (not t, not an orientation).
+static bool is_position(const rec *r, int c) { return c > 0 && (!r->xr || (c - 1) % 7 < 3); }
+
+// The file's (x, y, z) of a scene point p in `frame`: the inverse of the library's mapping
+// (scenarios/README.md: y_up (−z, −x, y), unity (z, −x, y), mediapipe (z, −x, −y)).
+static hs_vec3 to_frame(hs_vec3 p, int frame) {
+	switch (frame) {
+	case 1:
+		return hs_v3(-p.y, p.z, -p.x);
+	case 2:
+		return hs_v3(-p.y, p.z, p.x);
+	case 3:
+		return hs_v3(-p.y, -p.z, p.x);
+	default:
+		return p;
+	}
+}
+
+// How rec_write writes a recording.
+typedef struct rec_style {
+	const char *head;  // lines before the header (directives, comments)
+	int frame;         // 0 z_up, 1 y_up, 2 unity, 3 mediapipe
+	double scale;      // 1 (m), 100 (cm), 1000 (mm)
+	const char *extra; // after the header's coordinates, e.g. ",tracked,confidence"
+	// the text of row k's cell c (NULL: the number as it is); and what follows row k's coordinates
+	const char *(*cell)(int k, int c);
+	const char *(*tail)(int k);
+	const char *between; // a line written between the rows (e.g. a comment)
+} rec_style;
+
+static void rec_write(const char *name, const rec *r, const rec_style *st) {
+	char path[512];
+	snprintf(path, sizeof path, "%s/%s", temp_dir, name);
+	FILE *f = fopen(path, "w");
+	assert_non_null(f);
+	char header[4096];
+	size_t n = (size_t)snprintf(header, sizeof header, "t");
+	for (int j = 0; j < (r->xr ? 26 : 21); ++j)
+		n += r->xr ? (size_t)snprintf(header + n, sizeof header - n, ",px%d,py%d,pz%d,qw%d,qx%d,qy%d,qz%d", j, j, j, j,
+		                              j, j, j)
+		           : (size_t)snprintf(header + n, sizeof header - n, ",x%d,y%d,z%d", j, j, j);
+	fprintf(f, "%s%s%s\n", st->head ? st->head : "", header, st->extra ? st->extra : "");
+	double scale = st->scale > 0.0 ? st->scale : 1.0;
+	for (int k = 0; k < r->rows; ++k) {
+		const double *v = &r->v[k * r->cols];
+		for (int c = 0; c < r->cols; ++c) {
+			double x = v[c];
+			if (is_position(r, c)) { // the first coordinate of a point: all three at once
+				int first = c - (r->xr ? (c - 1) % 7 : (c - 1) % 3);
+				hs_vec3 p = to_frame(hs_v3(v[first], v[first + 1], v[first + 2]), st->frame);
+				x = (c == first ? p.x : c == first + 1 ? p.y : p.z) * scale;
+			}
+			const char *text = st->cell ? st->cell(k, c) : NULL;
+			if (text)
+				fprintf(f, "%s%s", c ? "," : "", text);
+			else
+				fprintf(f, "%s%.17g", c ? "," : "", x);
+		}
+		fprintf(f, "%s\n%s", st->tail ? st->tail(k) : "", st->between ? st->between : "");
+	}
+	assert_int_equal(fclose(f), 0);
+}
+
+// Loads a scenario whose hand records `record`, or fails with the message.
+static hs_scenario *load_record(const char *name, const char *record) { return must_load(name, record); }
+
+// Loading fails with a message that ends with `suffix` (after the file's path).
+static void load_fails(const char *name, const char *record, const char *side, const char *suffix) {
+	hs_error err;
+	hs_scenario *s = load_hand(name, record, side, &err);
+	if (s)
+		fail_msg("%s loaded; expected ...%s", name, suffix);
+	size_t m = strlen(err.message), k = strlen(suffix);
+	if (m < k || strcmp(err.message + m - k, suffix) != 0)
+		fail_msg("%s: got '%s', expected ...'%s'", name, err.message, suffix);
+}
+
 // A comment or blank line before the header: the file is still read as what its header says
 // (a glove + tracker file, a MediaPipe recording), with the same keys.
 static void test_comments_before_header(void **state) {
@@ -177,10 +277,197 @@ static void test_untracked_hold(void **state) {
 	assert_false(hs_hand_script_sample(&script, -1.0, &w, &q, s));
 }
 
+// The keys of two loads agree within `tol` (m, and per quaternion component up to its sign);
+// times, tracking and sensors exactly.
+static void assert_keys_near(const hs_scenario *a, const hs_scenario *b, double tol) {
+	const hs_hand_script *x = &a->hands.scripts[0], *y = &b->hands.scripts[0];
+	assert_int_equal(x->key_count, y->key_count);
+	for (int k = 0; k < x->key_count; ++k) {
+		const hs_hand_key *p = &x->keys[k], *q = &y->keys[k];
+		assert_true(p->t == q->t && p->tracked == q->tracked);
+		assert_vec3_near(p->wrist, q->wrist, tol);
+		double sign = hs_quat_dot(p->rot, q->rot) < 0.0 ? -1.0 : 1.0;
+		assert_near(p->rot.w, sign * q->rot.w, tol);
+		assert_near(p->rot.x, sign * q->rot.x, tol);
+		assert_near(p->rot.y, sign * q->rot.y, tol);
+		assert_near(p->rot.z, sign * q->rot.z, tol);
+		assert_memory_equal(p->sensors, q->sensors, sizeof p->sensors);
+	}
+}
+
+static const char *const frame_names[4] = {"z_up", "y_up", "unity", "mediapipe"};
+
+// A recording written in z_up and converted by hand into each frame loads to the same keys bit
+// for bit, the frame said by @frame or by the scenario; in cm or mm (a division that rounds)
+// within 1e-12. A version 1 file (no directive) is z_up in m, with one warning line.
+static void test_frames_and_units(void **state) {
+	(void)state;
+	for (int xr = 0; xr < 2; ++xr) {
+		rec r = rec_read(xr ? "scenarios/hand/joints_openxr.csv" : "scenarios/hand/joints_mediapipe.csv", 24);
+		rec_style plain = {0};
+		rec_write("v1.csv", &r, &plain);
+		hs_scenario *base = load_record("v1.yaml", "v1.csv");
+		const char *warning = hs_scenario_warnings(base);
+		assert_non_null(strstr(warning, "/v1.csv:1: warning: the recording says no frame (@frame, or frame: in the "
+		                                "scenario's record): read as z_up (x forward, y left, z up), in m\n"));
+		assert_string_equal(strchr(warning, '\n'), "\n"); // one line
+		for (int f = 0; f < 4; ++f) {
+			char head[64], record[128];
+			snprintf(head, sizeof head, "# converted by hand\n@frame %s\n\n", frame_names[f]);
+			rec_style framed = {.head = head, .frame = f}, bare = {.frame = f};
+			rec_write("framed.csv", &r, &framed);
+			rec_write("bare.csv", &r, &bare);
+			snprintf(record, sizeof record, "{ file: bare.csv, frame: %s }", frame_names[f]);
+			hs_scenario *a = load_record("framed.yaml", "framed.csv"), *b = load_record("bare.yaml", record);
+			assert_same_keys(base, a);
+			assert_same_keys(base, b);
+			assert_string_equal(hs_scenario_warnings(a), "");
+			assert_string_equal(hs_scenario_warnings(b), "");
+			hs_scenario_destroy(a);
+			hs_scenario_destroy(b);
+		}
+		rec_style mm = {.head = "@units mm\n@frame y_up\n", .frame = 1, .scale = 1000.0};
+		rec_style cm = {.head = "@frame mediapipe\n", .frame = 3, .scale = 100.0};
+		rec_write("mm.csv", &r, &mm);
+		rec_write("cm.csv", &r, &cm);
+		hs_scenario *a = load_record("mm.yaml", "mm.csv"), *b = load_record("cm.yaml", "{ file: cm.csv, units: cm }");
+		assert_keys_near(base, a, 1e-12);
+		assert_keys_near(base, b, 1e-12);
+		hs_scenario_destroy(a);
+		hs_scenario_destroy(b);
+		hs_scenario_destroy(base);
+		free(r.v);
+	}
+}
+
+// origin and rpy_deg place the recording rigidly after the frame: every key's wrist is moved and
+// turned, its sensors unchanged.
+static void test_placement(void **state) {
+	(void)state;
+	rec r = rec_read("scenarios/hand/joints_mediapipe.csv", 16);
+	rec_style plain = {.head = "@frame z_up\n"};
+	rec_write("p.csv", &r, &plain);
+	hs_scenario *base = load_record("p.yaml", "p.csv");
+	hs_scenario *s = load_record("placed.yaml", "{ file: p.csv, origin: [0.5, -0.2, 0.1], rpy_deg: [0, 0, 90] }");
+	const hs_hand_script *x = &base->hands.scripts[0], *y = &s->hands.scripts[0];
+	hs_quat turn = hs_quat_from_rpy(0.0, 0.0, HS_PI / 2.0);
+	for (int k = 0; k < x->key_count; ++k) {
+		assert_vec3_near(y->keys[k].wrist, hs_add(hs_v3(0.5, -0.2, 0.1), hs_quat_rotate(turn, x->keys[k].wrist)), 1e-12);
+		hs_quat q = hs_quat_mul(turn, x->keys[k].rot);
+		assert_true(fabs(fabs(hs_quat_dot(q, y->keys[k].rot)) - 1.0) < 1e-12);
+		assert_memory_equal(x->keys[k].sensors, y->keys[k].sensors, sizeof x->keys[k].sensors);
+	}
+	hs_scenario_destroy(base);
+	hs_scenario_destroy(s);
+	free(r.v);
+}
+
+static int cell_mode;
+// Row 3 without its ring tip (landmark 16: empty, nan, NaN); row 5 without its index MCP
+// (landmark 5, which the wrist fit needs); mode 1: row 2's index tip (landmark 8) has only x missing.
+static const char *missing_cell(int k, int c) {
+	static const char *const spellings[3] = {"", "nan", "NaN"};
+	if (k == 3 && c >= 1 + 3 * 16 && c < 4 + 3 * 16)
+		return spellings[c - (1 + 3 * 16)];
+	if (k == 5 && c >= 1 + 3 * 5 && c < 4 + 3 * 5)
+		return "-nan";
+	if (cell_mode == 1 && k == 2 && c == 1 + 3 * 8)
+		return "";
+	return NULL;
+}
+
+// Missing cells: a joint left out is left out of that sample's fit; a sample without a joint the
+// wrist fit needs is untracked and holds the sample before. Comments and blank lines may come
+// between the rows. A joint with only some coordinates missing is an error.
+static void test_missing_cells(void **state) {
+	(void)state;
+	rec r = rec_read("scenarios/hand/joints_mediapipe.csv", 12);
+	rec_style plain = {.head = "@frame z_up\n"}, holes = {.head = "@frame z_up\n", .cell = missing_cell,
+	                                                      .between = "# a comment between rows\n\n"};
+	rec_write("full.csv", &r, &plain);
+	rec_write("holes.csv", &r, &holes);
+	hs_scenario *a = load_record("full.yaml", "full.csv"), *b = load_record("holes.yaml", "holes.csv");
+	const hs_hand_key *x = a->hands.scripts[0].keys, *y = b->hands.scripts[0].keys;
+	for (int k = 0; k < 12; ++k) {
+		assert_true(y[k].tracked == (k != 5));
+		if (k != 5) // the wrist fit does not read the ring tip
+			assert_memory_equal(&x[k].wrist, &y[k].wrist, sizeof x[k].wrist);
+	}
+	assert_memory_equal(&y[5].wrist, &y[4].wrist, sizeof y[4].wrist); // held
+	assert_memory_equal(y[5].sensors, y[4].sensors, sizeof y[4].sensors);
+	assert_true(y[5].t == x[5].t);
+	hs_scenario_destroy(a);
+	hs_scenario_destroy(b);
+	cell_mode = 1;
+	rec_write("partial.csv", &r, &holes);
+	cell_mode = 0;
+	load_fails("partial.yaml", "partial.csv", NULL,
+	           "/partial.csv:9: joint 8 (columns 26-28) has 1 of its 3 coordinates missing: give all or none");
+	free(r.v);
+}
+
+static int tail_mode;
+// ",tracked,confidence" (mode 0), ",confidence,tracked" (1) or ",tracked" (2) cells of row k.
+static const char *tracking_tail(int k) {
+	static char text[32];
+	const char *tracked = k == 4 ? "0" : k == 8 ? "" : k == 9 ? "nan" : "1";
+	const char *confidence = k == 6 ? "0.3" : k == 9 ? "NaN" : k == 8 ? "" : "0.9";
+	if (tail_mode == 0)
+		snprintf(text, sizeof text, ",%s,%s", tracked, confidence);
+	else if (tail_mode == 1)
+		snprintf(text, sizeof text, ",%s,%s", confidence, tracked);
+	else
+		snprintf(text, sizeof text, ",%s", k == 6 ? "0" : tracked);
+	return text;
+}
+
+// The tracked and confidence columns: tracked 0, or a confidence below min_confidence (0.5 unless
+// the scenario says), make a sample untracked; empty or nan cells say nothing. The script holds
+// the last tracked pose through the gap. OpenXR files take the same columns.
+static void test_tracked_and_confidence(void **state) {
+	(void)state;
+	for (int mode = 0; mode < 3; ++mode) {
+		tail_mode = mode;
+		rec r = rec_read(mode == 2 ? "scenarios/hand/joints_openxr.csv" : "scenarios/hand/joints_mediapipe.csv", 12);
+		rec_style st = {.head = "@frame z_up\n", .extra = mode == 0 ? ",tracked,confidence" : mode == 1 ? ",confidence,tracked" : ",tracked",
+		                .tail = tracking_tail};
+		rec_write("tc.csv", &r, &st);
+		hs_scenario *s = load_record("tc.yaml", "tc.csv");
+		const hs_hand_script *script = &s->hands.scripts[0];
+		for (int k = 0; k < 12; ++k)
+			assert_true(script->keys[k].tracked == (k != 4 && k != 6));
+		assert_memory_equal(&script->keys[4].wrist, &script->keys[3].wrist, sizeof(hs_vec3));
+		assert_memory_equal(&script->keys[6].wrist, &script->keys[5].wrist, sizeof(hs_vec3));
+		hs_vec3 w;
+		hs_quat q;
+		uint8_t sensors[HS_GLOVE_SENSORS];
+		double t = 0.5 * (script->keys[3].t + script->keys[4].t);
+		assert_false(hs_hand_script_sample(script, t, &w, &q, sensors)); // toward an untracked sample: held
+		assert_memory_equal(&w, &script->keys[3].wrist, sizeof w);
+		assert_true(hs_hand_script_sample(script, 0.5 * (script->keys[2].t + script->keys[3].t), &w, &q, sensors));
+		hs_scenario_destroy(s);
+		if (mode == 0) { // a lower minimum keeps the sample of confidence 0.3
+			s = load_record("tc_low.yaml", "{ file: tc.csv, min_confidence: 0.2 }");
+			assert_true(s->hands.scripts[0].keys[6].tracked && !s->hands.scripts[0].keys[4].tracked);
+			hs_scenario_destroy(s);
+			s = load_record("tc_high.yaml", "{ file: tc.csv, min_confidence: 1 }"); // 0.9 is below: only the
+			for (int k = 0; k < 12; ++k) // samples that say no confidence stay tracked
+				assert_true(s->hands.scripts[0].keys[k].tracked == (k == 8 || k == 9));
+			hs_scenario_destroy(s);
+		}
+		free(r.v);
+	}
+	tail_mode = 0;
+}
+
 int main(void) {
 	const struct CMUnitTest tests[] = {
 	    cmocka_unit_test(test_comments_before_header),
 	    cmocka_unit_test(test_untracked_hold),
+	    cmocka_unit_test(test_frames_and_units),
+	    cmocka_unit_test(test_placement),
+	    cmocka_unit_test(test_missing_cells),
+	    cmocka_unit_test(test_tracked_and_confidence),
 	};
 	return cmocka_run_group_tests(tests, make_temp_dir, remove_temp_dir);
 }

@@ -335,6 +335,14 @@ static int print_summary(FILE *report, hs_scenario *s, const run_options *o) {
 	fprintf(report, "frames:   %ld (dt %.9g s, %.9g s)\n", hs_world_frame(world), hs_scenario_dt(s),
 	        (double)hs_world_frame(world) * hs_scenario_dt(s));
 	fprintf(report, "objects:  %d\n", hs_scenario_object_count(s));
+	for (int h = 0; h < hs_scenario_hand_count(s); ++h) { // hands driven by joint recordings
+		double rms;
+		long samples;
+		const char *record;
+		if (hs_scenario_hand_fit(s, h, &rms, &samples, &record))
+			fprintf(report, "hand %s: fitted from %ld samples of %s: RMS %.1f mm\n", hs_scenario_hand_name(s, h),
+			        samples, record, rms);
+	}
 	int failed = hs_scenario_check(s, report);
 	int total = hs_scenario_expectation_count(s);
 	fprintf(report, "expectations: %d/%d passed\n", total - failed, total);
@@ -360,6 +368,7 @@ static int cmd_run(int argc, char **argv) {
 		fprintf(stderr, "%s\n", err.message);
 		return EXIT_BAD_INPUT;
 	}
+	fputs(hs_scenario_warnings(s), stderr);
 	char why[160];
 	if (!hs_outsel_bind(&o.sel, s, false, why, sizeof why)) {
 		fprintf(stderr, "handspring run: %s\n", why);
@@ -570,8 +579,9 @@ static int cmd_all(int argc, char **argv) {
 	for (int i = 0; i < catalog.count; ++i) {
 		const char *name = catalog.names[i];
 		hs_scenario *s = hs_scenario_load(catalog.paths[i], &err);
+		fputs(s ? hs_scenario_warnings(s) : err.message, stderr);
 		if (!s)
-			fprintf(stderr, "%s\n", err.message);
+			fputc('\n', stderr);
 		char why[160];
 		if (s && !hs_outsel_bind(&sel, s, true, why, sizeof why)) {
 			fprintf(stderr, "handspring all: %s: %s\n", name, why);
@@ -672,6 +682,7 @@ static int cmd_joints(int argc, char **argv) {
 		fprintf(stderr, "%s\n", err.message);
 		return EXIT_BAD_INPUT;
 	}
+	fputs(hs_scenario_warnings(s), stderr);
 	output o;
 	bool ok = output_open(&o, out);
 	if (!ok)

@@ -154,6 +154,20 @@ hs_status hs_scenario_resume(hs_scenario *scenario, FILE *in, hs_error *err);
 /// s: the scenario's frame time.
 double hs_scenario_dt(const hs_scenario *scenario);
 int hs_scenario_object_count(const hs_scenario *scenario);
+/// What the load warns of, one line each ending with a newline ("" when nothing): a joint
+/// recording that says no frame (read as z_up; scenarios/README.md, "Recorded joint positions").
+/// The tool prints them on stderr.
+const char *hs_scenario_warnings(const hs_scenario *scenario);
+/// The hands, in the order of the file, and the i-th's name (NULL out of range).
+int hs_scenario_hand_count(const hs_scenario *scenario);
+const char *hs_scenario_hand_name(const hs_scenario *scenario, int hand);
+/// How hand `hand` (0: the first) was fitted to its joint recording (scenarios/README.md,
+/// "Recorded joint positions"): the RMS distance in mm between the recorded check points of every
+/// tracked sample and the fitted hand's (the hand as built, its sensors and wrist pose for that
+/// sample), the tracked samples, and the recording as the scenario names it (owned by the
+/// scenario). Any output may be NULL. False, outputs untouched, for a hand driven by keys or a
+/// glove file, or an index out of range.
+bool hs_scenario_hand_fit(const hs_scenario *scenario, int hand, double *rms_mm, long *samples, const char **record);
 
 /// The scenario files below a folder: every *.yaml, recursively (hidden entries skipped), sorted
 /// by name (strcmp). A name is the path relative to the folder without ".yaml", e.g. "hand/flick";
