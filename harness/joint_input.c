@@ -7,7 +7,8 @@
 //  1. reads the file (joint_file.c) and places every point in the scene (joint_frame.c);
 //  2. decides which samples are tracked: not `tracked` 0, a confidence not below the minimum, and
 //     the three points the wrist fit needs recorded;
-//  3. fits each tracked sample's wrist pose and then its sensors (joint_pose.c), in time order;
+//  3. fits each tracked sample's wrist pose, refuses a wrist under the floor or far away
+//     (joint_plausible.c), then fits the sensors (joint_pose.c), in time order;
 //  4. gives each untracked sample the last tracked pose and sensors (the first tracked one's
 //     before any): the script holds them (hand_script.c).
 #include <math.h>
@@ -16,6 +17,7 @@
 
 #include "joint_file.h"
 #include "joint_input.h"
+#include "joint_plausible.h"
 #include "joint_pose.h"
 
 hs_joint_options hs_joint_options_default(void) {
@@ -134,7 +136,7 @@ bool hs_joint_record_load(const char *path, const hs_joint_options *options, hs_
 	hs_hand_key *keys = ok ? calloc((size_t)f.count, sizeof *keys) : NULL;
 	if (ok && !keys)
 		ok = hs_set_error(err, path, f.header_line, "out of memory");
-	ok = ok && fit_wrists(path, &f, def, keys, err);
+	ok = ok && fit_wrists(path, &f, def, keys, err) && hs_joint_check_plausible(path, &f, def, keys, tracked, err);
 	if (ok) {
 		report->rms_mm = fit_sensors(&f, def, keys);
 		hold_untracked(&f, keys);

@@ -460,6 +460,36 @@ static void test_tracked_and_confidence(void **state) {
 	tail_mode = 0;
 }
 
+// Plausibility: a headset's y-up recording (the hand 1 m up, 0.4 m ahead) that says no frame is
+// read as z-up and refused (its wrist under the floor), and the message names the frames that
+// would be right; said, it loads. A wrist beyond 10 m is refused (the units of a file in mm said
+// to be m). tests/bad has each message at a file's line (test_bad_input).
+static void test_plausibility(void **state) {
+	(void)state;
+	rec r = rec_read("scenarios/hand/joints_mediapipe.csv", 8);
+	for (int k = 0; k < r.rows; ++k)
+		for (int c = 1; c < r.cols; c += 3) {
+			r.v[k * r.cols + c] += 0.4;
+			r.v[k * r.cols + c + 2] += 1.0;
+		}
+	rec_style unsaid = {.frame = 1}, said = {.head = "@frame y_up\n", .frame = 1};
+	rec_write("unsaid.csv", &r, &unsaid);
+	rec_write("said.csv", &r, &said);
+	load_fails("unsaid.yaml", "unsaid.csv", NULL,
+	           "/unsaid.csv:2: the wrist is under the floor (z < -0.02 m) in 8 of 8 tracked samples, here at z = -0.318 "
+	           "m: the frame is probably wrong (z_up, assumed: the file says no @frame); y_up or unity would put it "
+	           "above the floor");
+	hs_scenario *s = load_record("said.yaml", "said.csv");
+	assert_true(s->hands.scripts[0].keys[0].wrist.z > 1.0);
+	hs_scenario_destroy(s);
+	rec_style mm = {.head = "@frame y_up\n@units m\n", .frame = 1, .scale = 100.0}; // cm said m
+	rec_write("mm.csv", &r, &mm);
+	load_fails("mm.yaml", "mm.csv", NULL,
+	           "/mm.csv:4: the wrist is 132.5 m from the origin (at most 10 m): are the units right (read as m: are "
+	           "they cm or mm?), or the placement (origin)?");
+	free(r.v);
+}
+
 int main(void) {
 	const struct CMUnitTest tests[] = {
 	    cmocka_unit_test(test_comments_before_header),
@@ -468,6 +498,7 @@ int main(void) {
 	    cmocka_unit_test(test_placement),
 	    cmocka_unit_test(test_missing_cells),
 	    cmocka_unit_test(test_tracked_and_confidence),
+	    cmocka_unit_test(test_plausibility),
 	};
 	return cmocka_run_group_tests(tests, make_temp_dir, remove_temp_dir);
 }
