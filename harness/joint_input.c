@@ -7,15 +7,19 @@
 //  1. reads the file (joint_file.c) and places every point in the scene (joint_frame.c);
 //  2. decides which samples are tracked: not `tracked` 0, a confidence not below the minimum, and
 //     the three points the wrist fit needs recorded;
-//  3. fits each tracked sample's wrist pose, refuses a wrist under the floor or far away
-//     (joint_plausible.c), then fits the sensors (joint_pose.c), in time order;
-//  4. gives each untracked sample the last tracked pose and sensors (the first tracked one's
+//  3. fits each tracked sample's wrist pose (joint_pose.c) and refuses a wrist under the floor or
+//     far away (joint_plausible.c);
+//  4. takes the hand's size from the recording unless the scenario says fit_hand: false
+//     (joint_fit.c), the definition the world's hand is built with, fits the wrist poses again for
+//     it, then the sensors (joint_pose.c), in time order;
+//  5. gives each untracked sample the last tracked pose and sensors (the first tracked one's
 //     before any): the script holds them (hand_script.c).
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "joint_file.h"
+#include "joint_fit.h"
 #include "joint_input.h"
 #include "joint_plausible.h"
 #include "joint_pose.h"
@@ -136,7 +140,10 @@ bool hs_joint_record_load(const char *path, const hs_joint_options *options, hs_
 	hs_hand_key *keys = ok ? calloc((size_t)f.count, sizeof *keys) : NULL;
 	if (ok && !keys)
 		ok = hs_set_error(err, path, f.header_line, "out of memory");
+	// where the hand is, judged with the definition as given; then its size, and the poses again
+	// (the wrist fit carries the definition's bases onto the recorded ones)
 	ok = ok && fit_wrists(path, &f, def, keys, err) && hs_joint_check_plausible(path, &f, def, keys, tracked, err);
+	ok = ok && (!options->fit_hand || (hs_joint_fit_size(path, &f, def, err) && fit_wrists(path, &f, def, keys, err)));
 	if (ok) {
 		report->rms_mm = fit_sensors(&f, def, keys);
 		hold_untracked(&f, keys);

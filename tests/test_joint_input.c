@@ -490,6 +490,86 @@ static void test_plausibility(void **state) {
 	free(r.v);
 }
 
+// Writes hand 1 of hand/free_manipulation as a joint recording (what `handspring joints` writes),
+// its definition's segments scaled by `fingers` and its palm (the bases) by `palm`.
+static void export_scaled(const char *name, const char *format, double fingers, double palm) {
+	hs_error err;
+	hs_scenario *s = hs_scenario_load("scenarios/hand/free_manipulation.yaml", &err);
+	assert_non_null(s);
+	hs_hand_def *def = &s->hands.defs[0];
+	for (int f = 0; f < 5; ++f) {
+		for (int k = 0; k < 3; ++k)
+			def->segment_length[f][k] *= fingers;
+		def->base[f] = hs_scale(def->base[f], palm);
+	}
+	char path[512];
+	snprintf(path, sizeof path, "%s/%s", temp_dir, name);
+	FILE *out = fopen(path, "w");
+	assert_non_null(out);
+	assert_true(hs_scenario_export_joints(s, 0, format, 60.0, out, &err));
+	assert_int_equal(fclose(out), 0);
+	hs_scenario_destroy(s);
+}
+
+// fit_hand: a recording of a hand 0.8 and 1.2 times the definition's (and one with longer fingers
+// on a smaller palm) gives the world's hand its segment lengths within 1 % and a fit of RMS under
+// 1 mm; fit_hand: false keeps the definition (and the RMS says how far it is from the recording).
+static void test_fit_hand(void **state) {
+	(void)state;
+	const double sizes[4][2] = {{0.8, 0.8}, {1.2, 1.2}, {1.15, 0.9}, {0.8, 0.8}};
+	const hs_hand_def given = hs_default_hand_def();
+	for (int c = 0; c < 4; ++c) {
+		const char *format = c == 1 ? "openxr" : "mediapipe";
+		export_scaled("scaled.csv", format, sizes[c][0], sizes[c][1]);
+		hs_scenario *s = load_record("scaled.yaml", c == 3 ? "{ file: scaled.csv, fit_hand: false }" : "scaled.csv");
+		double rms;
+		long samples;
+		const char *record;
+		assert_true(hs_scenario_hand_fit(s, 0, &rms, &samples, &record));
+		assert_string_equal(record, c == 3 ? "scaled.csv" : "scaled.csv");
+		const hs_hand_def *def = &s->hands.defs[0];
+		double worst = 0.0;
+		for (int f = 0; f < 5; ++f)
+			for (int k = 0; k < 3; ++k)
+				worst = fmax(worst, fabs(def->segment_length[f][k] / (given.segment_length[f][k] * sizes[c][0]) - 1.0));
+		print_message("%s hand x%.2f (palm x%.2f)%s: segments within %.2g %%, palm x%.6f, RMS %.3f mm over %ld samples\n",
+		              format, sizes[c][0], sizes[c][1], c == 3 ? ", fit_hand: false" : "", 100.0 * worst,
+		              def->base[1].x / given.base[1].x, rms, samples);
+		if (c == 3) { // the definition as it is
+			assert_memory_equal(def, &given, sizeof given);
+			assert_true(rms > 5.0);
+			hs_scenario_destroy(s);
+			continue;
+		}
+		assert_true(worst < 0.01);
+		assert_near(def->base[1].x / given.base[1].x, sizes[c][1], 0.01 * sizes[c][1]);
+		assert_true(rms < 1.0);
+		assert_true(samples == 181); // free_manipulation's 3 s at 60 Hz, both ends
+		hs_scenario_step(s); // the world's hand is the fitted one: its segments have the fitted lengths
+		hs_world *w = hs_scenario_world(s);
+		hs_vec3 p[HS_HAND_POINTS];
+		assert_int_equal(hs_world_hand_points(w, hs_world_hand_at(w, 0), p), HS_OK);
+		for (int f = 0; f < 5; ++f)
+			for (int k = 0; k < 3; ++k)
+				assert_near(hs_distance(p[4 * f + k], p[4 * f + k + 1]), def->segment_length[f][k], 1e-12);
+		hs_scenario_destroy(s);
+	}
+	export_scaled("palm.csv", "mediapipe", 1.0, 4.0); // fingers as they are on a palm 4 times too large
+	load_fails("palm.yaml", "palm.csv", NULL,
+	           "/palm.csv:2: fit_hand: the recorded palm is 4 times the hand definition's (the median of 305 distances "
+	           "between the knuckles in the first second): more than 3 times either way; are the units right (m)?");
+	hs_scenario_destroy(load_record("palm_kept.yaml", "{ file: palm.csv, fit_hand: false }"));
+	// the catalog's recordings come from the default hand: the fit keeps it bit for bit (its medians
+	// are within 1.4e-17 m of the definition's), so their runs and goldens are unchanged
+	for (int xr = 0; xr < 2; ++xr) {
+		hs_error err;
+		hs_scenario *s = hs_scenario_load(xr ? "scenarios/hand/joints_openxr.yaml" : "scenarios/hand/joints_mediapipe.yaml", &err);
+		assert_non_null(s);
+		assert_memory_equal(&s->hands.defs[0], &given, sizeof given);
+		hs_scenario_destroy(s);
+	}
+}
+
 int main(void) {
 	const struct CMUnitTest tests[] = {
 	    cmocka_unit_test(test_comments_before_header),
@@ -499,6 +579,7 @@ int main(void) {
 	    cmocka_unit_test(test_missing_cells),
 	    cmocka_unit_test(test_tracked_and_confidence),
 	    cmocka_unit_test(test_plausibility),
+	    cmocka_unit_test(test_fit_hand),
 	};
 	return cmocka_run_group_tests(tests, make_temp_dir, remove_temp_dir);
 }
