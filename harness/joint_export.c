@@ -23,15 +23,22 @@ static void openxr_joint(FILE *out, hs_vec3 p, hs_quat q) {
 	fprintf(out, ",%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g", p.x, p.y, p.z, q.w, q.x, q.y, q.z);
 }
 
-static void write_header(FILE *out, hs_joint_format format) {
+// What a recording of hand h says of itself (scenarios/README.md, "Recorded joint positions"): where
+// it comes from, its frame and units (the library's), which hand; then the header, with the
+// tracked column when the hand's script has untracked keys.
+static void write_head(FILE *out, const hs_scenario *scenario, int h, hs_joint_format format, bool tracked) {
+	const hs_hands *hands = &scenario->hands;
 	char header[4096];
 	hs_joint_header(format, header, sizeof header);
-	fprintf(out, "%s\n", header);
+	fprintf(out, "@source handspring joints: scenario %s, hand '%s'\n@frame z_up\n@units m\n@hand %s\n%s%s\n",
+	        hs_scenario_name(scenario), hands->names[h], hands->defs[h].left ? "left" : "right", header,
+	        tracked ? ",tracked" : "");
 }
 
 // One sample: the hand of definition `def` at the wrist pose with the glove reading `sensors`.
+// `tail` ends the line (the tracked cell, or nothing).
 static void write_row(FILE *out, hs_joint_format format, double t, const hs_hand_def *def, hs_vec3 wrist, hs_quat rot,
-                      const uint8_t sensors[HS_GLOVE_SENSORS]) {
+                      const uint8_t sensors[HS_GLOVE_SENSORS], const char *tail) {
 	hs_vec3 p[HS_HAND_POINTS], lines[HS_HAND_LINES][2];
 	hs_hand_kinematics(def, wrist, rot, sensors, p, lines);
 	fprintf(out, "%.17g", t);
@@ -39,7 +46,7 @@ static void write_row(FILE *out, hs_joint_format format, double t, const hs_hand
 		fprintf(out, ",%.17g,%.17g,%.17g", wrist.x, wrist.y, wrist.z); // landmark 0: the wrist
 		for (int i = 0; i < HS_HAND_POINTS; ++i)
 			fprintf(out, ",%.17g,%.17g,%.17g", p[i].x, p[i].y, p[i].z);
-		fputc('\n', out);
+		fprintf(out, "%s\n", tail);
 		return;
 	}
 	hs_vec3 up = hs_quat_rotate(rot, hs_v3(0, 0, 1)), along = hs_quat_rotate(rot, hs_v3(1, 0, 0));
@@ -56,7 +63,7 @@ static void write_row(FILE *out, hs_joint_format format, double t, const hs_hand
 			openxr_joint(out, a, openxr_frame(hs_normalize(dir), up));
 		}
 	}
-	fputc('\n', out);
+	fprintf(out, "%s\n", tail);
 }
 
 bool hs_scenario_export_joints(hs_scenario *scenario, int hand, const char *format, double rate, FILE *out,
@@ -71,14 +78,19 @@ bool hs_scenario_export_joints(hs_scenario *scenario, int hand, const char *form
 		return hs_set_error(err, hs_scenario_name(scenario), 0, "the scenario has %d hand(s), no hand %d", hands->count, hand + 1);
 	if (!(rate >= 1.0 && rate <= 10000.0))
 		return hs_set_error(err, hs_scenario_name(scenario), 0, "the rate must be within [1, 10000] Hz, got %g", rate);
-	write_header(out, f);
+	const hs_hand_script *script = &hands->scripts[hand];
+	bool untracked = false;
+	for (int k = 0; k < script->key_count; ++k)
+		untracked = untracked || !script->keys[k].tracked;
+	write_head(out, scenario, hand, f, untracked);
 	double dt = 1.0 / rate, duration = (double)hs_scenario_frame_count(scenario) * hs_scenario_dt(scenario);
 	for (long k = 0; (double)k * dt <= duration + 1e-9; ++k) { // the script's input, as the world gets it
 		hs_vec3 wrist;
 		hs_quat rot;
 		uint8_t sensors[HS_GLOVE_SENSORS];
-		hs_hand_script_sample(&hands->scripts[hand], (double)k * dt, &wrist, &rot, sensors);
-		write_row(out, f, (double)k * dt, &hands->defs[hand], wrist, rot, sensors);
+		bool tracked = hs_hand_script_sample(script, (double)k * dt, &wrist, &rot, sensors);
+		write_row(out, f, (double)k * dt, &hands->defs[hand], wrist, rot, sensors,
+		          !untracked ? "" : tracked ? ",1" : ",0");
 	}
 	return true;
 }

@@ -445,6 +445,22 @@ static void test_tracked_and_confidence(void **state) {
 		assert_false(hs_hand_script_sample(script, t, &w, &q, sensors)); // toward an untracked sample: held
 		assert_memory_equal(&w, &script->keys[3].wrist, sizeof w);
 		assert_true(hs_hand_script_sample(script, 0.5 * (script->keys[2].t + script->keys[3].t), &w, &q, sensors));
+		if (mode == 0) { // `handspring joints` writes the tracking back: a tracked column, 0 where it is not
+			char path[512];
+			snprintf(path, sizeof path, "%s/re.csv", temp_dir);
+			FILE *out = fopen(path, "w");
+			hs_error err;
+			assert_true(hs_scenario_export_joints(s, 0, "mediapipe", 120.0, out, &err));
+			assert_int_equal(fclose(out), 0);
+			char *head = catalog_lines(path, 0);
+			assert_non_null(strstr(head, ",z20,tracked\n"));
+			free(head);
+			hs_scenario *back = load_record("re.yaml", "re.csv");
+			for (int k = 0; k < back->hands.scripts[0].key_count; ++k)
+				assert_true(back->hands.scripts[0].keys[k].tracked == (k != 4 && k != 6));
+			assert_string_equal(hs_scenario_warnings(back), ""); // it says its frame
+			hs_scenario_destroy(back);
+		}
 		hs_scenario_destroy(s);
 		if (mode == 0) { // a lower minimum keeps the sample of confidence 0.3
 			s = load_record("tc_low.yaml", "{ file: tc.csv, min_confidence: 0.2 }");
@@ -556,7 +572,7 @@ static void test_fit_hand(void **state) {
 	}
 	export_scaled("palm.csv", "mediapipe", 1.0, 4.0); // fingers as they are on a palm 4 times too large
 	load_fails("palm.yaml", "palm.csv", NULL,
-	           "/palm.csv:2: fit_hand: the recorded palm is 4 times the hand definition's (the median of 305 distances "
+	           "/palm.csv:6: fit_hand: the recorded palm is 4 times the hand definition's (the median of 305 distances "
 	           "between the knuckles in the first second): more than 3 times either way; are the units right (m)?");
 	hs_scenario_destroy(load_record("palm_kept.yaml", "{ file: palm.csv, fit_hand: false }"));
 	// the catalog's recordings come from the default hand: the fit keeps it bit for bit (its medians

@@ -645,7 +645,8 @@ static const char *const usage_joints =
     "Writes hand N (1: the first) of the scenario FILE as a recording of joint positions, one sample\n"
     "per frame: MediaPipe Hands' 21 landmarks or OpenXR's 26 hand joints (with orientations), the\n"
     "glove model's check points for the scenario's own input, --rate samples per second (default:\n"
-    "the scenario's frame rate). A hand's 'record:' reads them back.\n"
+    "the scenario's frame rate), in the library's frame (@frame z_up, @units m, @hand; a tracked\n"
+    "column when the hand has untracked samples). A hand's 'record:' reads them back.\n"
     "Exit status: 0 written, 2 bad input.\n";
 
 // `handspring joints`: a scenario's hand as a joint recording (issue 13 item 4; the catalog's).

@@ -214,8 +214,9 @@ void hs_hand_trace_write_frame(FILE *out, hs_scenario *scenario);
 /// "mediapipe" (21 landmarks: t,x0,y0,z0,...,z20) or "openxr" (26 joints with orientations:
 /// t,px0,py0,pz0,qw0,qx0,qy0,qz0,...,qz25), one sample per frame (t = frame × dt, frame 0
 /// included) of the scenario's input (its keys or recording, no noise), through the glove model's
-/// kinematics, `rate` samples per second (t = k / rate). A hand's `record:` reads such files back
-/// (scenarios/README.md). False with `err`.
+/// kinematics, `rate` samples per second (t = k / rate). The file says its frame, units and hand
+/// (@frame z_up, @units m, @hand) and has a `tracked` column when the hand has untracked samples.
+/// A hand's `record:` reads such files back (scenarios/README.md). False with `err`.
 bool hs_scenario_export_joints(hs_scenario *scenario, int hand, const char *format, double rate, FILE *out,
                                hs_error *err);
 
