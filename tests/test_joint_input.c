@@ -586,6 +586,71 @@ static void test_fit_hand(void **state) {
 	}
 }
 
+// The text of the first ``` block of `kind` after `marker` in a file (malloc'd).
+static char *doc_block(const char *path, const char *marker, const char *kind) {
+	FILE *f = fopen(path, "r");
+	assert_non_null(f);
+	static char doc[1 << 20];
+	size_t n = fread(doc, 1, sizeof doc - 1, f);
+	fclose(f);
+	doc[n] = '\0';
+	char open[32];
+	snprintf(open, sizeof open, "```%s\n", kind);
+	const char *at = strstr(doc, marker);
+	assert_non_null(at);
+	const char *start = strstr(at, open);
+	assert_non_null(start);
+	start += strlen(open);
+	const char *end = strstr(start, "```");
+	assert_non_null(end);
+	char *text = strndup(start, (size_t)(end - start));
+	assert_non_null(text);
+	return text;
+}
+
+// The worked example of scenarios/README.md loads as the page says: five samples, the one at
+// 0.311 s untracked; the hand holds the pose of 0.2 s, untracked, from the first frame after it
+// until the sample at 0.4 s; placed where the catalog's cube is.
+static void test_readme_example(void **state) {
+	(void)state;
+	char *csv = doc_block("scenarios/README.md", "**A worked example.**", "csv");
+	char *yaml = doc_block("scenarios/README.md", "**A worked example.**", "yaml");
+	write_file("quest_take3.csv", csv);
+	const char *record = strstr(yaml, "record: ");
+	assert_non_null(record);
+	char line[256];
+	snprintf(line, sizeof line, "%.*s", (int)strcspn(record + 8, "\n"), record + 8);
+	hs_scenario *s = load_record("quest.yaml", line);
+	assert_string_equal(hs_scenario_warnings(s), "");
+	const hs_hand_script *script = &s->hands.scripts[0];
+	assert_int_equal(script->key_count, 5);
+	for (int k = 0; k < 5; ++k)
+		assert_true(script->keys[k].tracked == (k != 3));
+	double rms;
+	long samples;
+	assert_true(hs_scenario_hand_fit(s, 0, &rms, &samples, NULL));
+	print_message("README example: %ld tracked samples, RMS %.3f mm, wrist at %.4f %.4f %.4f\n", samples, rms,
+	              script->keys[0].wrist.x, script->keys[0].wrist.y, script->keys[0].wrist.z);
+	assert_int_equal(samples, 4);
+	assert_true(rms < 1.0);
+	rec r = rec_read("scenarios/hand/joints_mediapipe.csv", 1); // the catalog's first sample, where the take is put
+	assert_near(hs_distance(script->keys[0].wrist, hs_v3(r.v[1], r.v[2], r.v[3])), 0.0, 1e-3);
+	free(r.v);
+	for (long frame = 1; frame <= 30; ++frame) { // the frames of 1/60 s the page describes
+		double t = (double)frame * hs_scenario_dt(s); // as the scenario samples its hands
+		hs_vec3 w;
+		hs_quat q;
+		uint8_t sensors[HS_GLOVE_SENSORS];
+		bool tracked = hs_hand_script_sample(script, t, &w, &q, sensors);
+		assert_true(tracked == (frame <= 12 || frame >= 24));
+		if (!tracked)
+			assert_memory_equal(&w, &script->keys[2].wrist, sizeof w);
+	}
+	hs_scenario_destroy(s);
+	free(csv);
+	free(yaml);
+}
+
 int main(void) {
 	const struct CMUnitTest tests[] = {
 	    cmocka_unit_test(test_comments_before_header),
@@ -596,6 +661,7 @@ int main(void) {
 	    cmocka_unit_test(test_tracked_and_confidence),
 	    cmocka_unit_test(test_plausibility),
 	    cmocka_unit_test(test_fit_hand),
+	    cmocka_unit_test(test_readme_example),
 	};
 	return cmocka_run_group_tests(tests, make_temp_dir, remove_temp_dir);
 }
