@@ -507,12 +507,14 @@ static void test_plausibility(void **state) {
 }
 
 // Writes hand 1 of hand/free_manipulation as a joint recording (what `handspring joints` writes),
-// its definition's segments scaled by `fingers` and its palm (the bases) by `palm`.
-static void export_scaled(const char *name, const char *format, double fingers, double palm) {
+// its definition's segments scaled by `fingers` and its palm (the bases) by `palm`; a left hand
+// when `left`.
+static void export_hand(const char *name, const char *format, double fingers, double palm, bool left) {
 	hs_error err;
 	hs_scenario *s = hs_scenario_load("scenarios/hand/free_manipulation.yaml", &err);
 	assert_non_null(s);
 	hs_hand_def *def = &s->hands.defs[0];
+	def->left = left;
 	for (int f = 0; f < 5; ++f) {
 		for (int k = 0; k < 3; ++k)
 			def->segment_length[f][k] *= fingers;
@@ -525,6 +527,29 @@ static void export_scaled(const char *name, const char *format, double fingers, 
 	assert_true(hs_scenario_export_joints(s, 0, format, 60.0, out, &err));
 	assert_int_equal(fclose(out), 0);
 	hs_scenario_destroy(s);
+}
+
+static void export_scaled(const char *name, const char *format, double fingers, double palm) {
+	export_hand(name, format, fingers, palm, false);
+}
+
+// A left hand's recording (@hand left, written by `handspring joints`) drives a hand of side: left
+// at the fit's usual RMS; a hand without a side is a right hand, and the recording is refused.
+static void test_left_hand(void **state) {
+	(void)state;
+	export_hand("left.csv", "openxr", 1.0, 1.0, true);
+	hs_error err;
+	hs_scenario *s = load_hand("left.yaml", "left.csv", "    side: left\n", &err);
+	if (!s)
+		fail_msg("%s", err.message);
+	double rms;
+	assert_true(hs_scenario_hand_fit(s, 0, &rms, NULL, NULL));
+	print_message("left hand: RMS %.3f mm\n", rms);
+	assert_true(rms < 1.0 && s->hands.defs[0].left);
+	hs_scenario_destroy(s);
+	load_fails("right.yaml", "left.csv", NULL,
+	           "/left.csv:4: @hand left, but the scenario's hand 'right' is a right hand (right by default): give it "
+	           "side: left, or use a recording of its own hand");
 }
 
 // fit_hand: a recording of a hand 0.8 and 1.2 times the definition's (and one with longer fingers
@@ -661,6 +686,7 @@ int main(void) {
 	    cmocka_unit_test(test_tracked_and_confidence),
 	    cmocka_unit_test(test_plausibility),
 	    cmocka_unit_test(test_fit_hand),
+	    cmocka_unit_test(test_left_hand),
 	    cmocka_unit_test(test_readme_example),
 	};
 	return cmocka_run_group_tests(tests, make_temp_dir, remove_temp_dir);
