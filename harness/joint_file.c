@@ -144,7 +144,7 @@ static bool resolve(const char *path, const hs_joint_options *o, bool left, hs_j
 // A cell: a number, or missing (empty, nan in any case, with a sign or not: stored as NaN).
 static hs_number_kind read_cell(const char *s, size_t n, double *v) {
 	size_t sign = (size_t)(n > 0 && (s[0] == '-' || s[0] == '+'));
-	if (n == sign || (n == sign + 3 && (s[sign] | 0x20) == 'n' && (s[sign + 1] | 0x20) == 'a' &&
+	if (n == 0 || (n == sign + 3 && (s[sign] | 0x20) == 'n' && (s[sign + 1] | 0x20) == 'a' &&
 	                  (s[sign + 2] | 0x20) == 'n')) {
 		*v = NAN;
 		return HS_NUMBER_OK;
