@@ -5,8 +5,6 @@
 #include <string.h>
 
 #include "hand_script.h"
-#include "file_read.h"
-#include "joint_input.h"
 #include "record.h"
 #include "scenario_internal.h"
 #include "scenario_parser.h"
@@ -17,7 +15,16 @@ static const double MAX_LENGTH = 1000.0; // m: largest coordinate accepted
 static const char *const RECORD_HEADER =
     "t,x,y,z,qw,qx,qy,qz,s0,s1,s2,s3,s4,s5,s6,s7,s8,s9,s10,s11,s12,s13,s14,s15,s16,s17";
 
-void hs_hand_script_sample(const hs_hand_script *script, double t, hs_vec3 *wrist, hs_quat *rot,
+// Sensors in whole units: a key's value, or the linear value between two keys, rounded.
+static void sensors_between(const hs_hand_key *a, const hs_hand_key *b, double u, uint8_t sensors[HS_GLOVE_SENSORS]) {
+	for (int i = 0; i < HS_GLOVE_SENSORS; ++i) {
+		double v = a->sensors[i] + u * (b->sensors[i] - a->sensors[i]);
+		long r = lround(v);
+		sensors[i] = (uint8_t)(r < 0 ? 0 : (r > 255 ? 255 : r));
+	}
+}
+
+bool hs_hand_script_sample(const hs_hand_script *script, double t, hs_vec3 *wrist, hs_quat *rot,
                            uint8_t sensors[HS_GLOVE_SENSORS]) {
 	const hs_hand_key *keys = script->keys;
 	int n = script->key_count;
@@ -38,15 +45,20 @@ void hs_hand_script_sample(const hs_hand_script *script, double t, hs_vec3 *wris
 		b = &keys[hi];
 		u = (t - a->t) / (b->t - a->t);
 	}
+	// untracked (scenarios/README.md, "Recorded joint positions"): the key at or before t is, or t
+	// lies between a tracked key and an untracked one. The hand holds a's pose (an untracked key
+	// holds the last tracked pose): nothing is interpolated across the gap.
+	if (!a->tracked || (u > 0.0 && !b->tracked)) {
+		*wrist = a->wrist;
+		*rot = a->rot;
+		sensors_between(a, a, 0.0, sensors);
+		return false;
+	}
 	*wrist = hs_lerp(a->wrist, b->wrist, u);
 	*rot = u > 0.0 ? hs_quat_slerp(a->rot, b->rot, u) : a->rot;
-	for (int i = 0; i < HS_GLOVE_SENSORS; ++i) {
-		double v = a->sensors[i] + u * (b->sensors[i] - a->sensors[i]);
-		long r = lround(v);
-		sensors[i] = (uint8_t)(r < 0 ? 0 : (r > 255 ? 255 : r));
-	}
+	sensors_between(a, b, u, sensors);
+	return true;
 }
-
 
 bool hs_record_load(const char *path, hs_hand_script *script, hs_error *err) {
 	script->key_count = 0;
@@ -67,6 +79,7 @@ bool hs_record_load(const char *path, hs_hand_script *script, hs_error *err) {
 			break;
 		hs_hand_key *key = &script->keys[script->key_count++];
 		key->t = v[0];
+		key->tracked = true; // a glove + tracker file has no untracked samples
 		key->wrist = hs_v3(v[1], v[2], v[3]);
 		key->rot = hs_quat_normalize(hs_q(v[4], v[5], v[6], v[7]));
 		for (int i = 0; i < HS_GLOVE_SENSORS; ++i)
@@ -198,6 +211,7 @@ static bool read_key(hs_scenario_parser *p, const yaml_node_t *node, const hs_ha
 		return hs_yaml_fail(&p->y, node, "a hand key places the hand once: give one of 'wrist', 'grip' or a finger part");
 	if (!previous && placed == 0)
 		return hs_yaml_fail(&p->y, node, "the first hand key needs 'wrist', 'grip' or a finger part (e.g. 'index_tip')");
+	key->tracked = true; // a keyframe is always tracked
 	// what a key leaves out it keeps from the key before (the first: identity, open hand)
 	key->rot = previous ? previous->rot : hs_quat_identity();
 	key->wrist = previous ? previous->wrist : hs_v3(0, 0, 0);
@@ -294,30 +308,6 @@ static bool read_keys(hs_scenario_parser *p, const yaml_node_t *keys, const hs_h
 	return true;
 }
 
-// The format of a recorded file: its first line's start (a glove file when it names none).
-static hs_joint_format format_of(const char *path) {
-	char first[32] = "";
-	FILE *f = fopen(path, "r");
-	if (f) {
-		if (!fgets(first, sizeof first, f))
-			first[0] = '\0';
-		fclose(f);
-	}
-	return hs_joint_format_of(first);
-}
-
-static bool read_hand_record(hs_scenario_parser *p, const yaml_node_t *node, const hs_hand_def *def,
-                             hs_hand_script *script) {
-	char *full = hs_yaml_sibling_file(&p->y, node, "record");
-	if (!full)
-		return false;
-	hs_joint_format format = format_of(full);
-	bool ok = format == HS_JOINTS_NONE ? hs_record_load(full, script, p->y.err)
-	                                   : hs_joint_record_load(full, format, def, script, p->y.err);
-	free(full);
-	return ok;
-}
-
 static bool read_hand(hs_scenario_parser *p, const yaml_node_t *node, int index) {
 	hs_hands *hands = &p->s->hands;
 	if (node->type != YAML_MAPPING_NODE)
@@ -332,8 +322,8 @@ static bool read_hand(hs_scenario_parser *p, const yaml_node_t *node, int index)
 		return false;
 	hs_hand_script *script = &hands->scripts[index];
 	if (f.value[H_KEYS] ? !read_keys(p, f.value[H_KEYS], &def, script)
-	                    : !read_hand_record(p, f.value[H_RECORD], &def, script))
-		return false;
+	                    : !hs_read_hand_record(p, f.value[H_RECORD], index, f.value[H_SIDE] != NULL, &def))
+		return false; // a joint recording may have fitted the definition to its hand: it is added as fitted
 	hs_status status = HS_OK;
 	hands->defs[index] = def;
 	hands->ids[index] = hs_world_add_hand(p->s->world, &def, &status);
@@ -361,7 +351,8 @@ bool hs_read_hands(hs_scenario_parser *p, const yaml_node_t *node) {
 	hands->ids = calloc((size_t)n, sizeof *hands->ids);
 	hands->scripts = calloc((size_t)n, sizeof *hands->scripts);
 	hands->defs = calloc((size_t)n, sizeof *hands->defs);
-	if (!hands->names || !hands->ids || !hands->scripts || !hands->defs)
+	hands->fits = calloc((size_t)n, sizeof *hands->fits);
+	if (!hands->names || !hands->ids || !hands->scripts || !hands->defs || !hands->fits)
 		return hs_yaml_fail(&p->y, node, "out of memory");
 	hands->count = (int)n;
 	for (int h = 0; h < hands->count; ++h)
@@ -376,13 +367,17 @@ void hs_hands_drive(hs_world *world, const hs_hands *hands, double t, hs_noise *
 		hs_vec3 wrist;
 		hs_quat rot;
 		uint8_t sensors[HS_GLOVE_SENSORS];
-		if (hands->thrower.active && hands->thrower.hand == h)
-			hs_thrower_sample(&hands->thrower, &hands->scripts[h], t, &wrist, &rot, sensors);
-		else
-			hs_hand_script_sample(&hands->scripts[h], t, &wrist, &rot, sensors);
+		bool tracked = hands->thrower.active && hands->thrower.hand == h
+		                   ? hs_thrower_sample(&hands->thrower, &hands->scripts[h], t, &wrist, &rot, sensors)
+		                   : hs_hand_script_sample(&hands->scripts[h], t, &wrist, &rot, sensors);
 		if (noise) // what a real glove and tracker report (hands in order: one generator, one sequence)
 			hs_noise_hand(noise, options, &wrist, &rot, sensors);
-		hs_world_set_hand(world, hands->ids[h], wrist, rot, sensors);
+		hs_world_set_hand(world, hands->ids[h], wrist, rot, sensors); // untracked: the pose held
+#ifdef HS_HAVE_HAND_TRACKED
+		hs_world_set_hand_tracked(world, hands->ids[h], tracked);
+#else
+		(void)tracked;
+#endif
 	}
 }
 
@@ -390,7 +385,9 @@ void hs_hands_free(hs_hands *hands) {
 	for (int h = 0; h < hands->count; ++h) {
 		free(hands->names ? hands->names[h] : NULL);
 		free(hands->scripts ? hands->scripts[h].keys : NULL);
+		free(hands->fits ? hands->fits[h].record : NULL);
 	}
+	free(hands->fits);
 	free(hands->names);
 	free(hands->ids);
 	free(hands->scripts);

@@ -15,6 +15,7 @@ typedef struct hs_hand_key {
 	hs_vec3 wrist; // m
 	hs_quat rot;
 	double sensors[HS_GLOVE_SENSORS]; // sensor units, interpolated linearly, rounded when applied
+	bool tracked; // false: the tracker had lost the hand; pose and sensors are the last tracked ones
 } hs_hand_key;
 
 typedef struct hs_hand_script {
@@ -23,8 +24,11 @@ typedef struct hs_hand_script {
 } hs_hand_script;
 
 // The hand at time t: positions and sensors linear between keys, orientation by slerp; before
-// the first key and after the last the nearest key holds.
-void hs_hand_script_sample(const hs_hand_script *script, double t, hs_vec3 *wrist, hs_quat *rot,
+// the first key and after the last the nearest key holds. Returns whether the hand is tracked at t:
+// not when the key at or before t is untracked, or t lies between a tracked key and an untracked
+// one; the hand then holds that key's pose and sensors (no interpolation toward the next tracked
+// key). Keyframes and glove files are always tracked.
+bool hs_hand_script_sample(const hs_hand_script *script, double t, hs_vec3 *wrist, hs_quat *rot,
                            uint8_t sensors[HS_GLOVE_SENSORS]);
 // Frees a script's keys and leaves it empty (a load that failed half way).
 void hs_hand_script_clear(hs_hand_script *script);
@@ -42,9 +46,18 @@ typedef struct hs_thrower {
 	hs_vec3 pivot;                     // m: the script's wrist at `from`
 	hs_quat turn;
 } hs_thrower;
-// The thrower's hand at time t (hs_hand_script_sample with the errors).
-void hs_thrower_sample(const hs_thrower *thrower, const hs_hand_script *script, double t, hs_vec3 *wrist,
+// The thrower's hand at time t (hs_hand_script_sample with the errors); whether it is tracked.
+bool hs_thrower_sample(const hs_thrower *thrower, const hs_hand_script *script, double t, hs_vec3 *wrist,
                        hs_quat *rot, uint8_t sensors[HS_GLOVE_SENSORS]);
+
+// What loading a hand's joint recording found (hs_scenario_hand_fit; scenarios/README.md,
+// "Recorded joint positions").
+typedef struct hs_hand_fit {
+	bool joints;   // the hand is driven by a joint recording
+	char *record;  // the file as the scenario names it
+	long samples;  // tracked samples
+	double rms_mm; // the fit's RMS distance over their recorded check points
+} hs_hand_fit;
 
 // The hands of a scenario and their scripts.
 typedef struct hs_hands {
@@ -53,11 +66,13 @@ typedef struct hs_hands {
 	hs_hand_id *ids;
 	hs_hand_script *scripts;
 	hs_hand_def *defs; // as added to the world
+	hs_hand_fit *fits;
 	hs_thrower thrower; // a campaign's throw error (inactive: none)
 } hs_hands;
 
 // Gives every hand its pose and glove at time t (the end of the coming frame), with the input
-// noise of `options` when `noise` is not NULL.
+// noise of `options` when `noise` is not NULL, and whether it is tracked (an untracked hand gets
+// the pose its script holds).
 void hs_hands_drive(hs_world *world, const hs_hands *hands, double t, hs_noise *noise,
                     const hs_noise_options *options);
 void hs_hands_free(hs_hands *hands);

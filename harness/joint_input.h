@@ -1,24 +1,55 @@
 // joint_input.h — hands driven by recorded joint positions (MediaPipe Hands, OpenXR hand
-// tracking), turned into the glove model's input at load (joint_input.c).
+// tracking), turned into the glove model's input at load (joint_input.c; the file format:
+// scenarios/README.md, "Recorded joint positions").
 #ifndef HS_HARNESS_JOINT_INPUT_H
 #define HS_HARNESS_JOINT_INPUT_H
 
 #include "hand_script.h"
+#include "joint_frame.h"
 
 typedef enum hs_joint_format { HS_JOINTS_NONE = 0, HS_JOINTS_MEDIAPIPE, HS_JOINTS_OPENXR } hs_joint_format;
 
-// The format a recorded file's header line names (HS_JOINTS_NONE: a glove + tracker file).
-hs_joint_format hs_joint_format_of(const char *first_line);
-// Reads a joint recording into keys (wrist pose and sensor values per sample) for a hand of
-// definition `def`. Errors are "PATH:LINE: what is wrong".
-bool hs_joint_record_load(const char *path, hs_joint_format format, const hs_hand_def *def, hs_hand_script *script,
-                          hs_error *err);
+// A setting a scenario key or a file's directive says: its value (-1: not said) and its line.
+typedef struct hs_joint_said {
+	int value;
+	unsigned long line;
+} hs_joint_said;
 
-// Writes a recording's header and one sample: the hand of definition `def` at the wrist pose with
-// the glove reading `sensors` (the glove model's kinematics), as MediaPipe landmarks or OpenXR
-// joints (joint orientations: −Z along the bone, +Y toward the back of the hand).
-void hs_joint_write_header(FILE *out, hs_joint_format format);
-void hs_joint_write_row(FILE *out, hs_joint_format format, double t, const hs_hand_def *def, hs_vec3 wrist,
-                        hs_quat rot, const uint8_t sensors[HS_GLOVE_SENSORS]);
+// What the scenario says about a hand's joint recording: its `record:` mapping and the hand.
+typedef struct hs_joint_options {
+	const char *scenario;      // the scenario file, for messages
+	const char *hand;          // the hand's name, for messages
+	bool side_given;           // the hand's `side` is written (else it is right by default)
+	hs_joint_said frame;       // hs_joint_frame
+	hs_joint_said units;       // hs_joint_units
+	bool placed;               // `origin` or `rpy_deg` given
+	hs_vec3 origin;            // m
+	hs_quat rot;
+	double min_confidence;     // a sample of lower confidence is untracked (default 0.5)
+	bool fit_hand;             // the hand's size from the recording (default true)
+} hs_joint_options;
+
+// The options of a bare `record: FILE`.
+hs_joint_options hs_joint_options_default(void);
+
+// What a load found, for the scenario's report and hs_scenario_hand_fit.
+typedef struct hs_joint_report {
+	long samples;              // tracked samples
+	double rms_mm;             // the fit's RMS distance over their recorded check points
+	bool frame_assumed;        // neither the file nor the scenario said the frame: z_up
+	bool units_assumed;        // nor the units: m
+	unsigned long header_line; // the header's line in the file
+} hs_joint_report;
+
+// True when a recorded file is a joint recording: the first line that is not blank or a comment
+// is a directive (@...) or a MediaPipe or OpenXR header. False for anything else (a glove file, or
+// a file that cannot be read: the glove reader says why).
+bool hs_joint_file_is_joints(const char *path);
+
+// Reads a joint recording into keys (wrist pose and sensor values per sample, untracked samples
+// holding the last tracked pose) for a hand of definition `def`, which takes the recording's size
+// when options->fit_hand. Errors are "PATH:LINE: what is wrong".
+bool hs_joint_record_load(const char *path, const hs_joint_options *options, hs_hand_def *def,
+                          hs_hand_script *script, hs_joint_report *report, hs_error *err);
 
 #endif

@@ -94,8 +94,7 @@ static bool append_row(hs_record_rows *rows, long *capacity, int columns, const 
 	return true;
 }
 
-// The message for a reader that stopped before the end of the file.
-static bool reader_failure(hs_line_status status, const char *path, long line, const char *what, hs_error *err) {
+bool hs_record_reader_failure(hs_line_status status, const char *path, long line, const char *what, hs_error *err) {
 	switch (status) {
 	case HS_LINE_TOO_LONG:
 		return row_error(err, path, line, "line longer than %zu MiB (the limit for %s)", HS_MAX_LINE_BYTES >> 20, what);
@@ -129,6 +128,7 @@ bool hs_record_read_layout(const char *path, const char *what, const char *heade
 	size_t len;
 	double v[HS_RECORD_MAX_COLUMNS];
 	hs_line_status status = HS_LINE_END;
+	bool header_seen = false;
 	while (ok && (status = hs_line_next(&reader, &line, &len)) == HS_LINE_OK) {
 		long number = reader.number;
 		if (memchr(line, '\0', len)) {
@@ -137,13 +137,17 @@ bool hs_record_read_layout(const char *path, const char *what, const char *heade
 		}
 		while (len > 0 && line[len - 1] == '\r')
 			line[--len] = '\0';
-		if (number == 1) {
-			if (strcmp(line, header) != 0)
-				ok = row_error(err, path, 1, "the header must be %s", shown);
+		if (len == 0 || line[0] == '#') // blank lines and comments, before the header too
+			continue;
+		if (!header_seen) {
+			header_seen = true;
+			if (line[0] == '@')
+				ok = row_error(err, path, number, "'@' directives are for joint recordings; the header must be %s",
+				               shown);
+			else if (strcmp(line, header) != 0)
+				ok = row_error(err, path, number, "the header must be %s", shown);
 			continue;
 		}
-		if (len == 0 || line[0] == '#')
-			continue;
 		if (rows->count >= max_rows)
 			ok = row_error(err, path, number, "more than %ld samples", max_rows);
 		else if (read_row(line, path, number, shown, columns, v, err) &&
@@ -153,9 +157,12 @@ bool hs_record_read_layout(const char *path, const char *what, const char *heade
 			ok = false;
 	}
 	if (ok && status != HS_LINE_END)
-		ok = reader_failure(status, path, reader.number + 1, what, err);
+		ok = hs_record_reader_failure(status, path, reader.number + 1, what, err);
 	if (ok && reader.number == 0)
 		ok = row_error(err, path, 1, "empty %s: the header %s is missing", what, shown);
+	else if (ok && !header_seen)
+		ok = row_error(err, path, reader.number, "%s has only comments and blank lines: the header %s is missing", what,
+		               shown);
 	else if (ok && rows->count == 0)
 		ok = row_error(err, path, reader.number, "%s has a header but no samples", what);
 	hs_line_reader_close(&reader);

@@ -5,10 +5,12 @@
 #include <stdbool.h>
 
 #include "error.h"
+#include "file_read.h"
 
 // A header, then rows of `columns` numbers with t strictly increasing (column 1), x y z within
 // ±1000 m (2-4) and qw qx qy qz a unit quaternion (5-8, HS_QUAT_NORM_TOLERANCE); blank and '#'
-// lines are skipped. The caller checks the rest. Files and lines are bounded (file_read.h).
+// lines are skipped, before the header too. The caller checks the rest. Files and lines are
+// bounded (file_read.h).
 typedef struct hs_record_rows {
 	long count;
 	double *values; // count × columns
@@ -26,5 +28,8 @@ bool hs_record_read(const char *path, const char *what, const char *header, cons
 bool hs_record_read_layout(const char *path, const char *what, const char *header, const char *shown, int columns,
                            const char *layout, long max_rows, hs_record_rows *rows, hs_error *err);
 void hs_record_rows_free(hs_record_rows *rows);
+// The message for a line reader that stopped before the end of the file (`status`: not OK or END)
+// at `line`; `what` names the file ("recorded input"). Always false.
+bool hs_record_reader_failure(hs_line_status status, const char *path, long line, const char *what, hs_error *err);
 
 #endif

@@ -5,6 +5,8 @@
 // Errors are "PATH:LINE: what is wrong", one message, the first problem found; a failed load
 // frees everything it allocated. The schema is documented for users in scenarios/README.md.
 #include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -285,7 +287,45 @@ void hs_scenario_destroy(hs_scenario *s) {
 	free(s->stylus.keys);
 	hs_expectations_free(&s->expect);
 	hs_noise_destroy(s->noise);
+	free(s->warnings);
 	free(s);
+}
+
+bool hs_scenario_warn(hs_scenario *s, const char *fmt, ...) {
+	char line[640];
+	va_list ap;
+	va_start(ap, fmt);
+	vsnprintf(line, sizeof line, fmt, ap);
+	va_end(ap);
+	size_t have = s->warnings ? strlen(s->warnings) : 0, add = strlen(line);
+	char *grown = realloc(s->warnings, have + add + 2);
+	if (!grown)
+		return false;
+	memcpy(grown + have, line, add);
+	memcpy(grown + have + add, "\n", 2);
+	s->warnings = grown;
+	return true;
+}
+
+const char *hs_scenario_warnings(const hs_scenario *s) { return s && s->warnings ? s->warnings : ""; }
+
+int hs_scenario_hand_count(const hs_scenario *s) { return s ? s->hands.count : 0; }
+
+const char *hs_scenario_hand_name(const hs_scenario *s, int hand) {
+	return s && hand >= 0 && hand < s->hands.count ? s->hands.names[hand] : NULL;
+}
+
+bool hs_scenario_hand_fit(const hs_scenario *s, int hand, double *rms_mm, long *samples, const char **record) {
+	if (!s || hand < 0 || hand >= s->hands.count || !s->hands.fits[hand].joints)
+		return false;
+	const hs_hand_fit *fit = &s->hands.fits[hand];
+	if (rms_mm)
+		*rms_mm = fit->rms_mm;
+	if (samples)
+		*samples = fit->samples;
+	if (record)
+		*record = fit->record;
+	return true;
 }
 
 const char *hs_scenario_name(const hs_scenario *s) { return s ? s->name : NULL; }

@@ -5,6 +5,7 @@
 
 #include <stdint.h>
 
+#include "error.h"
 #include "expect.h"
 #include "hand_script.h"
 #include "hs_harness.h"
@@ -51,6 +52,7 @@ struct hs_scenario {
 	long failed_frame;
 	uint64_t source_hash;     // FNV-1a of the scenario file's bytes: a state file names the file it continues
 	long fault_offset;        // numeric faults before a resume that the world's counters do not hold
+	char *warnings;           // what the load warns of, one line each with its newline (NULL: nothing)
 };
 
 // A scenario file read and parsed once, to be loaded many times (a campaign's trials): each load
@@ -62,6 +64,9 @@ typedef struct hs_scenario_source {
 bool hs_scenario_source_open(hs_scenario_source *src, const char *path, hs_error *err);
 void hs_scenario_source_close(hs_scenario_source *src);
 hs_scenario *hs_scenario_load_source(const hs_scenario_source *src, const hs_scenario_options *options, hs_error *err);
+
+// Appends a warning line (hs_scenario_warnings); false when out of memory.
+HS_PRINTF(2, 3) bool hs_scenario_warn(hs_scenario *s, const char *fmt, ...);
 
 // Numeric faults the world caught in this run (a resumed run counts those before the save too).
 long hs_scenario_faults(const hs_scenario *s);

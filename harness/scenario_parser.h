@@ -45,6 +45,9 @@ int hs_find_object(const hs_scenario_parser *p, const yaml_node_t *node);
 // hand_script.c: the world's room for hands (before it is created), then the hands
 bool hs_count_hands(hs_scenario_parser *p, const yaml_node_t *node, hs_world_def *def);
 bool hs_read_hands(hs_scenario_parser *p, const yaml_node_t *node);
+// hand_record.c: hand h's `record:` (a file name or a mapping) into its script; a joint recording
+// may fit `def` to the recorded hand. `side_given`: the hand's side is written.
+bool hs_read_hand_record(hs_scenario_parser *p, const yaml_node_t *node, int h, bool side_given, hs_hand_def *def);
 // stylus_script.c: switches the world to the spring model (with model.spring) and reads its script
 bool hs_read_stylus(hs_scenario_parser *p, const yaml_node_t *node);
 // expect.c: the clauses, then everything the run records (so stepping never allocates)

@@ -10,12 +10,12 @@
 
 static const double MAX_TIMING = 1.0; // s
 
-void hs_thrower_sample(const hs_thrower *thrower, const hs_hand_script *script, double t, hs_vec3 *wrist,
+bool hs_thrower_sample(const hs_thrower *thrower, const hs_hand_script *script, double t, hs_vec3 *wrist,
                        hs_quat *rot, uint8_t sensors[HS_GLOVE_SENSORS]) {
 	t -= thrower->delay;
-	hs_hand_script_sample(script, t, wrist, rot, sensors);
+	bool tracked = hs_hand_script_sample(script, t, wrist, rot, sensors);
 	if (!(t > thrower->from))
-		return;
+		return tracked;
 	hs_vec3 arm = hs_scale(hs_sub(*wrist, thrower->pivot), thrower->scale);
 	*wrist = hs_add(thrower->pivot, hs_quat_rotate(thrower->turn, arm));
 	if (thrower->timing != 0.0) { // the glove as the script has it `timing` earlier
@@ -23,6 +23,7 @@ void hs_thrower_sample(const hs_thrower *thrower, const hs_hand_script *script, 
 		hs_quat r;
 		hs_hand_script_sample(script, t - thrower->timing, &w, &r, sensors);
 	}
+	return tracked;
 }
 
 // The turn: elevation about the horizontal line across the swing (up positive), then azimuth

@@ -344,6 +344,14 @@ static int print_summary(FILE *report, hs_scenario *s, const run_options *o) {
 	fprintf(report, "frames:   %ld (dt %.9g s, %.9g s)\n", hs_world_frame(world), hs_scenario_dt(s),
 	        (double)hs_world_frame(world) * hs_scenario_dt(s));
 	fprintf(report, "objects:  %d\n", hs_scenario_object_count(s));
+	for (int h = 0; h < hs_scenario_hand_count(s); ++h) { // hands driven by joint recordings
+		double rms;
+		long samples;
+		const char *record;
+		if (hs_scenario_hand_fit(s, h, &rms, &samples, &record))
+			fprintf(report, "hand %s: fitted from %ld samples of %s: RMS %.1f mm\n", hs_scenario_hand_name(s, h),
+			        samples, record, rms);
+	}
 	int failed = hs_scenario_check(s, report);
 	int total = hs_scenario_expectation_count(s);
 	fprintf(report, "expectations: %d/%d passed\n", total - failed, total);
@@ -369,6 +377,7 @@ static int cmd_run(int argc, char **argv) {
 		fprintf(stderr, "%s\n", err.message);
 		return EXIT_BAD_INPUT;
 	}
+	fputs(hs_scenario_warnings(s), stderr);
 	char why[160];
 	if (!hs_outsel_bind(&o.sel, s, false, why, sizeof why)) {
 		fprintf(stderr, "handspring run: %s\n", why);
@@ -579,8 +588,9 @@ static int cmd_all(int argc, char **argv) {
 	for (int i = 0; i < catalog.count; ++i) {
 		const char *name = catalog.names[i];
 		hs_scenario *s = hs_scenario_load(catalog.paths[i], &err);
+		fputs(s ? hs_scenario_warnings(s) : err.message, stderr);
 		if (!s)
-			fprintf(stderr, "%s\n", err.message);
+			fputc('\n', stderr);
 		char why[160];
 		if (s && !hs_outsel_bind(&sel, s, true, why, sizeof why)) {
 			fprintf(stderr, "handspring all: %s: %s\n", name, why);
@@ -644,7 +654,8 @@ static const char *const usage_joints =
     "Writes hand N (1: the first) of the scenario FILE as a recording of joint positions, one sample\n"
     "per frame: MediaPipe Hands' 21 landmarks or OpenXR's 26 hand joints (with orientations), the\n"
     "glove model's check points for the scenario's own input, --rate samples per second (default:\n"
-    "the scenario's frame rate). A hand's 'record:' reads them back.\n"
+    "the scenario's frame rate), in the library's frame (@frame z_up, @units m, @hand; a tracked\n"
+    "column when the hand has untracked samples). A hand's 'record:' reads them back.\n"
     "Exit status: 0 written, 2 bad input.\n";
 
 // `handspring joints`: a scenario's hand as a joint recording (issue 13 item 4; the catalog's).
@@ -681,6 +692,7 @@ static int cmd_joints(int argc, char **argv) {
 		fprintf(stderr, "%s\n", err.message);
 		return EXIT_BAD_INPUT;
 	}
+	fputs(hs_scenario_warnings(s), stderr);
 	output o;
 	bool ok = output_open(&o, out);
 	if (!ok)

@@ -157,6 +157,20 @@ hs_status hs_scenario_resume(hs_scenario *scenario, FILE *in, hs_error *err);
 /// s: the scenario's frame time.
 double hs_scenario_dt(const hs_scenario *scenario);
 int hs_scenario_object_count(const hs_scenario *scenario);
+/// What the load warns of, one line each ending with a newline ("" when nothing): a joint
+/// recording that says no frame (read as z_up; scenarios/README.md, "Recorded joint positions").
+/// The tool prints them on stderr.
+const char *hs_scenario_warnings(const hs_scenario *scenario);
+/// The hands, in the order of the file, and the i-th's name (NULL out of range).
+int hs_scenario_hand_count(const hs_scenario *scenario);
+const char *hs_scenario_hand_name(const hs_scenario *scenario, int hand);
+/// How hand `hand` (0: the first) was fitted to its joint recording (scenarios/README.md,
+/// "Recorded joint positions"): the RMS distance in mm between the recorded check points of every
+/// tracked sample and the fitted hand's (the hand as built, its sensors and wrist pose for that
+/// sample), the tracked samples, and the recording as the scenario names it (owned by the
+/// scenario). Any output may be NULL. False, outputs untouched, for a hand driven by keys or a
+/// glove file, or an index out of range.
+bool hs_scenario_hand_fit(const hs_scenario *scenario, int hand, double *rms_mm, long *samples, const char **record);
 
 /// The scenario files below a folder: every *.yaml, recursively (hidden entries skipped), sorted
 /// by name (strcmp). A name is the path relative to the folder without ".yaml", e.g. "hand/flick";
@@ -203,8 +217,9 @@ void hs_hand_trace_write_frame(FILE *out, hs_scenario *scenario);
 /// "mediapipe" (21 landmarks: t,x0,y0,z0,...,z20) or "openxr" (26 joints with orientations:
 /// t,px0,py0,pz0,qw0,qx0,qy0,qz0,...,qz25), one sample per frame (t = frame × dt, frame 0
 /// included) of the scenario's input (its keys or recording, no noise), through the glove model's
-/// kinematics, `rate` samples per second (t = k / rate). A hand's `record:` reads such files back
-/// (scenarios/README.md). False with `err`.
+/// kinematics, `rate` samples per second (t = k / rate). The file says its frame, units and hand
+/// (@frame z_up, @units m, @hand) and has a `tracked` column when the hand has untracked samples.
+/// A hand's `record:` reads such files back (scenarios/README.md). False with `err`.
 bool hs_scenario_export_joints(hs_scenario *scenario, int hand, const char *format, double rate, FILE *out,
                                hs_error *err);
 
