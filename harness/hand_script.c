@@ -370,14 +370,12 @@ void hs_hands_drive(hs_world *world, const hs_hands *hands, double t, hs_noise *
 		bool tracked = hands->thrower.active && hands->thrower.hand == h
 		                   ? hs_thrower_sample(&hands->thrower, &hands->scripts[h], t, &wrist, &rot, sensors)
 		                   : hs_hand_script_sample(&hands->scripts[h], t, &wrist, &rot, sensors);
-		if (noise) // what a real glove and tracker report (hands in order: one generator, one sequence)
+		// what a real glove and tracker report (hands in order: one generator, one sequence); a hand
+		// the tracker does not see is held where it was last seen, without new noise
+		if (noise && tracked)
 			hs_noise_hand(noise, options, &wrist, &rot, sensors);
-		hs_world_set_hand(world, hands->ids[h], wrist, rot, sensors); // untracked: the pose held
-#ifdef HS_HAVE_HAND_TRACKED
+		hs_world_set_hand(world, hands->ids[h], wrist, rot, sensors);
 		hs_world_set_hand_tracked(world, hands->ids[h], tracked);
-#else
-		(void)tracked;
-#endif
 	}
 }
 
