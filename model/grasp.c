@@ -323,6 +323,8 @@ hs_contact_state hs_grasp_detect(hs_world *world, int i, int first, int *n, bool
 		// where it was, a hand that lets go while moving fast would sweep through it.
 		body->released_by = body->grasped_by;
 		body->grip_spread = whole_hand_opening(&world->hands[body->grasped_by - 1]);
+		// a hand that let go must close anew to grasp again: its pairs' peaks start from here
+		hs_grasp_reset_pairs(&world->hands[body->grasped_by - 1]);
 		*n = hs_contact_detect(world, i, &before);
 		*n = set_aside_released(world, i, first, *n);
 		hs_contact_state state =

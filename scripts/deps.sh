@@ -24,6 +24,8 @@ has_file /usr/include/yaml.h || need="$need libyaml-dev"
 has_file /usr/include/png.h || need="$need libpng-dev"
 has_cmd gnuplot || need="$need gnuplot-nox"
 has_cmd clang || need="$need clang"
+# the importers of real hand recordings (scripts/importers, checked by make check) are Python 3
+has_cmd python3 || need="$need python3"
 has_cmd g++ || need="$need g++"
 # GNU's, not moreutils' program of the same name
 { has_cmd parallel && parallel --version 2>/dev/null | grep -q 'GNU parallel'; } || need="$need parallel"

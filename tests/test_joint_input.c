@@ -638,8 +638,8 @@ static char *doc_block(const char *path, const char *marker, const char *kind) {
 // until the sample at 0.4 s; placed where the catalog's cube is.
 static void test_readme_example(void **state) {
 	(void)state;
-	char *csv = doc_block("scenarios/README.md", "**A worked example.**", "csv");
-	char *yaml = doc_block("scenarios/README.md", "**A worked example.**", "yaml");
+	char *csv = doc_block("scenarios/README.md", "**A worked example**", "csv");
+	char *yaml = doc_block("scenarios/README.md", "**A worked example**", "yaml");
 	write_file("quest_take3.csv", csv);
 	const char *record = strstr(yaml, "record: ");
 	assert_non_null(record);
