@@ -222,10 +222,15 @@ static bool grasp_continues(hs_world *world, int i, const hs_pose *before, int f
 	return holds;
 }
 
-// True when a finger part of hand index + 1 `r` lies within grasp_release_mm of object i (the
+// How far the hand that let an object go must be from it before its parts act on it again (m): a
+// hand that follows through after a throw stays within millimetres of what it threw, and cleared
+// by grasp_release_mm (5 mm) one frame it shoved it the next.
+#define HS_RELEASE_CLEAR 0.02
+
+// True when a finger part of hand index + 1 `r` lies within HS_RELEASE_CLEAR of object i (the
 // contacts found for this are not kept; they are appended from `at`).
 static bool hand_within_margin(hs_world *world, int i, uint32_t r, int at) {
-	int n = hs_contact_detect_grown(world, i, NULL, world->def.grasp_release_mm * 1e-3);
+	int n = hs_contact_detect_grown(world, i, NULL, HS_RELEASE_CLEAR);
 	bool near = false;
 	for (int k = 0; k < n && !near; ++k)
 		near = world->contacts[at + k].hand.index1 == r;
@@ -267,10 +272,13 @@ static int set_aside_released(hs_world *world, int i, int first, int n) {
 		else if (!(((unsigned)body->grip_fingers >> finger_of(cs[k].part)) & 1u))
 			other_finger = true;
 	}
-	// another finger counts only on a hand that is closing (with grasp_close_mm): an opening hand's
-	// other fingers brushing the object it just let go shoved it
-	bool closes = (other_finger && (!(world->def.grasp_close_mm > 0.0) || hand_closing(world, (int)r - 1))) ||
-	              body->grip_spread - spread > world->def.grasp_open_mm * 1e-3;
+	// another finger counts only once the hand has stopped opening (with grasp_close_mm: its five
+	// fingers closed by HS_PAIR_STILL from the most open since the release): an opening hand's other
+	// fingers brushing the object it just let go shoved it, and while a hand opens, some pairs of its
+	// tips come nearer as others part, so no pair's closing tells it
+	double closed = body->grip_spread - spread;
+	bool closes = (other_finger && (!(world->def.grasp_close_mm > 0.0) || closed >= HS_PAIR_STILL)) ||
+	              closed > world->def.grasp_open_mm * 1e-3;
 	if (kept == n && !closes && hand_within_margin(world, i, r, first + n))
 		return n; // the object falls clear of a finger it rested on: still that hand's release
 	if (kept == n || closes) { // the rule lapses

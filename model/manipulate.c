@@ -1,5 +1,6 @@
 // manipulate.c — how the hand moves objects (1999 paper §3.2, Fig. 2-3) and how objects
 // interfering with a moved object follow it (§4.3, paper mode).
+#include <math.h>
 #include <string.h>
 
 #include "broadphase.h"
@@ -390,6 +391,35 @@ static bool push_drives_nothing(hs_contact_state state, const hs_contact *cs, in
 	return true;
 }
 
+// An object's own motion beats a finger's push by this factor (outruns); it must be turning over
+// (rolling or tipping: about an axis within 30 deg of horizontal) by at least 2 deg a frame
+// (HS_OUTRUN_SIN_HALF = sin(1 deg), the sine of half that turn).
+#define HS_OUTRUN 1.25
+#define HS_OUTRUN_SIN_HALF 0.0174524064372835
+
+// True when an object that rolls or tips over outruns the one part pushing it (docs/model.md §4
+// "Pushes that end"): eq. 3 would carry the contact point C further along the part's drive CB than
+// the part drives it (by HS_OUTRUN). A finger pushes and never pulls, so it cannot slow an object
+// that turns away from it: in a flick's last frame the stroke ends and the finger lifts; that
+// frame's smaller push put its motion in place of the pyramid's own, and whether the pyramid
+// tipped over depended on where the frames fell on the stroke. An object pushed along the floor
+// (turning about the vertical at most) keeps no motion of its own (§4.1: no sliding): a finger
+// pushing it drives it every frame, however its speed varies under noise.
+static bool outruns(const hs_body *body, const hs_contact *c) {
+	hs_quat spin = hs_quat_normalize(hs_quat_mul(body->rot, hs_quat_conj(body->rot_prev)));
+	hs_vec3 axis = hs_v3(spin.x, spin.y, spin.z);
+	double sin_half = hs_length(axis); // sin(angle / 2), for q and -q alike
+	if (!(sin_half >= HS_OUTRUN_SIN_HALF) || fabs(axis.z) > 0.5 * sin_half)
+		return false; // not turning over
+	hs_vec3 drive = hs_sub(c->finger, c->point);
+	double len = hs_length(drive);
+	if (!(len > 0.0))
+		return false;
+	hs_vec3 arm = hs_sub(c->point, body->pos);
+	hs_vec3 moved = hs_add(hs_sub(body->pos, body->prev), hs_sub(hs_quat_rotate(spin, arm), arm));
+	return hs_dot(moved, drive) >= HS_OUTRUN * len * len;
+}
+
 // Which finger parts of each hand touch an object at the end of the frame: next frame a part found
 // inside an object it did not reach then is in contact only if it touches now (contact.c). A check
 // point that touched and has come off by less than grasp_release_mm still touches (near_points).
@@ -428,6 +458,10 @@ void hs_manipulate(hs_world *world) {
 		bool continues = false;
 		bool at_rest = body->prev.x == old_pos.x && body->prev.y == old_pos.y && body->prev.z == old_pos.z;
 		hs_contact_state state = hs_grasp_detect(world, i, first, &n, &continues);
+		if (state == HS_CONTACT_PUSH_ONE && !at_rest && !body->grasped_by && outruns(body, &world->contacts[first])) {
+			state = HS_CONTACT_NONE; // it turns on by its own motion (eq. 3), the finger left behind
+			world->contact_count = first;
+		}
 		bool was_held = body->held != 0;
 		hs_contact_state last = (hs_contact_state)body->contact;
 		if (state != last) // changed, even if it sleeps on (an object moved is woken, hs_wake)

@@ -8,7 +8,9 @@
 // nothing (hs_contact_hand_near) until it is seen again. The first frame it is seen again it is
 // placed anew, as at its first pose: its path through the gap is unknown, so the jump sweeps no
 // object and gives no release velocity; a grasp it still kept is let go in place when it came back
-// more than HS_TRACKING_JUMP from where it was lost (the object would jump with it).
+// further from where it was lost than a hand carrying something moves in that time
+// (HS_TRACKING_JUMP plus HS_TRACKING_SPEED times the time since it was last seen): else the object
+// would jump with it. At 12 frames/s a carry at 0.35 m/s moves 6 cm over one lost frame.
 #include <limits.h>
 
 #include "grasp.h"
@@ -16,6 +18,7 @@
 #include "tracking.h"
 
 #define HS_TRACKING_JUMP 0.05 // m
+#define HS_TRACKING_SPEED 0.5 // m/s
 
 void hs_tracking_update(hs_world *world) {
 	for (int h = 0; h < world->hand_count; ++h) {
@@ -30,7 +33,8 @@ void hs_tracking_update(hs_world *world) {
 		if (hand->lost_frames == 0)
 			continue;
 		bool kept = hand->lost_frames <= world->hold_frames;
-		if (kept && hs_length(hs_sub(hand->wrist_pos, hand->prev_wrist_pos)) > HS_TRACKING_JUMP)
+		double reach = HS_TRACKING_JUMP + HS_TRACKING_SPEED * (hand->lost_frames + 1) * world->def.dt;
+		if (kept && hs_length(hs_sub(hand->wrist_pos, hand->prev_wrist_pos)) > reach)
 			hs_grasp_let_go_in_place(world, h);
 		hs_hand_keep_previous(hand);
 		hand->older_count = 0;

@@ -452,7 +452,8 @@ hs_status hs_world_set_hand(hs_world *world, hs_hand_id hand, hs_vec3 wrist_posi
 /// grasps for tracking_hold_s, then lets them go where they are (no velocity) and touches nothing
 /// until it is tracked again. The first tracked step after a loss moves nothing by the jump (the
 /// hand is placed anew, as at its first pose), and a grasp the hand still kept is let go in place
-/// when the hand came back more than 5 cm from where it was lost (docs/model.md §3 "Tracking loss").
+/// when the hand came back further than 5 cm plus 0.5 m/s times the time since it was last seen
+/// (docs/model.md §3 "Tracking loss").
 hs_status hs_world_set_hand_tracked(hs_world *world, hs_hand_id hand, bool tracked);
 /// The hand's check points after the last step.
 hs_status hs_world_hand_points(const hs_world *world, hs_hand_id hand, hs_vec3 points[HS_HAND_POINTS]);
