@@ -1124,20 +1124,28 @@ static void test_noise_draws(void **state) {
 	}
 	assert_true(lowest > 0 && highest > 0); // both ends are drawn
 	// the state: saved, drawn from, loaded: the same draws again
-	size_t n = hs_noise_state_size(noise);
-	assert_true(n > 0);
-	unsigned char *saved = malloc(n);
-	assert_non_null(saved);
-	assert_true(hs_noise_save(noise, saved, n));
+	uint64_t saved[HS_NOISE_WORDS], bad[HS_NOISE_WORDS];
+	assert_true(hs_noise_save(noise, saved));
 	hs_vec3 a = hs_v3(0, 0, 0), b = hs_v3(0, 0, 0);
 	hs_quat qa = hs_quat_identity(), qb = hs_quat_identity();
 	hs_noise_stylus(noise, &a, &qa);
-	assert_false(hs_noise_load(noise, saved, n - 1));
-	assert_true(hs_noise_load(noise, saved, n));
+	// refused, the generator untouched: a word beyond 32 bits, a position beyond the words, all zero
+	int field;
+	memcpy(bad, saved, sizeof bad);
+	bad[7] |= 1ull << 40;
+	assert_false(hs_noise_load(noise, bad));
+	assert_non_null(hs_noise_check(bad, &field));
+	assert_int_equal(field, 7);
+	memcpy(bad, saved, sizeof bad);
+	bad[HS_NOISE_WORDS - 1] = (uint64_t)-100000000;
+	assert_false(hs_noise_load(noise, bad));
+	memset(bad, 0, sizeof bad);
+	bad[0] = 0x7FFFFFFF; // only the top bit of the first word counts
+	assert_false(hs_noise_load(noise, bad));
+	assert_true(hs_noise_load(noise, saved));
 	hs_noise_stylus(noise, &b, &qb);
 	assert_memory_equal(&a, &b, sizeof a);
 	assert_memory_equal(&qa, &qb, sizeof qa);
-	free(saved);
 	hs_noise_destroy(noise);
 }
 
