@@ -176,8 +176,11 @@ static hs_status read_header(hs_state_io *io, const hs_scenario *s, saved *v, hs
 	int64_t frames = hs_get_i64(io);
 	if (!io->ok)
 		return state_error(err, HS_ERR_STATE_MISMATCH, "truncated header");
-	if (strcmp(name, s->name) != 0)
-		return state_error(err, HS_ERR_STATE_MISMATCH, "saved from scenario '%s', not '%s'", name, s->name);
+	if (strcmp(name, s->name) != 0) {
+		for (char *c = name; *c; ++c) // the message is one line of text, whatever the file holds
+			*c = *c >= ' ' && *c <= '~' ? *c : '?';
+		return state_error(err, HS_ERR_STATE_MISMATCH, "saved from scenario '%.100s', not '%s'", name, s->name);
+	}
 	if (hash != s->source_hash)
 		return state_error(err, HS_ERR_STATE_MISMATCH, "the scenario file '%s' changed since the state was saved",
 		                   s->name);
