@@ -1396,6 +1396,36 @@ static void test_resume_refusals(void **state) {
 	hs_scenario_destroy(s);
 }
 
+// Objects that overlap at load are refused, naming two of them (harness/overlap.c): 10,000 cubes at
+// one point answer at once; touching objects (a stack, a row side by side, a tilted cube on its
+// edge against another) and an overlap within the 1 mm tolerance load.
+static void test_overlap(void **state) {
+	(void)state;
+	const char *head = "description: objects at load\ndt: 1/60\nduration: 0.1\nobjects:\n";
+	char *text = NULL;
+	size_t size = 0;
+	FILE *f = open_memstream(&text, &size);
+	assert_non_null(f);
+	fputs(head, f);
+	for (int i = 0; i < 10000; ++i)
+		fprintf(f, "  - { name: c%d, shape: cube, size: 0.05, position: [0, 0, 0.025] }\n", i);
+	fclose(f);
+	load_error("crowd.yaml", text, "6: objects 'c0' (line 5) and 'c1' overlap: a point of one lies 25 mm inside the other "
+	                               "(objects may touch, not overlap by more than 1 mm)");
+	free(text);
+	char touching[2048];
+	snprintf(touching, sizeof touching,
+	         "%s  - { name: a, shape: cube, size: 0.05, position: [0, 0, 0.025] }\n"
+	         "  - { name: b, shape: cube, size: 0.05, position: [0, 0, 0.075] }\n"
+	         "  - { name: c, shape: cube, size: 0.05, position: [0.05, 0, 0.025] }\n"
+	         "  - { name: d, shape: cube, size: 0.05, position: [0.1, 0, 0.0255] }\n"
+	         "  - { name: e, shape: cube, size: 0.05, position: [0.1, 0, 0.0755], rpy_deg: [0, 0, 45] }\n"
+	         "  - { name: f, shape: box, size: [0.1, 0.02, 0.02], position: [0.3, 0, 0.01] }\n"
+	         "  - { name: g, shape: box, size: [0.02, 0.1, 0.02], position: [0.3, 0, 0.0295] }\n",
+	         head);
+	hs_scenario_destroy(load_text("touching.yaml", touching));
+}
+
 // still with `to`: the pose may change after the window
 static void test_still_window(void **state) {
 	(void)state;
@@ -1670,6 +1700,7 @@ int main(void) {
 	    cmocka_unit_test(test_dt_ranges_nest),
 	    cmocka_unit_test(test_save_and_resume),
 	    cmocka_unit_test(test_resume_refusals),
+	    cmocka_unit_test(test_overlap),
 	    cmocka_unit_test(test_upper_bounds),
 	    cmocka_unit_test(test_face_down),
 	    cmocka_unit_test(test_paper_carry_turns),
