@@ -271,6 +271,20 @@ static hs_status read_world(hs_state_io *io, const hs_scenario *s, saved *v, hs_
 	return io->ok ? HS_OK : refused(io, err, "the world's state");
 }
 
+// What the loaded world reports of each object must be finite: the world checks each number of
+// its block, not what they give together (a previous position of -4.5e306 m is finite, the
+// velocity read from it is not).
+static hs_status check_readings(const hs_scenario *s, hs_error *err) {
+	for (int i = 0; i < s->object_count; ++i) {
+		hs_object_state st;
+		if (hs_world_object_state(s->world, s->ids[i], &st) != HS_OK || !hs_vec3_is_finite(st.position) ||
+		    !hs_quat_is_finite(st.orientation) || !hs_vec3_is_finite(st.velocity))
+			return state_error(err, HS_ERR_STATE_MISMATCH, "the world's state gives object '%s' a non-finite position, "
+			                   "orientation or velocity", s->object_names[i]);
+	}
+	return HS_OK;
+}
+
 // The world's block loaded, then its frame and fault count held against the harness's; on any
 // refusal the world is put back as it was.
 static hs_status load_world(hs_scenario *s, const saved *v, hs_error *err) {
@@ -292,6 +306,8 @@ static hs_status load_world(hs_scenario *s, const saved *v, hs_error *err) {
 	else if (faults != v->faults)
 		status = state_error(err, HS_ERR_STATE_MISMATCH, "faults is %lld, the world's state counts %ld",
 		                     (long long)v->faults, faults);
+	else if ((status = check_readings(s, err)) != HS_OK)
+		;
 	else if (s->noise && !hs_noise_load(s->noise, v->noise))
 		status = state_error(err, HS_ERR_STATE_MISMATCH, "the noise generator refused its state");
 	if (status != HS_OK)
