@@ -236,6 +236,10 @@ hs_scenario *hs_scenario_load_source(const hs_scenario_source *src, const hs_sce
 	hs_scenario_parser p = {.y = src->y, .options = options};
 	p.y.err = err; // the document is only read: every load builds its own scenario from it
 	p.s = calloc(1, sizeof *p.s);
+	if (p.s) {
+		hs_file_list_add(&p.s->inputs, path);
+		p.y.files = &p.s->inputs;
+	}
 	bool ok = p.s ? read_scenario(&p, hs_yaml_root(&p.y)) : hs_set_error(err, path, 1, "out of memory");
 	if (ok) {
 		p.s->source_hash = src->hash;
@@ -279,7 +283,14 @@ void hs_scenario_destroy(hs_scenario *s) {
 	free(s->stylus.keys);
 	hs_expectations_free(&s->expect);
 	hs_noise_destroy(s->noise);
+	hs_file_list_free(&s->inputs);
 	free(s);
+}
+
+int hs_scenario_input_count(const hs_scenario *s) { return s ? s->inputs.count : 0; }
+
+const char *hs_scenario_input_path(const hs_scenario *s, int i) {
+	return s && i >= 0 && i < s->inputs.count ? s->inputs.paths[i] : NULL;
 }
 
 const char *hs_scenario_name(const hs_scenario *s) { return s ? s->name : NULL; }
