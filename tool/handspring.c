@@ -279,15 +279,12 @@ static bool check_state_out(const char *path) {
 static bool save_state(hs_scenario *s, const char *path) {
 	output o;
 	hs_error err;
-	bool ok = output_open(&o, path);
-	if (!ok)
+	bool opened = output_open(&o, path), saved = opened && hs_scenario_save(s, o.file, &err) == HS_OK;
+	bool ok = output_close(&o, saved) && saved; // a write error shows here, whatever the save said
+	if (!opened || o.error[0])
 		fprintf(stderr, "handspring: %s\n", o.error);
-	else if (!(ok = hs_scenario_save(s, o.file, &err) == HS_OK))
+	else if (!saved)
 		fprintf(stderr, "%s: %s\n", path, err.message);
-	if (!output_close(&o, ok) && ok) {
-		fprintf(stderr, "handspring: %s\n", o.error);
-		ok = false;
-	}
 	output_free(&o);
 	return ok;
 }
