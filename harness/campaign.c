@@ -351,7 +351,7 @@ static bool read_scenarios(hs_campaign *c, const hs_yaml *y, const yaml_node_t *
 // the thrower's hand and the target's object in it.
 static bool check_scenario(hs_campaign *c, const hs_yaml *y, const hs_fields *f, const yaml_node_t *where, int k) {
 	const char *path = c->scenario ? c->scenario : c->axes[0].model[k];
-	FILE *probe = fopen(path, "r");
+	FILE *probe = hs_open_input(path); // a FIFO without a writer must not hold the load up
 	if (!probe)
 		return hs_yaml_fail(y, where, "cannot read the scenario %s: %s", hs_yaml_show(where).text, strerror(errno));
 	fclose(probe);

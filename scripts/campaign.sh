@@ -115,7 +115,8 @@ if [ "$resume" = yes ] && [ -f "$out/jobs" ] && [ -f "$out/campaign.id" ]; then
 else
 	[ "$resume" = no ] || echo "campaign: no earlier run in $out to resume, starting afresh" >&2
 	rm -rf "$out/parts"
-	rm -f "$out/jobs" "$out/joblog" "$out/campaign.id" "$out/trials.csv" "$out/trials.csv.tmp" "$out/summary.csv"
+	rm -f "$out/jobs" "$out/joblog" "$out/campaign.id" "$out/trials.csv" "$out/trials.csv.tmp" "$out/summary.csv" \
+		"$out"/.trials.csv.??????
 	if [ -z "$chunk" ]; then
 		# job slots: --jobs per machine; without it the cores here, or the N of an N/login (a
 		# remote's own core count, which parallel finds out, is unknown here: taken as ours)
