@@ -422,6 +422,41 @@ static bool deliver(const char *dir, const char *ext, const char *to) {
 	return ok;
 }
 
+// The scenario's files are inputs: no picture may overwrite one (checked before the run).
+static bool outputs_allowed(const view_opts *o, const hs_scenario *s) {
+	const char *outs[3] = {o->gif, o->strip, o->html};
+	for (int i = 0; i < hs_scenario_input_count(s); ++i)
+		output_input(hs_scenario_input_path(s, i));
+	for (int k = 0; k < 3; ++k) {
+		char why[512];
+		if (outs[k] && !output_check(outs[k], why, sizeof why)) {
+			fprintf(stderr, "handspring: %s\n", why);
+			return false;
+		}
+	}
+	return true;
+}
+
+// gnuplot draws every picture into the temporary folder; each is then delivered to its path.
+static int draw_and_deliver(const view_opts *o, const view_run *v, const char *dir, hs_world *w, const char *name) {
+	view_opts drawn = *o;
+	char temp[3][96];
+	static const char *const ext[3] = {"gif", "png", "html"};
+	for (int k = 0; k < 3; ++k)
+		snprintf(temp[k], sizeof temp[k], "%s/out.%s", dir, ext[k]);
+	drawn.gif = o->gif ? temp[0] : NULL;
+	drawn.strip = o->strip ? temp[1] : NULL;
+	drawn.html = o->html ? temp[2] : NULL;
+	int status = draw(&drawn, v, dir, w, name);
+	const char *outs[3] = {o->gif, o->strip, o->html};
+	for (int k = 0; k < 3; ++k)
+		if (outs[k] && (status != 0 || !deliver(dir, ext[k], outs[k]))) {
+			remove(temp[k]);
+			status = 2;
+		}
+	return status;
+}
+
 static int view_usage(const char *fmt, const char *arg) {
 	fprintf(stderr, "handspring view: ");
 	fprintf(stderr, fmt, arg);
@@ -514,16 +549,9 @@ int hs_view_main(int argc, char **argv) {
 		fprintf(stderr, "%s\n", err.message);
 		return 2;
 	}
-	const char *outs[3] = {o.gif, o.strip, o.html};
-	for (int i = 0; i < hs_scenario_input_count(s); ++i)
-		output_input(hs_scenario_input_path(s, i));
-	for (int k = 0; k < 3; ++k) {
-		char why[512];
-		if (outs[k] && !output_check(outs[k], why, sizeof why)) { // before the run, not after it
-			fprintf(stderr, "handspring: %s\n", why);
-			hs_scenario_destroy(s);
-			return 2;
-		}
+	if (!outputs_allowed(&o, s)) {
+		hs_scenario_destroy(s);
+		return 2;
 	}
 	char dir[] = "/tmp/handspring-view-XXXXXX";
 	if (!mkdtemp(dir)) {
@@ -551,21 +579,7 @@ int hs_view_main(int argc, char **argv) {
 		if (wanted(&o, hs_world_frame(w), frames, dt))
 			record(&v, s);
 	fprintf(stderr, "handspring view: drawing %ld frames with gnuplot\n", v.records);
-	view_opts drawn = o; // gnuplot writes into the temporary folder; deliver copies each out
-	char gif[96], strip[96], html[96];
-	snprintf(gif, sizeof gif, "%s/out.gif", dir);
-	snprintf(strip, sizeof strip, "%s/out.png", dir);
-	snprintf(html, sizeof html, "%s/out.html", dir);
-	drawn.gif = o.gif ? gif : NULL;
-	drawn.strip = o.strip ? strip : NULL;
-	drawn.html = o.html ? html : NULL;
-	status = draw(&drawn, &v, dir, w, hs_scenario_name(s));
-	static const char *const ext[3] = {"gif", "png", "html"};
-	for (int k = 0; k < 3; ++k)
-		if (outs[k] && (status != 0 || !deliver(dir, ext[k], outs[k]))) {
-			remove(k == 0 ? gif : k == 1 ? strip : html);
-			status = 2;
-		}
+	status = draw_and_deliver(&o, &v, dir, w, hs_scenario_name(s));
 	for (long r = 0; r < v.records; ++r) {
 		char path[96];
 		snprintf(path, sizeof path, "%s/r%06ld.dat", dir, r);
