@@ -1,6 +1,7 @@
 // campaign_cmd.c — `handspring campaign FILE`: the whole campaign in this process (its trial CSV,
 // its summary), a slice of its trials as rows for a job of GNU parallel or a Slurm array
 // (scripts/campaign.sh), or the summary of rows merged from such jobs (docs/campaigns.md).
+#include <errno.h>
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
@@ -180,6 +181,9 @@ static int run_all(hs_campaign *c, const campaign_args *a, hs_error *err) {
 		return fprintf(stderr, "%s: cannot make a temporary file\n", a->file), EXIT_BAD_INPUT;
 	hs_campaign_write_header(c, rows);
 	int status = run_trials(c, 0, hs_campaign_trials(c), rows, a->progress, err) ? EXIT_PASS : EXIT_BAD_INPUT;
+	if (status == EXIT_PASS && (fflush(rows) != 0 || ferror(rows))) // the temporary folder's disk full
+		status = (fprintf(stderr, "handspring: cannot write the trial rows to a temporary file: %s\n",
+		                  strerror(errno ? errno : EIO)), EXIT_BAD_INPUT);
 	output o = {0};
 	if (status == EXIT_PASS && a->out) {
 		if (!output_open(&o, a->out))
