@@ -1,7 +1,8 @@
 // test_state_file.c — crafted state files (hs_scenario_resume): a state saved part-way through a
 // noisy spring run, one word changed at a time to a value out of its field's range and the
 // checksum made valid again, must be refused with one line naming the field, the scenario left as
-// it was (it then runs); so must a truncated, a longer, an all-zero and a foreign file.
+// it was (it then runs); so must a truncated, a longer, an all-zero and a foreign file, and a
+// world's block whose numbers give an object a non-finite reading.
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -247,12 +248,31 @@ static void test_whole_file(void **state) {
 	free(b);
 }
 
+// A world's block whose every number is in range but whose previous position (-4.5e306 m, found by
+// fuzz_state) gives an infinite velocity: refused, naming the object (tests/fuzz/state/hand.yaml's
+// state, its checksum valid).
+static void test_world_readings(void **state) {
+	(void)state;
+	hs_error err;
+	hs_scenario *s = hs_scenario_load("tests/fuzz/state/hand.yaml", &err);
+	if (!s)
+		fail_msg("%s (the tests run from the repository's top folder)", err.message);
+	FILE *f = fopen("tests/fuzz/state/hand_prev_position.state", "rb");
+	assert_non_null(f);
+	assert_int_equal(hs_scenario_resume(s, f, &err), HS_ERR_STATE_MISMATCH);
+	fclose(f);
+	assert_string_equal(err.message, "state file: the world's state gives object 'block' a non-finite position, "
+	                                 "orientation or velocity");
+	assert_int_equal(hs_world_frame(hs_scenario_world(s)), 0);
+	hs_scenario_destroy(s);
+}
+
 int main(void) {
 	const struct CMUnitTest tests[] = {
 	    cmocka_unit_test(test_unchanged_state_resumes), cmocka_unit_test(test_header_fields),
 	    cmocka_unit_test(test_harness_fields),          cmocka_unit_test(test_noise_all_zero),
 	    cmocka_unit_test(test_capture_fields),          cmocka_unit_test(test_world_frame),
-	    cmocka_unit_test(test_whole_file),
+	    cmocka_unit_test(test_whole_file),              cmocka_unit_test(test_world_readings),
 	};
 	return cmocka_run_group_tests(tests, setup, teardown);
 }
