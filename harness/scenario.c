@@ -304,9 +304,19 @@ const char *hs_scenario_object_name(const hs_scenario *s, int i) {
 	return s && i >= 0 && i < s->object_count ? s->object_names[i] : NULL;
 }
 
-// Non-finite values the world caught (and froze) so far: a run with any is not to be trusted.
+// Non-finite values the world caught (and froze) so far: a run with any is not to be trusted. An
+// object whose state is not finite now counts as one too, whether or not the world has counted it
+// yet (a crafted state file, each of whose numbers the world accepts, can step an object to NaN a
+// frame before the world counts it: the report must not pass it).
 long hs_scenario_faults(const hs_scenario *s) {
-	return hs_world_get_counters(s->world).numeric_faults + s->fault_offset;
+	long faults = hs_world_get_counters(s->world).numeric_faults + s->fault_offset;
+	for (int i = 0; faults == 0 && i < s->object_count; ++i) {
+		hs_object_state st;
+		if (hs_world_object_state(s->world, s->ids[i], &st) == HS_OK &&
+		    !(hs_vec3_is_finite(st.position) && hs_quat_is_finite(st.orientation) && hs_vec3_is_finite(st.velocity)))
+			faults = 1;
+	}
+	return faults;
 }
 
 

@@ -108,7 +108,7 @@ FUZZ_OPTIONS := -timeout=20 -rss_limit_mb=4096 -max_len=16384 -print_final_stats
 fuzz-deps:
 	@sh scripts/deps.sh fuzz
 
-$(FUZZ_DIR)/obj/%.o: %.c $(wildcard model/*.h) tests/fuzz/fuzz_common.h | fuzz-deps
+$(FUZZ_DIR)/obj/%.o: %.c $(MODEL_H) $(HARNESS_H) tests/fuzz/fuzz_common.h | fuzz-deps
 	@mkdir -p $(dir $@)
 	$(FUZZ_CC) $(FUZZ_CFLAGS) -fsanitize=fuzzer-no-link -c $< -o $@
 
