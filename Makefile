@@ -188,12 +188,21 @@ check: deps
 	@$(MAKE) --no-print-directory check-reliability
 	@$(MAKE) --no-print-directory check-readme
 	@$(MAKE) --no-print-directory check-resume
+	@$(MAKE) --no-print-directory check-files
 	@sh scripts/layout_check.sh
 	@sh scripts/importers/check.sh
 	@$(MAKE) --no-print-directory check-sweep
 	@$(MAKE) --no-print-directory check-campaign
 	@$(MAKE) --no-print-directory figures
-	@echo "check: all suites passed (plain and ASan+UBSan, reliability, README examples, resume, layout, the hand scenarios' robustness sweep, a campaign over GNU parallel, ssh and a resume, the papers' figures)"
+	@echo "check: all suites passed (plain and ASan+UBSan, reliability, README examples, resume, files in and out, layout, the hand scenarios' robustness sweep, a campaign over GNU parallel, ssh and a resume, the papers' figures)"
+
+# The tool's files in and out (issue 35): outputs that are inputs, /dev/full, planted links, pipes,
+# a full small file system (a tmpfs when root), endless inputs, the campaign lock and a part cut
+# short then resumed; on the plain and the sanitizer builds' tools.
+.PHONY: check-files
+check-files: all
+	@sh tests/files_safety.sh $(TOOL)
+	@if [ -x $(BUILD)/asan/handspring ]; then sh tests/files_safety.sh $(BUILD)/asan/handspring; fi
 
 # Save half-way and resume every catalog scenario: the rest of the run must be byte-identical.
 check-resume: all

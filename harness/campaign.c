@@ -351,7 +351,7 @@ static bool read_scenarios(hs_campaign *c, const hs_yaml *y, const yaml_node_t *
 // the thrower's hand and the target's object in it.
 static bool check_scenario(hs_campaign *c, const hs_yaml *y, const hs_fields *f, const yaml_node_t *where, int k) {
 	const char *path = c->scenario ? c->scenario : c->axes[0].model[k];
-	FILE *probe = fopen(path, "r");
+	FILE *probe = hs_open_input(path); // a FIFO without a writer must not hold the load up
 	if (!probe)
 		return hs_yaml_fail(y, where, "cannot read the scenario %s: %s", hs_yaml_show(where).text, strerror(errno));
 	fclose(probe);
@@ -361,6 +361,8 @@ static bool check_scenario(hs_campaign *c, const hs_yaml *y, const hs_fields *f,
 	hs_scenario *s = hs_scenario_load_source(&c->source[k], NULL, y->err);
 	if (!s)
 		return false;
+	for (int i = 0; i < hs_scenario_input_count(s); ++i)
+		hs_file_list_add(&c->inputs, hs_scenario_input_path(s, i));
 	c->dt[k] = s->dt;
 	c->duration[k] = s->duration;
 	if (!c->scenario)
@@ -415,6 +417,8 @@ hs_campaign *hs_campaign_load(const char *path, hs_error *err) {
 	          (c->source = calloc(HS_CAMPAIGN_MAX_VALUES, sizeof *c->source)) != NULL;
 	if (!ok)
 		hs_set_error(err, path, 1, "out of memory");
+	else
+		hs_file_list_add(&c->inputs, path);
 	if (ok && memchr(text, '\0', size))
 		ok = hs_set_error(err, path, hs_yaml_line_at(text, size, (size_t)((char *)memchr(text, '\0', size) - text)),
 		                  "not a text file (a NUL byte)");
@@ -440,7 +444,14 @@ void hs_campaign_destroy(hs_campaign *c) {
 	free(c->source);
 	free(c->path);
 	free(c->scenario);
+	hs_file_list_free(&c->inputs);
 	free(c);
+}
+
+int hs_campaign_input_count(const hs_campaign *c) { return c ? c->inputs.count : 0; }
+
+const char *hs_campaign_input_path(const hs_campaign *c, int i) {
+	return c && i >= 0 && i < c->inputs.count ? c->inputs.paths[i] : NULL;
 }
 
 long hs_campaign_trials(const hs_campaign *c) { return c ? c->trials : 0; }

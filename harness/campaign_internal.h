@@ -5,6 +5,7 @@
 
 #include <stdint.h>
 
+#include "file_list.h"
 #include "hs_harness.h"
 
 enum { HS_CAMPAIGN_MAX_AXES = 8, HS_CAMPAIGN_MAX_VALUES = 64, HS_CAMPAIGN_MAX_WORD = 48 };
@@ -59,6 +60,7 @@ struct hs_campaign {
 	hs_axis axes[HS_CAMPAIGN_MAX_AXES];
 	hs_thrower_spec thrower;
 	hs_target target;
+	hs_file_list inputs; // the campaign's file, its scenarios' and theirs (hs_campaign_input_path)
 };
 
 // One trial's inputs: the cell's axis values and the trial's draws.

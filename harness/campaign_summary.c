@@ -3,11 +3,13 @@
 // the merged CSV, so the summary of a run spread over many machines is the summary of the same
 // bytes as a run on one.
 #include <math.h>
+#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "campaign_internal.h"
 #include "error.h"
+#include "file_read.h"
 
 // z of a two-sided 95 % interval: gsl_cdf_ugaussian_Pinv(0.975) (test_campaign checks it against
 // GSL), written out so the interval does not depend on a libm's log.
@@ -81,6 +83,22 @@ static bool read_row(const hs_campaign *c, char *line, long expect, int fields, 
 	return true;
 }
 
+// A row of the trial CSV: the header's fields of at most HS_CAMPAIGN_MAX_WORD bytes or numbers of
+// 17 digits fit many times over; a longer line (a file of no line breaks, /dev/zero) is refused at
+// once. Rows are counted against the campaign's trials, so the file's size is bounded too.
+#define SUMMARY_MAX_LINE ((size_t)64 << 10)
+
+// The next line; false at the end, or with err set when the file cannot be read on.
+static bool next_row(hs_line_reader *r, char **line, const char *path, bool *ok, hs_error *err) {
+	size_t n;
+	hs_line_status status = hs_line_next(r, line, &n);
+	if (status == HS_LINE_OK || status == HS_LINE_END)
+		return status == HS_LINE_OK;
+	char why[96];
+	*ok = hs_set_error(err, path, (unsigned long)r->number + 1, "%s", hs_line_status_text(r, status, why, sizeof why));
+	return false;
+}
+
 // Reads the header and every row into the cells' sums.
 static bool read_rows(const hs_campaign *c, FILE *in, const char *path, cell_sum *sums, hs_error *err) {
 	char header[HS_CAMPAIGN_HEADER];
@@ -88,16 +106,16 @@ static bool read_rows(const hs_campaign *c, FILE *in, const char *path, cell_sum
 	int fields = 1;
 	for (const char *s = header; *s; ++s)
 		fields += *s == ',';
+	hs_line_reader r;
+	hs_line_reader_open(&r, in);
+	size_t rows = (size_t)c->trials + 1; // the total: every row at its longest (SIZE_MAX where that overflows)
+	hs_line_reader_limit(&r, SUMMARY_MAX_LINE, rows > SIZE_MAX / SUMMARY_MAX_LINE ? SIZE_MAX : rows * SUMMARY_MAX_LINE);
 	char *line = NULL;
-	size_t cap = 0;
-	ssize_t len;
 	long trial = 0;
 	unsigned long at = 0;
 	bool ok = true;
-	while (ok && (len = getline(&line, &cap, in)) >= 0) {
+	while (ok && next_row(&r, &line, path, &ok, err)) {
 		++at;
-		if (len > 0 && line[len - 1] == '\n')
-			line[--len] = '\0';
 		if (at == 1)
 			ok = strcmp(line, header) == 0 ||
 			     hs_set_error(err, path, 1, "not this campaign's trials: the header must be '%.300s'", header);
@@ -106,7 +124,8 @@ static bool read_rows(const hs_campaign *c, FILE *in, const char *path, cell_sum
 		else
 			ok = read_row(c, line, trial++, fields, sums, path, at, err);
 	}
-	free(line);
+	r.file = NULL; // the caller's
+	hs_line_reader_close(&r);
 	if (ok && trial < c->trials)
 		ok = hs_set_error(err, path, at + 1, "%ld of the campaign's %ld trials missing, the first trial %ld", c->trials - trial,
 		                  c->trials, trial);

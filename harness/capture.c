@@ -1,6 +1,7 @@
 // capture.c — what the expectation checks record while the run passes, each from the current
 // frame: a state at a clause's frame, a reference pose, a window's before and after, a landing,
 // contact states, a release. Called from hs_scenario_step; none of it allocates.
+#include <limits.h>
 #include <math.h>
 #include <string.h>
 
@@ -200,15 +201,20 @@ static void put_state(hs_state_io *io, const hs_object_state *st) {
 	hs_put_u64(io, st->resting);
 }
 
+// Every field within its range: finite numbers, a unit orientation (zero before the capture), a
+// contact state of the enum.
 static void get_state(hs_state_io *io, hs_object_state *st) {
-	st->position = hs_get_vec3(io);
-	st->orientation.w = hs_get_f64(io);
-	hs_vec3 q = hs_get_vec3(io);
+	st->position = hs_get_finite3(io, "state.position");
+	st->orientation.w = hs_get_finite(io, "state.orientation");
+	hs_vec3 q = hs_get_finite3(io, "state.orientation");
 	st->orientation.x = q.x, st->orientation.y = q.y, st->orientation.z = q.z;
-	st->velocity = hs_get_vec3(io);
-	st->contact = (hs_contact_state)hs_get_i64(io);
-	st->floor_contacts = (int)hs_get_i64(io);
-	st->resting = hs_get_u64(io) != 0;
+	hs_quat zero = {0.0, 0.0, 0.0, 0.0}; // a check not captured yet holds a zero state
+	if (io->ok && !hs_quat_is_unit(st->orientation) && memcmp(&st->orientation, &zero, sizeof zero) != 0)
+		hs_state_refuse_field(io, "state.orientation", "is neither a unit quaternion nor zero (not captured)");
+	st->velocity = hs_get_finite3(io, "state.velocity");
+	st->contact = (hs_contact_state)hs_get_range(io, "state.contact", HS_CONTACT_NONE, HS_CONTACT_PUSH_MANY);
+	st->floor_contacts = (int)hs_get_range(io, "state.floor_contacts", 0, INT_MAX);
+	st->resting = hs_get_flag(io, "state.resting");
 }
 
 static void put_at(hs_state_io *io, const hs_capture *u) {
@@ -224,13 +230,13 @@ static void put_at(hs_state_io *io, const hs_capture *u) {
 
 static void get_at(hs_state_io *io, hs_capture *u) {
 	get_state(io, &u->at.state);
-	u->at.velocity = hs_get_vec3(io);
-	u->at.holder = (int)hs_get_i64(io);
-	u->at.candidate = (int)hs_get_i64(io);
-	u->at.kind = (hs_attach_kind)hs_get_i64(io);
-	u->at.ratio = hs_get_f64(io);
-	u->at.extension = hs_get_f64(io);
-	u->at.rest_length = hs_get_f64(io);
+	u->at.velocity = hs_get_finite3(io, "at.velocity");
+	u->at.holder = hs_get_object(io, "at.holder");
+	u->at.candidate = hs_get_object(io, "at.candidate");
+	u->at.kind = (hs_attach_kind)hs_get_range(io, "at.kind", HS_ATTACH_NONE, HS_ATTACH_ROD);
+	u->at.ratio = hs_get_finite(io, "at.ratio");
+	u->at.extension = hs_get_finite(io, "at.extension");
+	u->at.rest_length = hs_get_finite(io, "at.rest_length");
 }
 
 static void put_still(hs_state_io *io, const hs_capture *u) {
@@ -241,8 +247,8 @@ static void put_still(hs_state_io *io, const hs_capture *u) {
 
 static void get_still(hs_state_io *io, hs_capture *u) {
 	get_state(io, &u->still.state);
-	u->still.moved = hs_get_u64(io) != 0;
-	u->still.moved_frame = (long)hs_get_i64(io);
+	u->still.moved = hs_get_flag(io, "still.moved");
+	u->still.moved_frame = hs_get_frame(io, "still.moved_frame");
 }
 
 static void put_window(hs_state_io *io, const hs_capture *u) {
@@ -256,13 +262,13 @@ static void put_window(hs_state_io *io, const hs_capture *u) {
 }
 
 static void get_window(hs_state_io *io, hs_capture *u) {
-	u->window.began = hs_get_u64(io) != 0;
+	u->window.began = hs_get_flag(io, "window.began");
 	for (int i = 0; i < 3; ++i) {
-		u->window.before[i] = hs_get_f64(io);
-		u->window.after[i] = hs_get_f64(io);
+		u->window.before[i] = hs_get_finite(io, "window.before");
+		u->window.after[i] = hs_get_finite(io, "window.after");
 	}
-	u->window.peak = hs_get_f64(io);
-	u->window.peak_frame = (long)hs_get_i64(io);
+	u->window.peak = hs_get_finite(io, "window.peak");
+	u->window.peak_frame = hs_get_frame(io, "window.peak_frame");
 }
 
 static void put_lands(hs_state_io *io, const hs_capture *u) {
@@ -272,9 +278,9 @@ static void put_lands(hs_state_io *io, const hs_capture *u) {
 }
 
 static void get_lands(hs_state_io *io, hs_capture *u) {
-	u->lands.had_no_floor = hs_get_u64(io) != 0;
-	u->lands.landed = hs_get_u64(io) != 0;
-	u->lands.frame = (long)hs_get_i64(io);
+	u->lands.had_no_floor = hs_get_flag(io, "lands.had_no_floor");
+	u->lands.landed = hs_get_flag(io, "lands.landed");
+	u->lands.frame = hs_get_frame(io, "lands.frame");
 }
 
 static void put_seq(hs_state_io *io, const hs_capture *u) {
@@ -284,12 +290,17 @@ static void put_seq(hs_state_io *io, const hs_capture *u) {
 	hs_put_u64(io, u->seq.last);
 }
 
+// The states recorded are contact states, those beyond `len` zero (never written); at most one
+// change a frame overflows.
 static void get_seq(hs_state_io *io, hs_capture *u) {
 	hs_get_bytes(io, u->seq.states, HS_SEQ_CAPACITY);
-	int64_t len = hs_get_i64(io);
-	u->seq.len = len >= 0 && len <= HS_SEQ_CAPACITY ? (int)len : 0; // never index beyond the states
-	u->seq.overflow = (long)hs_get_i64(io);
-	u->seq.last = (unsigned char)hs_get_u64(io);
+	u->seq.len = (int)hs_get_range(io, "contact_sequence.len", 0, HS_SEQ_CAPACITY);
+	u->seq.overflow = (long)hs_get_range(io, "contact_sequence.overflow", 0, io->frame + 1);
+	u->seq.last = (unsigned char)hs_get_range(io, "contact_sequence.last", HS_CONTACT_NONE, HS_CONTACT_PUSH_MANY);
+	for (int i = 0; io->ok && i < HS_SEQ_CAPACITY; ++i)
+		if (u->seq.states[i] > (i < u->seq.len ? HS_CONTACT_PUSH_MANY : 0))
+			hs_state_refuse_field(io, "contact_sequence.states",
+			                      i < u->seq.len ? "holds a value that is no contact state" : "is not zero beyond its length");
 }
 
 static void put_release(hs_state_io *io, const hs_capture *u) {
@@ -301,11 +312,11 @@ static void put_release(hs_state_io *io, const hs_capture *u) {
 }
 
 static void get_release(hs_state_io *io, hs_capture *u) {
-	u->release.kind = (hs_release_kind)hs_get_i64(io);
-	u->release.object.index1 = (uint32_t)hs_get_u64(io);
-	u->release.time = hs_get_f64(io);
-	u->release.velocity = hs_get_vec3(io);
-	u->release.hand_speed = hs_get_f64(io);
+	u->release.kind = (hs_release_kind)hs_get_range(io, "released.kind", HS_RELEASE_NONE, HS_RELEASE_THROW);
+	u->release.object.index1 = (uint32_t)hs_get_range(io, "released.object", 0, io->objects); // index + 1, 0: none
+	u->release.time = hs_get_finite(io, "released.time");
+	u->release.velocity = hs_get_finite3(io, "released.velocity");
+	u->release.hand_speed = hs_get_finite(io, "released.hand_speed");
 }
 
 static const struct {
@@ -325,7 +336,7 @@ void hs_capture_put(hs_state_io *io, hs_store store, const hs_check *k) {
 }
 
 void hs_capture_get(hs_state_io *io, hs_store store, hs_check *k) {
-	k->captured = hs_get_u64(io) != 0;
+	k->captured = hs_get_flag(io, "captured");
 	if (stores[store].get)
 		stores[store].get(io, &k->u);
 }

@@ -86,13 +86,39 @@ void hs_line_reader_open(hs_line_reader *r, FILE *file) {
 	r->buf = malloc(r->cap);
 }
 
+void hs_line_reader_limit(hs_line_reader *r, size_t line_cap, size_t total_cap) {
+	r->max_line = line_cap < HS_MAX_LINE_BYTES ? line_cap : HS_MAX_LINE_BYTES;
+	r->max_total = total_cap; // a reader that counts its rows may take more than HS_MAX_INPUT_BYTES
+}
+
+static size_t max_line(const hs_line_reader *r) { return r->max_line ? r->max_line : HS_MAX_LINE_BYTES; }
+static size_t max_total(const hs_line_reader *r) { return r->max_total ? r->max_total : HS_MAX_INPUT_BYTES; }
+
+const char *hs_line_status_text(const hs_line_reader *r, hs_line_status status, char *buf, size_t size) {
+	switch (status) {
+	case HS_LINE_TOO_LONG:
+		snprintf(buf, size, "a line longer than %zu bytes", max_line(r));
+		break;
+	case HS_LINE_TOO_BIG:
+		snprintf(buf, size, "larger than %zu bytes", max_total(r));
+		break;
+	case HS_LINE_NO_MEMORY:
+		snprintf(buf, size, "out of memory");
+		break;
+	default:
+		snprintf(buf, size, "cannot read: %s", strerror(errno ? errno : EIO));
+		break;
+	}
+	return buf;
+}
+
 // Moves the unread bytes to the front, grows the buffer when they fill it, and reads more.
 static hs_line_status fill(hs_line_reader *r) {
 	memmove(r->buf, r->buf + r->start, r->len - r->start);
 	r->len -= r->start;
 	r->start = 0;
-	if (r->len + 1 >= r->cap) { // at most HS_MAX_LINE_BYTES are unread: the buffer never outgrows that
-		size_t cap = r->cap * 2 < HS_MAX_LINE_BYTES + 2 ? r->cap * 2 : HS_MAX_LINE_BYTES + 2;
+	if (r->len + 1 >= r->cap) { // at most max_line bytes are unread: the buffer never outgrows that
+		size_t cap = r->cap * 2 < max_line(r) + 2 ? r->cap * 2 : max_line(r) + 2;
 		char *bigger = realloc(r->buf, cap);
 		if (!bigger)
 			return HS_LINE_NO_MEMORY;
@@ -101,7 +127,7 @@ static hs_line_status fill(hs_line_reader *r) {
 	}
 	size_t room = r->cap - 1 - r->len; // > 0; one byte stays for the '\0' of a last line without '\n'
 	size_t got = fread(r->buf + r->len, 1, room, r->file);
-	if (got > HS_MAX_INPUT_BYTES - r->total)
+	if (got > max_total(r) - r->total)
 		return HS_LINE_TOO_BIG;
 	r->total += got;
 	r->len += got;
@@ -130,7 +156,7 @@ hs_line_status hs_line_next(hs_line_reader *r, char **line, size_t *length) {
 		}
 		if (r->eof)
 			return HS_LINE_END;
-		if (r->len - r->start > HS_MAX_LINE_BYTES)
+		if (r->len - r->start > max_line(r))
 			return HS_LINE_TOO_LONG;
 		hs_line_status status = fill(r);
 		if (status != HS_LINE_OK)

@@ -36,19 +36,26 @@ typedef struct hs_line_reader {
 	size_t total;       // bytes read so far
 	long number;        // lines returned so far
 	bool eof;
+	size_t max_line, max_total; // the limits (hs_line_reader_limit): 0 means HS_MAX_LINE_BYTES, HS_MAX_INPUT_BYTES
 } hs_line_reader;
 
 typedef enum hs_line_status {
 	HS_LINE_OK,       // *line (NUL-terminated, without its '\n') and *length are the next line
 	HS_LINE_END,      // no more lines
-	HS_LINE_TOO_LONG, // line number + 1 is longer than HS_MAX_LINE_BYTES
-	HS_LINE_TOO_BIG,  // the file is larger than HS_MAX_INPUT_BYTES
+	HS_LINE_TOO_LONG, // line number + 1 is longer than HS_MAX_LINE_BYTES (or the reader's limit)
+	HS_LINE_TOO_BIG,  // the file is larger than HS_MAX_INPUT_BYTES (or the reader's limit)
 	HS_LINE_NO_MEMORY,
 	HS_LINE_READ_ERROR,
 } hs_line_status;
 
 // Takes ownership of `file` (closed by hs_line_reader_close).
 void hs_line_reader_open(hs_line_reader *r, FILE *file);
+// Other limits for a file of short lines (a trajectory's rows, a campaign's trials), so a file of
+// no line breaks is refused after line_cap bytes (at most HS_MAX_LINE_BYTES). total_cap may be
+// larger than HS_MAX_INPUT_BYTES for a reader that bounds its row count itself (0: the default).
+void hs_line_reader_limit(hs_line_reader *r, size_t line_cap, size_t total_cap);
+// What a status other than HS_LINE_OK and HS_LINE_END means, with the limits in it, into buf.
+const char *hs_line_status_text(const hs_line_reader *r, hs_line_status status, char *buf, size_t size);
 hs_line_status hs_line_next(hs_line_reader *r, char **line, size_t *length);
 void hs_line_reader_close(hs_line_reader *r);
 

@@ -88,18 +88,52 @@ void hs_noise_hand(hs_noise *noise, const hs_noise_options *options, hs_vec3 *wr
 	}
 }
 
-size_t hs_noise_state_size(const hs_noise *noise) { return noise ? gsl_rng_size(noise->rng) : 0; }
+// GSL's mt19937 state (gsl/rng/mt.c): 624 words of 32 bits, each kept in an unsigned long, and the
+// position of the next word. Its size is checked against gsl_rng_size before it is used.
+typedef struct mt_state {
+	unsigned long mt[HS_NOISE_WORDS - 1];
+	int mti;
+} mt_state;
 
-bool hs_noise_save(const hs_noise *noise, void *buffer, size_t size) {
-	if (!noise || size != gsl_rng_size(noise->rng))
+static mt_state *mt_of(const hs_noise *noise) {
+	return noise && gsl_rng_size(noise->rng) == sizeof(mt_state) ? gsl_rng_state(noise->rng) : NULL;
+}
+
+bool hs_noise_save(const hs_noise *noise, uint64_t words[HS_NOISE_WORDS]) {
+	const mt_state *m = mt_of(noise);
+	if (!m)
 		return false;
-	memcpy(buffer, gsl_rng_state(noise->rng), size);
+	for (int i = 0; i < HS_NOISE_WORDS - 1; ++i)
+		words[i] = m->mt[i];
+	words[HS_NOISE_WORDS - 1] = (uint64_t)(int64_t)m->mti;
 	return true;
 }
 
-bool hs_noise_load(hs_noise *noise, const void *buffer, size_t size) {
-	if (!noise || size != gsl_rng_size(noise->rng))
+// A generator state a draw can use: 32-bit words (a higher bit made gsl_rng_uniform_int draw
+// forever), a position within the words (beyond them a draw read outside the state), and not the
+// one state whose 19937 bits are all zero (it draws zeros only: gsl_rng_uniform_pos never ends).
+const char *hs_noise_check(const uint64_t words[HS_NOISE_WORDS], int *field) {
+	bool zero = (words[0] & 0x80000000u) == 0; // only the top bit of the first word is used
+	for (int i = 0; i < HS_NOISE_WORDS - 1; ++i) {
+		*field = i;
+		if (words[i] > 0xFFFFFFFFu)
+			return "is not a 32-bit word";
+		zero = zero && (i == 0 || words[i] == 0);
+	}
+	*field = HS_NOISE_WORDS - 1;
+	if (words[HS_NOISE_WORDS - 1] > HS_NOISE_WORDS - 1)
+		return "is not a position within the 624 words";
+	*field = 0;
+	return zero ? "is all zero (the generator would draw zeros for ever)" : NULL;
+}
+
+bool hs_noise_load(hs_noise *noise, const uint64_t words[HS_NOISE_WORDS]) {
+	mt_state *m = mt_of(noise);
+	int field;
+	if (!m || hs_noise_check(words, &field))
 		return false;
-	memcpy(gsl_rng_state(noise->rng), buffer, size);
+	for (int i = 0; i < HS_NOISE_WORDS - 1; ++i)
+		m->mt[i] = (unsigned long)words[i];
+	m->mti = (int)words[HS_NOISE_WORDS - 1];
 	return true;
 }

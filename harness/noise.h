@@ -44,10 +44,14 @@ void hs_noise_stylus(hs_noise *noise, hs_vec3 *position, hs_quat *orientation);
 void hs_noise_hand(hs_noise *noise, const hs_noise_options *options, hs_vec3 *wrist, hs_quat *rotation,
                    uint8_t sensors[HS_GLOVE_SENSORS]);
 
-// The generator's state as bytes (gsl_rng_state: a memcpy, so a state file resumes on the same
-// kind of build), for hs_scenario_save / hs_scenario_resume.
-size_t hs_noise_state_size(const hs_noise *noise);
-bool hs_noise_save(const hs_noise *noise, void *buffer, size_t size);
-bool hs_noise_load(hs_noise *noise, const void *buffer, size_t size);
+// The generator's state as HS_NOISE_WORDS portable words (state files: scenario_state.c): GSL's
+// mt19937 624 words of 32 bits, then the position of the next one (0 to 624). Saving fails when
+// this GSL keeps its state otherwise; loading fails (the generator untouched) on a state that
+// hs_noise_check refuses.
+enum { HS_NOISE_WORDS = 625 };
+bool hs_noise_save(const hs_noise *noise, uint64_t words[HS_NOISE_WORDS]);
+bool hs_noise_load(hs_noise *noise, const uint64_t words[HS_NOISE_WORDS]);
+// NULL for a state a draw can use, else why not, with *field the word at fault (its index).
+const char *hs_noise_check(const uint64_t words[HS_NOISE_WORDS], int *field);
 
 #endif

@@ -244,6 +244,10 @@ hs_scenario *hs_scenario_load_source(const hs_scenario_source *src, const hs_sce
 	hs_scenario_parser p = {.y = src->y, .options = options};
 	p.y.err = err; // the document is only read: every load builds its own scenario from it
 	p.s = calloc(1, sizeof *p.s);
+	if (p.s) {
+		hs_file_list_add(&p.s->inputs, path);
+		p.y.files = &p.s->inputs;
+	}
 	bool ok = p.s ? read_scenario(&p, hs_yaml_root(&p.y)) : hs_set_error(err, path, 1, "out of memory");
 	if (ok) {
 		p.s->source_hash = src->hash;
@@ -288,6 +292,7 @@ void hs_scenario_destroy(hs_scenario *s) {
 	hs_expectations_free(&s->expect);
 	hs_noise_destroy(s->noise);
 	free(s->warnings);
+	hs_file_list_free(&s->inputs);
 	free(s);
 }
 
@@ -328,6 +333,12 @@ bool hs_scenario_hand_fit(const hs_scenario *s, int hand, double *rms_mm, long *
 	return true;
 }
 
+int hs_scenario_input_count(const hs_scenario *s) { return s ? s->inputs.count : 0; }
+
+const char *hs_scenario_input_path(const hs_scenario *s, int i) {
+	return s && i >= 0 && i < s->inputs.count ? s->inputs.paths[i] : NULL;
+}
+
 const char *hs_scenario_name(const hs_scenario *s) { return s ? s->name : NULL; }
 const char *hs_scenario_description(const hs_scenario *s) { return s ? s->description : NULL; }
 hs_world *hs_scenario_world(hs_scenario *s) { return s ? s->world : NULL; }
@@ -339,9 +350,19 @@ const char *hs_scenario_object_name(const hs_scenario *s, int i) {
 	return s && i >= 0 && i < s->object_count ? s->object_names[i] : NULL;
 }
 
-// Non-finite values the world caught (and froze) so far: a run with any is not to be trusted.
+// Non-finite values the world caught (and froze) so far: a run with any is not to be trusted. An
+// object whose state is not finite now counts as one too, whether or not the world has counted it
+// yet (a crafted state file, each of whose numbers the world accepts, can step an object to NaN a
+// frame before the world counts it: the report must not pass it).
 long hs_scenario_faults(const hs_scenario *s) {
-	return hs_world_get_counters(s->world).numeric_faults + s->fault_offset;
+	long faults = hs_world_get_counters(s->world).numeric_faults + s->fault_offset;
+	for (int i = 0; faults == 0 && i < s->object_count; ++i) {
+		hs_object_state st;
+		if (hs_world_object_state(s->world, s->ids[i], &st) == HS_OK &&
+		    !(hs_vec3_is_finite(st.position) && hs_quat_is_finite(st.orientation) && hs_vec3_is_finite(st.velocity)))
+			faults = 1;
+	}
+	return faults;
 }
 
 

@@ -7,6 +7,7 @@
 
 #include "error.h"
 #include "expect.h"
+#include "file_list.h"
 #include "hand_script.h"
 #include "hs_harness.h"
 #include "noise.h"
@@ -53,6 +54,7 @@ struct hs_scenario {
 	uint64_t source_hash;     // FNV-1a of the scenario file's bytes: a state file names the file it continues
 	long fault_offset;        // numeric faults before a resume that the world's counters do not hold
 	char *warnings;           // what the load warns of, one line each with its newline (NULL: nothing)
+	hs_file_list inputs;      // the scenario's file, then every file it names (hs_scenario_input_path)
 };
 
 // A scenario file read and parsed once, to be loaded many times (a campaign's trials): each load

@@ -6,6 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "overlap.h"
 #include "scenario_internal.h"
 #include "scenario_parser.h"
 
@@ -659,6 +660,14 @@ bool hs_read_objects(hs_scenario_parser *p, const yaml_node_t *node, hs_world_de
 	for (int i = 0; i < s->object_count; ++i)
 		if (!read_object(p, hs_yaml_item(&p->y, node, i), i))
 			return false;
+	int a, b;
+	double depth;
+	if (hs_find_overlap(s->world, &a, &b, &depth))
+		return hs_yaml_fail(&p->y, hs_yaml_item(&p->y, node, b),
+		                    "objects '%s' (line %lu) and '%s' overlap: a point of one lies %.3g mm inside the other "
+		                    "(objects may touch, not overlap by more than %g mm)",
+		                    s->object_names[a], hs_yaml_line(hs_yaml_item(&p->y, node, a)), s->object_names[b],
+		                    depth * 1e3, HS_OVERLAP_TOLERANCE * 1e3);
 	return true;
 }
 

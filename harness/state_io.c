@@ -1,4 +1,6 @@
 // state_io.c — 64-bit little-endian words for state files (see state_io.h).
+#include <math.h>
+#include <stdio.h>
 #include <string.h>
 
 #include "state_io.h"
@@ -6,6 +8,12 @@
 static void hash_bytes(hs_state_io *io, const unsigned char *b, size_t n) {
 	for (size_t i = 0; i < n; ++i)
 		io->hash = (io->hash ^ b[i]) * 1099511628211ull;
+}
+
+uint64_t hs_state_checksum(const void *data, size_t size) {
+	hs_state_io io = {.hash = HS_STATE_HASH_START};
+	hash_bytes(&io, data, size);
+	return io.hash;
 }
 
 void hs_put_u64(hs_state_io *io, uint64_t v) {
@@ -70,3 +78,47 @@ void hs_get_bytes(hs_state_io *io, void *data, size_t size) {
 	if (io->ok)
 		hash_bytes(io, data, size);
 }
+
+// ---------------------------------------------------------------------------------------------
+// checked reads: every word of the harness's part is tested against its field's range
+
+void hs_state_refuse_field(hs_state_io *io, const char *field, const char *why) {
+	if (io->refused[0] == '\0')
+		snprintf(io->refused, sizeof io->refused, "%s%s %s", io->where ? io->where : "", field, why);
+	io->ok = false;
+}
+
+int64_t hs_get_range(hs_state_io *io, const char *field, int64_t lo, int64_t hi) {
+	int64_t v = hs_get_i64(io);
+	if (!io->ok)
+		return lo;
+	if (v < lo || v > hi) {
+		char why[120];
+		snprintf(why, sizeof why, "is %lld, not within [%lld, %lld]", (long long)v, (long long)lo, (long long)hi);
+		hs_state_refuse_field(io, field, why);
+		return lo;
+	}
+	return v;
+}
+
+bool hs_get_flag(hs_state_io *io, const char *field) { return hs_get_range(io, field, 0, 1) != 0; }
+
+double hs_get_finite(hs_state_io *io, const char *field) {
+	double v = hs_get_f64(io);
+	if (!io->ok)
+		return 0.0;
+	if (!isfinite(v)) {
+		hs_state_refuse_field(io, field, "is not a finite number");
+		return 0.0;
+	}
+	return v;
+}
+
+hs_vec3 hs_get_finite3(hs_state_io *io, const char *field) {
+	double x = hs_get_finite(io, field), y = hs_get_finite(io, field), z = hs_get_finite(io, field);
+	return hs_v3(x, y, z);
+}
+
+long hs_get_frame(hs_state_io *io, const char *field) { return (long)hs_get_range(io, field, 0, io->frame); }
+
+int hs_get_object(hs_state_io *io, const char *field) { return (int)hs_get_range(io, field, -1, io->objects - 1); }

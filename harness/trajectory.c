@@ -1,14 +1,22 @@
 // trajectory.c — trajectories as CSV (one row per object per frame) and their comparison with
-// a golden file. Only the public API is used: a trajectory is what any caller could write.
+// a golden file. Writing uses the public API only: a trajectory is what any caller could write.
+// Reading is bounded (file_read.h): a row longer than TRAJ_MAX_LINE bytes or a file larger than
+// HS_MAX_INPUT_BYTES ends the comparison with a mismatch that says so, so a golden that is
+// /dev/zero or an endless stream fails at once.
 #include <inttypes.h>
 #include <math.h>
 #include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "file_read.h"
 #include "hs_harness.h"
 
 #define TRAJECTORY_HEADER "frame,t,object,x,y,z,qw,qx,qy,qz,contact,floor,resting,hash"
+
+// A row: 14 fields, an object name of at most 64 bytes and 13 numbers of at most 25 characters
+// fit many times over.
+#define TRAJ_MAX_LINE ((size_t)64 << 10)
 
 enum {
 	FIELD_COUNT = 14,
@@ -55,25 +63,43 @@ void hs_trajectory_write_selected(FILE *out, hs_scenario *scenario, const uint8_
 
 // One side of the comparison: a file read row by row, '#' comments and blank lines skipped.
 typedef struct reader {
-	FILE *file;
-	const char *side; // "golden" or "now"
+	hs_line_reader lines; // its file is the caller's: not closed here
+	const char *side;     // "golden" or "now"
 	char *line;
-	size_t capacity;
 	long line_number;
 	long rows;
 	long frames;      // distinct frames seen so far (a new frame starts when the frame field changes)
 	char last_frame[32];
 	char *field[FIELD_COUNT];
+	char failed[96];  // why the file could not be read on (a limit, a read error); empty: it ended
 } reader;
 
-// Next data line into r->line without its line end; false at the end of the file.
+static void reader_open(reader *r, FILE *file, const char *side) {
+	memset(r, 0, sizeof *r);
+	r->side = side;
+	hs_line_reader_open(&r->lines, file);
+	hs_line_reader_limit(&r->lines, TRAJ_MAX_LINE, HS_MAX_INPUT_BYTES);
+}
+
+static void reader_close(reader *r) {
+	r->lines.file = NULL; // the caller's
+	hs_line_reader_close(&r->lines);
+}
+
+// Next data line into r->line without its line end; false at the end of the file or when it
+// cannot be read on (r->failed says why).
 static bool next_line(reader *r) {
 	for (;;) {
-		ssize_t n = getline(&r->line, &r->capacity, r->file);
-		if (n < 0)
+		size_t n;
+		hs_line_status status = hs_line_next(&r->lines, &r->line, &n);
+		if (status == HS_LINE_END)
 			return false;
+		if (status != HS_LINE_OK) {
+			hs_line_status_text(&r->lines, status, r->failed, sizeof r->failed);
+			return false;
+		}
 		r->line_number++;
-		while (n > 0 && (r->line[n - 1] == '\n' || r->line[n - 1] == '\r'))
+		while (n > 0 && r->line[n - 1] == '\r')
 			r->line[--n] = '\0';
 		if (n > 0 && r->line[0] != '#')
 			return true;
@@ -135,6 +161,11 @@ static bool mismatch(const comparison *c, const char *fmt, ...) {
 	return false;
 }
 
+// A side that could not be read on: its next line and why.
+static bool unreadable(const comparison *c, const reader *r) {
+	return mismatch(c, "%s line %ld: %s", r->side, r->line_number + 1, r->failed);
+}
+
 // Reads the rest of a file only to count its frames.
 static bool count_rest(const comparison *c, reader *r) {
 	while (next_line(r)) {
@@ -143,7 +174,7 @@ static bool count_rest(const comparison *c, reader *r) {
 			return mismatch(c, "%s line %ld: expected %d fields, got %d", r->side, r->line_number, FIELD_COUNT, n);
 		count_frame(r);
 	}
-	return true;
+	return !r->failed[0] || unreadable(c, r);
 }
 
 static bool same_number(double g, double n, double tolerance) {
@@ -176,6 +207,51 @@ static bool compare_rows(const comparison *c, reader *g, reader *n, double toler
 	return true;
 }
 
+// The header lines of both sides (read first).
+static bool compare_headers(const comparison *c, reader *g, reader *n) {
+	bool has_g = next_line(g), has_n = next_line(n);
+	if (g->failed[0] || n->failed[0])
+		return unreadable(c, g->failed[0] ? g : n);
+	if (!has_g || !has_n)
+		return has_g == has_n ? mismatch(c, "both files are empty")
+		                      : mismatch(c, "%s file is empty (no header)", has_g ? "now" : "golden");
+	if (strcmp(g->line, TRAJECTORY_HEADER) != 0)
+		return mismatch(c, "golden line %ld: header is not '%s'", g->line_number, TRAJECTORY_HEADER);
+	if (strcmp(n->line, TRAJECTORY_HEADER) != 0)
+		return mismatch(c, "now line %ld: header is not '%s'", n->line_number, TRAJECTORY_HEADER);
+	return true;
+}
+
+// The rows after the headers, pair by pair; when one side ends, the other's frames are counted.
+static bool compare_bodies(const comparison *c, reader *g, reader *n, double tolerance) {
+	for (;;) {
+		bool has_g = next_line(g), has_n = next_line(n);
+		if (g->failed[0] || n->failed[0])
+			return unreadable(c, g->failed[0] ? g : n);
+		int fg = has_g ? split(g) : FIELD_COUNT, fn = has_n ? split(n) : FIELD_COUNT;
+		if (fg != FIELD_COUNT)
+			return mismatch(c, "golden line %ld: expected %d fields, got %d", g->line_number, FIELD_COUNT, fg);
+		if (fn != FIELD_COUNT)
+			return mismatch(c, "now line %ld: expected %d fields, got %d", n->line_number, FIELD_COUNT, fn);
+		if (!has_g && !has_n)
+			return true;
+		if (has_g)
+			count_frame(g);
+		if (has_n)
+			count_frame(n);
+		if (has_g && has_n) {
+			if (!compare_rows(c, g, n, tolerance))
+				return false;
+			continue;
+		}
+		if (!count_rest(c, has_g ? g : n))
+			return false;
+		if (g->frames != n->frames)
+			return mismatch(c, "golden has %ld frames, now %ld", g->frames, n->frames);
+		return mismatch(c, "golden has %ld rows, now %ld", g->rows, n->rows);
+	}
+}
+
 bool hs_trajectory_compare(FILE *golden, FILE *actual, double tolerance, const char *label, char *why,
                            size_t why_size) {
 	comparison c = {label ? label : "trajectory", why, why_size};
@@ -185,43 +261,11 @@ bool hs_trajectory_compare(FILE *golden, FILE *actual, double tolerance, const c
 		return mismatch(&c, "no %s file to compare", golden ? "current" : "golden");
 	if (!(tolerance >= 0.0))
 		return mismatch(&c, "tolerance must be >= 0");
-	reader g = {.file = golden, .side = "golden"}, n = {.file = actual, .side = "now"};
-	bool ok = true;
-	bool has_g = next_line(&g), has_n = next_line(&n);
-	if (!has_g || !has_n) {
-		ok = has_g == has_n ? mismatch(&c, "both files are empty")
-		                    : mismatch(&c, "%s file is empty (no header)", has_g ? "now" : "golden");
-	} else if (strcmp(g.line, TRAJECTORY_HEADER) != 0) {
-		ok = mismatch(&c, "golden line %ld: header is not '%s'", g.line_number, TRAJECTORY_HEADER);
-	} else if (strcmp(n.line, TRAJECTORY_HEADER) != 0) {
-		ok = mismatch(&c, "now line %ld: header is not '%s'", n.line_number, TRAJECTORY_HEADER);
-	}
-	while (ok) {
-		has_g = next_line(&g);
-		has_n = next_line(&n);
-		int fg = has_g ? split(&g) : FIELD_COUNT, fn = has_n ? split(&n) : FIELD_COUNT;
-		if (fg != FIELD_COUNT)
-			ok = mismatch(&c, "golden line %ld: expected %d fields, got %d", g.line_number, FIELD_COUNT, fg);
-		else if (fn != FIELD_COUNT)
-			ok = mismatch(&c, "now line %ld: expected %d fields, got %d", n.line_number, FIELD_COUNT, fn);
-		if (!ok || (!has_g && !has_n))
-			break;
-		if (has_g)
-			count_frame(&g);
-		if (has_n)
-			count_frame(&n);
-		if (has_g && has_n) {
-			ok = compare_rows(&c, &g, &n, tolerance);
-			continue;
-		}
-		// one file ended: count the other's frames for the message
-		ok = count_rest(&c, has_g ? &g : &n);
-		if (ok && g.frames != n.frames)
-			ok = mismatch(&c, "golden has %ld frames, now %ld", g.frames, n.frames);
-		else if (ok)
-			ok = mismatch(&c, "golden has %ld rows, now %ld", g.rows, n.rows);
-	}
-	free(g.line);
-	free(n.line);
+	reader g, n;
+	reader_open(&g, golden, "golden");
+	reader_open(&n, actual, "now");
+	bool ok = compare_headers(&c, &g, &n) && compare_bodies(&c, &g, &n, tolerance);
+	reader_close(&g);
+	reader_close(&n);
 	return ok;
 }

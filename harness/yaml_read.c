@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "file_read.h"
+#include "file_list.h"
 #include "yaml_read.h"
 
 bool hs_yaml_fail(const hs_yaml *y, const yaml_node_t *node, const char *fmt, ...) {
@@ -346,5 +347,6 @@ char *hs_yaml_sibling_file(const hs_yaml *y, const yaml_node_t *node, const char
 	free(file);
 	if (!full)
 		hs_yaml_fail(y, node, "out of memory");
+	hs_file_list_add(y->files, full); // an input: a writer must not overwrite it (hs_scenario_input_path)
 	return full;
 }

@@ -17,6 +17,7 @@ typedef struct hs_yaml {
 	hs_error *err;
 	yaml_document_t doc; // filled by hs_yaml_load
 	bool loaded;
+	struct hs_file_list *files; // hs_yaml_sibling_file adds each file it names here (NULL: none kept)
 } hs_yaml;
 
 // Collections nested deeper than this are refused before the document is built: the schema needs

@@ -22,6 +22,11 @@
 #                     (parallel --resume-failed). Refused when the campaign file, the tool or the
 #                     trial count changed since (OUTDIR/campaign.id). Without --resume a run
 #                     starts afresh: the files below from an earlier run in OUTDIR are removed.
+#                     A job the joblog records as done whose part is not whole (a full disk) is
+#                     recorded as failed there, so --resume runs it again.
+#
+# Two runs into one OUTDIR are kept apart: each holds OUTDIR/.lock (flock) until it and its jobs
+# end; a second is refused with a message naming the lock.
 #
 # What it does: asks the tool for the trial count T (`campaign FILE --count`), writes the job list
 # OUTDIR/jobs (one A:B range of trials per line), runs `TOOL campaign FILE --trials A:B --rows` for
@@ -98,6 +103,11 @@ case "$total" in '' | *[!0-9]*) die "$tool campaign $file --count answered '$tot
 id=$(printf 'campaign %s\ntool %s\ntrials %s\n' "$(sha256sum < "$file" | cut -c1-64)" \
 	"$(sha256sum < "$toolfile" | cut -c1-64)" "$total")
 mkdir -p "$out"
+# One run at a time in OUTDIR: the lock is held on descriptor 9 by this shell, parallel and every
+# job (they inherit it) until the last of them exits, a killed run's too.
+command -v flock > /dev/null 2>&1 || die "flock is missing (Debian's util-linux)"
+exec 9>> "$out/.lock"
+flock -n 9 || die "$out: another campaign run is writing to this folder (it holds $out/.lock); wait for it to end or choose another OUTDIR"
 if [ "$resume" = yes ] && [ -f "$out/jobs" ] && [ -f "$out/campaign.id" ]; then
 	printf '%s\n' "$id" | cmp -s - "$out/campaign.id" ||
 		die "$out: its run was of another campaign file, tool or trial count ($out/campaign.id); run without --resume to start afresh"
@@ -105,7 +115,8 @@ if [ "$resume" = yes ] && [ -f "$out/jobs" ] && [ -f "$out/campaign.id" ]; then
 else
 	[ "$resume" = no ] || echo "campaign: no earlier run in $out to resume, starting afresh" >&2
 	rm -rf "$out/parts"
-	rm -f "$out/jobs" "$out/joblog" "$out/campaign.id" "$out/trials.csv" "$out/trials.csv.tmp" "$out/summary.csv"
+	rm -f "$out/jobs" "$out/joblog" "$out/campaign.id" "$out/trials.csv" "$out/trials.csv.tmp" "$out/summary.csv" \
+		"$out"/.trials.csv.??????
 	if [ -z "$chunk" ]; then
 		# job slots: --jobs per machine; without it the cores here, or the N of an N/login (a
 		# remote's own core count, which parallel finds out, is unknown here: taken as ours)
@@ -151,6 +162,24 @@ if [ "$njobs" -gt 0 ]; then
 	trap 'echo "campaign: terminated; rerun with --resume to run only the jobs not done" >&2; exit 143' TERM
 	parallel "$@" "$tool" campaign "$file" --trials {} --rows || rc=$?
 	trap - INT TERM
+fi
+# A job the joblog records as done must have left its whole part: every row of its trials and a
+# newline at the end. One that could not (a full disk, an I/O error while its rows were written)
+# is recorded as failed in the joblog, so that --resume runs it again once the cause is fixed.
+incomplete=$(awk -F'\t' 'NR == FNR { split($0, r, ":"); size[FNR] = r[2] - r[1]; next }
+	FNR > 1 && $7 == 0 && $8 == 0 { print $1, size[$1] }' "$out/jobs" "$out/joblog" 2>/dev/null |
+	while read -r seq want; do
+		p=$out/parts/$seq.rows
+		if [ ! -f "$p" ] || [ -n "$(tail -c 1 "$p")" ] || [ "$(wc -l < "$p")" -ne "$want" ]; then echo "$seq"; fi
+	done)
+if [ -n "$incomplete" ]; then
+	awk -F'\t' -v OFS='\t' -v bad=" $(echo $incomplete) " 'FNR > 1 && index(bad, " " $1 " ") && $7 == 0 { $7 = 1 } { print }' \
+		"$out/joblog" > "$out/joblog.new" && mv -f "$out/joblog.new" "$out/joblog"
+	for seq in $incomplete; do
+		echo "campaign: job $seq (trials $(sed -n "${seq}p" "$out/jobs")): its part $out/parts/$seq.rows is incomplete (a full disk or an I/O error?); recorded as failed" >&2
+	done
+	echo "campaign: rerun with --resume once the cause is fixed: only the failed and missing jobs run again" >&2
+	exit 1
 fi
 if [ "$rc" -ne 0 ]; then
 	# the job that failed (a nonzero exit of its own, not one parallel stopped), else any

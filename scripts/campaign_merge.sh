@@ -9,7 +9,8 @@
 #   campaign_merge.sh TOOL CAMPAIGN_FILE OUTDIR PART...
 # A part is the rows of some trials (no header), as `--trials A:B --rows` writes them. A part that
 # does not end in a newline was cut short (a killed job) and is refused, as is a row count other
-# than T. The merged file is written as trials.csv.tmp and renamed only once --summarize accepts it.
+# than T. The merged file is written to a temporary made by mktemp in OUTDIR (.trials.csv.XXXXXX:
+# never through a link planted there) and renamed to trials.csv only once --summarize accepts it.
 # Exit status: 0; 1 when merged and summarised but some trials' runs faulted (clauses `fault`); 2
 # with the reason on stderr (the tool's own `file:line: message` included).
 set -eu
@@ -22,7 +23,6 @@ file=$2
 out=$3
 shift 3
 total=$("$tool" campaign "$file" --count)
-tmp=$out/trials.csv.tmp
 for p in "$@"; do
 	if [ ! -f "$p" ]; then
 		echo "campaign_merge: $p: no such part" >&2
@@ -34,6 +34,8 @@ for p in "$@"; do
 		exit 2
 	fi
 done
+tmp=$(mktemp "$out/.trials.csv.XXXXXX")
+chmod "$(printf '%o' $((0666 & ~$(umask))))" "$tmp" # mktemp's 0600: the mode a new file gets
 "$tool" campaign "$file" --header > "$tmp"
 if [ $# -gt 0 ]; then
 	cat -- "$@" | LC_ALL=C sort -t, -k1,1n >> "$tmp"

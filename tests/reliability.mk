@@ -1,8 +1,11 @@
 # tests/reliability.mk — reliability targets (issue 6), included by the Makefile.
 #
 #   make stress          numerical stress: every case in full (the 1,000,000-frame soak included)
-#   make fuzz            libFuzzer on the scenario loader and the recorded-input reader,
-#                        FUZZ_SECONDS (default 60) each; findings in $(BUILD)/fuzz/artifacts
+#   make fuzz            libFuzzer on the scenario loader, the recorded-input reader, the state loader,
+#                        the joint-recording reader, the campaign reader and the CSV readers of
+#                        check and --summarize, FUZZ_SECONDS (default 60) each, one after the other;
+#                        findings in $(BUILD)/fuzz/artifacts
+#   make fuzz-one FUZZ_TARGET=state   one of them (scenario, record, state, joints, campaign, csv)
 #   make determinism     the determinism matrix (scripts/determinism.sh --full): gcc and clang at
 #                        -O0/-O2/-O3 and -march=native, i386, aarch64 (qemu), no-FMA libm paths and
 #                        the sanitizer builds run the catalog and the randomized soak (tests/soak_gen.c):
@@ -98,13 +101,14 @@ FUZZ_DIR     := $(BUILD)/fuzz
 FUZZ_SAN     := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
 FUZZ_CFLAGS   = -std=c11 -D_POSIX_C_SOURCE=200809L -O1 -g $(WARN) $(FP) $(PUBLIC_INC) -Imodel -Iharness -Itests/fuzz $(PKG_CFLAGS) $(FUZZ_SAN)
 FUZZ_LIB_OBJ := $(LIB_SRC:%.c=$(FUZZ_DIR)/obj/%.o) $(HLIB_SRC:%.c=$(FUZZ_DIR)/obj/%.o)
-FUZZ_TARGETS := $(FUZZ_DIR)/fuzz_scenario $(FUZZ_DIR)/fuzz_record
+FUZZ_NAMES   := scenario record state joints campaign csv
+FUZZ_TARGETS := $(FUZZ_NAMES:%=$(FUZZ_DIR)/fuzz_%)
 FUZZ_OPTIONS := -timeout=20 -rss_limit_mb=4096 -max_len=16384 -print_final_stats=1
 
 fuzz-deps:
 	@sh scripts/deps.sh fuzz
 
-$(FUZZ_DIR)/obj/%.o: %.c $(wildcard model/*.h) tests/fuzz/fuzz_common.h | fuzz-deps
+$(FUZZ_DIR)/obj/%.o: %.c $(MODEL_H) $(HARNESS_H) tests/fuzz/fuzz_common.h | fuzz-deps
 	@mkdir -p $(dir $@)
 	$(FUZZ_CC) $(FUZZ_CFLAGS) -fsanitize=fuzzer-no-link -c $< -o $@
 
@@ -117,15 +121,29 @@ fuzz-bin: $(FUZZ_TARGETS)
 .SECONDARY: $(FUZZ_LIB_OBJ) $(FUZZ_TARGETS:$(FUZZ_DIR)/%=$(FUZZ_DIR)/obj/tests/fuzz/%.o)
 
 # Seeds: the catalog, the hostile corpus, tests/fuzz/seeds (valid files with hands, records and
-# support stacking) and the saved reproducers; new inputs are kept in $(FUZZ_DIR)/corpus, crashes
-# go to $(FUZZ_DIR)/artifacts (save them under tests/fuzz/crashes).
+# support stacking) and the saved reproducers; new inputs are kept in $(FUZZ_DIR)/corpus/NAME,
+# crashes go to $(FUZZ_DIR)/artifacts (save them under tests/fuzz/crashes). The newer targets have
+# seed folders of their own: tests/fuzz/seeds_state (state files of tests/fuzz/state/*.yaml, a
+# first byte picking the scenario), seeds_joints (`handspring joints` of tests/fuzz/joints/keys.yaml),
+# seeds_campaign and seeds_csv (a first byte picking the reader: fuzz_csv.c).
+FUZZ_SEEDS_scenario := scenarios tests/bad tests/fuzz/seeds tests/fuzz/crashes
+FUZZ_SEEDS_record   := tests/bad tests/fuzz/seeds tests/fuzz/crashes
+FUZZ_SEEDS_state    := tests/fuzz/seeds_state
+FUZZ_SEEDS_joints   := tests/fuzz/seeds_joints
+FUZZ_SEEDS_campaign := tests/fuzz/seeds_campaign tests/bad_campaign
+FUZZ_SEEDS_csv      := tests/fuzz/seeds_csv
+FUZZ_DICT_scenario  := -dict=tests/fuzz/scenario.dict
+FUZZ_DICT_record    := -dict=tests/fuzz/record.dict
+FUZZ_DICT_joints    := -dict=tests/fuzz/record.dict
+FUZZ_DICT_campaign  := -dict=tests/fuzz/scenario.dict
+FUZZ_TARGET ?= state
+
+.PHONY: fuzz-one
 fuzz: $(FUZZ_TARGETS)
-	@mkdir -p $(FUZZ_DIR)/corpus/scenario $(FUZZ_DIR)/corpus/record $(FUZZ_DIR)/artifacts
-	@echo "fuzz: the scenario loader for $(FUZZ_SECONDS) s"
-	$(FUZZ_DIR)/fuzz_scenario $(FUZZ_OPTIONS) -max_total_time=$(FUZZ_SECONDS) \
-		-dict=tests/fuzz/scenario.dict -artifact_prefix=$(FUZZ_DIR)/artifacts/scenario- \
-		$(FUZZ_DIR)/corpus/scenario scenarios tests/bad tests/fuzz/seeds tests/fuzz/crashes
-	@echo "fuzz: the recorded-input reader for $(FUZZ_SECONDS) s"
-	$(FUZZ_DIR)/fuzz_record $(FUZZ_OPTIONS) -max_total_time=$(FUZZ_SECONDS) \
-		-dict=tests/fuzz/record.dict -artifact_prefix=$(FUZZ_DIR)/artifacts/record- \
-		$(FUZZ_DIR)/corpus/record tests/bad tests/fuzz/seeds tests/fuzz/crashes
+	@for t in $(FUZZ_NAMES); do $(MAKE) --no-print-directory fuzz-one FUZZ_TARGET=$$t || exit 1; done
+
+fuzz-one: $(FUZZ_DIR)/fuzz_$(FUZZ_TARGET)
+	@mkdir -p $(FUZZ_DIR)/corpus/$(FUZZ_TARGET) $(FUZZ_DIR)/artifacts
+	@echo "fuzz: $(FUZZ_TARGET) for $(FUZZ_SECONDS) s"
+	$(FUZZ_DIR)/fuzz_$(FUZZ_TARGET) $(FUZZ_OPTIONS) -max_total_time=$(FUZZ_SECONDS) $(FUZZ_DICT_$(FUZZ_TARGET)) \
+		-artifact_prefix=$(FUZZ_DIR)/artifacts/$(FUZZ_TARGET)- $(FUZZ_DIR)/corpus/$(FUZZ_TARGET) $(FUZZ_SEEDS_$(FUZZ_TARGET))

@@ -1125,20 +1125,28 @@ static void test_noise_draws(void **state) {
 	}
 	assert_true(lowest > 0 && highest > 0); // both ends are drawn
 	// the state: saved, drawn from, loaded: the same draws again
-	size_t n = hs_noise_state_size(noise);
-	assert_true(n > 0);
-	unsigned char *saved = malloc(n);
-	assert_non_null(saved);
-	assert_true(hs_noise_save(noise, saved, n));
+	uint64_t saved[HS_NOISE_WORDS], bad[HS_NOISE_WORDS];
+	assert_true(hs_noise_save(noise, saved));
 	hs_vec3 a = hs_v3(0, 0, 0), b = hs_v3(0, 0, 0);
 	hs_quat qa = hs_quat_identity(), qb = hs_quat_identity();
 	hs_noise_stylus(noise, &a, &qa);
-	assert_false(hs_noise_load(noise, saved, n - 1));
-	assert_true(hs_noise_load(noise, saved, n));
+	// refused, the generator untouched: a word beyond 32 bits, a position beyond the words, all zero
+	int field;
+	memcpy(bad, saved, sizeof bad);
+	bad[7] |= 1ull << 40;
+	assert_false(hs_noise_load(noise, bad));
+	assert_non_null(hs_noise_check(bad, &field));
+	assert_int_equal(field, 7);
+	memcpy(bad, saved, sizeof bad);
+	bad[HS_NOISE_WORDS - 1] = (uint64_t)-100000000;
+	assert_false(hs_noise_load(noise, bad));
+	memset(bad, 0, sizeof bad);
+	bad[0] = 0x7FFFFFFF; // only the top bit of the first word counts
+	assert_false(hs_noise_load(noise, bad));
+	assert_true(hs_noise_load(noise, saved));
 	hs_noise_stylus(noise, &b, &qb);
 	assert_memory_equal(&a, &b, sizeof a);
 	assert_memory_equal(&qa, &qb, sizeof qa);
-	free(saved);
 	hs_noise_destroy(noise);
 }
 
@@ -1387,6 +1395,36 @@ static void test_resume_refusals(void **state) {
 	assert_true(hs_scenario_step(s)); // the scenario is unchanged and runs
 	hs_scenario_destroy(other);
 	hs_scenario_destroy(s);
+}
+
+// Objects that overlap at load are refused, naming two of them (harness/overlap.c): 10,000 cubes at
+// one point answer at once; touching objects (a stack, a row side by side, a tilted cube on its
+// edge against another) and an overlap within the 1 mm tolerance load.
+static void test_overlap(void **state) {
+	(void)state;
+	const char *head = "description: objects at load\ndt: 1/60\nduration: 0.1\nobjects:\n";
+	char *text = NULL;
+	size_t size = 0;
+	FILE *f = open_memstream(&text, &size);
+	assert_non_null(f);
+	fputs(head, f);
+	for (int i = 0; i < 10000; ++i)
+		fprintf(f, "  - { name: c%d, shape: cube, size: 0.05, position: [0, 0, 0.025] }\n", i);
+	fclose(f);
+	load_error("crowd.yaml", text, "6: objects 'c0' (line 5) and 'c1' overlap: a point of one lies 25 mm inside the other "
+	                               "(objects may touch, not overlap by more than 1 mm)");
+	free(text);
+	char touching[2048];
+	snprintf(touching, sizeof touching,
+	         "%s  - { name: a, shape: cube, size: 0.05, position: [0, 0, 0.025] }\n"
+	         "  - { name: b, shape: cube, size: 0.05, position: [0, 0, 0.075] }\n"
+	         "  - { name: c, shape: cube, size: 0.05, position: [0.05, 0, 0.025] }\n"
+	         "  - { name: d, shape: cube, size: 0.05, position: [0.1, 0, 0.0255] }\n"
+	         "  - { name: e, shape: cube, size: 0.05, position: [0.1, 0, 0.0755], rpy_deg: [0, 0, 45] }\n"
+	         "  - { name: f, shape: box, size: [0.1, 0.02, 0.02], position: [0.3, 0, 0.01] }\n"
+	         "  - { name: g, shape: box, size: [0.02, 0.1, 0.02], position: [0.3, 0, 0.0295] }\n",
+	         head);
+	hs_scenario_destroy(load_text("touching.yaml", touching));
 }
 
 // still with `to`: the pose may change after the window
@@ -1663,6 +1701,7 @@ int main(void) {
 	    cmocka_unit_test(test_dt_ranges_nest),
 	    cmocka_unit_test(test_save_and_resume),
 	    cmocka_unit_test(test_resume_refusals),
+	    cmocka_unit_test(test_overlap),
 	    cmocka_unit_test(test_upper_bounds),
 	    cmocka_unit_test(test_face_down),
 	    cmocka_unit_test(test_paper_carry_turns),

@@ -1,6 +1,7 @@
 // campaign_cmd.c — `handspring campaign FILE`: the whole campaign in this process (its trial CSV,
 // its summary), a slice of its trials as rows for a job of GNU parallel or a Slurm array
 // (scripts/campaign.sh), or the summary of rows merged from such jobs (docs/campaigns.md).
+#include <errno.h>
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
@@ -146,7 +147,7 @@ static bool run_trials(hs_campaign *c, long first, long last, FILE *out, bool sh
 static int summarize(const hs_campaign *c, FILE *in, const char *in_path, const char *summary_path) {
 	output o = {0};
 	if (summary_path && !output_open(&o, summary_path)) {
-		fprintf(stderr, "%s: cannot write\n", summary_path);
+		fprintf(stderr, "handspring: %s\n", o.error);
 		output_free(&o);
 		return EXIT_BAD_INPUT;
 	}
@@ -155,7 +156,7 @@ static int summarize(const hs_campaign *c, FILE *in, const char *in_path, const 
 	if (status != EXIT_PASS)
 		fprintf(stderr, "%s\n", err.message);
 	if (summary_path && !output_close(&o, status != EXIT_BAD_INPUT) && status != EXIT_BAD_INPUT) {
-		fprintf(stderr, "%s: write failed\n", summary_path);
+		fprintf(stderr, "handspring: %s\n", o.error);
 		status = EXIT_BAD_INPUT;
 	}
 	output_free(&o);
@@ -180,11 +181,20 @@ static int run_all(hs_campaign *c, const campaign_args *a, hs_error *err) {
 		return fprintf(stderr, "%s: cannot make a temporary file\n", a->file), EXIT_BAD_INPUT;
 	hs_campaign_write_header(c, rows);
 	int status = run_trials(c, 0, hs_campaign_trials(c), rows, a->progress, err) ? EXIT_PASS : EXIT_BAD_INPUT;
+	if (status == EXIT_PASS && (fflush(rows) != 0 || ferror(rows))) // the temporary folder's disk full
+		status = (fprintf(stderr, "handspring: cannot write the trial rows to a temporary file: %s\n",
+		                  strerror(errno ? errno : EIO)), EXIT_BAD_INPUT);
 	output o = {0};
 	if (status == EXIT_PASS && a->out) {
-		if (!output_open(&o, a->out) || !copy_file(rows, o.file) || !output_close(&o, true))
-			status = (fprintf(stderr, "%s: cannot write\n", a->out), EXIT_BAD_INPUT);
-		output_close(&o, false);
+		if (!output_open(&o, a->out))
+			status = (fprintf(stderr, "handspring: %s\n", o.error), EXIT_BAD_INPUT);
+		else {
+			bool copied = copy_file(rows, o.file); // a write error shows at the close: it checks every one
+			if (!output_close(&o, copied) || !copied) {
+				fprintf(stderr, "handspring: %s\n", o.error[0] ? o.error : "the trial rows cannot be read back");
+				status = EXIT_BAD_INPUT;
+			}
+		}
 		output_free(&o);
 	}
 	if (status == EXIT_PASS) {
@@ -221,11 +231,11 @@ static int run_campaign(hs_campaign *c, const campaign_args *a) {
 			return fprintf(stderr, "%s: --trials reaches %ld, the campaign has %ld trials\n", a->file, last,
 			               hs_campaign_trials(c)), EXIT_BAD_INPUT;
 		output o = {0};
-		if (a->out && !output_open(&o, a->out))
-			return fprintf(stderr, "%s: cannot write\n", a->out), output_free(&o), EXIT_BAD_INPUT;
-		status = run_trials(c, a->first, last, a->out ? o.file : stdout, a->progress, &err) ? EXIT_PASS : EXIT_BAD_INPUT;
-		if (a->out && !output_close(&o, status == EXIT_PASS) && status == EXIT_PASS)
-			status = (fprintf(stderr, "%s: write failed\n", a->out), EXIT_BAD_INPUT);
+		if (!output_open(&o, a->out ? a->out : "-"))
+			return fprintf(stderr, "handspring: %s\n", o.error), output_free(&o), EXIT_BAD_INPUT;
+		status = run_trials(c, a->first, last, o.file, a->progress, &err) ? EXIT_PASS : EXIT_BAD_INPUT;
+		if (!output_close(&o, status == EXIT_PASS) && status == EXIT_PASS)
+			status = (fprintf(stderr, "handspring: %s\n", o.error), EXIT_BAD_INPUT);
 		output_free(&o);
 	}
 	if (status != EXIT_PASS && err.message[0])
@@ -244,6 +254,9 @@ int hs_campaign_main(int argc, char **argv) {
 		fprintf(stderr, "%s\n", err.message);
 		return EXIT_BAD_INPUT;
 	}
+	for (int i = 0; i < hs_campaign_input_count(c); ++i) // no output may overwrite what the campaign read
+		output_input(hs_campaign_input_path(c, i));
+	output_input(a.summarize);
 	status = run_campaign(c, &a);
 	hs_campaign_destroy(c);
 	return status;

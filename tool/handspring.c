@@ -12,6 +12,7 @@
 // Exit status: 0 all expectations pass, 1 an expectation failed, 2 bad input or usage.
 #include <errno.h>
 #include <inttypes.h>
+#include <signal.h>
 #include <stdbool.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -268,19 +269,31 @@ static int parse_run(int argc, char **argv, run_options *o) {
 	return -1;
 }
 
+// The scenario's files (its own and those it names): no output may overwrite one.
+static void add_inputs(const hs_scenario *s) {
+	for (int i = 0; i < hs_scenario_input_count(s); ++i)
+		output_input(hs_scenario_input_path(s, i));
+}
+
+// --state-out is refused before the run when it names an input (it is written at --save-at).
+static bool check_state_out(const char *path) {
+	char why[512];
+	if (!path || output_check(path, why, sizeof why))
+		return true;
+	fprintf(stderr, "handspring: %s\n", why);
+	return false;
+}
+
 // Writes the run's state to `path` (complete or not at all).
 static bool save_state(hs_scenario *s, const char *path) {
 	output o;
 	hs_error err;
-	bool ok = output_open(&o, path);
-	if (!ok)
-		fprintf(stderr, "handspring: cannot write %s: %s\n", path, strerror(errno));
-	else if (!(ok = hs_scenario_save(s, o.file, &err) == HS_OK))
+	bool opened = output_open(&o, path), saved = opened && hs_scenario_save(s, o.file, &err) == HS_OK;
+	bool ok = output_close(&o, saved) && saved; // a write error shows here, whatever the save said
+	if (!opened || o.error[0])
+		fprintf(stderr, "handspring: %s\n", o.error);
+	else if (!saved)
 		fprintf(stderr, "%s: %s\n", path, err.message);
-	if (!output_close(&o, ok) && ok) {
-		fprintf(stderr, "handspring: cannot write %s: %s\n", path, strerror(errno));
-		ok = false;
-	}
 	output_free(&o);
 	return ok;
 }
@@ -395,18 +408,21 @@ static int cmd_run(int argc, char **argv) {
 	output traj, hands;
 	memset(&traj, 0, sizeof traj);
 	memset(&hands, 0, sizeof hands);
+	add_inputs(s);
+	output_input(o.resume);
 	bool ok = !o.resume || resume_state(s, o.resume);
-	if (ok && o.out && !to_stdout && !(ok = output_open(&traj, o.out)))
-		fprintf(stderr, "handspring: cannot write %s: %s\n", o.out, strerror(errno));
+	if (ok && o.out && !(ok = output_open(&traj, o.out)))
+		fprintf(stderr, "handspring: %s\n", traj.error);
 	if (ok && o.hands_out && !(ok = output_open(&hands, o.hands_out)))
-		fprintf(stderr, "handspring: cannot write %s: %s\n", o.hands_out, strerror(errno));
-	ok = ok && run_saving(s, to_stdout ? stdout : traj.file, hands.file, &o);
+		fprintf(stderr, "handspring: %s\n", hands.error);
+	ok = ok && check_state_out(o.state_out);
+	ok = ok && run_saving(s, traj.file, hands.file, &o);
 	if (!output_close(&traj, ok) && ok) {
-		fprintf(stderr, "handspring: cannot write %s: %s\n", o.out, strerror(errno));
+		fprintf(stderr, "handspring: %s\n", traj.error);
 		ok = false;
 	}
 	if (!output_close(&hands, ok) && ok) {
-		fprintf(stderr, "handspring: cannot write %s: %s\n", o.hands_out, strerror(errno));
+		fprintf(stderr, "handspring: %s\n", hands.error);
 		ok = false;
 	}
 	output_free(&traj);
@@ -512,7 +528,7 @@ static bool all_run_one(hs_scenario *s, const char *name, const char *path, cons
 		char *csv = join_csv(dirs[k], name);
 		io_ok = csv && output_open(&outs[k], csv);
 		if (!io_ok)
-			fprintf(stderr, "handspring: cannot write %s: %s\n", csv ? csv : name, strerror(errno));
+			fprintf(stderr, "handspring: %s\n", csv ? outs[k].error : "out of memory");
 		else if (k == 1)
 			fprintf(outs[k].file,
 			        "# handspring golden trajectory of scenario %s (%s)\n"
@@ -525,7 +541,7 @@ static bool all_run_one(hs_scenario *s, const char *name, const char *path, cons
 		run_scenario(s, files, 2, outs[2].file, sel);
 	for (int k = 0; k < 3; ++k) {
 		if (!output_close(&outs[k], io_ok) && io_ok) {
-			fprintf(stderr, "handspring: cannot write %s: %s\n", outs[k].path, strerror(errno));
+			fprintf(stderr, "handspring: %s\n", outs[k].error);
 			io_ok = false;
 		}
 		output_free(&outs[k]);
@@ -597,6 +613,8 @@ static int cmd_all(int argc, char **argv) {
 			hs_scenario_destroy(s);
 			s = NULL;
 		}
+		if (s)
+			add_inputs(s);
 		if (!s || !all_run_one(s, name, catalog.paths[i], out_dir, golden_dir, hands_dir, &sel)) {
 			printf("%-*s  %9s  %7s  %11s  %-16s  %s\n", width, name, "-", "-", "-", "-", s ? "WRITE ERROR" : "BAD INPUT");
 			bad++;
@@ -694,14 +712,15 @@ static int cmd_joints(int argc, char **argv) {
 	}
 	fputs(hs_scenario_warnings(s), stderr);
 	output o;
+	add_inputs(s);
 	bool ok = output_open(&o, out);
 	if (!ok)
-		fprintf(stderr, "handspring: cannot write %s: %s\n", out, strerror(errno));
+		fprintf(stderr, "handspring: %s\n", o.error);
 	else if (!(ok = hs_scenario_export_joints(s, (int)hand - 1, format,
 	                                          rate_text ? strtod(rate_text, NULL) : 1.0 / hs_scenario_dt(s), o.file, &err)))
 		fprintf(stderr, "%s\n", err.message);
 	if (!output_close(&o, ok) && ok) {
-		fprintf(stderr, "handspring: cannot write %s: %s\n", out, strerror(errno));
+		fprintf(stderr, "handspring: %s\n", o.error);
 		ok = false;
 	}
 	output_free(&o);
@@ -750,8 +769,13 @@ int main(int argc, char **argv) {
 	                {"sweep", cmd_sweep},  {"view", hs_view_main},     {"joints", cmd_joints},
 	                {"hand", hs_hand_main}, {"check", hs_check_main},  {"golden", cmd_golden},
 	                {"campaign", hs_campaign_main}};
+	// `| head` closing the pipe ends the tool quietly (an inherited SIG_IGN would turn each later
+	// write into an EPIPE error instead)
+	signal(SIGPIPE, SIG_DFL);
 	for (size_t k = 0; k < sizeof commands / sizeof commands[0]; ++k)
-		if (strcmp(command, commands[k].name) == 0)
-			return commands[k].run(argc - 2, argv + 2);
+		if (strcmp(command, commands[k].name) == 0) {
+			int status = commands[k].run(argc - 2, argv + 2);
+			return output_stdout_ok() ? status : EXIT_BAD_INPUT;
+		}
 	return usage_error(NULL, usage_main, "unknown command '%s'", command);
 }

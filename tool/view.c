@@ -16,6 +16,7 @@
 #include <unistd.h>
 
 #include "hs_harness.h"
+#include "output.h"
 #include "view.h"
 
 const char *const hs_view_usage =
@@ -362,6 +363,100 @@ static int draw(const view_opts *o, const view_run *v, const char *data, hs_worl
 	return 0;
 }
 
+// gnuplot draws into the temporary folder; each picture is then checked whole (a GIF ends with its
+// trailer byte, a PNG with its IEND chunk, the page with </html>: gnuplot does not report a short
+// write) and copied to its path through the tool's writer (output.h), which checks every write.
+static bool complete(const char *path, const char *ext) {
+	FILE *f = fopen(path, "rb");
+	unsigned char end[16] = {0};
+	long size = -1;
+	if (f && fseek(f, 0, SEEK_END) == 0 && (size = ftell(f)) >= 16 && fseek(f, -16, SEEK_END) == 0 &&
+	    fread(end, 1, 16, f) != 16)
+		size = -1;
+	if (f)
+		fclose(f);
+	if (size < 16)
+		return false;
+	if (strcmp(ext, "gif") == 0)
+		return end[15] == 0x3B;
+	if (strcmp(ext, "png") == 0)
+		return memcmp(end + 8, "IEND\xae\x42\x60\x82", 8) == 0;
+	for (int i = 0; i + 7 <= 16; ++i)
+		if (memcmp(end + i, "</html>", 7) == 0)
+			return true;
+	return false;
+}
+
+static bool deliver(const char *dir, const char *ext, const char *to) {
+	char from[96];
+	snprintf(from, sizeof from, "%s/out.%s", dir, ext);
+	if (!complete(from, ext)) {
+		fprintf(stderr, "handspring view: gnuplot did not finish %s (is the temporary folder's disk full?)\n", to);
+		remove(from);
+		return false;
+	}
+	FILE *in = fopen(from, "rb");
+	output o;
+	memset(&o, 0, sizeof o);
+	bool ok = in && output_open(&o, to);
+	if (!in)
+		fprintf(stderr, "handspring view: cannot read back %s: %s\n", from, strerror(errno));
+	else if (!ok)
+		fprintf(stderr, "handspring: %s\n", o.error);
+	char buf[1 << 16];
+	size_t n;
+	while (ok && (n = fread(buf, 1, sizeof buf, in)) > 0)
+		fwrite(buf, 1, n, o.file); // a failed write sets the stream's error: output_close reports it
+	if (ok && ferror(in)) {
+		fprintf(stderr, "handspring view: cannot read back %s\n", from);
+		output_close(&o, false);
+		ok = false;
+	} else if (ok && !output_close(&o, true)) {
+		fprintf(stderr, "handspring: %s\n", o.error);
+		ok = false;
+	}
+	if (in)
+		fclose(in);
+	output_free(&o);
+	remove(from);
+	return ok;
+}
+
+// The scenario's files are inputs: no picture may overwrite one (checked before the run).
+static bool outputs_allowed(const view_opts *o, const hs_scenario *s) {
+	const char *outs[3] = {o->gif, o->strip, o->html};
+	for (int i = 0; i < hs_scenario_input_count(s); ++i)
+		output_input(hs_scenario_input_path(s, i));
+	for (int k = 0; k < 3; ++k) {
+		char why[512];
+		if (outs[k] && !output_check(outs[k], why, sizeof why)) {
+			fprintf(stderr, "handspring: %s\n", why);
+			return false;
+		}
+	}
+	return true;
+}
+
+// gnuplot draws every picture into the temporary folder; each is then delivered to its path.
+static int draw_and_deliver(const view_opts *o, const view_run *v, const char *dir, hs_world *w, const char *name) {
+	view_opts drawn = *o;
+	char temp[3][96];
+	static const char *const ext[3] = {"gif", "png", "html"};
+	for (int k = 0; k < 3; ++k)
+		snprintf(temp[k], sizeof temp[k], "%s/out.%s", dir, ext[k]);
+	drawn.gif = o->gif ? temp[0] : NULL;
+	drawn.strip = o->strip ? temp[1] : NULL;
+	drawn.html = o->html ? temp[2] : NULL;
+	int status = draw(&drawn, v, dir, w, name);
+	const char *outs[3] = {o->gif, o->strip, o->html};
+	for (int k = 0; k < 3; ++k)
+		if (outs[k] && (status != 0 || !deliver(dir, ext[k], outs[k]))) {
+			remove(temp[k]);
+			status = 2;
+		}
+	return status;
+}
+
 static int view_usage(const char *fmt, const char *arg) {
 	fprintf(stderr, "handspring view: ");
 	fprintf(stderr, fmt, arg);
@@ -454,6 +549,10 @@ int hs_view_main(int argc, char **argv) {
 		fprintf(stderr, "%s\n", err.message);
 		return 2;
 	}
+	if (!outputs_allowed(&o, s)) {
+		hs_scenario_destroy(s);
+		return 2;
+	}
 	char dir[] = "/tmp/handspring-view-XXXXXX";
 	if (!mkdtemp(dir)) {
 		fprintf(stderr, "handspring view: cannot make a temporary folder: %s\n", strerror(errno));
@@ -480,7 +579,7 @@ int hs_view_main(int argc, char **argv) {
 		if (wanted(&o, hs_world_frame(w), frames, dt))
 			record(&v, s);
 	fprintf(stderr, "handspring view: drawing %ld frames with gnuplot\n", v.records);
-	status = draw(&o, &v, dir, w, hs_scenario_name(s));
+	status = draw_and_deliver(&o, &v, dir, w, hs_scenario_name(s));
 	for (long r = 0; r < v.records; ++r) {
 		char path[96];
 		snprintf(path, sizeof path, "%s/r%06ld.dat", dir, r);

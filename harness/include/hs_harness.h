@@ -102,6 +102,9 @@ typedef struct hs_campaign hs_campaign;
 /// option fails here, at its line. NULL and `err` filled on any problem.
 hs_campaign *hs_campaign_load(const char *path, hs_error *err);
 void hs_campaign_destroy(hs_campaign *campaign);
+/// The files the campaign read: its own file (0), then its scenarios' files and the files they name.
+int hs_campaign_input_count(const hs_campaign *campaign);
+const char *hs_campaign_input_path(const hs_campaign *campaign, int i);
 /// Trials in the campaign: cells × trials per cell.
 long hs_campaign_trials(const hs_campaign *campaign);
 /// What trial `trial` costs to run, in frames (its scenario's duration / its dt): for progress.
@@ -156,6 +159,10 @@ hs_status hs_scenario_save(const hs_scenario *scenario, FILE *out, hs_error *err
 hs_status hs_scenario_resume(hs_scenario *scenario, FILE *in, hs_error *err);
 /// s: the scenario's frame time.
 double hs_scenario_dt(const hs_scenario *scenario);
+/// The files the scenario read, as it opened them: its own file (0), then every file it names (a
+/// hand's or the stylus's `record:`). A program that writes outputs refuses to overwrite these.
+int hs_scenario_input_count(const hs_scenario *scenario);
+const char *hs_scenario_input_path(const hs_scenario *scenario, int i);
 int hs_scenario_object_count(const hs_scenario *scenario);
 /// What the load warns of, one line each ending with a newline ("" when nothing): a joint
 /// recording that says no frame (read as z_up; scenarios/README.md, "Recorded joint positions").

@@ -23,14 +23,14 @@
 static char fuzz_dir[64];
 
 // A fresh folder under /tmp for this process (removed at exit).
-static void fuzz_cleanup(void) {
+static inline void fuzz_cleanup(void) {
 	char cmd[128];
 	snprintf(cmd, sizeof cmd, "rm -rf '%s'", fuzz_dir);
 	if (fuzz_dir[0] && system(cmd) != 0)
 		fprintf(stderr, "fuzz: could not remove %s\n", fuzz_dir);
 }
 
-static void fuzz_make_dir(void) {
+static inline void fuzz_make_dir(void) {
 	if (fuzz_dir[0])
 		return;
 	snprintf(fuzz_dir, sizeof fuzz_dir, "/tmp/hs_fuzz_XXXXXX");
@@ -41,7 +41,7 @@ static void fuzz_make_dir(void) {
 	atexit(fuzz_cleanup);
 }
 
-static void fuzz_write(const char *path, const uint8_t *data, size_t size) {
+static inline void fuzz_write(const char *path, const uint8_t *data, size_t size) {
 	FILE *f = fopen(path, "wb");
 	FUZZ_REQUIRE(f != NULL);
 	FUZZ_REQUIRE(fwrite(data, 1, size, f) == size);
@@ -49,7 +49,7 @@ static void fuzz_write(const char *path, const uint8_t *data, size_t size) {
 }
 
 // "PREFIX:LINE: something", one line: the only shape an error may take.
-static void fuzz_check_message(const char *message) {
+static inline void fuzz_check_message(const char *message) {
 	size_t n = strlen(message);
 	FUZZ_REQUIRE(n > 0 && n < sizeof(((hs_error *)0)->message));
 	FUZZ_REQUIRE(strchr(message, '\n') == NULL);

@@ -1,0 +1,17 @@
+// overlap.h — objects that overlap at load (overlap.c; scenarios/README.md, Objects).
+#ifndef HS_HARNESS_OVERLAP_H
+#define HS_HARNESS_OVERLAP_H
+
+#include <stdbool.h>
+
+#include "handspring.h"
+
+// m: how deep a point of one object may lie inside another before they overlap (touching and
+// stacked objects are at depth 0; rounding in their poses stays far below this).
+#define HS_OVERLAP_TOLERANCE 1e-3
+
+// True when two objects of the world overlap: *first < *second their indices (in the order
+// added), *depth (m) how deep a point of one lies inside the other. The pair found first along x.
+bool hs_find_overlap(const hs_world *w, int *first, int *second, double *depth);
+
+#endif
