@@ -24,6 +24,11 @@ static bool plain_word(const char *s) {
 	return true;
 }
 
+// A node's text when it is a scalar, else NULL (a mapping or a list has no text to read).
+static const char *scalar_of(const yaml_node_t *node) {
+	return node && hs_yaml_is_scalar(node) ? hs_yaml_scalar(node) : NULL;
+}
+
 // The list of an axis: 1 to HS_CAMPAIGN_MAX_VALUES scalars.
 static long axis_length(const hs_yaml *y, const yaml_node_t *key, const yaml_node_t *list) {
 	long n = list->type == YAML_SEQUENCE_NODE ? hs_yaml_length(list) : 0;
@@ -44,7 +49,7 @@ static bool read_number_axis(const hs_yaml *y, const yaml_node_t *key, const yam
 		const yaml_node_t *item = hs_yaml_item(y, list, i);
 		double v = 0.0;
 		if (a->kind == HS_AXIS_DT) {
-			if (!hs_scenario_parse_dt(hs_yaml_scalar(item), &v))
+			if (!scalar_of(item) || !hs_scenario_parse_dt(scalar_of(item), &v))
 				return hs_yaml_fail(y, item, "'dt' values must be frame times within [1/2000, 1/12] s, got %s",
 				                    hs_yaml_got(item).text);
 		} else {
@@ -84,7 +89,7 @@ static bool read_model_axis(const hs_yaml *y, const yaml_node_t *key, const yaml
 	long n = swept_noise(y, key, a->name) ? -1 : axis_length(y, key, list);
 	for (long i = 0; i < n; ++i) {
 		const yaml_node_t *item = hs_yaml_item(y, list, i);
-		const char *v = hs_yaml_scalar(item);
+		const char *v = scalar_of(item);
 		if (!v || !plain_word(v))
 			return hs_yaml_fail(y, item, "a model value must be a number or a word of at most %d characters, got %s",
 			                    HS_CAMPAIGN_MAX_WORD - 1, hs_yaml_got(item).text);
@@ -110,7 +115,7 @@ static bool read_model_set(const hs_yaml *y, const yaml_node_t *map, hs_axis *a,
 	for (yaml_node_pair_t *q = first; q < first + pairs; ++q) {
 		const yaml_node_t *key = yaml_document_get_node((yaml_document_t *)&y->doc, q->key);
 		const yaml_node_t *value = yaml_document_get_node((yaml_document_t *)&y->doc, q->value);
-		const char *k = hs_yaml_scalar(key), *v = hs_yaml_scalar(value);
+		const char *k = scalar_of(key), *v = scalar_of(value);
 		if (!k || !plain_word(k) || !v || !plain_word(v))
 			return hs_yaml_fail(y, value, "a model option and its value must be words of at most %d characters, got %s",
 			                    HS_CAMPAIGN_MAX_WORD - 1, hs_yaml_got(value).text);
@@ -139,7 +144,7 @@ static bool read_model_sets(const hs_yaml *y, const yaml_node_t *key, const yaml
 }
 
 static bool read_axis(hs_campaign *c, const hs_yaml *y, const yaml_node_t *key, const yaml_node_t *list) {
-	const char *name = hs_yaml_scalar(key);
+	const char *name = scalar_of(key);
 	if (!name || !plain_word(name))
 		return hs_yaml_fail(y, key, "an axis is named by a word, got %s", hs_yaml_got(key).text);
 	for (int i = 0; i < c->axis_count; ++i)
@@ -189,7 +194,7 @@ static bool read_sd(const hs_yaml *y, const yaml_node_t *node, const char *key, 
 
 // The index of the name `node` gives among a scenario's hands (hands) or objects, or -1 with an error.
 static int find_name(const hs_yaml *y, const yaml_node_t *node, const hs_scenario *s, bool hands, const char *key) {
-	const char *name = hs_yaml_scalar(node);
+	const char *name = scalar_of(node);
 	int n = hands ? s->hands.count : s->object_count;
 	for (int i = 0; name && i < n; ++i)
 		if (strcmp(name, hands ? s->hands.names[i] : s->object_names[i]) == 0)
