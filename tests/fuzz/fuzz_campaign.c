@@ -19,19 +19,7 @@ int LLVMFuzzerInitialize(int *argc, char ***argv) {
 	(void)argc;
 	(void)argv;
 	fuzz_make_dir();
-	char *text = NULL, base[256];
-	size_t size = 0;
-	FILE *in = fopen("tests/fuzz/campaign/base.yaml", "rb");
-	FILE *m = open_memstream(&text, &size);
-	FUZZ_REQUIRE(in != NULL && m != NULL);
-	int c;
-	while ((c = fgetc(in)) != EOF)
-		fputc(c, m);
-	fclose(in);
-	fclose(m);
-	snprintf(base, sizeof base, "%s/base.yaml", fuzz_dir);
-	fuzz_write(base, (const uint8_t *)text, size);
-	free(text);
+	fuzz_copy_in("tests/fuzz/campaign/base.yaml", "base.yaml");
 	snprintf(campaign_path, sizeof campaign_path, "%s/campaign.yaml", fuzz_dir);
 	return 0;
 }

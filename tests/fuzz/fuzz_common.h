@@ -48,6 +48,23 @@ static inline void fuzz_write(const char *path, const uint8_t *data, size_t size
 	FUZZ_REQUIRE(fclose(f) == 0);
 }
 
+// Copies the repository file `from` into this process's folder as `name` (fuzz_write).
+static inline void fuzz_copy_in(const char *from, const char *name) {
+	char *text = NULL, to[256];
+	size_t size = 0;
+	FILE *in = fopen(from, "rb");
+	FILE *m = open_memstream(&text, &size);
+	FUZZ_REQUIRE(in != NULL && m != NULL);
+	int c;
+	while ((c = fgetc(in)) != EOF)
+		fputc(c, m);
+	fclose(in);
+	fclose(m);
+	snprintf(to, sizeof to, "%s/%s", fuzz_dir, name);
+	fuzz_write(to, (const uint8_t *)text, size);
+	free(text);
+}
+
 // "PREFIX:LINE: something", one line: the only shape an error may take.
 static inline void fuzz_check_message(const char *message) {
 	size_t n = strlen(message);

@@ -16,28 +16,12 @@ static char *trajectory;
 static size_t trajectory_size;
 static hs_campaign *campaign;
 
-static void copy(const char *from, const char *name) {
-	char *text = NULL, to[256];
-	size_t size = 0;
-	FILE *in = fopen(from, "rb");
-	FILE *m = open_memstream(&text, &size);
-	FUZZ_REQUIRE(in != NULL && m != NULL);
-	int c;
-	while ((c = fgetc(in)) != EOF)
-		fputc(c, m);
-	fclose(in);
-	fclose(m);
-	snprintf(to, sizeof to, "%s/%s", fuzz_dir, name);
-	fuzz_write(to, (const uint8_t *)text, size);
-	free(text);
-}
-
 int LLVMFuzzerInitialize(int *argc, char ***argv) {
 	(void)argc;
 	(void)argv;
 	fuzz_make_dir();
-	copy("tests/fuzz/campaign/base.yaml", "base.yaml");
-	copy("tests/fuzz/campaign/summary.yaml", "summary.yaml");
+	fuzz_copy_in("tests/fuzz/campaign/base.yaml", "base.yaml");
+	fuzz_copy_in("tests/fuzz/campaign/summary.yaml", "summary.yaml");
 	char path[256];
 	hs_error err;
 	snprintf(path, sizeof path, "%s/base.yaml", fuzz_dir);

@@ -17,20 +17,9 @@ int LLVMFuzzerInitialize(int *argc, char ***argv) {
 	(void)argc;
 	(void)argv;
 	fuzz_make_dir();
-	char *text = NULL;
-	size_t size = 0;
-	FILE *in = fopen("tests/fuzz/joints/record.yaml", "rb");
-	FILE *m = open_memstream(&text, &size);
-	FUZZ_REQUIRE(in != NULL && m != NULL);
-	int c;
-	while ((c = fgetc(in)) != EOF)
-		fputc(c, m);
-	fclose(in);
-	fclose(m);
+	fuzz_copy_in("tests/fuzz/joints/record.yaml", "record.yaml");
 	snprintf(scenario, sizeof scenario, "%s/record.yaml", fuzz_dir);
 	snprintf(recording, sizeof recording, "%s/joints.csv", fuzz_dir);
-	fuzz_write(scenario, (const uint8_t *)text, size);
-	free(text);
 	return 0;
 }
 
