@@ -135,12 +135,19 @@ void hs_capture_lands(const hs_scenario *s, const hs_clause *c, hs_check *k, lon
 }
 
 // contact_sequence: the object's contact state, repeats collapsed.
+// A state is recorded once it has been held for the clause's min_frames (1: at once), and only
+// when it differs from the last one recorded: a briefer one is left out.
 void hs_capture_sequence(const hs_scenario *s, const hs_clause *c, hs_check *k, long frame) {
-	(void)c, (void)frame;
+	(void)frame;
 	unsigned char state = (unsigned char)hs_scenario_state_of(s, k->object).contact;
-	if (k->u.seq.len > 0 && k->u.seq.last == state)
+	if (k->u.seq.held > 0 && k->u.seq.last == state) {
+		k->u.seq.held++;
+	} else {
+		k->u.seq.last = state;
+		k->u.seq.held = 1;
+	}
+	if (k->u.seq.held != c->min_frames || (k->u.seq.len > 0 && k->u.seq.states[k->u.seq.len - 1] == state))
 		return;
-	k->u.seq.last = state;
 	if (k->u.seq.len < HS_SEQ_CAPACITY)
 		k->u.seq.states[k->u.seq.len++] = state;
 	else
@@ -288,6 +295,7 @@ static void put_seq(hs_state_io *io, const hs_capture *u) {
 	hs_put_i64(io, u->seq.len);
 	hs_put_i64(io, u->seq.overflow);
 	hs_put_u64(io, u->seq.last);
+	hs_put_i64(io, u->seq.held);
 }
 
 // The states recorded are contact states, those beyond `len` zero (never written); at most one
@@ -297,6 +305,7 @@ static void get_seq(hs_state_io *io, hs_capture *u) {
 	u->seq.len = (int)hs_get_range(io, "contact_sequence.len", 0, HS_SEQ_CAPACITY);
 	u->seq.overflow = (long)hs_get_range(io, "contact_sequence.overflow", 0, io->frame + 1);
 	u->seq.last = (unsigned char)hs_get_range(io, "contact_sequence.last", HS_CONTACT_NONE, HS_CONTACT_PUSH_MANY);
+	u->seq.held = (long)hs_get_range(io, "contact_sequence.held", 0, io->frame + 1);
 	for (int i = 0; io->ok && i < HS_SEQ_CAPACITY; ++i)
 		if (u->seq.states[i] > (i < u->seq.len ? HS_CONTACT_PUSH_MANY : 0))
 			hs_state_refuse_field(io, "contact_sequence.states",

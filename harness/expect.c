@@ -1,5 +1,5 @@
 // expect.c — `expect` clauses: reading them (the object, the one predicate, its modifiers `at`,
-// `tolerance`, `axes`, `from`, `to`, `robust`), preparing the checks before the run, and the report after
+// `tolerance`, `axes`, `from`, `to`, `min_s`, `robust`), preparing the checks before the run, and the report after
 // it. What each predicate means is its row in the table (expect_predicates.c).
 #include <math.h>
 #include <stdlib.h>
@@ -8,7 +8,7 @@
 #include "expect_table.h"
 #include "scenario_internal.h"
 
-static const char *const modifier_names[] = {"object", "at", "tolerance", "axes", "from", "to", "robust"};
+static const char *const modifier_names[] = {"object", "at", "tolerance", "axes", "from", "to", "min_s", "robust"};
 
 // The keys of a clause: the predicates' names in table order, then the modifiers.
 static void clause_keys(const char *keys[HS_E_COUNT]) {
@@ -93,6 +93,10 @@ static bool check_modifiers(hs_scenario_parser *p, const hs_fields *f, const hs_
 		rows_with(HS_PRED_AXES, list, sizeof list);
 		return hs_yaml_fail(&p->y, f->key[HS_E_AXES], "'axes' is only for %s", list);
 	}
+	if (f->key[HS_E_MIN_S] && !(row->flags & HS_PRED_MIN_S)) {
+		rows_with(HS_PRED_MIN_S, list, sizeof list);
+		return hs_yaml_fail(&p->y, f->key[HS_E_MIN_S], "'min_s' is only for %s", list);
+	}
 	for (int m = HS_E_FROM; m <= HS_E_TO; ++m)
 		if (f->key[m] && !(row->flags & HS_PRED_FROM_TO)) {
 			rows_with(HS_PRED_FROM_TO, list, sizeof list);
@@ -159,6 +163,20 @@ static bool read_from_to(hs_scenario_parser *p, const yaml_node_t *node, const h
 	return true;
 }
 
+// `min_s`: the shortest time a contact state must be held to count, as frames of this dt (a state
+// held for n frames lasts n dt); default one frame, every state counts.
+static bool read_min_s(hs_scenario_parser *p, const hs_fields *f, hs_clause *c) {
+	c->min_frames = 1;
+	if (!f->value[HS_E_MIN_S])
+		return true;
+	double t;
+	if (!hs_yaml_time(&p->y, f->value[HS_E_MIN_S], "min_s", p->s->duration, &t))
+		return false;
+	long n = (long)ceil(t / p->s->dt - 1e-9); // t <= duration: within MAX_FRAMES
+	c->min_frames = n > 1 ? n : 1;
+	return true;
+}
+
 static bool read_clause(hs_scenario_parser *p, const yaml_node_t *node, hs_clause *c) {
 	if (node->type != YAML_MAPPING_NODE)
 		return hs_yaml_fail(&p->y, node, "each expect clause must be a mapping, got %s", hs_yaml_got(node).text);
@@ -177,6 +195,8 @@ static bool read_clause(hs_scenario_parser *p, const yaml_node_t *node, hs_claus
 	if (row->tolerance_unit && !read_tolerance(p, node, &f, c))
 		return false;
 	if (!row->parse(p, &f, c))
+		return false;
+	if (!read_min_s(p, &f, c))
 		return false;
 	if (f.value[HS_E_ROBUST] && !hs_yaml_bool(&p->y, f.value[HS_E_ROBUST], "robust", &c->robust))
 		return false;

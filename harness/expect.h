@@ -35,6 +35,7 @@ typedef struct hs_clause {
 	                  // conserved: an hs_conserved_quantity
 	double value;     // below/above/moved/swing_below: m; turned_deg: deg; lands_at: s; speed_below: m/s; ...
 	int seq_len;      // contact_sequence
+	long min_frames;  // contact_sequence: a state held for fewer frames is left out (`min_s`)
 	unsigned char seq[HS_SEQ_CAPACITY];
 	int first_member, member_count; // conserved: the group's objects in hs_expectations.members
 	bool all_objects;                // conserved: the group is every object ("*")
@@ -72,6 +73,7 @@ typedef union hs_capture {
 		int len;
 		long overflow;        // changes that did not fit
 		unsigned char last;   // the last state seen, recorded or not
+		long held;            // frames `last` has been held so far
 	} seq;
 	hs_release release; // released: the object's last release (kind NONE: never released)
 } hs_capture;

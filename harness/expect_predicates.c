@@ -457,7 +457,8 @@ static bool eval_sequence(const hs_scenario *s, const hs_clause *c, const hs_che
 	size_t w = (size_t)snprintf(v->what, sizeof v->what, "contact_sequence ");
 	w += write_states(v->what + w, sizeof v->what - w, c->seq, c->seq_len);
 	if (w < sizeof v->what)
-		snprintf(v->what + w, sizeof v->what - w, "]");
+		snprintf(v->what + w, sizeof v->what - w, c->min_frames > 1 ? "] (states held %ld frames or more)" : "]",
+		         c->min_frames);
 	int n = k->u.seq.len;
 	long overflow = k->u.seq.overflow;
 	size_t m = write_states(v->measured, sizeof v->measured, k->u.seq.states, n);
@@ -504,7 +505,7 @@ const hs_predicate hs_predicates[HS_PREDICATE_COUNT] = {
     {"extension_ratio",  AT | SPR,             "a ratio",  parse_value,       hs_capture_at,        S_AT,    eval_extension_ratio},
     {"lands_at",         0,                    "s",        parse_time,        hs_capture_lands,     S_LANDS, eval_lands_at},
     {"still",            FT,                   NULL,       parse_flag,        hs_capture_still,     S_STILL, eval_still},
-    {"contact_sequence", 0,                    NULL,       parse_sequence,    hs_capture_sequence,  S_SEQ,   eval_sequence},
+    {"contact_sequence", HS_PRED_MIN_S,        NULL,       parse_sequence,    hs_capture_sequence,  S_SEQ,   eval_sequence},
     {"never_contact",    FT,                   NULL,       parse_contact_state, hs_capture_contact, S_STILL, eval_contact_watch},
     {"grasped",          FT,                   NULL,       parse_grasped,     hs_capture_contact,   S_STILL, eval_contact_watch},
     {"released",         SPR,                  NULL,       parse_released,    hs_capture_release,   S_REL,   eval_released},

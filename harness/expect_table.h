@@ -9,7 +9,7 @@
 
 // Rows of hs_predicates; the keys of a clause are the predicates' names, then the modifiers.
 #define HS_PREDICATE_COUNT 26
-enum { HS_E_OBJECT = HS_PREDICATE_COUNT, HS_E_AT, HS_E_TOLERANCE, HS_E_AXES, HS_E_FROM, HS_E_TO, HS_E_ROBUST, HS_E_COUNT };
+enum { HS_E_OBJECT = HS_PREDICATE_COUNT, HS_E_AT, HS_E_TOLERANCE, HS_E_AXES, HS_E_FROM, HS_E_TO, HS_E_MIN_S, HS_E_ROBUST, HS_E_COUNT };
 
 // What a predicate accepts and how it is watched.
 enum {
@@ -19,6 +19,7 @@ enum {
 	HS_PRED_WINDOW = 1u << 3,  // from/to is a window: `to` must come at least one frame after `from`
 	HS_PRED_AXES = 1u << 4,    // takes `axes`
 	HS_PRED_GROUP = 1u << 5,   // `object` may name a group (a list or "*"): one check for the group
+	HS_PRED_MIN_S = 1u << 6,   // takes `min_s`: states held for less than that are left out
 };
 
 // The member of hs_capture a predicate records into: what a state file keeps of its checks.

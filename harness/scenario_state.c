@@ -24,8 +24,9 @@
 #include "state_io.h"
 
 static const char MAGIC[8] = {'H', 'S', 'S', 'T', 'A', 'T', 'E', '\n'};
-// version 2: the noise generator as portable words (version 1 held the bytes of GSL's state)
-enum { STATE_VERSION = 2, MAX_STATE_NAME = 4096 };
+// version 2: the noise generator as portable words (version 1 held the bytes of GSL's state);
+// version 3: a contact_sequence check keeps how long its last state has been held
+enum { STATE_VERSION = 3, MAX_STATE_NAME = 4096 };
 
 HS_PRINTF(3, 4)
 static hs_status state_error(hs_error *err, hs_status status, const char *fmt, ...) {

@@ -1555,6 +1555,39 @@ static void test_contact_watch(void **state) {
 	                 0);
 }
 
+// contact_sequence's min_s: a state held for less is left out. In hand/push_off_centre the tip
+// pushes for frames 23-30, reads 0 for frame 31 (resting on the face of a box that moved the frame
+// before) and 1 again for frames 32-36, then draws back.
+static void test_contact_sequence_min_s(void **state) {
+	(void)state;
+	FILE *f = fopen("scenarios/hand/push_off_centre.yaml", "r");
+	assert_non_null(f);
+	static char text[16384];
+	size_t n = fread(text, 1, sizeof text - 1, f);
+	fclose(f);
+	text[n] = '\0';
+	static const struct {
+		const char *clause, *measured;
+	} cases[] = {
+	    {"{ object: box, contact_sequence: [0, 1, 0, 1, 0] }", "contact_sequence [0, 1, 0, 1, 0]: [0, 1, 0, 1, 0]"},
+	    {"{ object: box, contact_sequence: [0, 1, 0], min_s: 0.05 }", "(states held 3 frames or more): [0, 1, 0]"},
+	    {"{ object: box, contact_sequence: [0, 1, 0], min_s: 0.1 }", "(states held 6 frames or more): [0, 1, 0]"},
+	    {"{ object: box, contact_sequence: [0], min_s: 0.15 }", "(states held 9 frames or more): [0]"},
+	};
+	char report[8192];
+	for (size_t k = 0; k < sizeof cases / sizeof cases[0]; ++k) {
+		int failed = check_in(text, "push_off_centre.yaml", cases[k].clause, report, sizeof report);
+		if (failed != 0 || !strstr(report, cases[k].measured))
+			fail_msg("%s: expected '%s', got:\n%s", cases[k].clause, cases[k].measured, report);
+	}
+	assert_int_equal(check_in(text, "push_off_centre.yaml", "{ object: box, contact_sequence: [0, 1, 0] }", report,
+	                          sizeof report),
+	                 1);
+	load_error("m.yaml", "name: m\ndescription: d\ndt: 1/60\nduration: 1\nobjects:\n  - { name: a, shape: cube, size: 0.1, position: [0, 0, 0.05] }\n"
+	           "expect:\n  - { object: a, at: end, resting: true, min_s: 0.1 }\n",
+	           "8: 'min_s' is only for 'contact_sequence'");
+}
+
 // hs_scenario_load_with: --dt replaces the file's, the frames follow; a noise seed changes the run.
 static void test_load_options(void **state) {
 	(void)state;
@@ -1680,6 +1713,7 @@ int main(void) {
 	    cmocka_unit_test(test_lands_at),
 	    cmocka_unit_test(test_still),
 	    cmocka_unit_test(test_contact_sequence),
+	    cmocka_unit_test(test_contact_sequence_min_s),
 	    cmocka_unit_test(test_every_object),
 	    cmocka_unit_test(test_check_before_the_end),
 	    cmocka_unit_test(test_trajectory_rows),

@@ -158,7 +158,7 @@ static void test_header_fields(void **state) {
 	expect_word_refused(frame_at, (uint64_t)-1, "frame -1 of 120 does not fit");
 	expect_word_refused(frame_at, SAVE_AT + 1, "frame is 31, the world's state is at frame 30");
 	expect_word_refused(frame_at + WORD, 121, "does not fit the scenario's 120 frames");
-	expect_word_refused(WORD, 1, "version 1, this build reads version 2");
+	expect_word_refused(WORD, 1, "version 1, this build reads version 3");
 }
 
 static void test_harness_fields(void **state) {
