@@ -279,16 +279,17 @@ bool hs_read_model(hs_scenario_parser *p, const yaml_node_t *node, hs_world_def 
 	                                    "skip_work",           "spring",         "input_noise",
 	                                    "grasp_rule",          "contacts",       "glove_deadband",
 	                                    "release_fit",         "release_window_s", "grasp_opposed",
-	                                    "grasp_close_mm",      "tracking_hold_s"};
+	                                    "grasp_close_mm",      "tracking_hold_s",  "landing"};
 	if (node->type != YAML_MAPPING_NODE)
 		return hs_yaml_fail(&p->y, node, "'model' must be a mapping, got %s", hs_yaml_got(node).text);
 	hs_fields f;
-	if (!hs_yaml_mapping(&p->y, node, names, 14, "model", &f) || !read_grasp_start(p, &f, 11, def))
+	if (!hs_yaml_mapping(&p->y, node, names, 15, "model", &f) || !read_grasp_start(p, &f, 11, def))
 		return false;
 	bool stacking_support = def->stacking == HS_STACKING_SUPPORT;
 	// the realistic rule first, the paper's letter second (docs/model.md §3, §6)
 	if (!read_choice(p, f.value[7], "contacts", "rectified", "paper", &def->paper_contacts) ||
 	    !read_choice(p, f.value[6], "grasp_rule", "fingers", "any", &def->grasp_any_contacts) ||
+	    !read_choice(p, f.value[14], "landing", "path", "paper", &def->paper_landing) ||
 	    !read_choice(p, f.value[1], "stacking", "paper", "support", &stacking_support))
 		return false;
 	def->stacking = stacking_support ? HS_STACKING_SUPPORT : HS_STACKING_PAPER;

@@ -1331,8 +1331,8 @@ static bool touched_before(const hs_world *world, const hs_contact *c) {
 }
 
 // A part that reached a face this frame behind a part of the same finger that already touched
-// that face and drives it further in is set aside: the face, pushed by the leading part, is still
-// ahead of it. Detection tests the parts against the object's pose at the start of the frame; at
+// that face, or reached it earlier in this frame (swept detection's t), and drives it further in
+// is set aside: the face, pushed by the leading part, is still ahead of it. Detection tests the parts against the object's pose at the start of the frame; at
 // 12 frames/s a fingertip pushing at 0.3 m/s moves the face 2.5 cm a frame and its DIP, 1.7 cm
 // behind the tip, "reached" the face the tip was pushing away (`hand/push_off_centre`: state 3,
 // no more turn). A finger that curls or lies down onto the face goes in further than the part
@@ -1345,7 +1345,8 @@ static int drop_trailing(hs_world *world, int first) {
 		for (int m = first; m < world->contact_count && !trails && !c->edge && !touched_before(world, c); ++m) {
 			const hs_contact *l = &world->contacts[m];
 			trails = m != k && !l->edge && l->hand.index1 == c->hand.index1 && finger_of(l->part) == finger_of(c->part) &&
-			         l->feature == c->feature && touched_before(world, l) && push_depth(l) > push_depth(c);
+			         l->feature == c->feature && (touched_before(world, l) || (l->t >= 0.0 && l->t < c->t)) &&
+			         push_depth(l) > push_depth(c);
 		}
 		if (!trails && kept++ != k) // (kept in place: no copy)
 			world->contacts[kept - 1] = *c;

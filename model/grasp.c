@@ -23,6 +23,11 @@ void hs_grasp_follow_wrist(hs_body *body, const hs_hand *hand) {
 	body->rot = hs_quat_normalize(hs_quat_mul(hand->wrist_rot, body->grip_rot));
 }
 
+void hs_grasp_slip(hs_body *body, const hs_hand *hand) {
+	body->grip_pos = hs_quat_inv_rotate(hand->wrist_rot, hs_sub(body->pos, hand->wrist_pos));
+	body->grip_rot = hs_quat_normalize(hs_quat_mul(hs_quat_conj(hand->wrist_rot), body->rot));
+}
+
 // The finger of a check point (i / 4) or check line (j / 12), §3.1.
 static int finger_of(int part) { return part < HS_HAND_POINTS ? part / 4 : (part - HS_HAND_POINTS) / 12; }
 
@@ -151,8 +156,7 @@ static double whole_hand_opening(const hs_hand *hand) {
 void hs_grasp_begin(hs_world *world, hs_body *body, int h, const hs_contact *cs, int n) {
 	const hs_hand *hand = &world->hands[h];
 	body->grasped_by = h + 1;
-	body->grip_pos = hs_quat_inv_rotate(hand->wrist_rot, hs_sub(body->pos, hand->wrist_pos));
-	body->grip_rot = hs_quat_normalize(hs_quat_mul(hs_quat_conj(hand->wrist_rot), body->rot));
+	hs_grasp_slip(body, hand); // the pose it has now, in the wrist frame
 	body->grip_fingers = 0;
 	for (int k = 0; k < n; ++k)
 		if (cs[k].hand.index1 == (uint32_t)h + 1)

@@ -11,6 +11,9 @@
 hs_vec3 hs_grasp_held_pos(const hs_body *body, const hs_hand *hand);
 // §3.2 (2): a held object follows its wrist rigidly, at the pose fixed when the grasp began.
 void hs_grasp_follow_wrist(hs_body *body, const hs_hand *hand);
+// A held object the floor pushed back up (hs_motion_keep_above_floor) keeps that pose in the grip:
+// it slid in the fingers rather than sinking, so it is not carried lower once lifted.
+void hs_grasp_slip(hs_body *body, const hs_hand *hand);
 // The grasp of hand index `h` begins: fixes the object's pose in the wrist frame, the glove's
 // reading and the fingers touching it (cs[0..n)), and ends any release rule (docs/model.md §3).
 void hs_grasp_begin(hs_world *world, hs_body *body, int h, const hs_contact *cs, int n);

@@ -258,8 +258,14 @@ static void release_motion(const hs_world *world, const hs_body *body, const hs_
 	carried_motion(body, hand, 1, held, &h_dt, &h_turn);
 	double held_len = hs_length(h_dt), open_len = hs_length(*v_dt);
 	bool moving = held_len >= HS_RELEASE_MOVING * world->def.dt;
-	if (moving && hs_dot(*v_dt, h_dt) >= HS_RELEASE_CONTINUES * open_len * held_len)
+	double along = hs_dot(*v_dt, h_dt);
+	if (moving && along >= HS_RELEASE_CONTINUES * open_len * held_len)
 		return;
+	if (moving && along < 0.0) { // the hand turned back as it opened (set down, then lifted away):
+		*v_dt = hs_v3(0, 0, 0); // the object left it at the turn, at rest
+		*turn = hs_quat_identity();
+		return;
+	}
 	if (held_len < open_len) {
 		*v_dt = h_dt;
 		*turn = h_turn;
@@ -282,7 +288,10 @@ static void release(hs_world *world, hs_body *body, hs_contact_state last) {
 		hs_vec3 v_dt;
 		hs_quat turn;
 		release_motion(world, body, hand, &v_dt, &turn);
-		body->prev = hs_add(hs_sub(body->pos, v_dt), hs_scale(world->def.gravity, 0.5 * dt * dt));
+		// the fingers opened somewhere in this frame, which does not say where: taken as its middle,
+		// the object leaves this frame where the hand carried it (this frame's step adds v dt) with
+		// the velocity v + g dt / 2 it has half a frame after leaving the hand at v
+		body->prev = hs_add(hs_sub(body->pos, v_dt), hs_scale(world->def.gravity, dt * dt));
 		body->spin = turn;
 	} else {
 		body->spin = hs_quat_normalize(hs_quat_mul(body->rot, hs_quat_conj(body->rot_prev)));
@@ -323,6 +332,11 @@ static void collect_candidates(hs_world *world) {
 	for (int k = 0; k < world->awake_count; ++k) // a release rule lapses once its hand is clear (grasp.c)
 		if (world->bodies[world->awake[k]].held || world->bodies[world->awake[k]].released_by)
 			add_candidate(world, world->awake[k]);
+}
+
+static bool pose_changed(const hs_body *body, hs_pose was) {
+	return body->pos.x != was.pos.x || body->pos.y != was.pos.y || body->pos.z != was.pos.z || body->rot.w != was.rot.w ||
+	       body->rot.x != was.rot.x || body->rot.y != was.rot.y || body->rot.z != was.rot.z;
 }
 
 // §3.2: a grasped object follows the grasping wrist, one contact pushes by eq. 1-2 (on the floor
@@ -474,7 +488,10 @@ void hs_manipulate(hs_world *world) {
 			continue;
 		}
 		move_by_contacts(world, body, state, &world->contacts[first], n, continues);
+		hs_pose carried_to = {body->pos, body->rot};
 		hs_motion_keep_above_floor(world, body); // §4.2 for a pushed object; the trajectory shows its floor contacts
+		if (state == HS_CONTACT_GRASP && pose_changed(body, carried_to)) // pressed into the floor: it slid in the grip
+			hs_grasp_slip(body, &world->hands[body->grasped_by - 1]);
 		double after = state == HS_CONTACT_PUSH_ONE && at_rest ? 1.0 - world->contacts[first].t : 1.0;
 		if (!push_drives_nothing(state, &world->contacts[first], n, at_rest)) // else its motion is kept
 			remember_motion(body, old_pos, old_rot, after);

@@ -78,6 +78,13 @@ static uint64_t definition_checksum(const hs_world *w) {
 		h = hs_state_mix_f64(h, d->release_window_s);
 		h = hs_state_mix(h, (uint64_t)d->release_fit);
 	}
+	// options added later: mixed in only when not at their default, which keeps older checksums
+	if (!d->grasp_opposed || d->grasp_close_mm != 10.0 || d->tracking_hold_s != 0.2 || d->paper_landing) {
+		h = hs_state_mix(h, d->grasp_opposed ? 1u : 0u);
+		h = hs_state_mix_f64(h, d->grasp_close_mm);
+		h = hs_state_mix_f64(h, d->tracking_hold_s);
+		h = hs_state_mix(h, d->paper_landing ? 1u : 0u);
+	}
 	for (int i = 0; i < w->shape_count; ++i)
 		h = shape_checksum(h, &w->shapes[i]);
 	for (int i = 0; i < w->object_count; ++i) {

@@ -136,6 +136,37 @@ static void test_drop_lands_and_sleeps(void **state) {
 	hs_world_destroy(w);
 }
 
+// A box thrown level at 2.5 m/s from 0.5 m lands where its path through the landing frame met the
+// floor (docs/model.md §5 "Landing"): x0 + vx (n - f) dt, f the part of frame n's fall that lay
+// below the floor; with paper_landing, lifted straight up from where frame n left it, x0 + vx n dt.
+static void test_landing_on_the_path(void **state) {
+	(void)state;
+	const double dt = 1.0 / 12, vx = 2.5, z0 = 0.55, g = 9.81;
+	for (int paper = 0; paper <= 1; ++paper) {
+		hs_world_def def = hs_default_world_def();
+		def.dt = dt;
+		def.paper_landing = paper;
+		hs_world *w = hs_world_create(&def, NULL);
+		assert_non_null(w);
+		hs_object_id id = add_object(w, add_box(w, 0.1, 0.1, 0.1), hs_v3(0, 0, z0), hs_quat_identity(), hs_v3(vx, 0, 0));
+		int n = 0;
+		double z = z0, before = z0;
+		while (z - 0.05 >= 0.0) { // the closed form's landing frame
+			++n;
+			before = z;
+			z = z0 - 0.5 * g * (n * dt) * (n * dt);
+		}
+		for (int k = 0; k < n; ++k)
+			assert_int_equal(hs_world_step(w), HS_OK);
+		hs_object_state st = state_of(w, id);
+		double f = (z - 0.05) / (z - before);
+		assert_int_equal(st.floor_contacts, 4);
+		assert_near(st.position.x, paper ? vx * n * dt : vx * (n - f) * dt, 1e-12);
+		assert_near(st.position.z, 0.05, 1e-15);
+		hs_world_destroy(w);
+	}
+}
+
 // Skipping (bounding spheres, sleeping) saves work but never changes a result.
 static void test_skipping_changes_nothing(void **state) {
 	(void)state;
@@ -295,6 +326,7 @@ int main(void) {
 	    cmocka_unit_test(test_spin_carries_over),
 	    cmocka_unit_test(test_hull),
 	    cmocka_unit_test(test_drop_lands_and_sleeps),
+	    cmocka_unit_test(test_landing_on_the_path),
 	    cmocka_unit_test(test_skipping_changes_nothing),
 	    cmocka_unit_test(test_tipping_about_an_edge),
 	    cmocka_unit_test(test_corner_landing_keeps_turning_about_edge),

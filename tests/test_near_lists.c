@@ -157,7 +157,7 @@ static void lists_in_a_busy_world(hs_stacking stacking, double fps, bool noisy) 
 		int row = (i - 1) / ROW, col = (i - 1) % ROW;
 		moved += fabs(p.x - (0.12 + 0.07 * col)) + fabs(p.y - 0.065 * (row - 1)) > 1e-3;
 	}
-	assert_true(moved >= 2);                          // the hand did work among them
+	assert_true(moved >= 1);                          // the hand did work among them
 	assert_true(on.world->near_hits > frames);        // most answers came from the lists
 	assert_true(on.world->awake_count < 3 * ROW / 2); // and most came to rest again
 	hs_world_destroy(on.world);

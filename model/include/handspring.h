@@ -209,6 +209,7 @@ typedef struct hs_world_def {
 	hs_release_fit release_fit; ///< how that velocity is taken from those frames (default HS_RELEASE_FIT_MEAN); the spin is the wrist's mean turn over them either way
 	bool grasp_opposed;         ///< true (default): a new grasp's two contacts must press toward each other across the object, each within 90° − threshold / 2 + 10° of the line between them (a flat hand on a top and a side face is no grasp); false: the normals' angle alone (the 1999 paper's letter; docs/model.md §3 "Grasp start")
 	double grasp_close_mm;      ///< mm, 0..1000: a new grasp's two fingers (of one hand) must have closed by this much: their tips this much nearer than their most open lately (that peak forgets 20 mm/s); 0: no closing needed (the 1999 paper's letter). Default 10
+	bool paper_landing;         ///< false (default): a flying object that reaches the floor lands where its path through the frame met it, then is lifted out; true: lifted straight up from where the frame left it (the 1999 paper's §4.2 letter: up to the horizontal speed × dt further on; docs/model.md §5)
 	double tracking_hold_s;     ///< s, 0..HS_MAX_TRACKING_HOLD: a hand whose tracking is lost (hs_world_set_hand_tracked) keeps its grasps this long, then lets them go in place and touches nothing until tracked again (default 0.2)
 } hs_world_def;
 
