@@ -1,6 +1,7 @@
 """Where the library is found: $HANDSPRING_LIB, the package's folder, the build folders, the system."""
 
 import os
+import shutil
 import subprocess
 import sys
 
@@ -57,3 +58,19 @@ def test_loads_from_build_folder_of_cwd(tmp_path):
 def test_installed_package_under_test():
     # make check-python tests the copy pip installed, not the source folder
     assert "site-packages" in handspring.__file__ and not handspring.__file__.startswith(str(REPO / "python"))
+
+
+def test_loads_from_package_folder(tmp_path):
+    # both libraries copied beside the package: found there, with nothing else to go by
+    pkg = tmp_path / "site" / "handspring"
+    shutil.copytree(os.path.dirname(handspring.__file__), pkg, ignore=shutil.ignore_patterns("__pycache__"))
+    lib = os.path.dirname(os.path.realpath(handspring.library_path()))
+    for name in (NAME, "libhandspring.so.0"):
+        shutil.copy(os.path.join(lib, name), pkg / name)
+    env = {k: v for k, v in os.environ.items() if k not in ("HANDSPRING_LIB", "LD_LIBRARY_PATH")}
+    env["PYTHONPATH"] = str(tmp_path / "site")
+    code = "import handspring; print(handspring.library_path()); print(handspring.run(%r).final_hash)"
+    drop = os.path.abspath("scenarios/drop_cube.yaml")
+    out = subprocess.run([sys.executable, "-c", code % drop], cwd=tmp_path, env=env, capture_output=True, text=True)
+    assert out.returncode == 0, out.stderr
+    assert out.stdout.split() == [str(pkg / NAME), str(handspring.run(drop).final_hash)]
