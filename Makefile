@@ -1,7 +1,7 @@
 # handspring — plain Makefile with knobs:
 #   make [CC=clang] [OPT=-O0] [SANITIZE=1] [BUILD=build/x]
-# Targets: all (static and shared libraries + tool), check, check-readme, run (the main job),
-# golden, bench, plots, install, uninstall, clean.
+# Targets: all (static and shared libraries + tool), check, check-readme, check-python, run (the
+# main job), golden, bench, plots, install, uninstall, clean.
 #   make install [PREFIX=/usr/local] [DESTDIR=/staging] [LIBDIR=...] [LDCONFIG=:]
 
 CC       ?= cc
@@ -189,12 +189,13 @@ check: deps
 	@$(MAKE) --no-print-directory check-readme
 	@$(MAKE) --no-print-directory check-resume
 	@$(MAKE) --no-print-directory check-files
+	@$(MAKE) --no-print-directory check-python
 	@sh scripts/layout_check.sh
 	@sh scripts/importers/check.sh
 	@$(MAKE) --no-print-directory check-sweep
 	@$(MAKE) --no-print-directory check-campaign
 	@$(MAKE) --no-print-directory figures
-	@echo "check: all suites passed (plain and ASan+UBSan, reliability, README examples, resume, files in and out, layout, the hand scenarios' robustness sweep, a campaign over GNU parallel, ssh and a resume, the papers' figures)"
+	@echo "check: all suites passed (plain and ASan+UBSan, reliability, README examples, resume, files in and out, the Python bindings, layout, the hand scenarios' robustness sweep, a campaign over GNU parallel, ssh and a resume, the papers' figures)"
 
 # The tool's files in and out (scenarios/README.md, "How the tool writes files"): outputs that are inputs, /dev/full, planted links, pipes,
 # a full small file system (a tmpfs when root), endless inputs, the campaign lock and a part cut
@@ -203,6 +204,22 @@ check: deps
 check-files: all
 	@sh tests/files_safety.sh $(TOOL)
 	@if [ -x $(BUILD)/asan/handspring ]; then sh tests/files_safety.sh $(BUILD)/asan/handspring; fi
+
+# The Python bindings (python/README.md): the shared libraries and the tool, Debian's Python with
+# numpy and pytest (deps.sh python), a venv under $(BUILD) that sees them, python/ pip-installed
+# into it offline (no index, no build isolation: setuptools is Debian's), then its tests, which
+# hold the bindings against the tool. PYTHON is Debian's interpreter, not one earlier on PATH
+# that cannot see Debian's numpy.
+PYTHON  ?= /usr/bin/python3
+PY_VENV := $(BUILD)/python-venv
+.PHONY: check-python
+check-python: $(SOLIBS) $(TOOL)
+	@sh scripts/deps.sh python
+	@rm -rf $(PY_VENV)
+	@$(PYTHON) -m venv --system-site-packages $(PY_VENV)
+	@$(PY_VENV)/bin/pip install --quiet --no-index --no-build-isolation ./python
+	@HANDSPRING_LIB=$(abspath $(BUILD)) HS_TOOL=$(abspath $(TOOL)) HS_PYTHON_INSTALLED=1 PYTHONDONTWRITEBYTECODE=1 \
+		$(PY_VENV)/bin/python -m pytest -q -p no:cacheprovider python/tests
 
 # Save half-way and resume every catalog scenario: the rest of the run must be byte-identical.
 check-resume: all

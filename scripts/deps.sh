@@ -9,7 +9,8 @@
 # and machines, and make check-campaign drives them through a private sshd on 127.0.0.1 (issue 14,
 # docs/campaigns.md). `deps.sh bench` adds the benchmark peers
 # (ODE, MuJoCo); `deps.sh fuzz` adds the compiler-rt runtime that holds libFuzzer; `deps.sh
-# valgrind` adds valgrind (make valgrind, make determinism).
+# valgrind` adds valgrind (make valgrind, make determinism); `deps.sh python` adds what the
+# Python bindings' test needs (make check-python, python/README.md).
 set -eu
 
 need=""
@@ -51,6 +52,17 @@ for extra in "$@"; do
 		;;
 	valgrind)
 		has_cmd valgrind || need="$need valgrind"
+		;;
+	python)
+		# Debian's interpreter with numpy and pytest, pip, setuptools and venv: make check-python
+		# builds a venv (--system-site-packages) and pip-installs python/ into it offline
+		py=/usr/bin/python3
+		[ -x "$py" ] || need="$need python3"
+		"$py" -c 'import numpy' 2>/dev/null || need="$need python3-numpy"
+		"$py" -c 'import pytest' 2>/dev/null || need="$need python3-pytest"
+		"$py" -m pip --version >/dev/null 2>&1 || need="$need python3-pip"
+		"$py" -c 'import setuptools' 2>/dev/null || need="$need python3-setuptools"
+		"$py" -c 'import ensurepip, venv' 2>/dev/null || need="$need python3-venv"
 		;;
 	esac
 done
