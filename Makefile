@@ -189,12 +189,13 @@ check: deps
 	@$(MAKE) --no-print-directory check-readme
 	@$(MAKE) --no-print-directory check-resume
 	@$(MAKE) --no-print-directory check-files
+	@$(MAKE) --no-print-directory check-golden-dir
 	@sh scripts/layout_check.sh
 	@sh scripts/importers/check.sh
 	@$(MAKE) --no-print-directory check-sweep
 	@$(MAKE) --no-print-directory check-campaign
 	@$(MAKE) --no-print-directory figures
-	@echo "check: all suites passed (plain and ASan+UBSan, reliability, README examples, resume, files in and out, layout, the hand scenarios' robustness sweep, a campaign over GNU parallel, ssh and a resume, the papers' figures)"
+	@echo "check: all suites passed (plain and ASan+UBSan, reliability, README examples, resume, files in and out, layout, the hand scenarios' robustness sweep, a campaign over GNU parallel, ssh and a resume, the papers' figures, golden folders)"
 
 # The tool's files in and out (scenarios/README.md, "How the tool writes files"): outputs that are inputs, /dev/full, planted links, pipes,
 # a full small file system (a tmpfs when root), endless inputs, the campaign lock and a part cut
@@ -203,6 +204,13 @@ check: deps
 check-files: all
 	@sh tests/files_safety.sh $(TOOL)
 	@if [ -x $(BUILD)/asan/handspring ]; then sh tests/files_safety.sh $(BUILD)/asan/handspring; fi
+
+# Where `handspring golden DIR` writes and `check DIR` reads (scenarios/README.md, "Your own
+# folder"): a user folder's goldens in DIR/golden, never in the catalog's golden/ (checksums), no
+# golden for a failing scenario without --force, the catalog's own layout as before; under a second.
+.PHONY: check-golden-dir
+check-golden-dir: all
+	@sh tests/golden_dir.sh $(TOOL)
 
 # Save half-way and resume every catalog scenario: the rest of the run must be byte-identical.
 check-resume: all
