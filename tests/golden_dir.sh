@@ -10,7 +10,7 @@
 #   4. a catalog's own layout (a copy: scenarios/ and golden/ in a temporary folder) still writes
 #      golden/ beside scenarios/, byte for byte what the repository's golden holds, with the header
 #      "regenerate with make golden" when run as `make golden` runs it;
-#   5. `all --strict` refuses a scenario that warns (status 2).
+#   5. `all --strict` and `golden --strict` refuse a scenario that warns (status 2).
 # Usage: sh tests/golden_dir.sh [TOOL]   (default build/handspring)
 set -u
 tool=${1:-build/handspring}
@@ -87,6 +87,9 @@ cp tests/bad/warn_under_floor.yaml "$work/warn/"
 "$tool" all --dir "$work/warn" --strict > "$work/warn.out" 2>&1
 [ $? -eq 2 ] && grep -q "refused: it has warnings (--strict)" "$work/warn.out" ||
 	{ fail "all --strict did not refuse a scenario that warns"; cat "$work/warn.out"; }
+
+"$tool" golden "$work/warn" --strict > "$work/warn.out" 2>&1
+[ $? -eq 2 ] && [ ! -e "$work/warn/golden/warn_under_floor.csv" ] || fail "golden --strict wrote a scenario that warns"
 
 [ "$(sums)" = "$before" ] || fail "the catalog's golden/ changed"
 if [ $fails -gt 0 ]; then
