@@ -189,13 +189,14 @@ check: deps
 	@$(MAKE) --no-print-directory check-readme
 	@$(MAKE) --no-print-directory check-resume
 	@$(MAKE) --no-print-directory check-files
+	@$(MAKE) --no-print-directory check-golden-dir
 	@$(MAKE) --no-print-directory check-python
 	@sh scripts/layout_check.sh
 	@sh scripts/importers/check.sh
 	@$(MAKE) --no-print-directory check-sweep
 	@$(MAKE) --no-print-directory check-campaign
 	@$(MAKE) --no-print-directory figures
-	@echo "check: all suites passed (plain and ASan+UBSan, reliability, README examples, resume, files in and out, the Python bindings, layout, the hand scenarios' robustness sweep, a campaign over GNU parallel, ssh and a resume, the papers' figures)"
+	@echo "check: all suites passed (plain and ASan+UBSan, reliability, README examples, resume, files in and out, golden folders, the Python bindings, layout, the hand scenarios' robustness sweep, a campaign over GNU parallel, ssh and a resume, the papers' figures)"
 
 # The tool's files in and out (scenarios/README.md, "How the tool writes files"): outputs that are inputs, /dev/full, planted links, pipes,
 # a full small file system (a tmpfs when root), endless inputs, the campaign lock and a part cut
@@ -220,6 +221,13 @@ check-python: $(SOLIBS) $(TOOL)
 	@$(PY_VENV)/bin/pip install --quiet --no-index --no-build-isolation ./python
 	@HANDSPRING_LIB=$(abspath $(BUILD)) HS_TOOL=$(abspath $(TOOL)) HS_PYTHON_INSTALLED=1 PYTHONDONTWRITEBYTECODE=1 \
 		$(PY_VENV)/bin/python -m pytest -q -p no:cacheprovider python/tests
+
+# Where `handspring golden DIR` writes and `check DIR` reads (scenarios/README.md, "Your own
+# folder"): a user folder's goldens in DIR/golden, never in the catalog's golden/ (checksums), no
+# golden for a failing scenario without --force, the catalog's own layout as before; under a second.
+.PHONY: check-golden-dir
+check-golden-dir: all
+	@sh tests/golden_dir.sh $(TOOL)
 
 # Save half-way and resume every catalog scenario: the rest of the run must be byte-identical.
 check-resume: all

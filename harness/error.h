@@ -13,6 +13,9 @@
 #define HS_PRINTF(f, a)
 #endif
 
+// Room for a whole message (hs_error.message), for messages built in parts.
+#define HS_ERROR_TEXT (sizeof ((hs_error *)0)->message)
+
 // A path as error messages show it: at most HS_SHOWN_PATH bytes, longer ones as "..." and their
 // end, so the line and the reason always fit in an hs_error. Returns path or buf.
 #define HS_SHOWN_PATH 200

@@ -45,7 +45,7 @@ static bool read_clause_object(hs_scenario_parser *p, const yaml_node_t *node, c
 	else if (!hs_yaml_is_scalar(obj))
 		return hs_yaml_fail(&p->y, obj, "'object' must be an object name or \"*\", got %s", hs_yaml_got(obj).text);
 	else if ((c->object = hs_find_object(p, obj)) < 0)
-		return hs_yaml_fail(&p->y, obj, "unknown object '%s' in expect", hs_yaml_show(obj).text);
+		return hs_unknown_object(p, obj, "expect");
 	return true;
 }
 

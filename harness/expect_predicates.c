@@ -110,7 +110,7 @@ static bool read_group(hs_scenario_parser *p, const yaml_node_t *obj, hs_clause 
 				return hs_yaml_fail(&p->y, m, "'object' must be an object name, a list of names or \"*\", got %s",
 				                    hs_yaml_got(m).text);
 			if ((index = hs_find_object(p, m)) < 0)
-				return hs_yaml_fail(&p->y, m, "unknown object '%s' in expect", hs_yaml_show(m).text);
+				return hs_unknown_object(p, m, "expect");
 			for (long j = 0; j < i; ++j)
 				if (e->members[c->first_member + j] == index)
 					return hs_yaml_fail(&p->y, m, "object '%s' is listed twice", hs_yaml_show(m).text);

@@ -9,7 +9,7 @@
 #include "joint_plausible.h"
 #include "joint_pose.h"
 
-static const double FLOOR_Z = -0.02; // m
+static const double FLOOR_Z = -HS_HAND_FLOOR_SLACK; // m
 static const double MAX_REACH = 10.0; // m
 
 // Tracked samples whose wrist, fitted to the points placed by `place`, is under the floor.

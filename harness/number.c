@@ -72,6 +72,21 @@ hs_number_kind hs_parse_number(const char *s, size_t n, double *out) {
 	return HS_NUMBER_OK;
 }
 
+bool hs_comma_decimal(const char *s, size_t n, char *point, size_t size) {
+	size_t i = n > 0 && (s[0] == '+' || s[0] == '-') ? 1 : 0, comma = 0;
+	for (size_t k = i; k < n; ++k)
+		if (s[k] == ',' && comma == 0 && k > i && k + 1 < n)
+			comma = k;
+		else if (!is_digit(s[k]))
+			return false;
+	if (comma == 0 || n >= size)
+		return false;
+	memcpy(point, s, n);
+	point[comma] = '.';
+	point[n] = '\0';
+	return true;
+}
+
 hs_integer_kind hs_parse_integer(const char *s, size_t n, int64_t *out) {
 	size_t i = n > 0 && (s[0] == '+' || s[0] == '-') ? 1 : 0;
 	if (i == n)

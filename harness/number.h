@@ -17,6 +17,10 @@ hs_number_kind hs_parse_number(const char *s, size_t n, double *out);
 typedef enum hs_integer_kind { HS_INTEGER_OK, HS_INTEGER_SYNTAX, HS_INTEGER_RANGE } hs_integer_kind;
 hs_integer_kind hs_parse_integer(const char *s, size_t n, int64_t *out);
 
+// True when s[0..n) is a number written with a decimal comma ("1,5", "-0,25"): `point` (of
+// `size` bytes) receives it with a point instead, for a message that says so.
+bool hs_comma_decimal(const char *s, size_t n, char *point, size_t size);
+
 // Quaternions typed or recorded must have norm 1 within this; they are then renormalised exactly,
 // so every build starts from the same bits.
 #define HS_QUAT_NORM_TOLERANCE 1e-6

@@ -91,16 +91,20 @@ static bool boxes_overlap(const box *a, const box *b, double tol) {
 	       a->lo.z + tol < b->hi.z && b->lo.z + tol < a->hi.z;
 }
 
-static bool pair_overlaps(const hs_world *w, int i, int j, double *depth) {
+static bool pair_overlaps(const hs_world *w, int i, int j, double tolerance, double *depth) {
 	placed a = place(w, hs_world_object_at(w, i)), b = place(w, hs_world_object_at(w, j));
 	if (!a.shape || !b.shape)
 		return false;
 	double ab = points_in(&a, &b), ba = points_in(&b, &a);
 	*depth = ab > ba ? ab : ba;
-	return *depth > HS_OVERLAP_TOLERANCE;
+	return *depth > tolerance;
 }
 
 bool hs_find_overlap(const hs_world *w, int *first, int *second, double *depth) {
+	return hs_find_overlap_beyond(w, HS_OVERLAP_TOLERANCE, first, second, depth);
+}
+
+bool hs_find_overlap_beyond(const hs_world *w, double tolerance, int *first, int *second, double *depth) {
 	int n = hs_world_object_count(w);
 	box *boxes = malloc((size_t)(n > 0 ? n : 1) * sizeof *boxes);
 	if (!boxes)
@@ -110,12 +114,12 @@ bool hs_find_overlap(const hs_world *w, int *first, int *second, double *depth) 
 	qsort(boxes, (size_t)n, sizeof *boxes, by_lo_x);
 	bool found = false;
 	for (int i = 0; i < n && !found; ++i)
-		for (int j = i + 1; j < n && boxes[j].lo.x + HS_OVERLAP_TOLERANCE < boxes[i].hi.x && !found; ++j) {
-			if (!boxes_overlap(&boxes[i], &boxes[j], HS_OVERLAP_TOLERANCE))
+		for (int j = i + 1; j < n && boxes[j].lo.x + tolerance < boxes[i].hi.x && !found; ++j) {
+			if (!boxes_overlap(&boxes[i], &boxes[j], tolerance))
 				continue;
 			int a = boxes[i].object < boxes[j].object ? boxes[i].object : boxes[j].object;
 			int b = boxes[i].object ^ boxes[j].object ^ a;
-			if ((found = pair_overlaps(w, a, b, depth))) {
+			if ((found = pair_overlaps(w, a, b, tolerance, depth))) {
 				*first = a;
 				*second = b;
 			}

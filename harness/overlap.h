@@ -13,5 +13,7 @@
 // True when two objects of the world overlap: *first < *second their indices (in the order
 // added), *depth (m) how deep a point of one lies inside the other. The pair found first along x.
 bool hs_find_overlap(const hs_world *w, int *first, int *second, double *depth);
+// The same for points deeper than `tolerance` (m): a lesser overlap, warned of (scenario_warn.c).
+bool hs_find_overlap_beyond(const hs_world *w, double tolerance, int *first, int *second, double *depth);
 
 #endif

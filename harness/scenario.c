@@ -14,6 +14,7 @@
 #include "file_read.h"
 #include "scenario_internal.h"
 #include "scenario_parser.h"
+#include "scenario_warn.h"
 
 hs_object_state hs_scenario_state_of(const hs_scenario *s, int object) {
 	hs_object_state st;
@@ -177,6 +178,7 @@ static bool read_scenario(hs_scenario_parser *p, const yaml_node_t *root) {
 		return false;
 	if (f.value[S_EXPECT] && !hs_read_expect(p, f.value[S_EXPECT]))
 		return false;
+	hs_warn_start(p, f.value[S_OBJECTS], f.value[S_HANDS], def.floor_tolerance);
 	return hs_prepare_checks(p, root);
 }
 

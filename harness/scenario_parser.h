@@ -41,6 +41,8 @@ bool hs_read_model(hs_scenario_parser *p, const yaml_node_t *node, hs_world_def 
 bool hs_read_objects(hs_scenario_parser *p, const yaml_node_t *node, hs_world_def def);
 // Index of the object named by a scalar, or -1: the one lookup by name.
 int hs_find_object(const hs_scenario_parser *p, const yaml_node_t *node);
+// Fails with "unknown object 'N' in WHERE", the nearest name and, when there are few, all of them.
+bool hs_unknown_object(const hs_scenario_parser *p, const yaml_node_t *node, const char *where);
 
 // hand_script.c: the world's room for hands (before it is created), then the hands
 bool hs_count_hands(hs_scenario_parser *p, const yaml_node_t *node, hs_world_def *def);

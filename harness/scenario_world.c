@@ -9,6 +9,7 @@
 #include "overlap.h"
 #include "scenario_internal.h"
 #include "scenario_parser.h"
+#include "suggest.h"
 
 enum {
 	MAX_OBJECTS = 100000,    // objects per scenario
@@ -514,6 +515,19 @@ static bool read_size(hs_scenario_parser *p, const hs_fields *f, const yaml_node
 	return true;
 }
 
+// "unknown shape 'cub': did you mean 'cube'? (expected cube, box, ... or polyhedron)"
+static bool unknown_shape(hs_scenario_parser *p, const yaml_node_t *kind) {
+	const char *names[SH_COUNT];
+	for (int i = 0; i < SH_COUNT; ++i)
+		names[i] = shapes[i].name;
+	char why[HS_ERROR_TEXT];
+	snprintf(why, sizeof why, "unknown shape %s", hs_yaml_got(kind).text);
+	if (hs_yaml_is_scalar(kind))
+		hs_suggest_append(why, sizeof why, hs_yaml_scalar(kind), kind->data.scalar.length, names, SH_COUNT, 0);
+	snprintf(why + strlen(why), sizeof why - strlen(why), " (expected cube, box, pyramid, l_block, ellipsoid, sphere or polyhedron)");
+	return hs_yaml_fail(&p->y, kind, "%s", why);
+}
+
 static bool read_shape(hs_scenario_parser *p, const hs_fields *f, const yaml_node_t *obj, const char *name,
                        hs_shape **shape) {
 	const yaml_node_t *kind = f->value[O_SHAPE];
@@ -523,9 +537,7 @@ static bool read_shape(hs_scenario_parser *p, const hs_fields *f, const yaml_nod
 	while (sh < SH_COUNT && !hs_yaml_scalar_is(kind, shapes[sh].name))
 		++sh;
 	if (sh == SH_COUNT)
-		return hs_yaml_fail(&p->y, kind,
-		                    "unknown shape %s (expected cube, box, pyramid, l_block, ellipsoid, sphere or polyhedron)",
-		                    hs_yaml_got(kind).text);
+		return unknown_shape(p, kind);
 	if (sh != SH_POLYHEDRON && f->key[O_VERTICES])
 		return hs_yaml_fail(&p->y, f->key[O_VERTICES], "'vertices' is only for shape polyhedron");
 	if (sh != SH_POLYHEDRON && f->key[O_FACES])
@@ -672,6 +684,15 @@ bool hs_read_objects(hs_scenario_parser *p, const yaml_node_t *node, hs_world_de
 	return true;
 }
 
+
+bool hs_unknown_object(const hs_scenario_parser *p, const yaml_node_t *node, const char *where) {
+	char why[HS_ERROR_TEXT];
+	snprintf(why, sizeof why, "unknown object '%s' in %s", hs_yaml_show(node).text, where);
+	const hs_scenario *s = p->s;
+	hs_suggest_append(why, sizeof why, hs_yaml_scalar(node), node->data.scalar.length,
+	                  (const char *const *)s->object_names, s->object_count, 1);
+	return hs_yaml_fail(&p->y, node, "%s", why);
+}
 
 int hs_find_object(const hs_scenario_parser *p, const yaml_node_t *node) {
 	size_t n = node->data.scalar.length;

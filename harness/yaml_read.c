@@ -1,11 +1,13 @@
 // yaml_read.c — libyaml's document API wrapped for strict reading: one document, every value
 // checked where it is read, every message "PATH:LINE: what is wrong" quoting what was found.
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "file_read.h"
 #include "file_list.h"
+#include "suggest.h"
 #include "yaml_read.h"
 
 bool hs_yaml_fail(const hs_yaml *y, const yaml_node_t *node, const char *fmt, ...) {
@@ -200,7 +202,31 @@ bool hs_yaml_number(const hs_yaml *y, const yaml_node_t *node, const char *key, 
 	case HS_NUMBER_SYNTAX:
 		break;
 	}
+	char point[64];
+	if (hs_comma_decimal(hs_yaml_scalar(node), node->data.scalar.length, point, sizeof point))
+		return hs_yaml_fail(y, node, "'%s' must be a number, got %s: write decimals with a point (%s)", key,
+		                    hs_yaml_got(node).text, point);
 	return hs_yaml_fail(y, node, "'%s' must be a number, got %s", key, hs_yaml_got(node).text);
+}
+
+// A number with a decimal comma in a flow collection ([0, 1,5, 2] or { size: 1,5 }) is read as two
+// plain scalars, the comma between them and no space after it: true with the hint in `hint`.
+static bool split_decimal(const yaml_node_t *a, const yaml_node_t *b, char *hint, size_t size) {
+	if (!a || !b || !hs_yaml_is_scalar(a) || !hs_yaml_is_scalar(b) || a->data.scalar.style != YAML_PLAIN_SCALAR_STYLE ||
+	    b->data.scalar.style != YAML_PLAIN_SCALAR_STYLE || b->start_mark.index != a->end_mark.index + 1)
+		return false;
+	size_t na = a->data.scalar.length, nb = b->data.scalar.length;
+	char joined[64], point[64];
+	if (na + nb + 2 > sizeof joined)
+		return false;
+	memcpy(joined, hs_yaml_scalar(a), na);
+	joined[na] = ',';
+	memcpy(joined + na + 1, hs_yaml_scalar(b), nb);
+	joined[na + nb + 1] = '\0';
+	if (!hs_comma_decimal(joined, na + nb + 1, point, sizeof point))
+		return false;
+	snprintf(hint, size, ": write decimals with a point ('%s' is read as two numbers; write %s)", joined, point);
+	return true;
 }
 
 bool hs_yaml_integer(const hs_yaml *y, const yaml_node_t *node, const char *key, int64_t lo, int64_t hi, int64_t *out) {
@@ -256,8 +282,11 @@ bool hs_yaml_numbers(const hs_yaml *y, const yaml_node_t *node, const char *key,
 		return hs_yaml_fail(y, node, "'%s' must be a list of %d numbers%s, got %s", key, count, what,
 		                    hs_yaml_got(node).text);
 	long n = hs_yaml_length(node);
+	char hint[200] = "";
+	for (long i = 0; n != count && i + 1 < n && !hint[0]; ++i)
+		split_decimal(hs_yaml_item(y, node, i), hs_yaml_item(y, node, i + 1), hint, sizeof hint);
 	if (n != count)
-		return hs_yaml_fail(y, node, "'%s' must be a list of %d numbers%s, got %ld", key, count, what, n);
+		return hs_yaml_fail(y, node, "'%s' must be a list of %d numbers%s, got %ld%s", key, count, what, n, hint);
 	for (int i = 0; i < count; ++i) {
 		const yaml_node_t *e = hs_yaml_item(y, node, i);
 		if (!hs_yaml_number(y, e, key, &out[i]))
@@ -311,6 +340,24 @@ bool hs_yaml_quat(const hs_yaml *y, const yaml_node_t *node, const char *key, hs
 // ---------------------------------------------------------------------------------------------
 // mappings
 
+// "unknown key 'K' in WHERE", with the nearest key and the list of keys when it is short, or the
+// decimal comma that split a number into a value and this key.
+static bool unknown_key(const hs_yaml *y, const yaml_node_t *map, const yaml_node_pair_t *pair,
+                        const char *const *names, int name_count, const char *where) {
+	const yaml_node_t *k = yaml_document_get_node((yaml_document_t *)&y->doc, pair->key);
+	const yaml_node_t *before = pair > map->data.mapping.pairs.start
+	                                ? yaml_document_get_node((yaml_document_t *)&y->doc, pair[-1].value)
+	                                : NULL;
+	char why[HS_ERROR_TEXT];
+	snprintf(why, sizeof why, "unknown key '%s' in %s", hs_yaml_show(k).text, where);
+	char hint[200];
+	if (split_decimal(before, k, hint, sizeof hint))
+		strncat(why, hint, sizeof why - strlen(why) - 1);
+	else
+		hs_suggest_append(why, sizeof why, hs_yaml_scalar(k), k->data.scalar.length, names, name_count, 1);
+	return hs_yaml_fail(y, k, "%s", why);
+}
+
 bool hs_yaml_mapping(const hs_yaml *y, const yaml_node_t *map, const char *const *names, int name_count,
                      const char *where, hs_fields *f) {
 	memset(f, 0, sizeof *f);
@@ -323,7 +370,7 @@ bool hs_yaml_mapping(const hs_yaml *y, const yaml_node_t *map, const char *const
 			return hs_yaml_fail(y, k, "keys must be words, got %s in %s", hs_yaml_got(k).text, where);
 		int i = hs_yaml_word(k, names, name_count);
 		if (i < 0)
-			return hs_yaml_fail(y, k, "unknown key '%s' in %s", hs_yaml_show(k).text, where);
+			return unknown_key(y, map, pair, names, name_count, where);
 		if (f->key[i])
 			return hs_yaml_fail(y, k, "duplicate key '%s' (first at line %lu)", names[i], hs_yaml_line(f->key[i]));
 		f->key[i] = k;

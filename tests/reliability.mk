@@ -76,9 +76,9 @@ valgrind:
 		> $(VALGRIND_BUILD)/vg/catalog.txt 2> $(VALGRIND_BUILD)/vg/catalog.err; \
 	rc=$$?; if [ $$rc -gt 1 ] || [ -s $(VALGRIND_BUILD)/vg/catalog.err ]; then \
 		cat $(VALGRIND_BUILD)/vg/catalog.err; echo "valgrind: the catalog run reported errors (status $$rc)"; exit 1; fi
-	@echo "valgrind: every tests/bad/*.yaml (exit status 2, one line, no error, no leak)"
+	@echo "valgrind: every tests/bad/*.yaml with --strict (exit status 2, one line, no error, no leak)"
 	@n=0; for f in tests/bad/*.yaml; do \
-		$(VALGRIND) $(VALGRIND_BUILD)/handspring run $$f > /dev/null 2> $(VALGRIND_BUILD)/vg/bad.err; rc=$$?; \
+		$(VALGRIND) $(VALGRIND_BUILD)/handspring run --strict $$f > /dev/null 2> $(VALGRIND_BUILD)/vg/bad.err; rc=$$?; \
 		if [ $$rc -ne 2 ] || [ "$$(wc -l < $(VALGRIND_BUILD)/vg/bad.err)" -ne 1 ]; then \
 			cat $(VALGRIND_BUILD)/vg/bad.err; echo "valgrind: $$f: status $$rc"; exit 1; fi; \
 		n=$$((n + 1)); done; \

@@ -1,6 +1,8 @@
 // test_bad_input.c — bad scenario input ends with one clear message (file:line: what), exit
 // status 2, no crash, no leak. Every tests/bad/*.yaml starts with "# expect: <exact stderr line>";
 // the tool ($HS_TOOL, default build/handspring) and hs_scenario_load must both give that line.
+// A file that starts with "# warning: <line>" loads with that one warning: `run` prints it and runs
+// on, `run --strict` prints it and exits 2 without running; the catalog loads without any.
 #include <stdarg.h>
 #include <stddef.h>
 #include <stdint.h>
@@ -21,6 +23,7 @@
 
 #define BAD_DIR "tests/bad"
 #define EXPECT_PREFIX "# expect: "
+#define WARNING_PREFIX "# warning: "
 
 static const char *tool_path(void) {
 	const char *t = getenv("HS_TOOL");
@@ -113,6 +116,31 @@ static void expect_bad(const char *path, const char *expected) {
 	assert_string_equal(err.message, expected);
 }
 
+// The tool warns with `expected` for `path` and runs on (with --strict: refuses, status 2); the
+// library loads it with that one warning.
+static void expect_warning(const char *path, const char *expected) {
+	char want[1100];
+	snprintf(want, sizeof want, "%s\n", expected);
+	const char *strict[] = {"run", "--strict", path, NULL}, *plain[] = {"run", path, NULL};
+	tool_result r = run_tool(strict);
+	if (strcmp(r.err, want) != 0)
+		print_error("%s --strict:\n  stderr:   %s  expected: %s", path, r.err, want);
+	assert_string_equal(r.err, want);
+	assert_string_equal(r.out, "");
+	assert_int_equal(r.status, 2);
+	free_result(&r);
+	r = run_tool(plain);
+	assert_string_equal(r.err, want);
+	assert_non_null(strstr(r.out, "PASS\n")); // the run went on; its status is the expectations'
+	assert_int_equal(r.status, 0);
+	free_result(&r);
+	hs_error err;
+	hs_scenario *s = hs_scenario_load(path, &err);
+	assert_non_null(s);
+	assert_string_equal(hs_scenario_warnings(s), want);
+	hs_scenario_destroy(s);
+}
+
 // ---------------------------------------------------------------------------------------------
 // the corpus: one test per file
 
@@ -124,10 +152,13 @@ static void test_corpus_file(void **state) {
 	char *got = fgets(line, sizeof line, f);
 	fclose(f);
 	assert_non_null(got);
-	if (strncmp(line, EXPECT_PREFIX, strlen(EXPECT_PREFIX)) != 0)
-		fail_msg("%s: the first line must be '" EXPECT_PREFIX "<exact stderr line>'", path);
 	line[strcspn(line, "\r\n")] = '\0';
-	expect_bad(path, line + strlen(EXPECT_PREFIX));
+	if (strncmp(line, WARNING_PREFIX, strlen(WARNING_PREFIX)) == 0)
+		expect_warning(path, line + strlen(WARNING_PREFIX));
+	else if (strncmp(line, EXPECT_PREFIX, strlen(EXPECT_PREFIX)) != 0)
+		fail_msg("%s: the first line must be '" EXPECT_PREFIX "<exact stderr line>' (or '" WARNING_PREFIX "...')", path);
+	else
+		expect_bad(path, line + strlen(EXPECT_PREFIX));
 }
 
 static int compare_strings(const void *a, const void *b) { return strcmp(*(char *const *)a, *(char *const *)b); }
@@ -469,6 +500,43 @@ static void test_usage(void **state) {
 	}
 }
 
+// Touching is not overlapping: cubes side by side, stacked and on the floor, a box turned 45 degrees
+// on its edge against them, a hand whose fingers rest on the floor, a sphere in a spring world: no
+// warning. And every catalog scenario loads without one.
+static void test_no_warnings(void **state) {
+	(void)state;
+	static const char text[] =
+	    "description: touching, not overlapping\ndt: 1/60\nduration: 0.1\nobjects:\n"
+	    "  - { name: a, shape: cube, size: 0.1, position: [0, 0, 0.05] }\n"
+	    "  - { name: b, shape: cube, size: 0.1, position: [0.1, 0, 0.05] }\n"
+	    "  - { name: c, shape: cube, size: 0.1, position: [0, 0, 0.15] }\n"
+	    "  - { name: d, shape: box, size: [0.1, 0.1, 0.1], rpy_deg: [45, 0, 0], position: [0, 0.12071067811865475, "
+	    "0.07071067811865475] }\n"
+	    "hands:\n  - name: right\n    keys:\n      - { t: 0, wrist: [0.5, 0, 0.008] }\n";
+	char *path = temp_path("touching.yaml");
+	write_bytes(path, text, sizeof text - 1);
+	hs_error err;
+	hs_scenario *s = hs_scenario_load(path, &err);
+	if (!s)
+		fail_msg("%s", err.message);
+	assert_string_equal(hs_scenario_warnings(s), "");
+	hs_scenario_destroy(s);
+	remove(path);
+	free(path);
+	hs_catalog catalog;
+	assert_true(hs_catalog_load("scenarios", &catalog, &err));
+	assert_true(catalog.count > 50);
+	for (int i = 0; i < catalog.count; ++i) {
+		s = hs_scenario_load(catalog.paths[i], &err);
+		if (!s)
+			fail_msg("%s", err.message);
+		if (hs_scenario_warnings(s)[0])
+			fail_msg("%s warns: %s", catalog.paths[i], hs_scenario_warnings(s));
+		hs_scenario_destroy(s);
+	}
+	hs_catalog_free(&catalog);
+}
+
 // A catalog folder that does not exist is bad input for list and all.
 static void test_missing_catalog(void **state) {
 	(void)state;
@@ -520,6 +588,7 @@ int main(void) {
 	    cmocka_unit_test(test_usage),           cmocka_unit_test(test_missing_catalog),
 	    cmocka_unit_test(test_deep_flow_nesting), cmocka_unit_test(test_endless_records),
 	    cmocka_unit_test(test_tool_resume),     cmocka_unit_test(test_out_stdout),
+	    cmocka_unit_test(test_no_warnings),
 	};
 	size_t nfixed = sizeof fixed / sizeof fixed[0];
 	struct CMUnitTest *tests = calloc(count + nfixed, sizeof *tests);

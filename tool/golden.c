@@ -7,11 +7,13 @@
 #include <string.h>
 
 #include "golden.h"
+#include "golden_dir.h"
 
 const char *const hs_check_usage =
     "usage: handspring check DIR [--golden GDIR]\n"
     "Runs every scenario below DIR (*.yaml, recursively) and compares it with its golden trajectory\n"
-    "GDIR/<name>.csv (default: the folder 'golden' beside DIR), as 'make check' does the catalog:\n"
+    "GDIR/<name>.csv (default: DIR/golden, or for a folder named 'scenarios' the folder 'golden' beside\n"
+    "it: where 'handspring golden DIR' writes them), as 'make check' does the catalog:\n"
     "numbers within 1e-12, contact states and rows exactly, every expectation passing, and a second\n"
     "run's state hashes equal to the first's, frame by frame. 'handspring golden DIR' writes them.\n"
     "Exit status: 0 all match, 1 one does not, 2 bad input (a folder or file that cannot be read).\n";
@@ -118,7 +120,7 @@ int hs_check_main(int argc, char **argv) {
 			fputs(hs_check_usage, stdout);
 			return 0;
 		}
-		if (strcmp(argv[i], "--golden") == 0) {
+		if (strcmp(argv[i], "--golden") == 0 || strcmp(argv[i], "--golden-dir") == 0) {
 			if (i + 1 >= argc) {
 				fprintf(stderr, "handspring check: --golden needs a folder\n%s", hs_check_usage);
 				return 2;
@@ -136,7 +138,7 @@ int hs_check_main(int argc, char **argv) {
 		fprintf(stderr, "handspring check: missing the scenario folder DIR\n%s", hs_check_usage);
 		return 2;
 	}
-	char *beside = gdir ? NULL : hs_golden_beside(dir);
+	char *beside = gdir ? NULL : hs_golden_default(dir);
 	if (!gdir)
 		gdir = beside;
 	hs_catalog catalog;

@@ -21,6 +21,7 @@
 
 #include "hs_harness.h"
 #include "golden.h"
+#include "golden_dir.h"
 #include "hand_cmd.h"
 #include "outsel.h"
 #include "output.h"
@@ -41,7 +42,7 @@ static const char *const usage_main =
     "  hand [--posture P] [--amount A]                    the hand's check points in the wrist frame\n"
     "  joints FILE --format mediapipe|openxr --out OUT    a scenario's hand as a joint recording\n"
     "  check DIR [--golden GDIR]                          compare a folder of scenarios with their goldens\n"
-    "  golden DIR [--golden GDIR]                         write a folder's goldens\n"
+    "  golden DIR [--golden GDIR] [--force]               write a folder's goldens (default: DIR/golden)\n"
     "  view FILE [--gif OUT] [--strip OUT --at T,...] [--html OUT]\n"
     "                                                     draw a scenario in 3-D with gnuplot\n"
     "Run 'handspring <command> --help' for the options of a command.\n";
@@ -52,7 +53,7 @@ static const char *const usage_list =
 
 static const char *const usage_run =
     "usage: handspring run FILE [--out TRAJ.csv] [--hands-out HANDS.csv] [--save-at FRAME --state-out PATH]\n"
-    "                           [--resume PATH] [--dt DT] [--noise-seed N] [--phase F]\n"
+    "                           [--resume PATH] [--dt DT] [--noise-seed N] [--phase F] [--strict]\n"
     "Runs the scenario FILE and prints its name, frames, objects, one PASS/FAIL line per expectation\n"
     "with the measured value, and the final state hash.\n"
     "  --out TRAJ.csv     also write the trajectory (one row per object per frame, frame 0 included);\n"
@@ -78,6 +79,11 @@ static const char *const usage_run =
     "                     noise. Neither goes with --save-at or --resume (a state file names the file only).\n"
     "  --phase F          run the input scripts F of a frame late (0 <= F < 1): the same motions with\n"
     "                     the frames falling elsewhere on them (as a sweep's seeds do); not with --resume\n"
+    "  --strict           treat the load's warnings (an object under the floor, objects overlapping at\n"
+    "                     the start, a hand under the floor, a sphere in a hand world) as bad input:\n"
+    "                     they are printed and the scenario is not run (exit status 2)\n"
+    "Bad input is one line on stderr, FILE:LINE: what is wrong, with \"did you mean 'X'?\" for a\n"
+    "misspelt key, object or shape; warnings are lines FILE:LINE: warning: ..., and the run goes on.\n"
     "Exit status: 0 every expectation passed, 1 one failed, 2 bad input (one error line on stderr).\n";
 
 static const char *const usage_sweep =
@@ -90,16 +96,27 @@ static const char *const usage_sweep =
     "Exit status: 0 every cell and the nominal run pass, 1 any fails, 2 bad input (no robust block too).\n";
 
 static const char *const usage_golden =
-    "usage: handspring golden DIR [--golden GDIR]\n"
-    "Runs every scenario below DIR and writes its trajectory as the golden GDIR/<name>.csv (default:\n"
-    "the folder 'golden' beside DIR); 'handspring check DIR' then compares runs with them.\n"
-    "Exit status: 0 written and every expectation passed, 1 one failed, 2 bad input.\n";
+    "usage: handspring golden DIR [--golden GDIR] [--force] [--strict]\n"
+    "Runs every scenario below DIR and writes its trajectory as the golden GDIR/<name>.csv, whose header\n"
+    "names the command that writes it again; 'handspring check DIR' then compares runs with them.\n"
+    "GDIR is by default DIR/golden (for a folder named 'scenarios', the folder 'golden' beside it, the\n"
+    "catalog's layout). A catalog's goldens folder (a folder 'golden' with 'scenarios' beside it) is\n"
+    "refused for any other DIR: a scenario named like a catalog one never overwrites the catalog's golden.\n"
+    "  --golden GDIR  write the goldens there instead (also --golden-dir)\n"
+    "  --force        also write the golden of a scenario whose expectations fail (a warning on stderr;\n"
+    "                 without it such a golden is not written and the message says so)\n"
+    "  --strict       a scenario with load warnings is bad input (see 'handspring run --help')\n"
+    "Exit status: 0 written and every expectation passed, 1 one failed, 2 bad input or a refused GDIR.\n";
 
 static const char *const usage_all =
-    "usage: handspring all [--dir DIR] [--out-dir DIR] [--golden-dir DIR] [--hands-dir DIR]\n"
+    "usage: handspring all [--dir DIR] [--out-dir DIR] [--golden-dir DIR] [--hands-dir DIR] [--force] [--strict]\n"
     "Runs every scenario below --dir (default: scenarios) and prints a summary table.\n"
     "  --out-dir DIR     write each trajectory to DIR/<name>.csv (subfolders are created)\n"
-    "  --golden-dir DIR  write each trajectory as a golden file DIR/<name>.csv (what 'make golden' does)\n"
+    "  --golden-dir DIR  write each trajectory as a golden file DIR/<name>.csv (what 'make golden' does),\n"
+    "                    only for the scenarios whose expectations pass; a catalog's goldens folder only\n"
+    "                    for that catalog (as 'handspring golden')\n"
+    "  --force           write the goldens of failing scenarios too (a warning on stderr for each)\n"
+    "  --strict          a scenario with load warnings is bad input (see 'handspring run --help')\n"
     "  --hands-dir DIR   write each scenario's hands and stylus (as run --hands-out) to DIR/<name>.csv\n"
     "the --out-dir and --hands-dir files only (not the goldens), objects a scenario lacks passed over:\n"
     HS_OUTSEL_USAGE
@@ -173,6 +190,7 @@ static void run_scenario(hs_scenario *s, FILE **outs, int out_count, FILE *hands
 typedef struct run_options {
 	const char *file, *out, *hands_out, *state_out, *resume;
 	long save_at; // -1: no state saved
+	bool strict;  // --strict: a scenario with warnings is bad input
 	hs_scenario_options load; // --dt, --noise-seed
 	hs_outsel sel; // --objects, --every, --from, --to
 } run_options;
@@ -249,6 +267,8 @@ static int parse_run(int argc, char **argv, run_options *o) {
 		} else if (option_value(argc, argv, &i, "--save-at", &frame, &missing)) {
 			if (missing || !parse_frame(frame, &o->save_at))
 				return usage_error("run", usage_run, "%s needs a frame number (0, 1, 2, ...)", "--save-at");
+		} else if (strcmp(argv[i], "--strict") == 0) {
+			o->strict = true;
 		} else if (parse_load_option(argc, argv, &i, &o->load, &status)) {
 			if (status >= 0)
 				return status;
@@ -392,6 +412,11 @@ static int cmd_run(int argc, char **argv) {
 	}
 	fputs(hs_scenario_warnings(s), stderr);
 	char why[160];
+	if (o.strict && hs_scenario_warnings(s)[0]) { // said above: one line each
+		hs_outsel_free(&o.sel);
+		hs_scenario_destroy(s);
+		return EXIT_BAD_INPUT;
+	}
 	if (!hs_outsel_bind(&o.sel, s, false, why, sizeof why)) {
 		fprintf(stderr, "handspring run: %s\n", why);
 		hs_outsel_free(&o.sel);
@@ -485,9 +510,18 @@ static int cmd_list(int argc, char **argv) {
 	return status;
 }
 
+// What `all` and `golden` do: the folders written and the goldens' rules.
+typedef struct all_job {
+	const char *command; // "all" or "golden": names the messages
+	const char *dir, *out_dir, *golden_dir, *hands_dir;
+	const char *golden_given; // `golden --golden GDIR` as given (NULL: the default)
+	char regenerate[600];     // the goldens' header: the command that writes them again
+	bool force, strict;       // --force: goldens of failing scenarios too; --strict: warnings refuse
+	hs_outsel sel;
+} all_job;
+
 // `all`'s options; -1 to go on, else the exit status.
-static int all_options(int argc, char **argv, const char **dir, const char **out_dir, const char **golden_dir,
-                       const char **hands_dir, hs_outsel *sel) {
+static int all_options(int argc, char **argv, all_job *job) {
 	for (int i = 0; i < argc; ++i) {
 		int status = -1;
 		char why[160];
@@ -495,15 +529,19 @@ static int all_options(int argc, char **argv, const char **dir, const char **out
 			fputs(usage_all, stdout);
 			return EXIT_PASS;
 		}
-		if (hs_outsel_option(sel, argc, argv, &i, why, sizeof why)) {
+		if (hs_outsel_option(&job->sel, argc, argv, &i, why, sizeof why)) {
 			if (why[0])
 				return usage_error("all", usage_all, "%s", why);
 			continue;
 		}
-		if (parse_dir_option(argc, argv, &i, "--dir", dir, &status, "all", usage_all) ||
-		    parse_dir_option(argc, argv, &i, "--out-dir", out_dir, &status, "all", usage_all) ||
-		    parse_dir_option(argc, argv, &i, "--golden-dir", golden_dir, &status, "all", usage_all) ||
-		    parse_dir_option(argc, argv, &i, "--hands-dir", hands_dir, &status, "all", usage_all)) {
+		if (strcmp(argv[i], "--force") == 0 || strcmp(argv[i], "--strict") == 0) {
+			*(argv[i][2] == 'f' ? &job->force : &job->strict) = true;
+			continue;
+		}
+		if (parse_dir_option(argc, argv, &i, "--dir", &job->dir, &status, "all", usage_all) ||
+		    parse_dir_option(argc, argv, &i, "--out-dir", &job->out_dir, &status, "all", usage_all) ||
+		    parse_dir_option(argc, argv, &i, "--golden-dir", &job->golden_dir, &status, "all", usage_all) ||
+		    parse_dir_option(argc, argv, &i, "--hands-dir", &job->hands_dir, &status, "all", usage_all)) {
 			if (status >= 0)
 				return status;
 			continue;
@@ -514,13 +552,31 @@ static int all_options(int argc, char **argv, const char **dir, const char **out
 	return -1;
 }
 
-// Runs one loaded scenario writing its trajectory to out_dir and golden_dir and its hands and
-// stylus to hands_dir (any may be NULL); false on a write error (said on stderr).
-static bool all_run_one(hs_scenario *s, const char *name, const char *path, const char *out_dir,
-                        const char *golden_dir, const char *hands_dir, hs_outsel *sel) {
+// The goldens' header line: `make golden` for the catalog's own, else the command as given, on one
+// line whatever the folders' names hold.
+static void set_regenerate(all_job *job) {
+	char *r = job->regenerate;
+	size_t n = sizeof job->regenerate;
+	if (hs_golden_is_make_golden(job->dir, job->golden_dir))
+		snprintf(r, n, "make golden");
+	else if (strcmp(job->command, "golden") == 0)
+		snprintf(r, n, "handspring golden %s%s%s%s", job->dir, job->golden_given ? " --golden " : "",
+		         job->golden_given ? job->golden_given : "", job->force ? " --force" : "");
+	else
+		snprintf(r, n, "handspring all --dir %s --golden-dir %s%s", job->dir, job->golden_dir,
+		         job->force ? " --force" : "");
+	for (; *r; ++r)
+		if ((unsigned char)*r < 0x20 || *r == 0x7f)
+			*r = '?';
+}
+
+// Runs one loaded scenario writing its trajectory to the job's out_dir and hands_dir (closed here)
+// and golden_dir (left open in *golden: it is kept only if the scenario passes); false on a write
+// error (said on stderr).
+static bool all_run_one(hs_scenario *s, const char *name, const char *path, all_job *job, output *golden) {
 	output outs[3];
 	memset(outs, 0, sizeof outs);
-	const char *dirs[3] = {out_dir, golden_dir, hands_dir};
+	const char *dirs[3] = {job->out_dir, job->golden_dir, job->hands_dir};
 	bool io_ok = true;
 	for (int k = 0; k < 3 && io_ok; ++k) {
 		if (!dirs[k])
@@ -530,23 +586,44 @@ static bool all_run_one(hs_scenario *s, const char *name, const char *path, cons
 		if (!io_ok)
 			fprintf(stderr, "handspring: %s\n", csv ? outs[k].error : "out of memory");
 		else if (k == 1)
-			fprintf(outs[k].file,
-			        "# handspring golden trajectory of scenario %s (%s)\n"
-			        "# regenerate with make golden\n",
-			        name, path);
+			fprintf(outs[k].file, "# handspring golden trajectory of scenario %s (%s)\n# regenerate with %s\n", name,
+			        path, job->regenerate);
 		free(csv);
 	}
 	FILE *files[2] = {outs[0].file, outs[1].file};
 	if (io_ok)
-		run_scenario(s, files, 2, outs[2].file, sel);
-	for (int k = 0; k < 3; ++k) {
+		run_scenario(s, files, 2, outs[2].file, &job->sel);
+	for (int k = 0; k < 3; k += 2) {
 		if (!output_close(&outs[k], io_ok) && io_ok) {
 			fprintf(stderr, "handspring: %s\n", outs[k].error);
 			io_ok = false;
 		}
 		output_free(&outs[k]);
 	}
+	*golden = outs[1];
 	return io_ok;
+}
+
+// Keeps a scenario's golden when its expectations passed (or with --force, warned of); false on a
+// write error. *written says whether it was kept.
+static bool all_finish_golden(const all_job *job, const char *name, output *golden, int fails, bool io_ok,
+                              bool *written) {
+	*written = false;
+	if (!job->golden_dir)
+		return io_ok;
+	bool keep = io_ok && (fails == 0 || job->force);
+	if (io_ok && fails && job->force)
+		fprintf(stderr, "handspring %s: warning: %s: %d expectation(s) failed: its golden is written anyway (--force)\n",
+		        job->command, name, fails);
+	else if (io_ok && fails)
+		fprintf(stderr, "handspring %s: %s: %d expectation(s) failed: its golden is not written (--force writes it)\n",
+		        job->command, name, fails);
+	bool ok = output_close(golden, keep);
+	if (!ok && keep)
+		fprintf(stderr, "handspring: %s\n", golden->error);
+	output_free(golden);
+	*written = keep && ok;
+	return io_ok && (ok || !keep);
 }
 
 // Checks a run scenario: its table row on stdout, its FAIL lines into log. Returns the failures.
@@ -574,21 +651,74 @@ static int all_report(hs_scenario *s, const char *name, int width, FILE *log) {
 	return fails;
 }
 
-static int cmd_all(int argc, char **argv) {
-	const char *dir = "scenarios", *out_dir = NULL, *golden_dir = NULL, *hands_dir = NULL;
-	hs_outsel sel;
-	hs_outsel_init(&sel);
-	int status = all_options(argc, argv, &dir, &out_dir, &golden_dir, &hands_dir, &sel);
-	if (status >= 0)
-		return status;
+// A scenario of the catalog loaded for `all`: its warnings said (with --strict they refuse it), its
+// output selection bound, its files recorded as inputs; NULL on bad input.
+static hs_scenario *all_load(all_job *job, const char *name, const char *path) {
+	hs_error err;
+	hs_scenario *s = hs_scenario_load(path, &err);
+	if (!s) {
+		fprintf(stderr, "%s\n", err.message);
+		return NULL;
+	}
+	fputs(hs_scenario_warnings(s), stderr);
+	char why[160];
+	if (job->strict && hs_scenario_warnings(s)[0]) {
+		fprintf(stderr, "handspring %s: %s: refused: it has warnings (--strict)\n", job->command, name);
+		hs_scenario_destroy(s);
+		return NULL;
+	}
+	if (!hs_outsel_bind(&job->sel, s, true, why, sizeof why)) {
+		fprintf(stderr, "handspring %s: %s: %s\n", job->command, name, why);
+		hs_scenario_destroy(s);
+		return NULL;
+	}
+	add_inputs(s);
+	return s;
+}
+
+typedef struct all_counts {
+	int passed, failed, bad, goldens;
+} all_counts;
+
+// One scenario of the catalog: loaded, run, its row printed, its golden kept or not.
+static void all_one(all_job *job, const hs_catalog *catalog, int i, int width, FILE *log, all_counts *c) {
+	const char *name = catalog->names[i];
+	hs_scenario *s = all_load(job, name, catalog->paths[i]);
+	output golden;
+	memset(&golden, 0, sizeof golden);
+	bool io_ok = s && all_run_one(s, name, catalog->paths[i], job, &golden);
+	int fails = io_ok ? all_report(s, name, width, log) : 0;
+	bool written = false;
+	if (s && !all_finish_golden(job, name, &golden, fails, io_ok, &written))
+		io_ok = false;
+	if (!io_ok) {
+		printf("%-*s  %9s  %7s  %11s  %-16s  %s\n", width, name, "-", "-", "-", "-", s ? "WRITE ERROR" : "BAD INPUT");
+		c->bad++;
+	} else if (fails) {
+		c->failed++;
+	} else {
+		c->passed++;
+	}
+	c->goldens += written;
+	hs_scenario_destroy(s);
+}
+
+static int all_run(all_job *job) {
+	char why[1024];
+	if (job->golden_dir && !hs_golden_dir_allowed(job->dir, job->golden_dir, why, sizeof why)) {
+		fprintf(stderr, "handspring %s: %s\n", job->command, why);
+		return EXIT_BAD_INPUT;
+	}
+	if (job->golden_dir)
+		set_regenerate(job);
 	hs_catalog catalog;
 	hs_error err;
-	if (!hs_catalog_load(dir, &catalog, &err)) {
+	if (!hs_catalog_load(job->dir, &catalog, &err)) {
 		fprintf(stderr, "%s\n", err.message);
 		return EXIT_BAD_INPUT;
 	}
 	if (catalog.count == 0) { // an empty run proves nothing: say so
-		fprintf(stderr, "%s: no scenario files (*.yaml)\n", dir);
+		fprintf(stderr, "%s: no scenario files (*.yaml)\n", job->dir);
 		hs_catalog_free(&catalog);
 		return EXIT_BAD_INPUT;
 	}
@@ -597,73 +727,74 @@ static int cmd_all(int argc, char **argv) {
 		if ((int)strlen(catalog.names[i]) > width)
 			width = (int)strlen(catalog.names[i]);
 	printf("%-*s  %9s  %7s  %11s  %-16s  %s\n", width, "scenario", "frames", "objects", "expect", "final hash", "result");
-	int passed = 0, failed = 0, bad = 0;
+	all_counts c = {0, 0, 0, 0};
 	char *details = NULL; // FAIL lines, printed under the table
 	size_t details_size = 0;
 	FILE *log = open_memstream(&details, &details_size);
-	for (int i = 0; i < catalog.count; ++i) {
-		const char *name = catalog.names[i];
-		hs_scenario *s = hs_scenario_load(catalog.paths[i], &err);
-		fputs(s ? hs_scenario_warnings(s) : err.message, stderr);
-		if (!s)
-			fputc('\n', stderr);
-		char why[160];
-		if (s && !hs_outsel_bind(&sel, s, true, why, sizeof why)) {
-			fprintf(stderr, "handspring all: %s: %s\n", name, why);
-			hs_scenario_destroy(s);
-			s = NULL;
-		}
-		if (s)
-			add_inputs(s);
-		if (!s || !all_run_one(s, name, catalog.paths[i], out_dir, golden_dir, hands_dir, &sel)) {
-			printf("%-*s  %9s  %7s  %11s  %-16s  %s\n", width, name, "-", "-", "-", "-", s ? "WRITE ERROR" : "BAD INPUT");
-			bad++;
-		} else if (all_report(s, name, width, log)) {
-			failed++;
-		} else {
-			passed++;
-		}
-		hs_scenario_destroy(s);
-	}
+	for (int i = 0; i < catalog.count; ++i)
+		all_one(job, &catalog, i, width, log, &c);
 	if (log)
 		fclose(log);
 	if (details && details_size > 0)
 		printf("\n%s", details);
 	free(details);
-	printf("\n%d scenarios: %d passed, %d failed", catalog.count, passed, failed);
-	if (bad)
-		printf(", %d bad input", bad);
+	printf("\n%d scenarios: %d passed, %d failed", catalog.count, c.passed, c.failed);
+	if (c.bad)
+		printf(", %d bad input", c.bad);
 	printf("\n");
-	if (golden_dir && bad == 0)
-		printf("goldens written to %s/\n", golden_dir);
+	if (job->golden_dir)
+		printf("%d golden%s written to %s/%s\n", c.goldens, c.goldens == 1 ? "" : "s", job->golden_dir,
+		       c.goldens < catalog.count ? " (none for a scenario that failed or could not run)" : "");
 	hs_catalog_free(&catalog);
-	hs_outsel_free(&sel);
-	return bad ? EXIT_BAD_INPUT : failed ? EXIT_FAILED : EXIT_PASS;
+	return c.bad ? EXIT_BAD_INPUT : c.failed ? EXIT_FAILED : EXIT_PASS;
 }
 
-// `handspring golden DIR [--golden GDIR]`: `all --dir DIR --golden-dir GDIR` (default: 'golden'
-// beside DIR), what `make golden` does for the catalog.
+static int cmd_all(int argc, char **argv) {
+	all_job job;
+	memset(&job, 0, sizeof job);
+	job.command = "all";
+	job.dir = "scenarios";
+	hs_outsel_init(&job.sel);
+	int status = all_options(argc, argv, &job);
+	if (status < 0)
+		status = all_run(&job);
+	hs_outsel_free(&job.sel);
+	return status;
+}
+
+// `handspring golden DIR [--golden GDIR] [--force] [--strict]`: `all --dir DIR --golden-dir GDIR`,
+// GDIR by default DIR/golden (hs_golden_default).
 static int cmd_golden(int argc, char **argv) {
-	const char *dir = NULL, *gdir = NULL;
+	all_job job;
+	memset(&job, 0, sizeof job);
+	job.command = "golden";
 	for (int i = 0; i < argc; ++i) {
+		bool missing = false;
 		if (is_help(argv[i])) {
 			fputs(usage_golden, stdout);
 			return EXIT_PASS;
 		}
-		if (strcmp(argv[i], "--golden") == 0 && i + 1 < argc)
-			gdir = argv[++i];
-		else if (argv[i][0] == '-' || dir)
+		if (option_value(argc, argv, &i, "--golden", &job.golden_given, &missing) ||
+		    option_value(argc, argv, &i, "--golden-dir", &job.golden_given, &missing)) {
+			if (missing)
+				return usage_error("golden", usage_golden, "%s needs a folder", argv[i]);
+		} else if (strcmp(argv[i], "--force") == 0 || strcmp(argv[i], "--strict") == 0) {
+			*(argv[i][2] == 'f' ? &job.force : &job.strict) = true;
+		} else if (argv[i][0] == '-' || job.dir) {
 			return usage_error("golden", usage_golden, argv[i][0] == '-' ? "unknown option '%s'" : "unexpected argument '%s'",
 			                   argv[i]);
-		else
-			dir = argv[i];
+		} else {
+			job.dir = argv[i];
+		}
 	}
-	if (!dir)
+	if (!job.dir)
 		return usage_error("golden", usage_golden, "%s", "missing the scenario folder DIR");
-	char *beside = gdir ? NULL : hs_golden_beside(dir);
-	char *args[] = {"--dir", (char *)dir, "--golden-dir", gdir ? (char *)gdir : beside};
-	int status = args[3] ? cmd_all(4, args) : EXIT_BAD_INPUT;
-	free(beside);
+	char *fallback = job.golden_given ? NULL : hs_golden_default(job.dir);
+	job.golden_dir = job.golden_given ? job.golden_given : fallback;
+	hs_outsel_init(&job.sel);
+	int status = job.golden_dir ? all_run(&job) : EXIT_BAD_INPUT;
+	hs_outsel_free(&job.sel);
+	free(fallback);
 	return status;
 }
 
