@@ -9,7 +9,8 @@
 # and machines, and make check-campaign drives them through a private sshd on 127.0.0.1 (issue 14,
 # docs/campaigns.md). `deps.sh bench` adds the benchmark peers
 # (ODE, MuJoCo); `deps.sh fuzz` adds the compiler-rt runtime that holds libFuzzer; `deps.sh
-# valgrind` adds valgrind (make valgrind, make determinism).
+# valgrind` adds valgrind (make valgrind, make determinism); `deps.sh browser` adds Chromium, Node.js
+# and npm (make check-browser).
 set -eu
 
 need=""
@@ -51,6 +52,13 @@ for extra in "$@"; do
 		;;
 	valgrind)
 		has_cmd valgrind || need="$need valgrind"
+		;;
+	browser)
+		# make check-browser: the replay page (view --html) in headless Chromium, driven by
+		# puppeteer-core from npm under Node.js
+		has_cmd chromium || need="$need chromium"
+		has_cmd node || need="$need nodejs"
+		has_cmd npm || need="$need npm"
 		;;
 	esac
 done

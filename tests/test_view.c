@@ -143,7 +143,9 @@ static void test_strip_shows_state(void **state) {
 }
 
 // A GIF of every 10th frame of a 90-frame scenario has 10 frames (0, 10, ..., 90) of the size
-// asked for; the HTML page is gnuplot's canvas with the mouse turning the view.
+// asked for. The replay page is one file: titled by the scenario file, the run inside as JSON with
+// the same frames (--every 10: 0, 10, ..., 90), three.js inline, no src= or href= that would load
+// anything else (make check-browser drives the page itself in Chromium).
 static void test_gif_and_html(void **state) {
 	(void)state;
 	const char *gif = "build/test_view.gif", *html = "build/test_view.html";
@@ -158,10 +160,21 @@ static void test_gif_and_html(void **state) {
 	assert_int_equal(w, 200);
 	assert_int_equal(h, 150);
 	free(g);
-	unsigned char *page = read_all(html, &n);
+	char *page = (char *)read_all(html, &n);
 	assert_non_null(page);
-	assert_non_null(strstr((char *)page, "<canvas"));
-	assert_non_null(strstr((char *)page, "mouse"));
+	assert_non_null(strstr(page, "<title>scenarios/hand/push_press_down.yaml"));
+	assert_non_null(strstr(page, "<script type=\"application/json\" id=\"run\">{\"file\":\"scenarios/hand/push_press_down.yaml\""));
+	int frames = 0;
+	for (const char *p = page; (p = strstr(p, "{\"f\":")) != NULL; ++p)
+		frames++;
+	assert_int_equal(frames, 10);
+	assert_non_null(strstr(page, "{\"f\":90,"));
+	assert_non_null(strstr(page, "Copyright 2010-2026 Three.js Authors")); // three.core.min.js's header
+	assert_null(strstr(page, " src=\""));
+	assert_null(strstr(page, "href=\""));
+	assert_null(strstr(page, "<link"));
+	assert_null(strstr(page, "@@")); // every marker of the template filled
+	assert_non_null(strstr(page, "</html>"));
 	free(page);
 	unlink(gif);
 	unlink(html);
