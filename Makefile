@@ -152,7 +152,7 @@ $(HSOLIB): $(HLIB_PIC_OBJ) $(SOLIB) $(BUILD)/pic/handspring-harness.map
 $(TOOL): $(patsubst tool/%.c,$(BUILD)/obj/tool/%.o,$(wildcard tool/*.c)) $(BUILD)/obj/gen/viewer_assets.o $(LIBS)
 	$(CC) $(LDFLAGS) -o $@ $^ $(LDLIBS_ALL)
 
-# The page of `handspring view --html` (tool/viewer/README.md): its template, its script and the
+# The page of `handspring view --html` (docs/viewer.md): its template, its script and the
 # vendored three.js, embedded in the tool as C arrays so the tool writes it from any folder.
 VIEWER_SRC := tool/viewer/page.html tool/viewer/viewer.js tool/viewer/package.json $(wildcard tool/viewer/vendor/three/*)
 $(BUILD)/gen/viewer_assets.c: tool/viewer/embed.sh $(VIEWER_SRC)
@@ -215,7 +215,7 @@ check-files: all
 	@sh tests/files_safety.sh $(TOOL)
 	@if [ -x $(BUILD)/asan/handspring ]; then sh tests/files_safety.sh $(BUILD)/asan/handspring; fi
 
-# The replay page of `handspring view --html` in a browser (tool/viewer/README.md): pages for a hand
+# The replay page of `handspring view --html` in a browser (docs/viewer.md): pages for a hand
 # and a spring scenario loaded in headless Chromium through puppeteer-core (npm, pinned by
 # tool/viewer/package-lock.json, installed under $(BUILD)/viewer-node): no console or page error, a
 # canvas that is not blank, a drag that turns the view, the wheel, a pan, the slider, step and play.

@@ -33,11 +33,11 @@ const char *const hs_view_usage =
     "  --size WxH        pixels per GIF frame or filmstrip panel (default 1024x768)\n"
     "  --html OUT.html   a replay page for a browser, one self-contained file (three.js and the run\n"
     "                    inside; it loads nothing else): drag to turn the view, right-drag to pan,\n"
-    "                    the wheel to zoom; play, pause, step, speed and a time slider; the hand's\n"
-    "                    check points (red where they touch), a contact-state timeline per object\n"
-    "                    under the view, its marker at the frame shown; a legend. Every frame or\n"
-    "                    every Nth (--every N) and the last; it opens at the frame nearest\n"
-    "                    --html-at T (default the first). Needs no gnuplot.\n"
+    "                    the wheel to zoom; play, pause, step back and on, speed and a time slider;\n"
+    "                    a contact-state timeline per object under the view, its marker at the\n"
+    "                    frame shown; a legend (docs/viewer.md). Every frame or every Nth (--every N)\n"
+    "                    and the last; it opens at the frame nearest --html-at T (default the\n"
+    "                    first). Needs no gnuplot.\n"
     "Exit status: 0 written, 2 bad input or gnuplot failed (one error line on stderr).\n";
 
 #define VIEW_SHADES 6
@@ -304,14 +304,17 @@ static void gp_title(FILE *g, const char *title, int width) {
 // the view's scale raised from 1.45 (where the whole cube fits) by as much as the box's projected
 // half-width and half-height let it, at this view (62° from the vertical, turned 28° about z).
 // The floor patch is lo..hi in x and y.
-static void set_view(FILE *g, const view_run *v, hs_vec3 *lo, hs_vec3 *hi) {
+static void set_view(FILE *g, const view_run *v, double width, double height, hs_vec3 *lo, hs_vec3 *hi) {
 	hs_vec3 e = hs_sub(v->hi, v->lo), c = hs_scale(hs_add(v->lo, v->hi), 0.5);
 	double m = 0.1 * fmax(fmax(e.x, e.y), 0.1), z0 = fmin(0.0, v->lo.z);
 	hs_vec3 b = hs_v3(0.5 * e.x + m, 0.5 * e.y + m, 0.5 * (v->hi.z - z0) + 0.02 * m); // half-extents
 	double half = fmax(fmax(b.x, b.y), b.z), zc = z0 + b.z;
 	double cz = cos(28.0 * HS_PI / 180.0), sz = sin(28.0 * HS_PI / 180.0), cx = cos(62.0 * HS_PI / 180.0), sx = sin(62.0 * HS_PI / 180.0);
 	double w_box = b.x * cz + b.y * sz, h_box = (b.x * sz + b.y * cz) * cx + b.z * sx;
-	double scale = fmin(0.40 / (0.153 * w_box / half), 0.32 / (0.153 * h_box / half));
+	// gnuplot draws a unit of the cube's half-side 0.144 × scale × the picture's width long, across and
+	// up (measured): the box's half-width within 0.42 of the width, its half-height within 0.4 of
+	// the plot's height (0.9 of the picture's: a tenth for the title)
+	double k = 0.144 / half, scale = fmin(0.42 / (k * w_box), 0.4 * 0.9 * height / width / (k * h_box));
 	*lo = hs_v3(c.x - b.x, c.y - b.y, z0);
 	*hi = hs_v3(c.x + b.x, c.y + b.y, z0 + 2.0 * b.z);
 	fprintf(g, "set encoding utf8\nset view 62, 28, %.4f\nset view equal xyz\nunset border\nunset tics\nunset key\n", scale);
@@ -319,9 +322,9 @@ static void set_view(FILE *g, const view_run *v, hs_vec3 *lo, hs_vec3 *hi) {
 	        c.x + half, c.y - half, c.y + half, zc - half, zc + half);
 }
 
-static void script(FILE *g, const view_run *v, const char *name, const hs_world *w, int width) {
+static void script(FILE *g, const view_run *v, const char *name, const hs_world *w, int width, int height) {
 	hs_vec3 lo, hi;
-	set_view(g, v, &lo, &hi);
+	set_view(g, v, width, height, &lo, &hi);
 	fprintf(g, "set pm3d depthorder\narray col[4] = [%s, %s, %s, %s]\n", "0x3b6ea5", "0xe07b22", "0x2e9e44", "0xb03a9a");
 	fprintf(g, "array shade[%d]\n", VIEW_COLOURS * VIEW_SHADES);
 	for (int k = 0; k < VIEW_COLOURS; ++k) { // dark to light per contact state
@@ -372,7 +375,7 @@ static int draw(const view_opts *o, const view_run *v, const char *data, hs_worl
 		fprintf(stderr, "handspring view: cannot start gnuplot: %s\n", strerror(errno));
 		return 2;
 	}
-	script(g, v, name, w, o->width);
+	script(g, v, name, w, o->width, o->height);
 	double dt = hs_world_dt(w);
 	if (o->gif) {
 		int delay = (int)fmax(2.0, 100.0 * dt * o->every + 0.5);

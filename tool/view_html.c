@@ -1,5 +1,5 @@
 // view_html.c — `handspring view FILE --html OUT.html`: the run as JSON, put with three.js into the
-// page template (tool/viewer/page.html, viewer.js; tool/viewer/README.md says what the page does).
+// page template (tool/viewer/page.html, viewer.js; docs/viewer.md says what the page does).
 // The objects' shapes, the walls and the number of hands once; then per frame drawn each object's
 // pose and contact state, each hand's 20 check points and which touch, the contacts with their
 // object, and in a spring world the stylus, the spring's anchor, the attached object and the

@@ -21,5 +21,5 @@ sh tool/viewer/vendor.sh "$node_dir/node_modules" --check
 out=$build/browser
 mkdir -p "$out"
 "$tool" view scenarios/hand/push_press_down.yaml --html "$out/hand.html" 2>/dev/null
-"$tool" view scenarios/spring/pull_into_wall.yaml --html "$out/spring.html" 2>/dev/null
+"$tool" view scenarios/spring/pull_into_wall.yaml --html "$out/spring.html" --html-at 1 2>/dev/null
 node tests/browser/view_test.mjs "$node_dir/node_modules" "$out" "$out/hand.html" "$out/spring.html"

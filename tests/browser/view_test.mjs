@@ -2,9 +2,10 @@
 // it). For each page: it loads from its own file and asks for nothing else (every request must be
 // file:, blob: or data:), no console error and no page error, the title names the scenario file,
 // the view is not blank (pixel spread of a screenshot), the timeline shows the contact states that
-// the run's data has, and a legend. A mouse drag turns the view, the wheel zooms, a right-drag pans
+// the run's data has, the objects in those colours and the hand in the view, and a legend; it
+// opens at the frame nearest --html-at. A mouse drag turns the view, the wheel zooms, a right-drag pans
 // (each changes the screenshot); the time slider moved to its end changes the screenshot, the
-// timeline marker's place and frame and the clock; step back moves one frame back; play moves on
+// timeline marker's place and frame and the clock; step back and step move one frame; play moves on
 // and pause stops; play at 4x moves further than at 0.1x in the same time.
 //   node view_test.mjs NODE_MODULES OUTDIR PAGE.html...
 import { createRequire } from 'node:module';
@@ -58,6 +59,26 @@ function spread(img) {
 	}
 	return { sd: Math.sqrt(Math.max(0, s2 / n - (s / n) ** 2)), colours: colours.size };
 }
+// Pixels by colour family: the four contact states (blue, orange, green, purple) and the hand's
+// skin (an orange far less saturated), by hue and saturation, so shading does not matter.
+function families(img) {
+	const n = { 0: 0, 1: 0, 2: 0, 3: 0, skin: 0 };
+	for (let i = 0; i < img.rgba.length; i += 4) {
+		const r = img.rgba[i], g = img.rgba[i + 1], b = img.rgba[i + 2], max = Math.max(r, g, b), min = Math.min(r, g, b);
+		if (max < 90 || max - min < 0.3 * max) continue; // grey, or dark (the objects' edges)
+		const d = max - min, sat = d / max;
+		let hue = max === r ? ((g - b) / d) * 60 : max === g ? ((b - r) / d + 2) * 60 : ((r - g) / d + 4) * 60;
+		if (hue < 0) hue += 360;
+		if (hue >= 195 && hue <= 225) n[0]++;
+		else if (hue >= 15 && hue <= 40 && sat > 0.7) n[1]++;
+		else if (hue >= 110 && hue <= 150) n[2]++;
+		else if (hue >= 290 && hue <= 330) n[3]++;
+		else if (hue >= 10 && hue <= 35 && sat <= 0.62) n.skin++;
+	}
+	return n;
+}
+const statesOf = fr => new Set(fr.o.filter((_, k) => k % 8 === 7));
+
 // The share of pixels that differ by more than a little between two pictures of the same size.
 function changed(a, b) {
 	if (a.width !== b.width || a.height !== b.height) return 1;
@@ -116,6 +137,17 @@ async function testPage(file) {
 	const first = await shot('start');
 	const s = spread(first);
 	check(s.sd > 8 && s.colours > 40, `view is not blank (grey-level spread ${s.sd.toFixed(1)}, ${s.colours} colours)`);
+	const seen = (img, fr, tag) => { // every state of the frame in its colour, the others hardly (< 3%
+		// of the most seen: antialiased edges); the hand's skin
+		const f = families(img), want = statesOf(fr), most = Math.max(f[0], f[1], f[2], f[3]);
+		check([0, 1, 2, 3].every(st => want.has(st) ? f[st] > 200 : f[st] < 0.03 * most) && (run.hands === 0 || f.skin > 200),
+			`${tag}: objects in the colours of their states {${[...want].join(', ')}}${run.hands ? ', the hand' : ''} (pixels ${JSON.stringify(f)})`);
+	};
+	let opened = 0; // the page opens at the frame nearest --html-at (the first without)
+	run.frames.forEach((fr, k) => { if (Math.abs(fr.t - run.start) < Math.abs(run.frames[opened].t - run.start)) opened = k; });
+	if (run.start < 0) opened = 0;
+	check((await marker()).frame === run.frames[opened].f, `opens at frame ${run.frames[opened].f} (--html-at ${run.start} s)`);
+	seen(first, run.frames[opened], `frame ${run.frames[opened].f}`);
 
 	// the timeline: every contact state the data has, in its colour, and nothing but the states
 	const states = new Set(run.frames.flatMap(fr => fr.o.filter((_, k) => k % 8 === 7)));
@@ -156,16 +188,21 @@ async function testPage(file) {
 	let a = run.frames.findIndex(fr => key(fr) !== key(run.frames[0])), b = a;
 	while (a >= 0 && b + 1 < run.frames.length && key(run.frames[b + 1]) === key(run.frames[a])) ++b;
 	const target = a < 0 ? run.frames.length - 1 : Math.floor((a + b) / 2);
-	const before = await marker();
 	await page.focus('#time');
+	await page.keyboard.press('Home');
+	const from = await shot('home');
+	const before = await marker();
 	for (let k = 0; k < target; ++k) await page.keyboard.press('ArrowRight');
 	const after = await marker();
 	const moved = await shot('slider');
-	check(changed(panned, moved) > 0.002, `the slider moves the scene to frame ${run.frames[target].f} (${(100 * changed(panned, moved)).toFixed(2)}% changed)`);
+	check(changed(from, moved) > 0.002, `the slider moves the scene to frame ${run.frames[target].f} (${(100 * changed(from, moved)).toFixed(2)}% changed)`);
+	seen(moved, run.frames[target], `frame ${run.frames[target].f}`);
 	check(after.left > before.left + 20 && after.frame === run.frames[target].f && before.frame === run.frames[0].f && after.clock !== before.clock,
 		`the timeline marker follows the slider (x ${before.left} -> ${after.left} px, frame ${before.frame} -> ${after.frame})`);
 	await page.click('#back');
 	check((await marker()).frame === run.frames[target - 1].f, 'step back shows the frame before');
+	await page.click('#step');
+	check((await marker()).frame === run.frames[target].f, 'step shows the frame after');
 	const played = async (speed, ms) => {
 		await page.focus('#time');
 		await page.keyboard.press('Home');

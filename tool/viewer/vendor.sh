@@ -1,7 +1,7 @@
 #!/bin/sh
 # vendor.sh — the three.js files `handspring view --html` puts in its page, copied verbatim from the
 # npm package that package.json pins (three 0.185.0, the last release with minified builds) into
-# vendor/three/, with the package's MIT licence; the build embeds them in the tool (tool/viewer/README.md).
+# vendor/three/, with the package's MIT licence; the build embeds them in the tool (docs/viewer.md).
 #   vendor.sh NODE_MODULES           copy them (after `npm ci` of this folder's package-lock.json)
 #   vendor.sh NODE_MODULES --check   exit 1 unless the vendored copies are byte-identical to the package's
 set -eu
