@@ -62,9 +62,10 @@ function spread(img) {
 // Pixels by colour family: the four contact states (blue, orange, green, purple) and the hand's
 // skin (an orange far less saturated), by hue and saturation, so shading does not matter.
 function families(img) {
-	const n = { 0: 0, 1: 0, 2: 0, 3: 0, skin: 0 };
+	const n = { 0: 0, 1: 0, 2: 0, 3: 0, skin: 0, red: 0, dark: 0 };
 	for (let i = 0; i < img.rgba.length; i += 4) {
 		const r = img.rgba[i], g = img.rgba[i + 1], b = img.rgba[i + 2], max = Math.max(r, g, b), min = Math.min(r, g, b);
+		if (max < 100 && max - min < 12) n.dark++; // dark grey: the stylus and the spring
 		if (max < 90 || max - min < 0.3 * max) continue; // grey, or dark (the objects' edges)
 		const d = max - min, sat = d / max;
 		let hue = max === r ? ((g - b) / d) * 60 : max === g ? ((b - r) / d + 2) * 60 : ((r - g) / d + 4) * 60;
@@ -74,6 +75,7 @@ function families(img) {
 		else if (hue >= 110 && hue <= 150) n[2]++;
 		else if (hue >= 290 && hue <= 330) n[3]++;
 		else if (hue >= 10 && hue <= 35 && sat <= 0.62) n.skin++;
+		else if ((hue >= 345 || hue <= 6) && sat > 0.65) n.red++; // a check point touching
 	}
 	return n;
 }
@@ -142,12 +144,19 @@ async function testPage(file) {
 		const f = families(img), want = statesOf(fr), most = Math.max(f[0], f[1], f[2], f[3]);
 		check([0, 1, 2, 3].every(st => want.has(st) ? f[st] > 200 : f[st] < 0.03 * most) && (run.hands === 0 || f.skin > 200),
 			`${tag}: objects in the colours of their states {${[...want].join(', ')}}${run.hands ? ', the hand' : ''} (pixels ${JSON.stringify(f)})`);
+		if (run.hands) {
+			const touching = fr.h.some(h => h && h.touch);
+			check(touching ? f.red > 30 : f.red === 0, `${tag}: ${touching ? 'a check point touching, in red' : 'no check point in red: none touches'}`);
+		}
+		return f;
 	};
 	let opened = 0; // the page opens at the frame nearest --html-at (the first without)
 	run.frames.forEach((fr, k) => { if (Math.abs(fr.t - run.start) < Math.abs(run.frames[opened].t - run.start)) opened = k; });
 	if (run.start < 0) opened = 0;
 	check((await marker()).frame === run.frames[opened].f, `opens at frame ${run.frames[opened].f} (--html-at ${run.start} s)`);
-	seen(first, run.frames[opened], `frame ${run.frames[opened].f}`);
+	const opening = seen(first, run.frames[opened], `frame ${run.frames[opened].f}`);
+	if (run.frames[opened].s)
+		check(opening.dark > 60, `the stylus is drawn (${opening.dark} dark grey pixels)`);
 
 	// the timeline: every contact state the data has, in its colour, and nothing but the states
 	const states = new Set(run.frames.flatMap(fr => fr.o.filter((_, k) => k % 8 === 7)));
@@ -196,7 +205,9 @@ async function testPage(file) {
 	const after = await marker();
 	const moved = await shot('slider');
 	check(changed(from, moved) > 0.002, `the slider moves the scene to frame ${run.frames[target].f} (${(100 * changed(from, moved)).toFixed(2)}% changed)`);
-	seen(moved, run.frames[target], `frame ${run.frames[target].f}`);
+	const at = seen(moved, run.frames[target], `frame ${run.frames[target].f}`), home = families(from);
+	if (run.frames[0].s && run.frames[0].s.k < 0 && run.frames[target].s.k >= 0)
+		check(at.dark > home.dark + 50, `the spring is drawn once an object is on it (${home.dark} -> ${at.dark} dark grey pixels)`);
 	check(after.left > before.left + 20 && after.frame === run.frames[target].f && before.frame === run.frames[0].f && after.clock !== before.clock,
 		`the timeline marker follows the slider (x ${before.left} -> ${after.left} px, frame ${before.frame} -> ${after.frame})`);
 	await page.click('#back');

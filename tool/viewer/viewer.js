@@ -179,7 +179,7 @@ const hands = Array.from({ length: run.hands }, () => {
 	};
 });
 const contacts = [];
-const stylus = { rod: stick(STYLUS), tip: ball(STYLUS, 0.006), spring: null };
+const stylus = { rod: stick(STYLUS), tip: ball(STYLUS, 0.008), spring: null };
 const candidate = new THREE.BoxHelper(undefined, CANDIDATE);
 scene.add(candidate);
 
@@ -192,7 +192,7 @@ function coil(a, g) { // 8 turns of 1 cm radius from the spring's anchor to G
 		const s = k / 160, phi = 2 * Math.PI * 8 * s;
 		pts.push(a.clone().addScaledVector(d, s).addScaledVector(e1, 0.01 * Math.cos(phi)).addScaledVector(e2, 0.01 * Math.sin(phi)));
 	}
-	return new THREE.TubeGeometry(new THREE.CatmullRomCurve3(pts), 320, 0.002, 5);
+	return new THREE.TubeGeometry(new THREE.CatmullRomCurve3(pts), 320, 0.0025, 6);
 }
 
 // --- one frame --------------------------------------------------------------------------------
@@ -242,7 +242,7 @@ function showStylus(fr) {
 	candidate.visible = false;
 	if (!s) return;
 	const p = v3(s.p);
-	placeStick(stylus.rod, p, p.clone().addScaledVector(v3(s.d), 0.1), 0.003);
+	placeStick(stylus.rod, p, p.clone().addScaledVector(v3(s.d), 0.1), 0.004);
 	stylus.tip.position.copy(p);
 	if (s.k >= 0) {
 		stylus.spring = new THREE.Mesh(coil(v3(s.a), v3(fr.o, 8 * s.k)), new THREE.MeshLambertMaterial({ color: SPRING }));
@@ -260,7 +260,7 @@ function statusText(fr) {
 		if (st) parts.push(`${ob.name}: ${STATE[st].name}`);
 	});
 	if (fr.s && fr.s.k >= 0) parts.push(`spring extension ${fr.s.e.toFixed(3)} m`);
-	return parts.join('   ');
+	return parts.join(' · ');
 }
 function show(k) {
 	index = Math.max(0, Math.min(frames.length - 1, k));
