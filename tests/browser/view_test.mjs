@@ -2,8 +2,9 @@
 // it). For each page: it loads from its own file and asks for nothing else (every request must be
 // file:, blob: or data:), no console error and no page error, the title names the scenario file,
 // the view is not blank (pixel spread of a screenshot), the timeline shows the contact states that
-// the run's data has, the objects in those colours and the hand in the view, and a legend; it
-// opens at the frame nearest --html-at. A mouse drag turns the view, the wheel zooms, a right-drag pans
+// the run's data has, the objects in those colours and the hand in the view (a check point red
+// exactly when one touches), the stylus and the spring in a spring world, and a legend; it opens at
+// the frame nearest --html-at. A mouse drag turns the view, the wheel zooms, a right-drag pans
 // (each changes the screenshot); the time slider moved to its end changes the screenshot, the
 // timeline marker's place and frame and the clock; step back and step move one frame; play moves on
 // and pause stops; play at 4x moves further than at 0.1x in the same time.
