@@ -149,8 +149,18 @@ $(HSOLIB): $(HLIB_PIC_OBJ) $(SOLIB) $(BUILD)/pic/handspring-harness.map
 	ln -sf $(notdir $@) $(BUILD)/libhandspring-harness.so.$(HS_SOVERSION)
 	ln -sf libhandspring-harness.so.$(HS_SOVERSION) $(BUILD)/libhandspring-harness.so
 
-$(TOOL): $(patsubst tool/%.c,$(BUILD)/obj/tool/%.o,$(wildcard tool/*.c)) $(LIBS)
+$(TOOL): $(patsubst tool/%.c,$(BUILD)/obj/tool/%.o,$(wildcard tool/*.c)) $(BUILD)/obj/gen/viewer_assets.o $(LIBS)
 	$(CC) $(LDFLAGS) -o $@ $^ $(LDLIBS_ALL)
+
+# The page of `handspring view --html` (docs/viewer.md): its template, its script and the
+# vendored three.js, embedded in the tool as C arrays so the tool writes it from any folder.
+VIEWER_SRC := tool/viewer/page.html tool/viewer/viewer.js tool/viewer/package.json $(wildcard tool/viewer/vendor/three/*)
+$(BUILD)/gen/viewer_assets.c: tool/viewer/embed.sh $(VIEWER_SRC)
+	@mkdir -p $(dir $@)
+	@sh tool/viewer/embed.sh $@
+$(BUILD)/obj/gen/viewer_assets.o: $(BUILD)/gen/viewer_assets.c tool/view_html.h $(wildcard harness/include/*.h model/include/*.h) | deps
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS_ALL) -g0 -Itool -c $< -o $@
 
 # test_view reads the pictures `handspring view` draws with libpng
 $(BUILD)/tests/test_view: LDLIBS += $$(pkg-config --libs libpng)
@@ -191,12 +201,13 @@ check: deps
 	@$(MAKE) --no-print-directory check-files
 	@$(MAKE) --no-print-directory check-golden-dir
 	@$(MAKE) --no-print-directory check-python
+	@$(MAKE) --no-print-directory check-browser
 	@sh scripts/layout_check.sh
 	@sh scripts/importers/check.sh
 	@$(MAKE) --no-print-directory check-sweep
 	@$(MAKE) --no-print-directory check-campaign
 	@$(MAKE) --no-print-directory figures
-	@echo "check: all suites passed (plain and ASan+UBSan, reliability, README examples, resume, files in and out, golden folders, the Python bindings, layout, the hand scenarios' robustness sweep, a campaign over GNU parallel, ssh and a resume, the papers' figures)"
+	@echo "check: all suites passed (plain and ASan+UBSan, reliability, README examples, resume, files in and out, golden folders, the Python bindings, the replay page in Chromium, layout, the hand scenarios' robustness sweep, a campaign over GNU parallel, ssh and a resume, the papers' figures)"
 
 # The tool's files in and out (scenarios/README.md, "How the tool writes files"): outputs that are inputs, /dev/full, planted links, pipes,
 # a full small file system (a tmpfs when root), endless inputs, the campaign lock and a part cut
@@ -228,6 +239,14 @@ check-python: $(SOLIBS) $(TOOL)
 .PHONY: check-golden-dir
 check-golden-dir: all
 	@sh tests/golden_dir.sh $(TOOL)
+
+# The replay page of `handspring view --html` in a browser (docs/viewer.md): pages for a hand
+# and a spring scenario loaded in headless Chromium through puppeteer-core (npm, pinned by
+# tool/viewer/package-lock.json, installed under $(BUILD)/viewer-node): no console or page error, a
+# canvas that is not blank, a drag that turns the view, the wheel, a pan, the slider, step and play.
+.PHONY: check-browser
+check-browser: all
+	@sh tests/browser/check.sh $(TOOL) $(BUILD)
 
 # Save half-way and resume every catalog scenario: the rest of the run must be byte-identical.
 check-resume: all

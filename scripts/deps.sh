@@ -10,7 +10,8 @@
 # docs/campaigns.md). `deps.sh bench` adds the benchmark peers
 # (ODE, MuJoCo); `deps.sh fuzz` adds the compiler-rt runtime that holds libFuzzer; `deps.sh
 # valgrind` adds valgrind (make valgrind, make determinism); `deps.sh python` adds what the
-# Python bindings' test needs (make check-python, python/README.md).
+# Python bindings' test needs (make check-python, python/README.md); `deps.sh browser` adds
+# Chromium, Node.js and npm (make check-browser).
 set -eu
 
 need=""
@@ -63,6 +64,13 @@ for extra in "$@"; do
 		"$py" -m pip --version >/dev/null 2>&1 || need="$need python3-pip"
 		"$py" -c 'import setuptools' 2>/dev/null || need="$need python3-setuptools"
 		"$py" -c 'import ensurepip, venv' 2>/dev/null || need="$need python3-venv"
+		;;
+	browser)
+		# make check-browser: the replay page (view --html) in headless Chromium, driven by
+		# puppeteer-core from npm under Node.js
+		has_cmd chromium || need="$need chromium"
+		has_cmd node || need="$need nodejs"
+		has_cmd npm || need="$need npm"
 		;;
 	esac
 done

@@ -120,6 +120,8 @@ if command -v gnuplot > /dev/null 2>&1; then
 	expect_last 2 "it is the input" "$tool" view "$s" --strip "$s" --at 0.5
 	same "view --strip FILE" "$s" "$work/drop_cube.copy"
 fi
+expect_last 2 "it is the input" "$tool" view "$s" --html "$s"
+same "view --html FILE" "$s" "$work/drop_cube.copy"
 
 # 2. /dev/full
 expect 2 "No space left on device" "$tool" run "$s" --out /dev/full
@@ -131,6 +133,7 @@ expect 2 "No space left on device" "$tool" campaign "$c" --summarize "$work/tria
 if command -v gnuplot > /dev/null 2>&1; then
 	expect_last 2 "No space left on device" "$tool" view "$s" --strip /dev/full --at 0.5
 fi
+expect_last 2 "No space left on device" "$tool" view "$s" --html /dev/full
 
 # 3. links and files already there
 o=$work/links

@@ -2,6 +2,7 @@
 // the frame count and size asked for, and show the objects where and as they must be (pixels read
 // with libpng), and bad options get one error line and exit status 2.
 #include <setjmp.h>
+#include <stdbool.h>
 #include <stdarg.h>
 #include <stddef.h>
 #include <stdint.h>
@@ -143,7 +144,9 @@ static void test_strip_shows_state(void **state) {
 }
 
 // A GIF of every 10th frame of a 90-frame scenario has 10 frames (0, 10, ..., 90) of the size
-// asked for; the HTML page is gnuplot's canvas with the mouse turning the view.
+// asked for. The replay page is one file: titled by the scenario file, the run inside as JSON with
+// the same frames (--every 10: 0, 10, ..., 90), three.js inline, no src= or href= that would load
+// anything else (make check-browser drives the page itself in Chromium).
 static void test_gif_and_html(void **state) {
 	(void)state;
 	const char *gif = "build/test_view.gif", *html = "build/test_view.html";
@@ -158,13 +161,63 @@ static void test_gif_and_html(void **state) {
 	assert_int_equal(w, 200);
 	assert_int_equal(h, 150);
 	free(g);
-	unsigned char *page = read_all(html, &n);
+	char *page = (char *)read_all(html, &n);
 	assert_non_null(page);
-	assert_non_null(strstr((char *)page, "<canvas"));
-	assert_non_null(strstr((char *)page, "mouse"));
+	assert_non_null(strstr(page, "<title>scenarios/hand/push_press_down.yaml"));
+	assert_non_null(strstr(page, "<script type=\"application/json\" id=\"run\">{\"file\":\"scenarios/hand/push_press_down.yaml\""));
+	int frames = 0;
+	for (const char *p = page; (p = strstr(p, "{\"f\":")) != NULL; ++p)
+		frames++;
+	assert_int_equal(frames, 10);
+	assert_non_null(strstr(page, "{\"f\":90,"));
+	assert_non_null(strstr(page, "Copyright 2010-2026 Three.js Authors")); // three.core.min.js's header
+	assert_null(strstr(page, " src=\""));
+	assert_null(strstr(page, "href=\""));
+	assert_null(strstr(page, "<link"));
+	assert_null(strstr(page, "@@")); // every marker of the template filled
+	assert_non_null(strstr(page, "</html>"));
 	free(page);
 	unlink(gif);
 	unlink(html);
+}
+
+// Pixels of the hand's skin colours (segments #c98e6b, palm #e0b392 and their shades) and of the
+// objects' contact-state colours, anywhere and in a band `edge` pixels wide along the border.
+static void count_in_frame(const picture *pic, int edge, long *skin, long *skin_edge, long *object_edge) {
+	*skin = *skin_edge = *object_edge = 0;
+	int W = (int)pic->image.width, H = (int)pic->image.height;
+	for (int y = 0; y < H; ++y)
+		for (int x = 0; x < W; ++x) {
+			const png_byte *p = pic->pixels + 3 * ((size_t)y * (size_t)W + (size_t)x);
+			bool border = x < edge || y < edge || x >= W - edge || y >= H - edge;
+			bool is_skin = p[0] > 150 && p[0] > p[1] + 25 && p[1] > p[2] + 15 && p[2] > 60;
+			bool is_object = (p[2] > p[0] + 50 && p[2] > p[1]) || (p[0] > p[2] + 80 && p[1] > p[2] + 20 && p[0] > 150);
+			*skin += is_skin;
+			*skin_edge += is_skin && border;
+			*object_edge += is_object && border;
+		}
+}
+
+// Without --size a panel is 1024x768, and the frame holds the whole scene: the hand and the box
+// pressed are in the picture and none of them touches its border (push_press_down at 0.6 s).
+static void test_default_frame(void **state) {
+	(void)state;
+	const char *png = "build/test_view_frame.png";
+	const char *args[] = {"scenarios/hand/push_press_down.yaml", "--strip", png, "--at", "0.6", NULL};
+	assert_int_equal(view(args), 0);
+	picture pic = read_png(png);
+	assert_int_equal(pic.image.width, 1024);
+	assert_int_equal(pic.image.height, 768);
+	long skin, skin_edge, object_edge, blue, orange;
+	count_in_frame(&pic, 10, &skin, &skin_edge, &object_edge);
+	assert_true(skin > 2000);
+	assert_int_equal(skin_edge, 0);
+	assert_int_equal(object_edge, 0);
+	count_colours(&pic, 0, 1024, &blue, &orange);
+	assert_true(orange > 10000);
+	free(pic.pixels);
+	png_image_free(&pic.image);
+	unlink(png);
 }
 
 // Bad options: exit status 2, nothing written.
@@ -186,6 +239,7 @@ int main(void) {
 	const struct CMUnitTest tests[] = {
 	    cmocka_unit_test(test_strip_shows_state),
 	    cmocka_unit_test(test_gif_and_html),
+	    cmocka_unit_test(test_default_frame),
 	    cmocka_unit_test(test_bad_options),
 	};
 	return cmocka_run_group_tests(tests, NULL, NULL);
