@@ -214,6 +214,21 @@ static void settle_or_tip(hs_world *world, hs_body *body, hs_vec3 gm, bool may_t
 }
 
 // Eq. 3: P(t) = 2P(t - dt) - P(t - 2dt) + g dt², and the carried-over relative rotation.
+// True when another object's bounding sphere comes within `reach` of this one's centre (a landing
+// is rare: a pass over the objects costs nothing a frame).
+static bool near_another(const hs_world *world, const hs_body *body, double reach) {
+	for (int j = 0; j < world->object_count; ++j) {
+		const hs_body *b = &world->bodies[j];
+		if (b == body)
+			continue;
+		double r = reach + world->shapes[b->shape].radius;
+		hs_vec3 d = hs_sub(b->pos, body->pos);
+		if (hs_dot(d, d) < r * r)
+			return true;
+	}
+	return false;
+}
+
 // Where the path through the frame met the floor (docs/model.md §5 "Landing"): an object clear of
 // the floor when the frame began goes back along the frame's motion gm, in x and y, by the part of
 // its lowest vertex's fall that lay below the floor; §4.2's lift (rectify) then puts it on the
@@ -229,6 +244,8 @@ static void back_to_floor(hs_world *world, hs_body *body, hs_vec3 gm, double zmi
 		return;
 	double f = zmin / (was - zmin); // in [-1, 0): minus the part of its fall below the floor
 	double dx = f * gm.x, dy = f * gm.y;
+	if (near_another(world, body, shape->radius + sqrt(dx * dx + dy * dy)))
+		return; // moved back it could meet that object: lifted straight up, as §4.2
 	body->pos.x += dx;
 	body->pos.y += dy;
 	for (int i = 0; i < shape->vertex_count; ++i) {
