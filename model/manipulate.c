@@ -55,6 +55,8 @@ static HS_FORCE_INLINE bool bodies_overlap(const hs_world *world, int i, int j) 
 	return overlap_at_pose(world, i, world->bodies[i].pos, world->bodies[i].rot, j);
 }
 
+bool hs_objects_interfere(hs_world *world, int i, int j) { return i != j && bodies_overlap(world, i, j); }
+
 bool hs_object_interferes(hs_world *world, int object) {
 	const hs_body *body = &world->bodies[object];
 	int n = hs_grid_near(world, body->pos, world->shapes[body->shape].radius);
@@ -500,7 +502,7 @@ void hs_manipulate(hs_world *world) {
 		body->grounded = 0;
 		hs_grid_update(world, i);
 		if (world->def.stacking == HS_STACKING_SUPPORT)
-			hs_support_wake_neighbours(world, i); // what rested on it or against it looks again
+			hs_support_wake_neighbours(world, i, body->prev); // what rested on it or against it looks again
 		else
 			carry_along(world, i, i,
 			            (rigid_move){old_pos, body->pos, hs_quat_normalize(hs_quat_mul(body->rot, hs_quat_conj(old_rot)))});

@@ -13,5 +13,7 @@ void hs_push_at_one_point(hs_body *body, hs_vec3 c, hs_vec3 b);
 void hs_manipulate(hs_world *world);
 // §4.3: true when an untouched free object interferes with another and so ignores gravity.
 bool hs_object_interferes(hs_world *world, int object);
+// Objects i and j (not the same) overlap: interference of §4.3.
+bool hs_objects_interfere(hs_world *world, int i, int j);
 
 #endif

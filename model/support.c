@@ -211,23 +211,70 @@ static void rectify_pushed(hs_world *world, int object) {
 	hs_grid_update(world, object);
 }
 
-void hs_support_wake_neighbours(hs_world *world, int object) {
+// Where the held body's rigid motion this frame took carried object j from: its pose at the frame's
+// start (the held body's own: prev and rot_prev).
+static hs_body pose_before(const hs_world *world, int j, const hs_body *held) {
+	hs_body old = world->bodies[j];
+	if (&world->bodies[j] == held) {
+		old.pos = held->prev;
+		old.rot = held->rot_prev;
+		return old;
+	}
+	hs_quat q = hs_quat_normalize(hs_quat_mul(held->rot, hs_quat_conj(held->rot_prev)));
+	old.pos = hs_add(held->prev, hs_quat_inv_rotate(q, hs_sub(old.pos, held->pos)));
+	old.rot = hs_quat_normalize(hs_quat_mul(hs_quat_conj(q), old.rot));
+	return old;
+}
+
+static bool queued(const hs_world *world, int tail, int j) {
+	for (int k = 0; k < tail; ++k)
+		if (world->queue[k] == j)
+			return true;
+	return false;
+}
+
+// What rests on the held object where it was at the frame's start, what rests on that, and so on:
+// all carried by its rigid motion (a stack of three lifted by its bottom cube keeps its top).
+// Only for a held object, moved in the hand pass: the world step's own use of world->queue (the
+// objects free motion moved) never reaches here.
+static void carry_stack(hs_world *world, int object) {
+	const hs_body *held = &world->bodies[object];
+	double tol = world->def.floor_tolerance + hs_length(hs_sub(held->pos, held->prev));
+	int head = 0, tail = 0;
+	world->queue[tail++] = object;
+	while (head < tail) {
+		int s = world->queue[head++];
+		hs_body old = pose_before(world, s, held);
+		int n = hs_grid_near(world, world->bodies[s].pos, world->shapes[old.shape].radius + tol);
+		for (int k = 0; k < n; ++k) {
+			int j = world->near[k];
+			if (j == s || queued(world, tail, j) || !near_spheres(world, s, j, tol))
+				continue;
+			if (rests_on(world, j, &old)) {
+				carry(world, j, held);
+				world->queue[tail++] = j;
+			}
+			if (world->bodies[j].asleep)
+				hs_wake(world, j);
+		}
+	}
+}
+
+void hs_support_wake_neighbours(hs_world *world, int object, hs_vec3 from) {
 	const hs_body *body = &world->bodies[object];
 	if (body->held && body->contact != HS_CONTACT_GRASP)
 		rectify_pushed(world, object);
-	hs_body old = *body;
-	old.pos = body->prev;
-	old.rot = body->rot_prev;
-	// what rested on it where it was at the frame's start: its motion this frame is the margin
-	double tol = world->def.floor_tolerance + hs_length(hs_sub(body->pos, body->prev));
+	if (body->held) {
+		carry_stack(world, object);
+		return;
+	}
+	// what rested on it where it was at the frame's start: its motion this frame is the margin (from
+	// the frame's start: a landing sets prev to where it landed)
+	double tol = world->def.floor_tolerance + hs_length(hs_sub(body->pos, from));
 	int n = hs_grid_near(world, body->pos, world->shapes[body->shape].radius + tol);
 	for (int k = 0; k < n; ++k) {
 		int j = world->near[k];
-		if (j == object || !near_spheres(world, object, j, tol))
-			continue;
-		if (body->held && rests_on(world, j, &old))
-			carry(world, j, body);
-		if (world->bodies[j].asleep)
+		if (j != object && near_spheres(world, object, j, tol) && world->bodies[j].asleep)
 			hs_wake(world, j);
 	}
 }

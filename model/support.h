@@ -7,8 +7,9 @@
 
 // After its free step: lifts a body out of the objects it sank into and settles it on them.
 void hs_support_step(hs_world *world, int object);
-// Objects moved `object` (a hand, or its own fall): objects resting on or against it wake up and
-// look again; a hand carries what rests on top of it along with its motion.
-void hs_support_wake_neighbours(hs_world *world, int object);
+// Objects moved `object` (a hand, or its own fall) from `from` (its G when the frame began):
+// objects resting on or against it wake up and look again; a hand carries what rests on top of it,
+// and on that, along with its motion.
+void hs_support_wake_neighbours(hs_world *world, int object, hs_vec3 from);
 
 #endif

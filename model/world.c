@@ -6,6 +6,7 @@
 
 #include "broadphase.h"
 #include "contact.h"
+#include "fall_group.h"
 #include "grasp.h"
 #include "manipulate.h"
 #include "motion.h"
@@ -107,6 +108,7 @@ hs_world *hs_world_create(const hs_world_def *def, hs_status *status) {
 	size_t objects = def->max_objects > 0 ? (size_t)def->max_objects : 1;
 	world->bodies = calloc(objects, sizeof *world->bodies);
 	world->queue = calloc(objects, sizeof *world->queue);
+	world->moved_from = calloc(objects, sizeof *world->moved_from);
 	world->hands = calloc(def->max_hands > 0 ? (size_t)def->max_hands : 1, sizeof *world->hands);
 	// every check point and line of every hand in up to 4 objects' parts at once
 	world->contact_capacity = (def->max_hands > 0 ? def->max_hands : 1) * (HS_HAND_POINTS + HS_HAND_LINES) * 4;
@@ -127,7 +129,7 @@ hs_world *hs_world_create(const hs_world_def *def, hs_status *status) {
 	world->stale_flag = calloc(objects, sizeof *world->stale_flag);
 	world->box_memo = calloc(objects, sizeof *world->box_memo);
 	world->all_stale = true;
-	if (!world->shapes || !world->face_edges || !world->face_trees || !world->shape_grow_reach || !world->bodies || !world->queue || !world->hands || !world->contacts || !grid ||
+	if (!world->shapes || !world->face_edges || !world->face_trees || !world->shape_grow_reach || !world->bodies || !world->queue || !world->moved_from || !world->hands || !world->contacts || !grid ||
 	    !world->candidates || !world->every || !world->found || !world->awake || !world->awake_flag || !world->digest || !world->stale ||
 	    !world->stale_flag || !world->box_memo) {
 		hs_world_destroy(world);
@@ -162,6 +164,7 @@ void hs_world_destroy(hs_world *world) {
 	free(world->shape_grow_reach);
 	free(world->bodies);
 	free(world->queue);
+	free(world->moved_from);
 	free(world->hands);
 	free(world->contacts);
 	hs_hgrid_free(&world->grid);
@@ -405,6 +408,25 @@ static bool body_is_finite(const hs_body *body) {
 	       hs_quat_is_finite(body->spin);
 }
 
+static bool in_list(const int *list, int n, int i) {
+	for (int k = 0; k < n; ++k)
+		if (list[k] == i)
+			return true;
+	return false;
+}
+
+// Paper mode: an awake object that interferes with others none of which is held up falls with them
+// as one (fall_group.c); their indices go to world->queue from *fallen (support mode's list there
+// is never used in paper mode).
+static bool paper_group_falls(hs_world *world, int i, int *fallen) {
+	const hs_body *body = &world->bodies[i];
+	if (world->def.stacking != HS_STACKING_PAPER || body->asleep || !hs_object_interferes(world, i))
+		return false;
+	int n = hs_fall_group(world, i, world->queue + *fallen, world->object_count - *fallen);
+	*fallen += n;
+	return n > 0;
+}
+
 // One unheld object's frame: §4.3 in paper mode (interfering and untouched: no gravity, no
 // inertia, but rectified out of the objects under it as out of the floor, Fig. 11), else eq. 3 and
 // the floor (§4.2), the fall swept over the objects under it, and in support mode its supports.
@@ -463,10 +485,13 @@ hs_status hs_world_step(hs_world *world) {
 	if (skip) // the sleeping objects cost nothing (the awake list holds the others, in index order)
 		world->counters.sleeping_skips += world->object_count - world->awake_count;
 	int moved = 0; // support mode: objects that moved, to wake what rested on them (after the loop)
+	int fallen = 0; // paper mode: objects moved with a falling group (to wake after the loop)
 	for (int k = 0; k < visits; ++k) {
 		int i = skip ? world->awake[k] : k;
 		hs_body *body = &world->bodies[i];
-		if (body->held || body->carried)
+		if (body->held || body->carried || in_list(world->queue, fallen, i))
+			continue;
+		if (paper_group_falls(world, i, &fallen))
 			continue;
 		// asleep: stays as it is until woken — on the floor, on a support (support mode), where it
 		// stopped at an interference (paper mode, §4.3) — with skip_work off too (the same bits:
@@ -480,12 +505,18 @@ hs_status hs_world_step(hs_world *world) {
 			*body = saved;
 			hs_world_note_fault(world, i);
 		}
-		if (world->def.stacking == HS_STACKING_SUPPORT && (body->pos.x != saved.pos.x || body->pos.y != saved.pos.y || body->pos.z != saved.pos.z))
+		// support mode: what moved by more than the floor's tolerance wakes what rests on it (a
+		// settling stack's rounding-size moves woke each other for good)
+		if (world->def.stacking == HS_STACKING_SUPPORT && hs_length(hs_sub(body->pos, saved.pos)) > world->def.floor_tolerance) {
+			world->moved_from[moved] = saved.pos;
 			world->queue[moved++] = i;
+		}
 		hs_grid_update(world, i);
 	}
 	for (int k = 0; k < moved; ++k) // the awake list may grow only once the loop is over
-		hs_support_wake_neighbours(world, world->queue[k]);
+		hs_support_wake_neighbours(world, world->queue[k], world->moved_from[k]);
+	for (int k = 0; k < fallen; ++k)
+		hs_wake(world, world->queue[k]);
 	hs_awake_compact(world);
 	if (!skip) // every object was looked at (the awake list does not bound what may have changed)
 		hs_digest_all_stale(world);

@@ -84,6 +84,7 @@ struct hs_world {
 	hs_contact *contacts; // this frame's hand contacts, grouped by object
 	// SCRATCH of the hand pass (manipulate.c)
 	int *queue;          // objects to move along with a moved one (§4.3), max_objects long
+	hs_vec3 *moved_from; // support mode: where each object in queue began the frame, max_objects long
 	int *candidates;     // objects a hand may touch this frame, in index order
 	int candidate_count;
 	const int *near;     // the last query's answer (hs_grid_near): `every` or `found`

@@ -99,6 +99,39 @@ static void test_paper_mode_stops_at_interference(void **state) {
 	hs_world_destroy(w);
 }
 
+// Paper mode (docs/model.md §6): a stack of three cubes placed in mid-air, each resting on the one
+// below (interfering), is held up by nothing: it falls as one and lands as one, the bottom on the
+// floor and the others on it where they sat, in the frame the closed form says (the bottom's base,
+// 0.2 m up, below the floor first at frame ceil(sqrt(2 * 0.2 / g) * 60) = 13). On the floor, the
+// same stack stays where it is (the floor holds it up).
+static void test_paper_stack_falls_as_one(void **state) {
+	(void)state;
+	for (int on_floor = 0; on_floor <= 1; ++on_floor) {
+		hs_world *w = world_with(HS_STACKING_PAPER);
+		double base = on_floor ? 0.0 : 0.2;
+		hs_object_id c[3];
+		for (int k = 0; k < 3; ++k)
+			c[k] = add_box(w, hs_v3(0.05, 0.05, 0.05), hs_v3(0.01 * k, 0, base + 0.025 + 0.05 * k));
+		int landed = -1;
+		for (int f = 1; f <= 60; ++f) {
+			assert_int_equal(hs_world_step(w), HS_OK);
+			hs_object_state s;
+			assert_int_equal(hs_world_object_state(w, c[0], &s), HS_OK);
+			if (landed < 0 && s.floor_contacts > 0)
+				landed = f;
+		}
+		assert_int_equal(landed, on_floor ? 1 : 13);
+		for (int k = 0; k < 3; ++k) {
+			hs_object_state s;
+			assert_int_equal(hs_world_object_state(w, c[k], &s), HS_OK);
+			assert_near(s.position.x, 0.01 * k, 1e-15);
+			assert_near(s.position.z, 0.025 + 0.05 * k, 1e-12);
+			assert_true(s.resting);
+		}
+		hs_world_destroy(w);
+	}
+}
+
 // Both modes: a cube placed 2 cm deep in another (faces flush: no vertex strictly inside) is
 // lifted along +z onto its top face in the first step (Fig. 11: rectified as against the floor),
 // G at 0.1 + 0.05 within the floor tolerance; in paper mode it then interferes (touches) and stays.
@@ -335,6 +368,7 @@ int main(void) {
 	    cmocka_unit_test(test_support_overhang_short_of_edge),
 	    cmocka_unit_test(test_support_overhang_past_edge_tips),
 	    cmocka_unit_test(test_paper_mode_stops_at_interference),
+	    cmocka_unit_test(test_paper_stack_falls_as_one),
 	    cmocka_unit_test(test_placed_inside_is_rectified),
 	    cmocka_unit_test(test_drops_land_on_top_face),
 	    cmocka_unit_test(test_support_tilted_landing_settles),
