@@ -10,7 +10,8 @@
 #  4. Each example of README.md (the ```c block after `<!-- example: NAME -->`) is built with
 #     gcc and clang as C, and with g++ as C++ (g++ -x c++), each shared (run path to the copy)
 #     and static; every build must print exactly the ```text block after `<!-- output: NAME -->`.
-#  5. `make uninstall` leaves no file behind; an install with DESTDIR stages under it.
+#  5. The man page renders and names every command; the installed catalog runs.
+#  6. `make uninstall` leaves no file behind; an install with DESTDIR stages under it.
 # Runs from the top folder; BUILD (default build) and MAKE (default make) as in the Makefile.
 set -eu
 
@@ -146,7 +147,30 @@ for example in library harness; do
 	done
 done
 
-# 5. uninstall removes every file; DESTDIR stages an install under it
+# 5. the man page and the catalog: the page renders without a warning and names every command the
+#    tool's --help lists; the installed catalog (with the recordings it reads) runs from there
+page="$prefix/share/man/man1/handspring.1"
+if [ ! -f "$page" ]; then
+	fail "make install did not install the man page share/man/man1/handspring.1"
+else
+	warnings=$(groff -man -ww -z "$page" 2>&1) || fail "groff could not read the man page"
+	[ -z "$warnings" ] || fail "the man page has warnings: $warnings"
+	MANWIDTH=100 man -l "$page" >"$work/man.txt" 2>/dev/null || fail "man -l $page failed"
+	for cmd in $("$prefix/bin/handspring" --help 2>&1 | sed -n 's/^  \([a-z][a-z]*\) .*/\1/p'); do
+		grep -q "^       $cmd\\b" "$work/man.txt" || fail "the man page does not describe the command '$cmd'"
+	done
+	grep -q "$prefix/share/handspring/scenarios" "$work/man.txt" || fail "the man page does not name the installed catalog"
+fi
+catalog="$prefix/share/handspring/scenarios"
+n=$("$prefix/bin/handspring" list --dir "$catalog" 2>/dev/null | wc -l)
+[ "$n" -eq "$(find scenarios -name '*.yaml' | wc -l)" ] || fail "the installed catalog lists $n scenarios, not those of scenarios/"
+for s in drop_cube hand/real_grab; do
+	"$prefix/bin/handspring" run "$catalog/$s.yaml" >"$work/catalog.out" 2>&1 ||
+		fail "the installed catalog's $s does not run: $(tail -n 2 "$work/catalog.out")"
+done
+echo "check-readme: the man page names every command; the installed catalog lists $n scenarios and runs"
+
+# 6. uninstall removes every file; DESTDIR stages an install under it
 $MAKE --no-print-directory -s BUILD="$BUILD" uninstall PREFIX="$prefix" >"$work/uninstall.log" 2>&1 ||
 	fail "make uninstall PREFIX=$prefix failed: $(cat "$work/uninstall.log")"
 left=$(find "$prefix" ! -type d | sed "s|^$prefix/||")
