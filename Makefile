@@ -221,6 +221,7 @@ check:
 	@$(MAKE) --no-print-directory check-core BUILD=$(BUILD)/asan SANITIZE=1 OPT=-O1
 	@$(MAKE) --no-print-directory check-reliability
 	@$(MAKE) --no-print-directory check-readme
+	@$(MAKE) --no-print-directory check-tutorial
 	@$(MAKE) --no-print-directory check-resume
 	@$(MAKE) --no-print-directory check-files
 	@$(MAKE) --no-print-directory check-golden-dir
@@ -231,7 +232,7 @@ check:
 	@$(MAKE) --no-print-directory check-sweep
 	@$(MAKE) --no-print-directory check-campaign
 	@$(MAKE) --no-print-directory figures
-	@echo "check: all suites passed (plain and ASan+UBSan, reliability, README examples, resume, files in and out, golden folders, the Python bindings, the replay page in Chromium, layout, the hand scenarios' robustness sweep, a campaign over GNU parallel, ssh and a resume, the papers' figures)"
+	@echo "check: all suites passed (plain and ASan+UBSan, reliability, README examples, the docs' scenarios, resume, files in and out, golden folders, the Python bindings, the replay page in Chromium, layout, the hand scenarios' robustness sweep, a campaign over GNU parallel, ssh and a resume, the papers' figures)"
 
 # The tool's files in and out (scenarios/README.md, "How the tool writes files"): outputs that are inputs, /dev/full, planted links, pipes,
 # a full small file system (a tmpfs when root), endless inputs, the campaign lock and a part cut
@@ -272,6 +273,12 @@ check-golden-dir: all
 .PHONY: check-browser
 check-browser: all
 	@sh tests/browser/check.sh $(TOOL) $(BUILD)
+
+# The scenarios written out in docs/first-scenarios.md and scenarios/README.md run as written,
+# pass their own expect clauses and print what the pages show (under a second).
+.PHONY: check-tutorial
+check-tutorial: all
+	@sh tests/tutorial.sh $(TOOL)
 
 # Save half-way and resume every catalog scenario: the rest of the run must be byte-identical.
 check-resume: all
