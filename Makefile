@@ -1,8 +1,9 @@
 # handspring — plain Makefile with knobs:
-#   make [CC=clang] [OPT=-O0] [SANITIZE=1] [BUILD=build/x]
-# Targets: all (static and shared libraries + tool), check, check-readme, check-python, run (the
-# main job), golden, bench, plots, install, uninstall, clean.
-#   make install [PREFIX=/usr/local] [DESTDIR=/staging] [LIBDIR=...] [LDCONFIG=:]
+#   make [CC=clang] [OPT=-O0] [SANITIZE=1] [WERROR=1] [BUILD=build/x]
+# Targets: all (static and shared libraries + tool), check, check-readme, check-tutorial,
+# check-python, run (the main job), golden, bench, plots, install, uninstall, clean
+# (docs/building.md lists them all).
+#   make install [PREFIX=/usr/local] [DESTDIR=/staging] [LIBDIR=...] [MANDIR=...] [LDCONFIG=:]
 
 CC       ?= cc
 OPT      ?= -O2
@@ -13,6 +14,8 @@ BINDIR     ?= $(PREFIX)/bin
 LIBDIR     ?= $(PREFIX)/lib
 INCLUDEDIR ?= $(PREFIX)/include
 PKGCONFIGDIR ?= $(LIBDIR)/pkgconfig
+DATADIR    ?= $(PREFIX)/share
+MANDIR     ?= $(DATADIR)/man
 INSTALL  ?= install
 LDCONFIG ?= ldconfig
 
@@ -26,7 +29,23 @@ PKGS := $(MODEL_PKGS) $(HARNESS_PKGS)
 PKG_CFLAGS = $(shell pkg-config --cflags $(PKGS))
 PKG_LIBS   = $(shell pkg-config --libs $(PKGS))
 
-WARN := -Wall -Wextra -Wpedantic -Wshadow -Wconversion -Wmissing-prototypes -Wvla -Werror
+# -Werror: on in `make check` (and so in CI, which runs it), off in a plain build, so a newer
+# compiler's new warning does not stop a user's build; WERROR=1 or WERROR=0 says otherwise.
+ifneq ($(filter check,$(MAKECMDGOALS)),)
+WERROR ?= 1
+endif
+WERROR ?= 0
+export WERROR
+WARN := -Wall -Wextra -Wpedantic -Wshadow -Wconversion -Wmissing-prototypes -Wvla $(if $(filter 1,$(WERROR)),-Werror)
+# An object made without -Werror may hide a warning: the first make with -Werror after one makes
+# every object again (each depends on this stamp, which is touched then). Back to WERROR=0, and
+# for a new build folder, the stamp keeps an old time: nothing is made again for it.
+WERROR_STAMP := $(BUILD)/.werror
+ifneq ($(shell cat $(WERROR_STAMP) 2>/dev/null),$(WERROR))
+$(shell mkdir -p $(BUILD) && if [ "$(WERROR)" = 1 ] && [ -e $(WERROR_STAMP) ]; then echo 1 > $(WERROR_STAMP); \
+	else echo $(WERROR) > $(WERROR_STAMP).new && { touch -r $(WERROR_STAMP) $(WERROR_STAMP).new 2>/dev/null || \
+	touch -d @0 $(WERROR_STAMP).new; } && mv $(WERROR_STAMP).new $(WERROR_STAMP); fi)
+endif
 # determinism: no contraction into FMA, no fast-math, IEEE semantics everywhere
 FP   := -ffp-contract=off -fno-fast-math -fno-tree-vectorize -fno-tree-slp-vectorize
 # Include paths by layer: each layer sees the public headers below it and its own private ones,
@@ -87,32 +106,36 @@ else
 SO_LDFLAGS := -Wl,--no-undefined
 endif
 
-.PHONY: all shared tool deps check check-core check-readme check-resume check-sweep run golden bench plots figures install uninstall clean
+.PHONY: all shared tool deps deps-test check check-core check-readme check-resume check-sweep run golden bench plots figures install uninstall clean
 
 all: $(LIB) $(HLIB) $(SOLIBS) $(TOOL)
 shared: $(SOLIBS)
 tool: $(TOOL)
 
+# Debian packages (scripts/deps.sh): a plain build asks only for what the libraries and the tool
+# need; the test, plot, campaign and benchmark targets ask for their own tools.
 deps:
-	@sh scripts/deps.sh
+	@sh scripts/deps.sh build
+deps-test:
+	@sh scripts/deps.sh build test
 
-$(BUILD)/obj/model/%.o: model/%.c $(MODEL_H) | deps
+$(BUILD)/obj/model/%.o: model/%.c $(MODEL_H) $(WERROR_STAMP) | deps
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS_MODEL) -c $< -o $@
 
-$(BUILD)/obj/harness/%.o: harness/%.c $(HARNESS_H) $(wildcard model/include/*.h) | deps
+$(BUILD)/obj/harness/%.o: harness/%.c $(HARNESS_H) $(wildcard model/include/*.h) $(WERROR_STAMP) | deps
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS_HARNESS) -c $< -o $@
 
-$(BUILD)/pic/model/%.o: model/%.c $(MODEL_H) | deps
+$(BUILD)/pic/model/%.o: model/%.c $(MODEL_H) $(WERROR_STAMP) | deps
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS_MODEL) $(PIC_FLAGS) -c $< -o $@
 
-$(BUILD)/pic/harness/%.o: harness/%.c $(HARNESS_H) $(wildcard model/include/*.h) | deps
+$(BUILD)/pic/harness/%.o: harness/%.c $(HARNESS_H) $(wildcard model/include/*.h) $(WERROR_STAMP) | deps
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS_HARNESS) $(PIC_FLAGS) -c $< -o $@
 
-$(BUILD)/obj/tool/%.o: tool/%.c $(wildcard tool/*.h model/include/*.h harness/include/*.h) | deps
+$(BUILD)/obj/tool/%.o: tool/%.c $(wildcard tool/*.h model/include/*.h harness/include/*.h) $(WERROR_STAMP) | deps
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS_ALL) -c $< -o $@
 
@@ -158,7 +181,7 @@ VIEWER_SRC := tool/viewer/page.html tool/viewer/viewer.js tool/viewer/package.js
 $(BUILD)/gen/viewer_assets.c: tool/viewer/embed.sh $(VIEWER_SRC)
 	@mkdir -p $(dir $@)
 	@sh tool/viewer/embed.sh $@
-$(BUILD)/obj/gen/viewer_assets.o: $(BUILD)/gen/viewer_assets.c tool/view_html.h $(wildcard harness/include/*.h model/include/*.h) | deps
+$(BUILD)/obj/gen/viewer_assets.o: $(BUILD)/gen/viewer_assets.c tool/view_html.h $(wildcard harness/include/*.h model/include/*.h) $(WERROR_STAMP) | deps
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS_ALL) -g0 -Itool -c $< -o $@
 
@@ -169,7 +192,7 @@ $(BUILD)/tests/%: $(BUILD)/obj/tests/%.o $(LIBS)
 	@mkdir -p $(dir $@)
 	$(CC) $(LDFLAGS) -o $@ $^ -lcmocka $(LDLIBS_ALL)
 
-$(BUILD)/obj/tests/%.o: tests/%.c tests/test_util.h tests/test_rig.h tests/test_scans.h $(MODEL_H) $(HARNESS_H) | deps
+$(BUILD)/obj/tests/%.o: tests/%.c tests/test_util.h tests/test_rig.h tests/test_scans.h $(MODEL_H) $(HARNESS_H) $(WERROR_STAMP) | deps-test
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS_TESTS) -c $< -o $@
 
@@ -190,13 +213,15 @@ $(TEST_RUNS): %.run: # the binaries are check-core's: made before
 # The README's test command: unit, golden, bad-input and determinism tests, then the same
 # suite built and run again under AddressSanitizer + UndefinedBehaviorSanitizer, the
 # reliability subset, and the README's examples against an installed copy.
-check: deps
+check:
+	@sh scripts/deps.sh check
 	@$(MAKE) --no-print-directory -j$(CHECK_JOBS) check-built
 	@$(MAKE) --no-print-directory check-core
 	@$(MAKE) --no-print-directory -j$(CHECK_JOBS) check-built BUILD=$(BUILD)/asan SANITIZE=1 OPT=-O1
 	@$(MAKE) --no-print-directory check-core BUILD=$(BUILD)/asan SANITIZE=1 OPT=-O1
 	@$(MAKE) --no-print-directory check-reliability
 	@$(MAKE) --no-print-directory check-readme
+	@$(MAKE) --no-print-directory check-tutorial
 	@$(MAKE) --no-print-directory check-resume
 	@$(MAKE) --no-print-directory check-files
 	@$(MAKE) --no-print-directory check-golden-dir
@@ -207,13 +232,14 @@ check: deps
 	@$(MAKE) --no-print-directory check-sweep
 	@$(MAKE) --no-print-directory check-campaign
 	@$(MAKE) --no-print-directory figures
-	@echo "check: all suites passed (plain and ASan+UBSan, reliability, README examples, resume, files in and out, golden folders, the Python bindings, the replay page in Chromium, layout, the hand scenarios' robustness sweep, a campaign over GNU parallel, ssh and a resume, the papers' figures)"
+	@echo "check: all suites passed (plain and ASan+UBSan, reliability, README examples, the docs' scenarios, resume, files in and out, golden folders, the Python bindings, the replay page in Chromium, layout, the hand scenarios' robustness sweep, a campaign over GNU parallel, ssh and a resume, the papers' figures)"
 
 # The tool's files in and out (scenarios/README.md, "How the tool writes files"): outputs that are inputs, /dev/full, planted links, pipes,
 # a full small file system (a tmpfs when root), endless inputs, the campaign lock and a part cut
 # short then resumed; on the plain and the sanitizer builds' tools.
 .PHONY: check-files
 check-files: all
+	@sh scripts/deps.sh campaign
 	@sh tests/files_safety.sh $(TOOL)
 	@if [ -x $(BUILD)/asan/handspring ]; then sh tests/files_safety.sh $(BUILD)/asan/handspring; fi
 
@@ -248,6 +274,12 @@ check-golden-dir: all
 check-browser: all
 	@sh tests/browser/check.sh $(TOOL) $(BUILD)
 
+# The scenarios written out in docs/first-scenarios.md and scenarios/README.md run as written,
+# pass their own expect clauses and print what the pages show (under a second).
+.PHONY: check-tutorial
+check-tutorial: all
+	@sh tests/tutorial.sh $(TOOL)
+
 # Save half-way and resume every catalog scenario: the rest of the run must be byte-identical.
 check-resume: all
 	@sh tests/resume_catalog.sh $(TOOL) scenarios
@@ -257,6 +289,7 @@ check-resume: all
 # prints the table.
 # The papers' pictures as filmstrips of catalog scenarios (issue 13): build/figures/*.png
 figures: all
+	@sh scripts/deps.sh plots
 	@sh scripts/figures.sh $(TOOL) $(BUILD)/figures
 
 check-sweep: all
@@ -273,14 +306,19 @@ check-sweep: all
 CAMPAIGN_CHECK ?= tests/campaigns/small.yaml
 campaign: all
 	@[ -n "$(CAMPAIGN)" ] || { echo "usage: make campaign CAMPAIGN=FILE [JOBS=N] [SSHLOGIN=...] [OUT=DIR] [RESUME=1]"; exit 2; }
+	@sh scripts/deps.sh campaign
 	@sh scripts/campaign.sh '$(CAMPAIGN)' '$(or $(OUT),$(BUILD)/campaign/$(basename $(notdir $(CAMPAIGN))))' --tool $(TOOL) \
 		$(if $(JOBS),--jobs $(JOBS)) $(if $(SSHLOGIN),--sshlogin '$(SSHLOGIN)') $(if $(RESUME),--resume)
 check-campaign check-slurm: all
 	@[ -n "$(CAMPAIGN_CHECK)" ] || { echo "$@: CAMPAIGN_CHECK=FILE (a small campaign) is not set"; exit 2; }
+	@sh scripts/deps.sh campaign $(if $(filter check-campaign,$@),sshd)
 	@sh tests/$(if $(filter check-slurm,$@),campaign_slurm.sh,campaign_parallel.sh) $(TOOL) '$(CAMPAIGN_CHECK)'
 
-# The main job: every catalog scenario, a summary table, trajectories under $(BUILD)/traj.
-run: all
+# The main job: every catalog scenario, a summary table, trajectories under $(BUILD)/traj. The
+# build before it runs on every core (RUN_JOBS) unless make was given its own -j.
+RUN_JOBS ?= $(shell nproc 2>/dev/null || echo 2)
+run:
+	@$(MAKE) --no-print-directory $(if $(filter -j%,$(MAKEFLAGS)),,-j$(RUN_JOBS)) all
 	$(TOOL) all --dir scenarios --out-dir $(BUILD)/traj
 
 # Rewrites every golden trajectory on purpose; commit the change with the reason.
@@ -293,19 +331,22 @@ golden: all
 PLOT_GEN_SRC := $(wildcard plots/*.c)
 PLOT_GENS    := $(PLOT_GEN_SRC:plots/%.c=$(BUILD)/plots/bin/%)
 
-$(BUILD)/plots/bin/%: plots/%.c $(LIBS) $(wildcard model/include/*.h harness/include/*.h plots/*.h) | deps
+$(BUILD)/plots/bin/%: plots/%.c $(LIBS) $(wildcard model/include/*.h harness/include/*.h plots/*.h) $(WERROR_STAMP) | deps
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS_ALL) $(LDFLAGS) -o $@ $< $(LIBS) $(LDLIBS_ALL)
 
 plots: all $(PLOT_GENS)
+	@sh scripts/deps.sh plots $(if $(filter 1,$(CAMPAIGNS)),campaign)
 	@mkdir -p $(BUILD)/plots
 	@$(TOOL) all --dir scenarios --out-dir $(BUILD)/traj > $(BUILD)/plots/catalog.txt || \
 		{ cat $(BUILD)/plots/catalog.txt; echo "plots: a catalog scenario failed"; exit 1; }
 	@for g in $(PLOT_GENS); do $$g $(BUILD)/plots || exit 1; done
 	@for s in plots/*.gp; do [ -e "$$s" ] || continue; \
 		gnuplot -e "traj='$(BUILD)/traj'; out='$(BUILD)/plots'" $$s || exit 1; done
-	@# the campaigns' plots (docs/campaigns.md): Experiment 2 (~45 s on 2 cores) and the grasp threshold
-	@for c in exp2 grasp_threshold; do \
+	@# the campaigns' plots (docs/campaigns.md), with CAMPAIGNS=1 only: Experiment 2 (~45 s on 2
+	@# cores) and the grasp threshold
+	@[ "$(CAMPAIGNS)" = 1 ] || echo "plots: the campaigns' plots are made with CAMPAIGNS=1 (about a minute on 2 cores)"
+	@[ "$(CAMPAIGNS)" = 1 ] || exit 0; for c in exp2 grasp_threshold; do \
 		sh scripts/campaign.sh campaigns/$$c.yaml $(BUILD)/campaign/$$c --tool $(TOOL) > $(BUILD)/plots/campaign_$$c.txt && \
 		gnuplot -e "summary='$(BUILD)/campaign/$$c/summary.csv'; out='$(BUILD)/plots'" plots/campaign/$$c.gp || exit 1; done
 	@ls $(BUILD)/plots/*.png $(BUILD)/plots/*.svg 2>/dev/null || echo "plots: none yet"
@@ -313,12 +354,15 @@ plots: all $(PLOT_GENS)
 # Benchmarks report, they never fail on a time. bench/*.c are built against the library;
 # the peers (ODE, MuJoCo) only when their Debian packages are present.
 bench: all
+	@sh scripts/deps.sh plots
 	@sh scripts/deps.sh bench || echo "bench: continuing without the peers (ODE, MuJoCo)"
 	@if [ -f bench/bench.mk ]; then $(MAKE) --no-print-directory -f Makefile -f bench/bench.mk bench-run; \
 	else echo "bench: no benchmarks yet"; fi
 
 # Installs the headers (include/handspring/), both libraries (static, shared with their soname and
-# development links), handspring.pc and handspring-harness.pc, and the tool. Programs include
+# development links), handspring.pc and handspring-harness.pc, the tool, its man page
+# (MANDIR/man1/handspring.1) and the catalog (DATADIR/handspring/scenarios, replaced whole, with
+# the recordings it reads under DATADIR/handspring/tests/data). Programs include
 # <handspring/handspring.h> (Cflags: -I${includedir}); the headers include each other by their
 # file names from the same folder. ldconfig runs only for a real install (no DESTDIR) by root
 # into /usr or /usr/local, whose lib folders the loader's cache covers; LDCONFIG=: skips it.
@@ -327,6 +371,11 @@ bench: all
 SO_NAMES  := libhandspring libhandspring-harness
 INSTALLED_LIBS = $(foreach n,$(SO_NAMES),$(n).a $(n).so $(n).so.$(HS_SOVERSION) $(n).so.$(HS_VERSION_NUM))
 PC_FILES  := handspring.pc handspring-harness.pc
+HS_DATADIR = $(DATADIR)/handspring
+# the real hands' recordings that catalog scenarios read from tests/data (../../tests/data/...),
+# each with its folder's SOURCE.md (source and licence), installed at the same place beside it
+CATALOG_DATA := $(sort $(shell sed -n 's|.*file: \.\./\.\./\(tests/data/[^,} ]*\).*|\1|p' $$(find scenarios -name '*.yaml')))
+CATALOG_DATA += $(sort $(addsuffix SOURCE.md,$(dir $(CATALOG_DATA))))
 # the .pc files name their folders relative to ${prefix} where they can (relocatable with
 # pkg-config --define-variable=prefix=...)
 PC_LIBDIR     = $(patsubst $(PREFIX)/%,$${prefix}/%,$(LIBDIR))
@@ -347,6 +396,15 @@ install: all
 			-e 's|@VERSION@|$(HS_VERSION_NUM)|g' -e 's|@MODEL_PKGS@|$(MODEL_PKGS)|g' scripts/$$pc.in > $(DESTDIR)$(PKGCONFIGDIR)/$$pc; \
 		chmod 644 $(DESTDIR)$(PKGCONFIGDIR)/$$pc; done
 	$(INSTALL) -m 755 $(TOOL) $(DESTDIR)$(BINDIR)/
+	$(INSTALL) -d $(DESTDIR)$(MANDIR)/man1
+	sed 's|/usr/local/share/handspring|$(DATADIR)/handspring|g' tool/handspring.1 > $(DESTDIR)$(MANDIR)/man1/handspring.1
+	chmod 644 $(DESTDIR)$(MANDIR)/man1/handspring.1
+	@# the catalog: every scenario, the files they record from and scenarios/README.md
+	rm -rf $(DESTDIR)$(HS_DATADIR)/scenarios $(DESTDIR)$(HS_DATADIR)/tests
+	@set -e; find scenarios -type d ! -name '.*' | while read -r d; do $(INSTALL) -d "$(DESTDIR)$(HS_DATADIR)/$$d"; done; \
+		find scenarios -type f ! -name '.*' | while read -r f; do $(INSTALL) -m 644 "$$f" "$(DESTDIR)$(HS_DATADIR)/$$f"; done; \
+		for f in $(CATALOG_DATA); do $(INSTALL) -d "$(DESTDIR)$(HS_DATADIR)/$$(dirname $$f)"; \
+			$(INSTALL) -m 644 "$$f" "$(DESTDIR)$(HS_DATADIR)/$$f"; done
 	@$(RUN_LDCONFIG)
 
 uninstall:
@@ -355,11 +413,15 @@ uninstall:
 	rm -f $(addprefix $(DESTDIR)$(LIBDIR)/,$(INSTALLED_LIBS))
 	rm -f $(addprefix $(DESTDIR)$(PKGCONFIGDIR)/,$(PC_FILES))
 	rm -f $(DESTDIR)$(BINDIR)/$(notdir $(TOOL))
+	rm -f $(DESTDIR)$(MANDIR)/man1/handspring.1
+	rm -rf $(DESTDIR)$(HS_DATADIR)/scenarios $(DESTDIR)$(HS_DATADIR)/tests
+	@d=$(DESTDIR)$(HS_DATADIR); if [ -d "$$d" ] && [ -z "$$(ls -A "$$d")" ]; then rmdir "$$d"; fi
 	@$(RUN_LDCONFIG)
 
 # The README's examples, extracted and built against a copy installed under $(BUILD)/readme
 # through pkg-config (gcc, clang, g++ as C++; static and shared), then uninstalled again.
 check-readme: all
+	@sh scripts/deps.sh test
 	@BUILD=$(BUILD) MAKE="$(MAKE)" sh tests/readme_example.sh
 
 clean:

@@ -2,40 +2,69 @@
 # Installs what handspring needs, when it is missing: Debian packages through apt-get as root,
 # otherwise it prints the exact command to run as root (with `sudo` in front only where sudo
 # exists) and exits 1. Needs nothing beyond a POSIX shell and coreutils, so it runs on a fresh
-# Debian with only a compiler and make. clang is a base package: `make check` builds the tool with
-# gcc and clang and compares them (the determinism pair); g++ (and clang's clang++) compile the
-# README's examples and the public headers as C++, and pkg-config links them against an installed
-# copy (make check-readme). GNU parallel and OpenSSH (server and client) run campaigns over cores
-# and machines, and make check-campaign drives them through a private sshd on 127.0.0.1 (issue 14,
-# docs/campaigns.md). `deps.sh bench` adds the benchmark peers
-# (ODE, MuJoCo); `deps.sh fuzz` adds the compiler-rt runtime that holds libFuzzer; `deps.sh
-# valgrind` adds valgrind (make valgrind, make determinism); `deps.sh python` adds what the
-# Python bindings' test needs (make check-python, python/README.md); `deps.sh browser` adds
-# Chromium, Node.js and npm (make check-browser).
+# Debian with only a compiler and make.
+#
+#   sh scripts/deps.sh [GROUP...]
+#
+# Each target asks only for the groups it uses:
+#   build     the libraries and the tool (plain `make`): pkg-config, libccd, libyaml, GSL
+#   test      the unit tests and the README's examples: cmocka; libpng (test_view reads the
+#             pictures `handspring view` draws, with gnuplot); clang (the determinism pair: the
+#             catalog built with gcc and clang must agree); g++ and clang++ (the public headers
+#             and the README's examples as C++); Python 3 (the importers of real hand recordings)
+#   plots     gnuplot (make plots, make figures, make bench, handspring view)
+#   campaign  GNU parallel and the ssh client (make campaign; docs/campaigns.md)
+#   sshd      the ssh server (make check-campaign drives campaigns through a private sshd)
+#   python    Debian's Python with numpy and pytest, pip, setuptools, venv (make check-python)
+#   browser   Chromium, Node.js and npm (make check-browser)
+#   bench     the benchmark peers ODE and MuJoCo (make bench)
+#   fuzz      the compiler-rt runtime that holds libFuzzer (make fuzz)
+#   valgrind  valgrind (make valgrind, make determinism)
+#   check     what `make check` needs before its own targets ask for more: build, test, plots,
+#             campaign and sshd (check-python and check-browser ask for python and browser)
+# Without a group: check.
 set -eu
 
 need=""
 has_file() { [ -e "$1" ]; }
 has_cmd() { command -v "$1" >/dev/null 2>&1; }
 
-has_cmd pkg-config || need="$need pkg-config"
-has_file /usr/include/cmocka.h || need="$need libcmocka-dev"
-has_file /usr/include/ccd/ccd.h || need="$need libccd-dev"
-has_file /usr/include/gsl/gsl_odeiv2.h || need="$need libgsl-dev"
-has_file /usr/include/yaml.h || need="$need libyaml-dev"
-has_file /usr/include/png.h || need="$need libpng-dev"
-has_cmd gnuplot || need="$need gnuplot-nox"
-has_cmd clang || need="$need clang"
-# the importers of real hand recordings (scripts/importers, checked by make check) are Python 3
-has_cmd python3 || need="$need python3"
-has_cmd g++ || need="$need g++"
-# GNU's, not moreutils' program of the same name
-{ has_cmd parallel && parallel --version 2>/dev/null | grep -q 'GNU parallel'; } || need="$need parallel"
-has_file /usr/sbin/sshd || need="$need openssh-server"
-{ has_cmd ssh && has_cmd ssh-keygen; } || need="$need openssh-client"
+[ $# -gt 0 ] || set -- check
 
-for extra in "$@"; do
-	case "$extra" in
+for group in "$@"; do
+	case "$group" in
+	check) set -- "$@" build test plots campaign sshd ;;
+	esac
+done
+
+for group in "$@"; do
+	case "$group" in
+	check) ;;
+	build)
+		has_cmd pkg-config || need="$need pkg-config"
+		has_file /usr/include/ccd/ccd.h || need="$need libccd-dev"
+		has_file /usr/include/gsl/gsl_odeiv2.h || need="$need libgsl-dev"
+		has_file /usr/include/yaml.h || need="$need libyaml-dev"
+		;;
+	test)
+		has_file /usr/include/cmocka.h || need="$need libcmocka-dev"
+		has_file /usr/include/png.h || need="$need libpng-dev"
+		has_cmd gnuplot || need="$need gnuplot-nox"
+		has_cmd clang || need="$need clang"
+		has_cmd g++ || need="$need g++"
+		has_cmd python3 || need="$need python3"
+		;;
+	plots)
+		has_cmd gnuplot || need="$need gnuplot-nox"
+		;;
+	campaign)
+		# GNU's, not moreutils' program of the same name
+		{ has_cmd parallel && parallel --version 2>/dev/null | grep -q 'GNU parallel'; } || need="$need parallel"
+		{ has_cmd ssh && has_cmd ssh-keygen; } || need="$need openssh-client"
+		;;
+	sshd)
+		has_file /usr/sbin/sshd || need="$need openssh-server"
+		;;
 	bench)
 		has_file /usr/include/ode/ode.h || need="$need libode-dev"
 		has_file /usr/include/mujoco/mujoco.h || need="$need libmujoco-dev"
@@ -43,6 +72,7 @@ for extra in "$@"; do
 	fuzz)
 		# libFuzzer ships in compiler-rt, packaged per LLVM version: libclang-rt-14-dev on
 		# Debian 12 (clang 14). Ask for the one matching the installed clang; 14 before clang is in.
+		has_cmd clang || need="$need clang"
 		major=14
 		if has_cmd clang; then
 			major=$(clang -dumpversion 2>/dev/null | cut -d. -f1)
@@ -72,10 +102,17 @@ for extra in "$@"; do
 		has_cmd node || need="$need nodejs"
 		has_cmd npm || need="$need npm"
 		;;
+	*)
+		echo "deps: unknown group '$group' (build, test, plots, campaign, sshd, python, browser, bench, fuzz, valgrind, check)" >&2
+		exit 2
+		;;
 	esac
 done
 
+# a package asked for by two groups once
+need=$(printf '%s\n' $need | awk 'NF && !seen[$0]++' | tr '\n' ' ' | sed 's/ $//')
 [ -z "$need" ] && exit 0
+need=" $need"
 
 if [ "$(id -u)" = 0 ] && has_cmd apt-get; then
 	echo "deps: installing$need" >&2

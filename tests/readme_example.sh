@@ -10,7 +10,10 @@
 #  4. Each example of README.md (the ```c block after `<!-- example: NAME -->`) is built with
 #     gcc and clang as C, and with g++ as C++ (g++ -x c++), each shared (run path to the copy)
 #     and static; every build must print exactly the ```text block after `<!-- output: NAME -->`.
-#  5. `make uninstall` leaves no file behind; an install with DESTDIR stages under it.
+#     Its command blocks run as written: the tour in a scratch folder, the link lines with the two
+#     examples (their run path lets them start without LD_LIBRARY_PATH).
+#  5. The man page renders and names every command; the installed catalog runs.
+#  6. `make uninstall` leaves no file behind; an install with DESTDIR stages under it.
 # Runs from the top folder; BUILD (default build) and MAKE (default make) as in the Makefile.
 set -eu
 
@@ -146,7 +149,77 @@ for example in library harness; do
 	done
 done
 
-# 5. uninstall removes every file; DESTDIR stages an install under it
+# 4b. the README's command blocks, as written, in scratch folders: the tour (`<!-- commands: tour -->`,
+#     beside links to the build folder and the catalog) and the link lines (`<!-- commands: link -->`,
+#     with the two examples as drop.c and run.c, HOME in the scratch folder, `make` run in the top
+#     folder): every command must succeed, and ./drop and ./run print what the README shows
+case "$BUILD" in /*) build_abs=$BUILD ;; *) build_abs=$top/$BUILD ;; esac
+tour="$work/tour"
+mkdir -p "$tour"
+ln -s "$build_abs" "$tour/build"
+ln -s "$top/scenarios" "$tour/scenarios"
+extract commands tour >"$tour/tour.sh"
+if [ ! -s "$tour/tour.sh" ]; then
+	fail "README.md has no tour (<!-- commands: tour --> then a \`\`\`sh block)"
+elif ! (cd "$tour" && sh -eu tour.sh >tour.out 2>&1); then
+	tail -n 5 "$tour/tour.out" >&2
+	fail "the README's tour fails (commands in $tour/tour.sh)"
+else
+	[ "$(head -n 1 "$tour/drop.csv")" = "frame,t,object,x,y,z,qw,qx,qy,qz,contact,floor,resting,hash" ] ||
+		fail "the tour's drop.csv does not start with its header"
+	grep -q '^sweep: 80 of 80 cells pass$' "$tour/tour.out" || fail "the tour's sweep does not say 'sweep: 80 of 80 cells pass'"
+	[ -s "$tour/grasp.html" ] || fail "the tour wrote no grasp.html"
+	[ -s "$tour/mine/golden/drop_cube.csv" ] && [ -s "$tour/mine/golden/free_manipulation.csv" ] ||
+		fail "the tour's golden mine wrote no goldens in mine/golden"
+	grep -q '2 match, 0 differ' "$tour/tour.out" || fail "the tour's check mine does not match its goldens"
+	echo "check-readme: the tour runs as written (list, run, sweep, view --html, golden, check)"
+fi
+user="$work/user"
+mkdir -p "$user/home"
+ln -s "$top/scenarios" "$user/scenarios"
+extract example library >"$user/drop.c"
+extract example harness >"$user/run.c"
+{
+	echo "make() { command $MAKE --no-print-directory -C '$top' BUILD='$BUILD' \"\$@\" LDCONFIG=: >/dev/null; }"
+	extract commands link
+} >"$user/link.sh"
+if ! grep -q 'rpath' "$user/link.sh"; then
+	fail "the README's link lines (<!-- commands: link -->) give no run path (-Wl,-rpath)"
+elif ! (cd "$user" && env -u LD_LIBRARY_PATH HOME="$user/home" sh -eu link.sh >link.out 2>&1); then
+	tail -n 5 "$user/link.out" >&2
+	fail "the README's link lines fail (commands in $user/link.sh)"
+else
+	{ extract output library; extract output harness; } >"$user/expected"
+	cmp -s "$user/expected" "$user/link.out" || { diff "$user/expected" "$user/link.out" >&2 || :; fail "./drop and ./run print something else than the README shows"; }
+	left=$(find "$user/home" ! -type d)
+	[ -z "$left" ] || fail "the README's make uninstall left:" $left
+	echo "check-readme: the README's link lines build drop and run, which start without LD_LIBRARY_PATH"
+fi
+
+# 5. the man page and the catalog: the page renders without a warning and names every command the
+#    tool's --help lists; the installed catalog (with the recordings it reads) runs from there
+page="$prefix/share/man/man1/handspring.1"
+if [ ! -f "$page" ]; then
+	fail "make install did not install the man page share/man/man1/handspring.1"
+else
+	warnings=$(groff -man -ww -z "$page" 2>&1) || fail "groff could not read the man page"
+	[ -z "$warnings" ] || fail "the man page has warnings: $warnings"
+	MANWIDTH=100 man -l "$page" >"$work/man.txt" 2>/dev/null || fail "man -l $page failed"
+	for cmd in $("$prefix/bin/handspring" --help 2>&1 | sed -n 's/^  \([a-z][a-z]*\) .*/\1/p'); do
+		grep -q "^       $cmd\\b" "$work/man.txt" || fail "the man page does not describe the command '$cmd'"
+	done
+	grep -q "$prefix/share/handspring/scenarios" "$work/man.txt" || fail "the man page does not name the installed catalog"
+fi
+catalog="$prefix/share/handspring/scenarios"
+n=$("$prefix/bin/handspring" list --dir "$catalog" 2>/dev/null | wc -l)
+[ "$n" -eq "$(find scenarios -name '*.yaml' | wc -l)" ] || fail "the installed catalog lists $n scenarios, not those of scenarios/"
+for s in drop_cube hand/real_grab; do
+	"$prefix/bin/handspring" run "$catalog/$s.yaml" >"$work/catalog.out" 2>&1 ||
+		fail "the installed catalog's $s does not run: $(tail -n 2 "$work/catalog.out")"
+done
+echo "check-readme: the man page names every command; the installed catalog lists $n scenarios and runs"
+
+# 6. uninstall removes every file; DESTDIR stages an install under it
 $MAKE --no-print-directory -s BUILD="$BUILD" uninstall PREFIX="$prefix" >"$work/uninstall.log" 2>&1 ||
 	fail "make uninstall PREFIX=$prefix failed: $(cat "$work/uninstall.log")"
 left=$(find "$prefix" ! -type d | sed "s|^$prefix/||")
