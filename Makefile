@@ -230,9 +230,10 @@ check:
 	@sh scripts/layout_check.sh
 	@sh scripts/importers/check.sh
 	@$(MAKE) --no-print-directory check-sweep
+	@$(MAKE) --no-print-directory check-soak
 	@$(MAKE) --no-print-directory check-campaign
 	@$(MAKE) --no-print-directory figures
-	@echo "check: all suites passed (plain and ASan+UBSan, reliability, README examples, the docs' scenarios, resume, files in and out, golden folders, the Python bindings, the replay page in Chromium, layout, the hand scenarios' robustness sweep, a campaign over GNU parallel, ssh and a resume, the papers' figures)"
+	@echo "check: all suites passed (plain and ASan+UBSan, reliability, README examples, the docs' scenarios, resume, files in and out, golden folders, the Python bindings, the replay page in Chromium, layout, the hand scenarios' robustness sweep, the randomized fault soak, a campaign over GNU parallel, ssh and a resume, the papers' figures)"
 
 # The tool's files in and out (scenarios/README.md, "How the tool writes files"): outputs that are inputs, /dev/full, planted links, pipes,
 # a full small file system (a tmpfs when root), endless inputs, the campaign lock and a part cut
@@ -427,15 +428,20 @@ check-readme: all
 clean:
 	rm -rf $(BUILD)
 
-# Reliability (stress, fuzz, determinism matrix, memory): targets and the check subset live in
-# tests/reliability.mk; without it the subset is empty.
-.PHONY: check-reliability stress fuzz determinism
+# Reliability (stress, fuzz, determinism matrix, memory, the randomized fault soak): targets and
+# the check subset live in tests/reliability.mk; without it the subset and check-soak are empty.
+# check-soak (part of check): the fault soak's short run, 200,000 frames of random spring and hand
+# scenes at 12-144 frames/s with the input noise on, no numeric fault allowed (a few seconds);
+# `make stress` runs it over 1,000,000 frames.
+.PHONY: check-reliability check-soak stress fuzz determinism
 -include tests/reliability.mk
 
-# what the suites run, built on CHECK_JOBS cores first (make check; the stress program of
-# tests/reliability.mk too)
-check-built: all $(TESTS) $(STRESS)
+# what the suites run, built on CHECK_JOBS cores first (make check; the stress and fault soak
+# programs of tests/reliability.mk too)
+check-built: all $(TESTS) $(STRESS) $(FAULT_SOAK)
 check-reliability::
+	@:
+check-soak::
 	@:
 
 # own elementary functions against references (bench/ulp.mk)

@@ -243,6 +243,13 @@ static void prepare(hs_world *world, hs_spring_system *sys, double dt) {
 		c->normal = 0.0;
 		c->friction = hs_v3(0.0, 0.0, 0.0);
 	}
+	// closes() may have stopped an object it found sliding (a box bouncing slowly off a block the
+	// floor holds ends at exactly 0): what no longer moves does not slide, and the floor's sliding
+	// friction, which acts against the direction of the sliding, must never divide by zero speed
+	for (int k = 0; k < sys->active_count; ++k) {
+		const hs_body *b = &world->bodies[sys->active[k]];
+		sys->rest[k].sliding = sys->rest[k].sliding && hs_length(hs_v3(b->vel.x, b->vel.y, 0.0)) > HS_REST_STICK_SPEED;
+	}
 }
 
 // Held still: slow, sticking at every contact, and the forces leave (almost) nothing.

@@ -1,6 +1,11 @@
 # tests/reliability.mk — reliability targets (issue 6), included by the Makefile.
 #
-#   make stress          numerical stress: every case in full (the 1,000,000-frame soak included)
+#   make stress          numerical stress: every case in full (the 1,000,000-frame soak included),
+#                        then the randomized fault soak (tests/fault_soak.c) over FAULT_SOAK_FRAMES
+#                        (1,000,000) frames: random spring and hand scenes at 12-144 frames/s with
+#                        the input noise on; one numeric fault fails it
+#   make check-soak      (run by `make check`) the fault soak's short run: FAULT_SOAK_CHECK_FRAMES
+#                        (200,000) frames, a few seconds
 #   make fuzz            libFuzzer on the scenario loader, the recorded-input reader, the state loader,
 #                        the joint-recording reader, the campaign reader and the CSV readers of
 #                        check and --summarize, FUZZ_SECONDS (default 60) each, one after the other;
@@ -45,8 +50,25 @@ soak-scenarios: $(SOAK_GEN)
 	@mkdir -p $(BUILD)/soak
 	$(SOAK_GEN) $(BUILD)/soak $(SOAK_SEED) $(SOAK_SECONDS)
 
-stress: $(STRESS)
+# The randomized fault soak: seeded random scenes (GSL's mt19937 from FAULT_SOAK_SEED), each at
+# a frame rate drawn from 12-144 frames/s with the stylus's or the glove's and wrist's noise on,
+# until the frames are run; it prints frames, scenes, faults and the first fault (its scene's
+# seed: `fault_soak --scene SEED` runs it alone) and fails on any fault: a step's error, a value
+# the world caught non-finite, or a non-finite state.
+FAULT_SOAK := $(BUILD)/fault_soak
+FAULT_SOAK_SEED ?= 1
+FAULT_SOAK_FRAMES ?= 1000000
+FAULT_SOAK_CHECK_FRAMES ?= 200000
+
+$(FAULT_SOAK): $(BUILD)/obj/tests/fault_soak.o $(LIBS)
+	$(CC) $(LDFLAGS) -o $@ $^ $(LDLIBS_ALL)
+
+stress: $(STRESS) $(FAULT_SOAK)
 	$(STRESS) --full
+	$(FAULT_SOAK) $(FAULT_SOAK_FRAMES) $(FAULT_SOAK_SEED)
+
+check-soak:: $(FAULT_SOAK)
+	@$(FAULT_SOAK) $(FAULT_SOAK_CHECK_FRAMES) $(FAULT_SOAK_SEED)
 
 # the subset: every case, fewer frames (well under 30 s), then the quick determinism matrix
 check-reliability:: $(STRESS)

@@ -261,6 +261,56 @@ static void test_push_into_heavy_block(void **state) {
 	}
 }
 
+// A light box (10 cm, 0.2 kg) on the spring dragged along the floor at 0.5 m/s into a 128 kg
+// block (40 cm, 2000 kg/m³), the pull kept on after it arrives: it bounces off, the spring pulls
+// it back, and a slow bounce that the spring would close within the frame has its separating speed
+// removed — against the block the floor's friction holds, the box's speed became exactly 0 while
+// it still counted as sliding, and the floor's sliding friction divided by that speed: every value
+// non-finite, both objects frozen for good, at every frame rate. Now no fault, the box never in
+// the block by more than the touch gap, and it ends at rest against the block's face; the block
+// moves at most what one impact's momentum allows (2 m v / (m + M) = 1.56 mm/s, which friction
+// stops within 0.25 µm; the later bounces are slower): under 1 µm.
+static void test_drag_into_heavy_block(void **state) {
+	(void)state;
+	const double hz[5] = {12.0, 30.0, 60.0, 120.0, 144.0};
+	for (int r = 0; r < 5; ++r) {
+		scene s = make_scene(hz[r], 0.0, 0.5);
+		hs_status st;
+		hs_shape *big = hs_shape_box(hs_v3(0.4, 0.4, 0.4), &st);
+		hs_shape_id id = hs_world_add_shape(s.world, big, &st);
+		hs_shape_destroy(big);
+		hs_object_id block = put(&s, id, hs_v3(0.5, 0.0, 0.2), 2000);
+		hs_vec3 g = hs_v3(-0.2, 0.0, 0.05);
+		hs_object_id box = put(&s, s.cube, g, 200);
+		hs_spring_object so;
+		hs_world_spring_object(s.world, box, &so);
+		hs_vec3 pen = hs_add(g, hs_v3(so.rest_length, 0.0, 0.0)); // beside G at x0: neutral
+		hs_world_set_stylus(s.world, pen, hs_quat_identity(), false);
+		hs_world_step(s.world);
+		assert_int_equal(hs_world_spring_attach(s.world, box), HS_OK);
+		long frames = lround(4.0 * hz[r]);
+		for (long f = 1; f <= frames; ++f) { // 0.5 m/s for 2 s, then held there
+			double t = fmin((double)f / hz[r], 2.0);
+			hs_world_set_stylus(s.world, hs_add(pen, hs_v3(0.5 * t, 0.0, 0.0)), hs_quat_identity(), false);
+			assert_int_equal(hs_world_step(s.world), HS_OK);
+			const hs_body *a = &s.world->bodies[0], *b = &s.world->bodies[1];
+			if (hs_world_get_counters(s.world).numeric_faults != 0 || !hs_vec3_is_finite(b->pos) ||
+			    !hs_vec3_is_finite(b->vel))
+				fail_msg("at %g frames/s, frame %ld: a numeric fault (box at %g m, %g m/s)", hz[r], f, b->pos.x, b->vel.x);
+			if (b->pos.x + 0.05 > a->pos.x - 0.2 + 1e-6)
+				fail_msg("at %g frames/s, frame %ld: the box %g m in the block", hz[r], f,
+				         b->pos.x + 0.05 - (a->pos.x - 0.2));
+		}
+		hs_object_state bs, os;
+		hs_world_object_state(s.world, block, &bs);
+		hs_world_object_state(s.world, box, &os);
+		assert_true(hs_distance(bs.position, hs_v3(0.5, 0.0, 0.2)) < 1e-6);
+		assert_near(os.position.x, bs.position.x - 0.25, 2e-6);
+		assert_true(hs_length(os.velocity) == 0.0);
+		hs_world_destroy(s.world);
+	}
+}
+
 // Restitution per pair: a ball of e = 0.5 slides into a resting ball of e = 1 on a frictionless
 // floor: the pair takes e = 0.5, v_a' = (m_a − e m_b) v / (m_a + m_b), v_b' = (1 + e) m_a v / (m_a + m_b).
 static void test_restitution_per_pair(void **state) {
@@ -507,6 +557,7 @@ int main(void) {
 	    cmocka_unit_test(test_frictionless_pyramid_spreads),
 	    cmocka_unit_test(test_box_on_balls),
 	    cmocka_unit_test(test_push_into_heavy_block),
+	    cmocka_unit_test(test_drag_into_heavy_block),
 	    cmocka_unit_test(test_restitution_per_pair),
 	    cmocka_unit_test(test_closed_box_energy),
 	    cmocka_unit_test(test_dense_drop_keeps_balls_apart),
