@@ -1,30 +1,41 @@
 // fall_group.c — paper stacking (docs/model.md §6): [H] §4.3 says objects that interfere with each
 // other and that no hand touches "are not affected by gravity and inertia". Read literally, a
 // stack let go in mid-air hangs there for good; handspring reads it as holding for objects that
-// something holds up (the floor, or a hand through the objects between): a group that nothing
-// holds up falls as one body and lands as one.
+// something holds up from below (the floor, or a hand through the objects between): an object
+// that nothing under it holds up falls, as one body with what rests on it, and lands as one.
 #include "broadphase.h"
 #include "fall_group.h"
 #include "manipulate.h"
 #include "motion.h"
+#include "stacking.h"
 
-// The interference group of `object` in out[0..n) (breadth first); 0 when a member is held up: held
-// or carried by a hand this frame, or on the floor.
-static int group_of(hs_world *world, int object, int *out, int cap) {
-	int head = 0, n = 0;
-	out[n++] = object;
+// j holds i up: they interfere and i's lowest point is no lower than j's G (i rests on j's upper
+// part; an object beside i, touching its side, holds nothing up).
+static bool supports(hs_world *world, int j, int i) {
+	return hs_objects_interfere(world, i, j) && hs_motion_pose_vertices(world, &world->bodies[i]) >= world->bodies[j].pos.z;
+}
+
+static bool listed(const int *list, int n, int j) {
+	for (int q = 0; q < n; ++q)
+		if (list[q] == j)
+			return true;
+	return false;
+}
+
+// Breadth first from out[0] through `supports`, downward (what holds the members up) or upward
+// (what they hold up); returns the count, or 0 when going down reaches something held up: a hand
+// holds or carried it this frame, or it is on the floor.
+static int walk(hs_world *world, int *out, int cap, bool down) {
+	int head = 0, n = 1;
 	while (head < n) {
 		int m = out[head++];
 		const hs_body *b = &world->bodies[m];
-		if (b->held || b->carried || b->floor_contacts > 0)
+		if (down && (b->held || b->carried || b->floor_contacts > 0))
 			return 0;
 		int near = hs_grid_near(world, b->pos, world->shapes[b->shape].radius);
 		for (int k = 0; k < near; ++k) {
 			int j = world->near[k];
-			bool member = false;
-			for (int q = 0; q < n && !member; ++q)
-				member = out[q] == j;
-			if (member || !hs_objects_interfere(world, m, j))
+			if (j == m || listed(out, n, j) || !(down ? supports(world, j, m) : supports(world, m, j)))
 				continue;
 			if (n == cap)
 				return 0; // cannot happen: members are distinct objects
@@ -35,9 +46,11 @@ static int group_of(hs_world *world, int object, int *out, int cap) {
 }
 
 int hs_fall_group(hs_world *world, int object, int *out, int cap) {
-	int n = group_of(world, object, out, cap);
-	if (n == 0)
-		return 0;
+	out[0] = object;
+	if (walk(world, out, cap, true) == 0)
+		return 0; // held up
+	out[0] = object; // nothing holds it up: it falls with what it holds up
+	int n = walk(world, out, cap, false);
 	double dt = world->def.dt, mass = 0.0;
 	hs_vec3 momentum = hs_v3(0, 0, 0); // per frame: the group moves at its members' mean velocity
 	for (int k = 0; k < n; ++k) {
@@ -59,11 +72,16 @@ int hs_fall_group(hs_world *world, int object, int *out, int cap) {
 		low = z < low ? z : low;
 	}
 	bool landed = low <= world->def.floor_tolerance;
-	for (int k = 0; k < n; ++k) { // §4.2 for the group: lifted as one, and it stops (§4.1)
-		hs_body *b = &world->bodies[out[k]];
+	for (int k = 0; k < n; ++k) // §4.2 for the group: lifted as one
 		if (low < 0.0)
-			b->pos.z -= low;
+			world->bodies[out[k]].pos.z -= low;
+	for (int k = 0; k < n; ++k) { // out of what it fell into (Fig. 11), and it stops there (§4.1)
+		hs_body *b = &world->bodies[out[k]];
+		landed = hs_stack_rectify(world, out[k]) || landed;
 		hs_motion_keep_above_floor(world, b);
+	}
+	for (int k = 0; k < n; ++k) {
+		hs_body *b = &world->bodies[out[k]];
 		if (landed) {
 			b->prev = b->pos;
 			b->grounded = b->floor_contacts > 0;

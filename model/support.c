@@ -6,6 +6,7 @@
 // world step has already swept the fall and rectified faces flush with each other).
 #include "broadphase.h"
 #include "clip.h"
+#include "manipulate.h"
 #include "motion.h"
 #include "stacking.h"
 #include "support.h"
@@ -260,10 +261,53 @@ static void carry_stack(hs_world *world, int object) {
 	}
 }
 
+// The lowest and highest z of a body's vertices as posed now.
+static void z_range(hs_world *world, const hs_body *b, double *lo, double *hi) {
+	*lo = hs_motion_pose_vertices(world, b);
+	*hi = -INFINITY;
+	for (int i = 0; i < world->shapes[b->shape].vertex_count; ++i)
+		*hi = world->scratch_world[i].z > *hi ? world->scratch_world[i].z : *hi;
+}
+
+// Objects beside what a hand pushes (docs/model.md §6): an object the pushed one moved into, not
+// resting on it nor under it (one's G within the other's heights), is pushed
+// along by the push's horizontal motion d, and what that one moves into in turn: a box pushed into
+// a cube on the floor moves the cube, instead of stopping while the fingers sink into it.
+static void push_aside(hs_world *world, int object, hs_vec3 d) {
+	if (!(d.x * d.x + d.y * d.y > 0.0))
+		return;
+	int head = 0, tail = 0;
+	world->queue[tail++] = object;
+	while (head < tail) {
+		int s = world->queue[head++];
+		double slo, shi;
+		z_range(world, &world->bodies[s], &slo, &shi);
+		int n = hs_grid_near(world, world->bodies[s].pos, world->shapes[world->bodies[s].shape].radius);
+		for (int k = 0; k < n; ++k) {
+			int j = world->near[k];
+			hs_body *b = &world->bodies[j];
+			if (b->held || queued(world, tail, j) || !hs_objects_interfere(world, s, j))
+				continue;
+			double jlo, jhi, sz = world->bodies[s].pos.z;
+			z_range(world, b, &jlo, &jhi);
+			bool beside = (b->pos.z > slo && b->pos.z < shi) || (sz > jlo && sz < jhi); // not on it nor under it
+			if (!beside || d.x * (b->pos.x - world->bodies[s].pos.x) + d.y * (b->pos.y - world->bodies[s].pos.y) <= 0.0)
+				continue; // on it, under it, or behind the push
+			b->pos = hs_add(b->pos, d);
+			b->prev = hs_add(b->prev, d); // pushed, not thrown: no inertia gained
+			hs_grid_update(world, j);
+			hs_wake(world, j);
+			world->queue[tail++] = j;
+		}
+	}
+}
+
 void hs_support_wake_neighbours(hs_world *world, int object, hs_vec3 from) {
 	const hs_body *body = &world->bodies[object];
-	if (body->held && body->contact != HS_CONTACT_GRASP)
+	if (body->held && body->contact != HS_CONTACT_GRASP) {
+		push_aside(world, object, hs_v3(body->pos.x - body->prev.x, body->pos.y - body->prev.y, 0.0));
 		rectify_pushed(world, object);
+	}
 	if (body->held) {
 		carry_stack(world, object);
 		return;

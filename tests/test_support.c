@@ -296,7 +296,7 @@ static void test_support_carried_by_lifted_support(void **state) {
 		lower->held = 1;
 		hs_wake(w, li);
 		hs_grid_update(w, li);
-		hs_support_wake_neighbours(w, li);
+		hs_support_wake_neighbours(w, li, lower->prev);
 		hs_world_step(w);
 		hs_world_object_state(w, bar, &a);
 		hs_world_object_state(w, cube, &b);
@@ -338,6 +338,34 @@ static void test_support_skip_work_same_bits(void **state) {
 	assert_int_equal(settle_hash(true), settle_hash(false));
 }
 
+// Support mode (docs/model.md §6): a box a hand pushes 1 cm into a cube beside it on the floor
+// pushes the cube along by the push's horizontal motion, and that one the cube behind it: neither
+// overlaps what pushed it; a cube behind the push is left where it is.
+static void test_support_push_moves_what_is_beside(void **state) {
+	(void)state;
+	hs_world *w = world_with(HS_STACKING_SUPPORT);
+	hs_object_id box = add_box(w, hs_v3(0.1, 0.2, 0.06), hs_v3(0, 0, 0.03));
+	hs_object_id first = add_box(w, hs_v3(0.05, 0.05, 0.05), hs_v3(0.0755, 0, 0.025));
+	hs_object_id second = add_box(w, hs_v3(0.05, 0.05, 0.05), hs_v3(0.1305, 0, 0.025));
+	hs_object_id behind = add_box(w, hs_v3(0.05, 0.05, 0.05), hs_v3(-0.08, 0, 0.025));
+	run(w, box, 2);
+	int i = (int)box.index1 - 1;
+	hs_body *b = &w->bodies[i];
+	b->prev = b->pos;
+	b->rot_prev = b->rot;
+	b->pos = hs_add(b->pos, hs_v3(0.01, 0, 0));
+	b->held = 1;
+	b->contact = HS_CONTACT_PUSH_MANY;
+	hs_wake(w, i);
+	hs_grid_update(w, i);
+	hs_support_wake_neighbours(w, i, b->prev);
+	assert_near(w->bodies[(int)first.index1 - 1].pos.x, 0.0855, 1e-15);  // 9.5 mm into it: moved 1 cm, the gap kept
+	assert_near(w->bodies[(int)second.index1 - 1].pos.x, 0.1405, 1e-15); // moved into by the first
+	assert_near(w->bodies[(int)behind.index1 - 1].pos.x, -0.08, 0);
+	assert_near(b->pos.x, 0.01, 1e-15);
+	hs_world_destroy(w);
+}
+
 // Support mode: an object a hand pushes (not grasps) into a support is rectified onto its top face
 // in the hand pass, as a push on the floor (§4.2), and the lift is not motion: pushed 3 mm down
 // and 2 mm across a cube's top, it ends on the top face (G at 0.12) with the push's own motion.
@@ -356,7 +384,7 @@ static void test_support_push_does_not_sink(void **state) {
 	b->contact = HS_CONTACT_PUSH_ONE;
 	hs_wake(w, i);
 	hs_grid_update(w, i);
-	hs_support_wake_neighbours(w, i);
+	hs_support_wake_neighbours(w, i, b->prev);
 	assert_near(b->pos.z, 0.12, 1e-12);
 	assert_vec3_near(hs_sub(b->pos, b->prev), hs_v3(0.002, 0, -0.003), 1e-15);
 	hs_world_destroy(w);
@@ -375,6 +403,7 @@ int main(void) {
 	    cmocka_unit_test(test_support_carried_by_lifted_support),
 	    cmocka_unit_test(test_support_skip_work_same_bits),
 	    cmocka_unit_test(test_support_push_does_not_sink),
+	    cmocka_unit_test(test_support_push_moves_what_is_beside),
 	};
 	return cmocka_run_group_tests_name("support", tests, NULL, NULL);
 }
