@@ -9,7 +9,7 @@
 #      warning, status 1;
 #   4. a catalog's own layout (a copy: scenarios/ and golden/ in a temporary folder) still writes
 #      golden/ beside scenarios/, byte for byte what the repository's golden holds, with the header
-#      "regenerate with make golden" when run as `make golden` runs it;
+#      "Regenerate with `make golden`" (golden/README.md) when run as `make golden` runs it;
 #   5. `all --strict` and `golden --strict` refuse a scenario that warns (status 2).
 # Usage: sh tests/golden_dir.sh [TOOL]   (default build/handspring)
 set -u
@@ -31,8 +31,10 @@ cp scenarios/drop_cube.yaml "$user/"
 rc=$?
 [ $rc -eq 0 ] || { fail "golden $user: status $rc"; cat "$work/golden.out"; }
 [ -f "$user/golden/drop_cube.csv" ] || fail "no $user/golden/drop_cube.csv"
-grep -qx "# regenerate with handspring golden $user" "$user/golden/drop_cube.csv" ||
-	fail "the user golden's header does not name 'handspring golden $user': $(sed -n 2p "$user/golden/drop_cube.csv")"
+head -n 1 "$user/golden/drop_cube.csv" | grep -q '^frame,t,object,' ||
+	fail "the user golden does not start with its header row: $(head -n 1 "$user/golden/drop_cube.csv")"
+grep -q "Regenerate with \`handspring golden $user\`" "$user/golden/README.md" ||
+	fail "the user goldens' README.md does not name 'handspring golden $user': $(cat "$user/golden/README.md")"
 [ "$(sums)" = "$before" ] || fail "golden $user changed the catalog's golden/"
 "$tool" check "$user" > "$work/check.out" 2>&1
 rc=$?

@@ -573,7 +573,7 @@ static void set_regenerate(all_job *job) {
 // Runs one loaded scenario writing its trajectory to the job's out_dir and hands_dir (closed here)
 // and golden_dir (left open in *golden: it is kept only if the scenario passes); false on a write
 // error (said on stderr).
-static bool all_run_one(hs_scenario *s, const char *name, const char *path, all_job *job, output *golden) {
+static bool all_run_one(hs_scenario *s, const char *name, all_job *job, output *golden) {
 	output outs[3];
 	memset(outs, 0, sizeof outs);
 	const char *dirs[3] = {job->out_dir, job->golden_dir, job->hands_dir};
@@ -585,9 +585,6 @@ static bool all_run_one(hs_scenario *s, const char *name, const char *path, all_
 		io_ok = csv && output_open(&outs[k], csv);
 		if (!io_ok)
 			fprintf(stderr, "handspring: %s\n", csv ? outs[k].error : "out of memory");
-		else if (k == 1)
-			fprintf(outs[k].file, "# handspring golden trajectory of scenario %s (%s)\n# regenerate with %s\n", name,
-			        path, job->regenerate);
 		free(csv);
 	}
 	FILE *files[2] = {outs[0].file, outs[1].file};
@@ -686,7 +683,7 @@ static void all_one(all_job *job, const hs_catalog *catalog, int i, int width, F
 	hs_scenario *s = all_load(job, name, catalog->paths[i]);
 	output golden;
 	memset(&golden, 0, sizeof golden);
-	bool io_ok = s && all_run_one(s, name, catalog->paths[i], job, &golden);
+	bool io_ok = s && all_run_one(s, name, job, &golden);
 	int fails = io_ok ? all_report(s, name, width, log) : 0;
 	bool written = false;
 	if (s && !all_finish_golden(job, name, &golden, fails, io_ok, &written))
@@ -701,6 +698,31 @@ static void all_one(all_job *job, const hs_catalog *catalog, int i, int width, F
 	}
 	c->goldens += written;
 	hs_scenario_destroy(s);
+}
+
+// The goldens' folder says what its files are and the command that writes them again (README.md:
+// the CSVs themselves start with their header row, for any CSV reader). False on a write error.
+static bool write_golden_readme(const all_job *job) {
+	size_t n = strlen(job->golden_dir) + sizeof "/README.md";
+	char *path = malloc(n);
+	if (!path)
+		return false;
+	snprintf(path, n, "%s/README.md", job->golden_dir);
+	output o;
+	bool ok = output_open(&o, path);
+	if (ok) {
+		fprintf(o.file,
+		        "# Golden trajectories\n\nOne CSV per scenario of `%s` (the folder's tree), written by handspring from a run\n"
+		        "whose expectations all passed: every object's pose, contact state and state hash at every frame,\n"
+		        "its header row first. Regenerate with `%s`.\n",
+		        job->dir, job->regenerate);
+		ok = output_close(&o, true);
+	}
+	if (!ok)
+		fprintf(stderr, "handspring: %s\n", o.error);
+	output_free(&o);
+	free(path);
+	return ok;
 }
 
 static int all_run(all_job *job) {
@@ -746,6 +768,8 @@ static int all_run(all_job *job) {
 		printf("%d golden%s written to %s/%s\n", c.goldens, c.goldens == 1 ? "" : "s", job->golden_dir,
 		       c.goldens < catalog.count ? " (none for a scenario that failed or could not run)" : "");
 	hs_catalog_free(&catalog);
+	if (job->golden_dir && c.goldens > 0 && !write_golden_readme(job))
+		return EXIT_BAD_INPUT;
 	return c.bad ? EXIT_BAD_INPUT : c.failed ? EXIT_FAILED : EXIT_PASS;
 }
 
