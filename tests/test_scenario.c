@@ -294,6 +294,17 @@ static int check_in(const char *base, const char *file, const char *clause, char
 	return failed;
 }
 
+// A catalog file's text (one at a time: the buffer is reused).
+static const char *catalog_text(const char *path) {
+	static char text[16384];
+	FILE *f = fopen(path, "r");
+	assert_non_null(f);
+	size_t n = fread(text, 1, sizeof text - 1, f);
+	fclose(f);
+	text[n] = '\0';
+	return text;
+}
+
 static int check_clause(const char *clause, char *report, size_t report_size) {
 	return check_in(drop_scenario, "drop.yaml", clause, report, report_size);
 }
@@ -1535,12 +1546,7 @@ static void test_contact_watch(void **state) {
 	expect_fail("{ object: block, grasped: true, from: 0.5, to: 1 }",
 	            "block grasped (contact state 2) from t = 0.5 s to t = 1 s: contact state 0 at frame 30 (t = 0.5 s)");
 	// a hand that holds a cube from t = 0.61 s to 1.9 s (the catalog scenario, with one more clause)
-	FILE *f = fopen("scenarios/hand/grasp_adjoining_faces.yaml", "r");
-	assert_non_null(f);
-	static char text[16384];
-	size_t n = fread(text, 1, sizeof text - 1, f);
-	fclose(f);
-	text[n] = '\0';
+	const char *text = catalog_text("scenarios/hand/grasp_adjoining_faces.yaml");
 	char report[4096];
 	assert_int_equal(check_in(text, "grasp_adjoining_faces.yaml", "{ object: cube, grasped: true, from: 1, to: 1.5 }",
 	                          report, sizeof report),
@@ -1560,12 +1566,7 @@ static void test_contact_watch(void **state) {
 // before) and 1 again for frames 32-36, then draws back.
 static void test_contact_sequence_min_s(void **state) {
 	(void)state;
-	FILE *f = fopen("scenarios/hand/push_off_centre.yaml", "r");
-	assert_non_null(f);
-	static char text[16384];
-	size_t n = fread(text, 1, sizeof text - 1, f);
-	fclose(f);
-	text[n] = '\0';
+	const char *text = catalog_text("scenarios/hand/push_off_centre.yaml");
 	static const struct {
 		const char *clause, *measured;
 	} cases[] = {
