@@ -25,7 +25,7 @@ do for [f = 1:2] {
         set terminal svg size 1500, 560 enhanced font "Sans,11" background rgb "white"
         set output out.'/exp2.svg'
     }
-    set multiplot layout 1, 3 title sprintf("Experiment 2 (1999 paper): a block thrown at a 15 cm target 2 m away, %d throws a point, a thrower of 90 %% hits over 12-17 frames/s", trials)
+    set multiplot layout 1, 3 title sprintf("Experiment 2 (1999 paper): a block thrown at a 15 cm target 2 m away, %d throws a point\na thrower calibrated to 90 %% hits over 12-17 frames/s", trials)
     set logscale x 2
     set xrange [10:150]
     set xtics ("12" 12, "17" 17, "30" 30, "60" 60, "120" 120)

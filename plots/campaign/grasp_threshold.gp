@@ -18,7 +18,7 @@ do for [f = 1:2] {
         set terminal svg size 1000, 620 enhanced font "Sans,11" background rgb "white"
         set output out.'/grasp_threshold.svg'
     }
-    set title sprintf("The catalog's grasps against the grasp threshold (1999 paper §3.2: the paper's 90 deg), %d noisy runs a point", trials)
+    set title sprintf("The catalog's grasps against the grasp threshold\n(1999 paper §3.2: the paper's 90 deg), %d noisy runs a point", trials)
     set xlabel "grasp threshold (deg between two contact normals)"
     set ylabel "runs whose robust clauses hold (Wilson 95 %)"
     set xrange [55:155]
