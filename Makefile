@@ -352,6 +352,13 @@ plots: all $(PLOT_GENS)
 		gnuplot -e "summary='$(BUILD)/campaign/$$c/summary.csv'; out='$(BUILD)/plots'" plots/campaign/$$c.gp || exit 1; done
 	@ls $(BUILD)/plots/*.png $(BUILD)/plots/*.svg 2>/dev/null || echo "plots: none yet"
 
+# The plots' CSVs as csv readers take them (docs/plots.md, "The data files"): each starts with its
+# header row, holds data rows only and has its NAME.txt sidecar; the runs of one scenario are told
+# apart by a column. Not part of `check` (it needs gnuplot and the catalog's plots run).
+.PHONY: check-plots-csv
+check-plots-csv: plots
+	@sh tests/plots_csv.sh $(BUILD)/plots
+
 # Benchmarks report, they never fail on a time. bench/*.c are built against the library;
 # the peers (ODE, MuJoCo) only when their Debian packages are present.
 bench: all

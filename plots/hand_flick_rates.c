@@ -3,9 +3,10 @@
 // replaced (hs_scenario_load_with) by 1/12, 1/17, 1/30, 1/60 and 1/120 s and records, every frame,
 // the pyramid's centre G, its contact state and the angle it has turned since frame 0.
 //
-// usage: hand_flick_rates OUTDIR [SCENARIO] — writes OUTDIR/hand_flick_rates.csv (one gnuplot
-// data block per rate, in the order above, separated by two blank lines: fps,frame,t,x,z,contact,
-// turned_deg,floor_contacts) and OUTDIR/hand_flick_rates.vars (gnuplot assignments per rate
+// usage: hand_flick_rates OUTDIR [SCENARIO] — writes OUTDIR/hand_flick_rates.csv (header row
+// fps,frame,t,x,z,contact,turned_deg,floor_contacts, then the rates' rows one after another in the
+// order above, told apart by fps), OUTDIR/hand_flick_rates.txt (what the columns are) and
+// OUTDIR/hand_flick_rates.vars (gnuplot assignments per rate
 // i = 1..5: fps<i>, push_t<i> (first frame pushed), max_turn<i> (deg), end_turn<i> (deg),
 // end_x<i>, end_z<i>, end_floor<i> (vertices on the floor at the end: 4 its base, 3 a side face),
 // end_resting<i>, fails<i> (the scenario's expectations that fail at that rate)).
@@ -16,6 +17,22 @@
 #include "hs_harness.h"
 #include "plot_run.h"
 
+
+// OUTDIR/hand_flick_rates.txt, the CSV's sidecar
+static int write_about(const char *dir, const char *scenario) {
+	char rates[64];
+	return plot_run_about(dir, "hand_flick_rates",
+	                      "hand_flick_rates.csv: %s at dt = 1/fps s for fps = %s\n"
+	                      "one row per frame, the rates one after another; column fps tells them apart\n"
+	                      "fps: frames per second\n"
+	                      "frame: frame number, 0 before the first step\n"
+	                      "t: time, s\n"
+	                      "x, z: the pyramid's centre G, m\n"
+	                      "contact: hand contact state, 0 none, 1 push at one point, 2 grasp, 3 push at several points\n"
+	                      "turned_deg: the angle the pyramid has turned since frame 0, deg\n"
+	                      "floor_contacts: its vertices on the floor\n",
+	                      scenario, plot_run_rates_text(rates, sizeof rates));
+}
 
 int main(int argc, char **argv) {
 	const char *path;
@@ -29,12 +46,14 @@ int main(int argc, char **argv) {
 			status = 2;
 			break;
 		}
+		if (i == 0 && (write_about(argv[1], hs_scenario_name(s)) != 0 ||
+		               fprintf(out, "fps,frame,t,x,z,contact,turned_deg,floor_contacts\n") < 0)) {
+			hs_scenario_destroy(s);
+			status = 1;
+			break;
+		}
 		hs_world *w = hs_scenario_world(s);
 		hs_object_id id = hs_world_object_at(w, 0);
-		if (i > 0)
-			fprintf(out, "\n\n");
-		fprintf(out, "# %s at dt = 1/%d s\n# fps,frame,t,x,z,contact,turned_deg,floor_contacts\n", hs_scenario_name(s),
-		        plot_run_fps[i]);
 		hs_object_state st;
 		hs_world_object_state(w, id, &st);
 		hs_quat q0 = st.orientation;

@@ -2,18 +2,19 @@
 # hand/flick_pyramid) at 12, 17, 30, 60 and 120 frames/s: (a) the angle the pyramid has turned
 # since frame 0 against time per rate, with where it comes to rest (its face on the floor and the
 # angle); (b) its hand contact state per rate (0 none, 1 push at one point).
-# Data: plots/hand_flick_rates.c (run by `make plots` before this script). Writes
-# hand_flick_rates.png/.svg.
+# Data: plots/hand_flick_rates.c (run by `make plots` before this script): one CSV, the rates' rows
+# one after another, told apart by column 1 (fps). Writes hand_flick_rates.png/.svg.
 #   gnuplot -e "traj='build/traj'; out='build/plots'" plots/hand_flick_rates.gp
 if (!exists("out")) out = 'build/plots'
 set datafile separator ","
-set datafile commentschars "#"
+set datafile columnheaders
 data = out.'/hand_flick_rates.csv'
 load out.'/hand_flick_rates.vars'
 N = 5
 colors = "#9467bd #d62728 #2ca02c #1f77b4 #ff7f0e"
 color(i) = word(colors, i)
 v(name, i) = value(name.i)
+rate(i, col) = column(1) == v("fps", i) ? column(col) : 1/0   # column col of rate i's rows only
 face(i) = v("end_floor", i) == 3 ? "a side face (3 vertices)" : (v("end_floor", i) == 4 ? "its base (4 vertices)" : sprintf("%d vertices", v("end_floor", i)))
 over = 0
 tipped = ""
@@ -60,7 +61,7 @@ do for [k = 1:2] {
                                  v("fps", i), v("push_t", i), v("max_turn", i), face(i), v("end_turn", i), v("end_x", i), v("end_z", i)) \
             at t0 + 0.262, 58 - 12.5 * (i - 1) left font ",9" tc rgb color(i) front
     }
-    plot for [i = 1:N] data index (i - 1) using 3:7 with linespoints lw 2 pt 7 ps 0.6 lc rgb color(i) title sprintf("dt = 1/%d s", v("fps", i))
+    plot for [i = 1:N] data using 3:(rate(i, 7)) with linespoints lw 2 pt 7 ps 0.6 lc rgb color(i) title sprintf("dt = 1/%d s", v("fps", i))
     unset label
     unset arrow 1
 
@@ -72,7 +73,7 @@ do for [k = 1:2] {
     set yrange [-0.2:1.5]
     set ytics ("0" 0, "1" 1)
     unset key
-    plot for [i = 1:N] data index (i - 1) using 3:($6 + 0.05 * (i - 1)) with steps lw 2 lc rgb color(i) notitle, \
+    plot for [i = 1:N] data using 3:(rate(i, 6) + 0.05 * (i - 1)) with steps lw 2 lc rgb color(i) notitle, \
          for [i = 1:N] '+' using (t0 + 0.32 + 0.035 * (i - 1)):(1.3) every ::0::0 with points pt 7 ps 1.2 lc rgb color(i) notitle, \
          for [i = 1:N] '+' using (t0 + 0.327 + 0.035 * (i - 1)):(1.3):(sprintf("1/%d s", v("fps", i))) every ::0::0 with labels left font ",10" tc rgb color(i) notitle
     unset multiplot

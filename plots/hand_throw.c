@@ -4,7 +4,8 @@
 // mean of its 20 check points and its index fingertip (check point 7), from hs_world_hand_points.
 // The catalog trajectory (build/traj/hand/throw_at_target.csv) has the block but not the hand.
 //
-// usage: hand_throw OUTDIR [SCENARIO] — writes OUTDIR/hand_throw.csv
+// usage: hand_throw OUTDIR [SCENARIO] — writes OUTDIR/hand_throw.csv and its sidecar
+// OUTDIR/hand_throw.txt (the scenario and what the columns are)
 // (run from the top folder; SCENARIO defaults to scenarios/hand/throw_at_target.yaml).
 #include <math.h>
 #include <stdio.h>
@@ -21,8 +22,21 @@ int main(int argc, char **argv) {
 	hs_world *w = hs_scenario_world(s);
 	hs_object_id id = hs_world_object_at(w, 0);
 	hs_hand_id hand = hs_world_hand_at(w, 0);
-	fprintf(out, "# %s: %s\n# object '%s'; hand = mean of the 20 check points, tip = index fingertip\n",
-	        hs_scenario_name(s), hs_scenario_description(s), hs_scenario_object_name(s, 0));
+	if (plot_run_about(argv[1], "hand_throw",
+	                   "hand_throw.csv: %s: %s\n"
+	                   "object '%s'; hand = mean of the 20 check points, tip = index fingertip\n"
+	                   "one row per frame\n"
+	                   "frame: frame number, 0 before the first step\n"
+	                   "t: time, s\n"
+	                   "x, y, z: the object's centre G, m\n"
+	                   "contact: hand contact state, 0 none, 1 push at one point, 2 grasp, 3 push at several points\n"
+	                   "hand_x, hand_y, hand_z: the mean of the hand's 20 check points, m (nan in frame 0)\n"
+	                   "tip_x, tip_y, tip_z: the index fingertip (check point 7), m (nan in frame 0)\n",
+	                   hs_scenario_name(s), hs_scenario_description(s), hs_scenario_object_name(s, 0)) != 0) {
+		fclose(out);
+		hs_scenario_destroy(s);
+		return 1;
+	}
 	fprintf(out, "frame,t,x,y,z,contact,hand_x,hand_y,hand_z,tip_x,tip_y,tip_z\n");
 	long frame = 0;
 	do {

@@ -4,9 +4,10 @@
 // every frame. The script's keys are times, so every rate sees the same hand motion sampled
 // differently; the release and the landing fall where the frames do.
 //
-// usage: hand_throw_rates OUTDIR [SCENARIO] — writes OUTDIR/hand_throw_rates.csv (one gnuplot
-// data block per rate, in the order above, separated by two blank lines: fps,frame,t,x,y,z,
-// contact,floor_contacts) and OUTDIR/hand_throw_rates.vars (gnuplot assignments per rate i = 1..5:
+// usage: hand_throw_rates OUTDIR [SCENARIO] — writes OUTDIR/hand_throw_rates.csv (header row
+// fps,frame,t,x,y,z,contact,floor_contacts, then the rates' rows one after another in the order
+// above, told apart by fps), OUTDIR/hand_throw_rates.txt (what the columns are) and
+// OUTDIR/hand_throw_rates.vars (gnuplot assignments per rate i = 1..5:
 // fps<i>, release_t<i>, release_x<i>, release_z<i>, land_t<i>, land_x<i>, end_x<i>, end_y<i>,
 // miss<i> (m from the target centre (2, 0)), hit<i> (miss <= 0.15 m), fails<i> (the scenario's
 // expectations that fail at that rate)).
@@ -17,6 +18,21 @@
 #include "hs_harness.h"
 #include "plot_run.h"
 
+
+// OUTDIR/hand_throw_rates.txt, the CSV's sidecar
+static int write_about(const char *dir, const char *scenario) {
+	char rates[64];
+	return plot_run_about(dir, "hand_throw_rates",
+	                      "hand_throw_rates.csv: %s at dt = 1/fps s for fps = %s\n"
+	                      "one row per frame, the rates one after another; column fps tells them apart\n"
+	                      "fps: frames per second\n"
+	                      "frame: frame number, 0 before the first step\n"
+	                      "t: time, s\n"
+	                      "x, y, z: the block's centre G, m\n"
+	                      "contact: hand contact state, 0 none, 1 push at one point, 2 grasp, 3 push at several points\n"
+	                      "floor_contacts: its vertices on the floor\n",
+	                      scenario, plot_run_rates_text(rates, sizeof rates));
+}
 
 int main(int argc, char **argv) {
 	const char *path;
@@ -30,11 +46,14 @@ int main(int argc, char **argv) {
 			status = 2;
 			break;
 		}
+		if (i == 0 && (write_about(argv[1], hs_scenario_name(s)) != 0 ||
+		               fprintf(out, "fps,frame,t,x,y,z,contact,floor_contacts\n") < 0)) {
+			hs_scenario_destroy(s);
+			status = 1;
+			break;
+		}
 		hs_world *w = hs_scenario_world(s);
 		hs_object_id id = hs_world_object_at(w, 0);
-		if (i > 0)
-			fprintf(out, "\n\n");
-		fprintf(out, "# %s at dt = 1/%d s\n# fps,frame,t,x,y,z,contact,floor_contacts\n", hs_scenario_name(s), plot_run_fps[i]);
 		long frame = 0;
 		double release_t = NAN, release_x = NAN, release_z = NAN, land_t = NAN, land_x = NAN;
 		hs_object_state prev = {0};

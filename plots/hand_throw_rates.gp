@@ -2,18 +2,19 @@
 # scenario hand/throw_at_target) at 12, 17, 30, 60 and 120 frames/s: (a) side view of the block's
 # centre G per frame at each rate, with the target (2.0 m +- 0.15 m) on the floor and where each
 # rate's block landed; (b) where it came to rest per rate against the target.
-# Data: plots/hand_throw_rates.c (run by `make plots` before this script). Writes
-# hand_throw_rates.png/.svg.
+# Data: plots/hand_throw_rates.c (run by `make plots` before this script): one CSV, the rates' rows
+# one after another, told apart by column 1 (fps). Writes hand_throw_rates.png/.svg.
 #   gnuplot -e "traj='build/traj'; out='build/plots'" plots/hand_throw_rates.gp
 if (!exists("out")) out = 'build/plots'
 set datafile separator ","
-set datafile commentschars "#"
+set datafile columnheaders
 data = out.'/hand_throw_rates.csv'
 load out.'/hand_throw_rates.vars'
 N = 5
 colors = "#9467bd #d62728 #2ca02c #1f77b4 #ff7f0e"
 color(i) = word(colors, i)
 v(name, i) = value(name.i)
+rate(i, col) = column(1) == v("fps", i) ? column(col) : 1/0   # column col of rate i's rows only
 hits = 0
 misses = ""
 do for [i = 1:N] {
@@ -51,7 +52,7 @@ do for [k = 1:2] {
             at lx, lz right font ",10" tc rgb color(i) front
         set arrow i from lx + 0.01, lz to v("land_x", i), 0.03 lw 1 lc rgb color(i) front
     }
-    plot for [i = 1:N] data index (i - 1) using 4:6 with linespoints lw 1.2 pt 7 ps 0.35 lc rgb color(i) \
+    plot for [i = 1:N] data using 4:(rate(i, 6)) with linespoints lw 1.2 pt 7 ps 0.35 lc rgb color(i) \
              title sprintf("dt = 1/%d s: released at t = %.3f s from x = %.3f, z = %.3f m", v("fps", i), v("release_t", i), v("release_x", i), v("release_z", i)), \
          for [i = 1:N] '+' using (v("release_x", i)):(v("release_z", i)) every ::0::0 with points pt 6 ps 2 lw 2 lc rgb color(i) notitle
     unset object 1

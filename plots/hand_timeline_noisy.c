@@ -4,9 +4,10 @@
 // +-4 units per sensor and the tracker's 0.762 mm and 0.15 deg on the wrist, unless the file says
 // other levels) and records the cube's contact state and centre G every frame.
 //
-// usage: hand_timeline_noisy OUTDIR [SCENARIO] — writes OUTDIR/hand_timeline_noisy.csv (one
-// gnuplot data block per run: noise-free first, then seeds 1..5, separated by two blank lines:
-// seed,frame,t,contact,x,y,z; seed 0 is the noise-free run) and OUTDIR/hand_timeline_noisy.vars
+// usage: hand_timeline_noisy OUTDIR [SCENARIO] — writes OUTDIR/hand_timeline_noisy.csv (header
+// row seed,frame,t,contact,x,y,z, then the runs' rows one after another: noise-free first, then
+// seeds 1..5, told apart by seed, 0 the noise-free run), OUTDIR/hand_timeline_noisy.txt (what the
+// columns are) and OUTDIR/hand_timeline_noisy.vars
 // (gnuplot assignments per run i = 1..6: seed<i>, seq<i> (the state sequence, repeats collapsed,
 // a string), grasp_t<i> (first frame in state 2), lost_t<i> (first frame after that not in
 // state 2), lost_state<i> (its state), max_z<i>, end_x<i>, end_y<i>, end_z<i>, holds<i> (1 when
@@ -22,6 +23,22 @@
 
 enum { RUNS = 6 }; // noise-free, then seeds 1..5
 
+// OUTDIR/hand_timeline_noisy.txt, the CSV's sidecar
+static int write_about(const char *dir, const char *scenario) {
+	return plot_run_about(dir, "hand_timeline_noisy",
+	                      "hand_timeline_noisy.csv: %s noise-free (seed 0) and with realistic input noise from seeds\n"
+	                      "1-%d (the glove's +-4 units per sensor and the tracker's 0.762 mm and 0.15 deg on the wrist,\n"
+	                      "unless the scenario says other levels)\n"
+	                      "one row per frame, the runs one after another; column seed tells them apart\n"
+	                      "seed: the input noise seed, 0 the noise-free run\n"
+	                      "frame: frame number, 0 before the first step\n"
+	                      "t: time, s\n"
+	                      "contact: the scenario's first object's hand contact state, 0 none, 1 push at one point,\n"
+	                      "  2 grasp, 3 push at several points\n"
+	                      "x, y, z: its centre G, m\n",
+	                      scenario, RUNS - 1);
+}
+
 int main(int argc, char **argv) {
 	const char *path;
 	FILE *out, *vars;
@@ -36,12 +53,14 @@ int main(int argc, char **argv) {
 			status = 2;
 			break;
 		}
+		if (i == 0 && (write_about(argv[1], hs_scenario_name(s)) != 0 ||
+		               fprintf(out, "seed,frame,t,contact,x,y,z\n") < 0)) {
+			hs_scenario_destroy(s);
+			status = 1;
+			break;
+		}
 		hs_world *w = hs_scenario_world(s);
 		hs_object_id id = hs_world_object_at(w, 0);
-		if (i > 0)
-			fprintf(out, "\n\n");
-		fprintf(out, "# %s, %s %lu\n# seed,frame,t,contact,x,y,z\n", hs_scenario_name(s),
-		        i ? "input noise seed" : "noise-free, seed", seed);
 		char seq[256] = "[";
 		size_t len = 1;
 		int last = -1;

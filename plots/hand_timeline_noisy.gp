@@ -3,18 +3,20 @@
 # contact state (0 no contact, 1 push at one point, 2 grasp, 3 push at several points) against
 # time, one strip for the noise-free run and one per noise seed 1..5; (b) the height of the
 # cube's centre G in every run, which shows whether the grasp lifts and carries it.
-# Data: plots/hand_timeline_noisy.c (run by `make plots` before this script). Writes
+# Data: plots/hand_timeline_noisy.c (run by `make plots` before this script): one CSV, the runs'
+# rows one after another, told apart by column 1 (seed, 0 noise-free). Writes
 # hand_timeline_noisy.png/.svg.
 #   gnuplot -e "traj='build/traj'; out='build/plots'" plots/hand_timeline_noisy.gp
 if (!exists("out")) out = 'build/plots'
 set datafile separator ","
-set datafile commentschars "#"
+set datafile columnheaders
 data = out.'/hand_timeline_noisy.csv'
 load out.'/hand_timeline_noisy.vars'
 N = 6
 colors = "#000000 #1f77b4 #d62728 #2ca02c #ff7f0e #9467bd"
 color(i) = word(colors, i)
 v(name, i) = value(name.i)
+run_of(i, col) = column(1) == v("seed", i) ? column(col) : 1/0   # column col of run i's rows only
 run(i) = i == 1 ? "noise-free" : sprintf("seed %d", v("seed", i))
 held = 0
 do for [i = 2:N] { held = held + v("holds", i) }
@@ -58,7 +60,7 @@ do for [k = 1:2] {
         set title ""
         if (i == 1) { set title "(a) hand contact state per run (0 no contact, 1 push at one point, 2 grasp, 3 push at several points)" }
         set label 1 story(i) at graph 0.01, graph 0.83 left font ",9" tc rgb color(i) front noenhanced
-        plot data index (i - 1) using 3:4 with steps lw 2 lc rgb color(i) notitle
+        plot data using 3:(run_of(i, 4)) with steps lw 2 lc rgb color(i) notitle
         unset label 1
     }
 
@@ -72,7 +74,7 @@ do for [k = 1:2] {
     set yrange [0.015:0.14]
     set ytics autofreq font ",10"
     set key top right box opaque font ",9"
-    plot for [i = 1:N] data index (i - 1) using 3:7 with lines lw (i == 1 ? 3 : 1.8) lc rgb color(i) title run(i)
+    plot for [i = 1:N] data using 3:(run_of(i, 7)) with lines lw (i == 1 ? 3 : 1.8) lc rgb color(i) title run(i)
     unset multiplot
     set output
 }

@@ -1,9 +1,13 @@
 // plot_run.h — what every plot generator starts with: `NAME OUTDIR [SCENARIO]`, the scenario
 // loaded and OUTDIR/NAME.csv open for writing. Included by plots/*.c only.
+// Every CSV a generator writes is its header row, then data rows only (no comment lines, no blank
+// lines), so that csv readers take it as it is; runs of one scenario are told apart by a column
+// (fps, seed), and the title, parameters and units go to the sidecar OUTDIR/NAME.txt.
 #ifndef HS_PLOT_RUN_H
 #define HS_PLOT_RUN_H
 
 #include <math.h>
+#include <stdarg.h>
 #include <stdbool.h>
 #include <stdio.h>
 
@@ -65,9 +69,32 @@ static inline FILE *plot_run_file(const char *dir, const char *name, const char 
 	return f;
 }
 
+// Writes OUTDIR/NAME.txt, the sidecar of OUTDIR/NAME.csv: what the CSV is (title, parameters,
+// units), printf-style. Returns 0, or 1 after saying what went wrong.
+__attribute__((format(printf, 3, 4)))
+static inline int plot_run_about(const char *dir, const char *name, const char *fmt, ...) {
+	FILE *f = plot_run_file(dir, name, "txt");
+	if (!f)
+		return 1;
+	va_list ap;
+	va_start(ap, fmt);
+	vfprintf(f, fmt, ap);
+	va_end(ap);
+	return fclose(f) != 0;
+}
+
 // The frame rates the papers' figures are redrawn at (1/s): the hand paper's 12–17, today's 30–120.
 static const int plot_run_fps[] = {12, 17, 30, 60, 120};
 enum { PLOT_RUN_RATES = sizeof plot_run_fps / sizeof plot_run_fps[0] };
+
+// The rates as text for a sidecar: "12, 17, 30, 60, 120".
+static inline const char *plot_run_rates_text(char *buf, size_t size) {
+	size_t len = 0;
+	buf[0] = '\0';
+	for (int i = 0; i < PLOT_RUN_RATES && len < size; ++i)
+		len += (size_t)snprintf(buf + len, size - len, "%s%d", i ? ", " : "", plot_run_fps[i]);
+	return buf;
+}
 
 // For generators that run one scenario several times: `NAME OUTDIR [SCENARIO]`, *path the scenario
 // (default_scenario when not given), OUTDIR/NAME.csv and OUTDIR/NAME.vars (gnuplot variables) open

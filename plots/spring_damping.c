@@ -10,14 +10,16 @@
 //
 // usage: spring_damping OUTDIR — writes OUTDIR/spring_damping_curves.csv (closed forms, fine),
 // OUTDIR/spring_damping_points.csv (simulations at dt = 1/30 s) and
-// OUTDIR/spring_damping_integrators.csv (the library's four integrators at dt = 1/12 s), and prints
-// each integrator's largest error against the closed form at dt = 1/12, 1/60 and 1/1000 s.
+// OUTDIR/spring_damping_integrators.csv (the library's four integrators at dt = 1/12 s), each with
+// its sidecar NAME.txt (w and what the columns are), and prints each integrator's largest error
+// against the closed form at dt = 1/12, 1/60 and 1/1000 s.
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "handspring.h"
+#include "plot_run.h"
 
 #define MASS 1000.0     // kg
 #define START 0.2       // x(0) / x0: the stretch a hanging object would have (§4.2)
@@ -123,6 +125,27 @@ static FILE *open_out(const char *dir, const char *name) {
 	return f;
 }
 
+// The three CSVs' sidecars OUTDIR/spring_damping_{points,curves,integrators}.txt; 0 or 1.
+static int write_about(const char *dir, double omega) {
+	return plot_run_about(dir, "spring_damping_points",
+	                      "spring_damping_points.csv: x(t) / x(0), simulated at dt = 1/30 s; w = %.9g rad/s (1000 kg, x0 = 1 m)\n"
+	                      "t: time, s\n"
+	                      "critical_library: damping ratio 1, the library (exact integrator)\n"
+	                      "under_rk4, over_rk4: damping ratio 0.25 and 2, classic RK4 of the same equation\n",
+	                      omega) ||
+	       plot_run_about(dir, "spring_damping_curves",
+	                      "spring_damping_curves.csv: x(t) / x(0), closed forms; w = %.9g rad/s\n"
+	                      "t: time, s\n"
+	                      "under, critical, over: damping ratio 0.25, 1 and 2\n",
+	                      omega) ||
+	       plot_run_about(dir, "spring_damping_integrators",
+	                      "spring_damping_integrators.csv: x(t) / x(0), critically damped, the library's integrators\n"
+	                      "at dt = 1/12 s (w dt = %.3g)\n"
+	                      "t: time, s\n"
+	                      "exact, implicit_euler, semi_implicit_euler, rk4: the integrator\n",
+	                      omega / 12.0);
+}
+
 int main(int argc, char **argv) {
 	if (argc != 2) {
 		fprintf(stderr, "usage: spring_damping OUTDIR\n");
@@ -139,10 +162,11 @@ int main(int argc, char **argv) {
 		return 1;
 	rk4_response(0.25, omega, dt_points, n, under);
 	rk4_response(2.0, omega, dt_points, n, over);
+	if (write_about(dir, omega))
+		return 1;
 	FILE *f = open_out(dir, "spring_damping_points.csv");
 	if (!f)
 		return 1;
-	fprintf(f, "# x(t) / x(0), simulated at dt = 1/30 s; w = %.9g rad/s (1000 kg, x0 = 1 m)\n", omega);
 	fprintf(f, "t,critical_library,under_rk4,over_rk4\n");
 	for (long i = 0; i <= n; ++i)
 		fprintf(f, "%.9g,%.9g,%.9g,%.9g\n", (double)i * dt_points, crit[i], under[i], over[i]);
@@ -154,7 +178,6 @@ int main(int argc, char **argv) {
 	f = open_out(dir, "spring_damping_curves.csv");
 	if (!f)
 		return 1;
-	fprintf(f, "# x(t) / x(0), closed forms; w = %.9g rad/s\n", omega);
 	fprintf(f, "t,under,critical,over\n");
 	for (int i = 0; i <= 1000; ++i) {
 		double t = DURATION * i / 1000.0;
@@ -176,8 +199,6 @@ int main(int argc, char **argv) {
 	f = open_out(dir, "spring_damping_integrators.csv");
 	if (!f)
 		return 1;
-	fprintf(f, "# x(t) / x(0), critically damped, the library's integrators at dt = 1/12 s (w dt = %.3g)\n",
-	        omega * dts[0]);
 	fprintf(f, "t,exact,implicit_euler,semi_implicit_euler,rk4\n");
 	for (long i = 0; i <= n12; ++i)
 		fprintf(f, "%.9g,%.9g,%.9g,%.9g,%.9g\n", (double)i * dts[0], runs[0][i], runs[1][i], runs[2][i], runs[3][i]);

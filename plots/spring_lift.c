@@ -3,7 +3,8 @@
 // records, every frame, the stylus, the object, the spring's extension (hs_world_spring_state) and
 // the horizontal offset of the object from the stylus (the swing).
 //
-// usage: spring_lift OUTDIR [SCENARIO] — writes OUTDIR/spring_lift.csv
+// usage: spring_lift OUTDIR [SCENARIO] — writes OUTDIR/spring_lift.csv and its sidecar
+// OUTDIR/spring_lift.txt (the scenario, the object's spring and what the columns are)
 // (run from the top folder; SCENARIO defaults to scenarios/spring/lift_swing_drop.yaml).
 #include <math.h>
 #include <stdio.h>
@@ -26,8 +27,24 @@ int main(int argc, char **argv) {
 		hs_scenario_destroy(s);
 		return 2;
 	}
-	fprintf(out, "# %s: %s\n# object '%s': mass %.6g kg, x0 = %.6g m, k = %.6g N/m\n", hs_scenario_name(s),
-	        hs_scenario_description(s), hs_scenario_object_name(s, 0), info.mass, info.rest_length, info.stiffness);
+	if (plot_run_about(argv[1], "spring_lift",
+	                   "spring_lift.csv: %s: %s\n"
+	                   "object '%s': mass %.6g kg, x0 = %.6g m, k = %.6g N/m\n"
+	                   "one row per frame\n"
+	                   "t: time, s\n"
+	                   "stylus_x, stylus_y, stylus_z: the stylus, m\n"
+	                   "x, y, z: the object's centre G, m\n"
+	                   "attached: 1 while the object is on the spring\n"
+	                   "button: 1 while the stylus button is pressed\n"
+	                   "length, extension: the spring's length and extension, m (nan when not attached)\n"
+	                   "extension_ratio: extension / x0 (nan when not attached)\n"
+	                   "swing: the horizontal distance of G from the stylus, m\n",
+	                   hs_scenario_name(s), hs_scenario_description(s), hs_scenario_object_name(s, 0), info.mass,
+	                   info.rest_length, info.stiffness) != 0) {
+		fclose(out);
+		hs_scenario_destroy(s);
+		return 1;
+	}
 	fprintf(out, "t,stylus_x,stylus_y,stylus_z,x,y,z,attached,button,length,extension,extension_ratio,swing\n");
 	do {
 		hs_spring_state ss;

@@ -3,7 +3,8 @@
 // scenarios/spring/recorded_throw.yaml (a recorded 50 Hz stylus file: lift, then a throw) and writes
 // every sample the tracker daemon took, with its velocity estimate and rest state at that sample.
 //
-// usage: spring_tracker OUTDIR [SCENARIO] — writes OUTDIR/spring_tracker.csv (run from the top folder).
+// usage: spring_tracker OUTDIR [SCENARIO] — writes OUTDIR/spring_tracker.csv and its sidecar
+// OUTDIR/spring_tracker.txt (the scenario and what the columns are) (run from the top folder).
 #include <stdio.h>
 
 #include "hs_harness.h"
@@ -23,8 +24,22 @@ int main(int argc, char **argv) {
 		hs_scenario_destroy(s);
 		return 2;
 	}
-	fprintf(out, "# %s: %s\n# tracker samples (50 Hz) with the estimates made at each\n", hs_scenario_name(s),
-	        hs_scenario_description(s));
+	if (plot_run_about(argv[1], "spring_tracker",
+	                   "spring_tracker.csv: %s: %s\n"
+	                   "tracker samples (50 Hz) with the estimates made at each, one row per sample\n"
+	                   "t: the sample's time, s\n"
+	                   "x, y, z: the stylus as sampled, m\n"
+	                   "button: 1 while the stylus button is pressed\n"
+	                   "vx, vy, vz, speed: the daemon's velocity estimate and its size, m/s\n"
+	                   "at_rest: 1 while the daemon sees the hand at rest\n"
+	                   "attached: 1 while an object is on the spring\n"
+	                   "release: 1 drop, 2 throw on the sample of the frame that released the object, else 0\n"
+	                   "(a sample that was not its frame's newest has nan estimates, at_rest and attached)\n",
+	                   hs_scenario_name(s), hs_scenario_description(s)) != 0) {
+		fclose(out);
+		hs_scenario_destroy(s);
+		return 1;
+	}
 	fprintf(out, "t,x,y,z,button,vx,vy,vz,speed,at_rest,attached,release\n");
 	long seen = 0;
 	int released = 0;
