@@ -10,14 +10,15 @@ set datafile commentschars "#"
 set datafile columnheaders
 data = out.'/hand_throw.csv'
 
-# release (scenario comments): G at R = (0.147, 0.55) after frame 78, velocity v = (2.47, 3.0) m/s;
-# eq. 3 samples the parabola with initial velocity v + g dt / 2 (tau = n dt after the release)
+# release (scenario comments, docs/model.md §4 "Release"): G at R = (0.147, 0.55) after frame 78,
+# the hand moving at v = (2.47, 3.0) m/s; let go in frame 79, taken as mid-frame, the block's
+# frames lie on P(tau) = R + v tau - g (tau^2 - tau dt) / 2, tau = n dt after frame 78
 dt = 1.0 / 60
 g = 9.81
 rx = 0.147; rz = 0.55; vx = 2.47; vz = 3.0
 fx(tau) = rx + vx * tau
-fz(tau) = rz + (vz - g * dt / 2) * tau - g * tau**2 / 2
-tau_land = ((vz - g * dt / 2) + sqrt((vz - g * dt / 2)**2 + 2 * g * (rz - 0.025))) / g
+fz(tau) = rz + (vz + g * dt / 2) * tau - g * tau**2 / 2
+tau_land = ((vz + g * dt / 2) + sqrt((vz + g * dt / 2)**2 + 2 * g * (rz - 0.025))) / g
 
 # where it rests: the last row
 stats data using 1 nooutput
@@ -41,7 +42,7 @@ do for [k = 1:2] {
     # (a) side view
     set origin 0, 0.38
     set size 1, 0.58
-    set title "(a) side view: the block's centre G every frame (1/60 s), the hand, and eq. 3's parabola"
+    set title "(a) side view: the block's centre G every frame (1/60 s), the hand, and the parabola it flies on"
     set grid
     set xlabel "x [m]"
     set ylabel "z [m]"
@@ -63,7 +64,7 @@ do for [k = 1:2] {
     plot data using 7:9 with lines lw 1.5 dt 2 lc rgb "#7f7f7f" title "hand (mean of its 20 check points)", \
          data using ($6 == 2 ? $3 : 1/0):5 with points pt 7 ps 0.6 lc rgb "#1f77b4" title "G, grasped (state 2)", \
          data using ($6 == 0 && $1 > 60 ? $3 : 1/0):5 with points pt 7 ps 0.6 lc rgb "#ff7f0e" title "G, free (state 0): eq. 3", \
-         fx(t), fz(t) with lines lw 1 lc rgb "#000000" title "closed form from the release, landing in frame 123 (t = 2.05 s)"
+         fx(t), fz(t) with lines lw 1 lc rgb "#000000" title sprintf("closed form from the release, meeting the floor at t = %.3f s", 1.3 + tau_land)
     unset parametric
     unset object 1
     unset label
