@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "expect_table.h"
+#include "overlap.h"
 #include "scenario_internal.h"
 
 // The object's velocity: in spring worlds the integrated one, else (P(t) − P(t − dt)) / dt.
@@ -42,6 +43,11 @@ void hs_capture_at(const hs_scenario *s, const hs_clause *c, hs_check *k, long f
 	if (s->springs)
 		capture_spring(s, k);
 	k->captured = true;
+}
+
+void hs_capture_overlap(const hs_scenario *s, const hs_clause *c, hs_check *k, long frame) {
+	hs_capture_at(s, c, k, frame);
+	k->u.at.overlap = hs_object_overlap(s->world, k->object, &k->u.at.overlap_with);
 }
 
 static bool same_pose(const hs_object_state *a, const hs_object_state *b) {
@@ -233,6 +239,8 @@ static void put_at(hs_state_io *io, const hs_capture *u) {
 	hs_put_f64(io, u->at.ratio);
 	hs_put_f64(io, u->at.extension);
 	hs_put_f64(io, u->at.rest_length);
+	hs_put_f64(io, u->at.overlap);
+	hs_put_i64(io, u->at.overlap_with);
 }
 
 static void get_at(hs_state_io *io, hs_capture *u) {
@@ -244,6 +252,8 @@ static void get_at(hs_state_io *io, hs_capture *u) {
 	u->at.ratio = hs_get_finite(io, "at.ratio");
 	u->at.extension = hs_get_finite(io, "at.extension");
 	u->at.rest_length = hs_get_finite(io, "at.rest_length");
+	u->at.overlap = hs_get_finite(io, "at.overlap");
+	u->at.overlap_with = hs_get_object(io, "at.overlap_with");
 }
 
 static void put_still(hs_state_io *io, const hs_capture *u) {

@@ -52,6 +52,8 @@ typedef union hs_capture {
 		hs_attach_kind kind;    // how the holder got there
 		double ratio;           // the holder's spring extension / x0
 		double extension, rest_length; // m
+		double overlap;         // overlap_at_most: m, its deepest penetration into another object
+		int overlap_with;       // that object, -1 when none
 	} at;
 	struct { // still: the reference pose and the first change
 		hs_object_state state;

@@ -291,6 +291,17 @@ static bool eval_turned(const hs_scenario *s, const hs_clause *c, const hs_check
 	return most ? a <= c->value : a >= c->value;
 }
 
+// overlap_at_most: the object penetrates no other deeper than this
+static bool eval_overlap(const hs_scenario *s, const hs_clause *c, const hs_check *k, hs_verdict *v) {
+	snprintf(v->what, sizeof v->what, "overlap at most %.9g m %s", c->value, v->when);
+	if (k->u.at.overlap_with < 0)
+		snprintf(v->measured, sizeof v->measured, "inside no other object");
+	else
+		snprintf(v->measured, sizeof v->measured, "%.6g m into '%s'", k->u.at.overlap,
+		         hs_scenario_object_name(s, k->u.at.overlap_with));
+	return k->u.at.overlap <= c->value;
+}
+
 static bool eval_speed_below(const hs_scenario *s, const hs_clause *c, const hs_check *k, hs_verdict *v) {
 	(void)s;
 	double speed = hs_length(k->u.at.velocity);
@@ -499,6 +510,7 @@ const hs_predicate hs_predicates[HS_PREDICATE_COUNT] = {
     {"moved_at_most",    AT,                   NULL,       parse_nonnegative, hs_capture_at,        S_AT,    eval_moved},
     {"turned_at_most_deg", AT,                 NULL,       parse_nonnegative, hs_capture_at,        S_AT,    eval_turned},
     {"speed_below",      AT,                   NULL,       parse_positive,    hs_capture_at,        S_AT,    eval_speed_below},
+    {"overlap_at_most",  AT,                   NULL,       parse_nonnegative, hs_capture_overlap,   S_AT,    eval_overlap},
     {"velocity",         AT,                   "m/s",      parse_vector,      hs_capture_at,        S_AT,    eval_velocity},
     {"attached",         AT | SPR,             NULL,       parse_attached,    hs_capture_at,        S_AT,    eval_attached},
     {"candidate",        AT | SPR,             NULL,       parse_flag,        hs_capture_at,        S_AT,    eval_candidate},

@@ -127,3 +127,25 @@ bool hs_find_overlap_beyond(const hs_world *w, double tolerance, int *first, int
 	free(boxes);
 	return found;
 }
+
+double hs_object_overlap(const hs_world *w, int object, int *other) {
+	int n = hs_world_object_count(w);
+	box a = box_of(w, object);
+	placed pa = place(w, hs_world_object_at(w, object));
+	double deepest = 0.0;
+	*other = -1;
+	for (int j = 0; j < n && pa.shape; ++j) {
+		box b = box_of(w, j);
+		if (j == object || !boxes_overlap(&a, &b, 0.0))
+			continue;
+		placed pb = place(w, hs_world_object_at(w, j));
+		double depth = 0.0;
+		hs_vec3 dir;
+		if (pb.shape && hs_shapes_penetration(pa.shape, pa.position, pa.orientation, pb.shape, pb.position, pb.orientation,
+		                                      &depth, &dir) && depth > deepest) {
+			deepest = depth;
+			*other = j;
+		}
+	}
+	return deepest;
+}

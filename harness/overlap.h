@@ -16,4 +16,9 @@ bool hs_find_overlap(const hs_world *w, int *first, int *second, double *depth);
 // The same for points deeper than `tolerance` (m): a lesser overlap, warned of (scenario_warn.c).
 bool hs_find_overlap_beyond(const hs_world *w, double tolerance, int *first, int *second, double *depth);
 
+// m: the deepest penetration of `object` into another object as posed now (libccd's, over their
+// convex parts: face-to-face overlaps too); 0 when it is inside none. *other: that object (-1:
+// none). A pass over every other object's box: for an expectation at one frame.
+double hs_object_overlap(const hs_world *w, int object, int *other);
+
 #endif

@@ -237,7 +237,7 @@ static void test_load_errors(void **state) {
 	snprintf(text, sizeof text, "%s" ONE_CUBE "expect:\n  - { object: a, at: end }\n", head);
 	load_error("e.yaml", text,
 	           "7: expect clause needs a predicate: near, resting, floor_contacts, on_face, face_down, below, above, moved, turned_deg, "
-	           "moved_at_most, turned_at_most_deg, speed_below, velocity, attached, candidate, extension_ratio, lands_at, still, "
+	           "moved_at_most, turned_at_most_deg, speed_below, overlap_at_most, velocity, attached, candidate, extension_ratio, lands_at, still, "
 	           "contact_sequence, never_contact, grasped, released, rest_length, stiffness, conserved or swing_below");
 	snprintf(text, sizeof text, "%s" ONE_CUBE "expect:\n  - { object: a, still: true, at: end }\n", head);
 	load_error("e.yaml", text, "7: 'at' is not used by 'still'");
@@ -403,6 +403,23 @@ static void test_contact_sequence(void **state) {
 	expect_pass("{ object: block, contact_sequence: [0] }", "[0]");
 	expect_fail("{ object: block, contact_sequence: [0, 2, 0] }", "[0]");
 	expect_fail("{ object: block, contact_sequence: [2] }", "[0]");
+}
+
+// overlap_at_most: the deepest point of the object inside another (or of another inside it).
+static void test_overlap_at_most(void **state) {
+	(void)state;
+	expect_pass("{ object: block, at: end, overlap_at_most: 0 }", "inside no other object");
+	static const char pair[] = "description: two cubes 0.5 mm into each other\n"
+	                           "dt: 1/60\n"
+	                           "duration: 0.1\n"
+	                           "objects:\n"
+	                           "  - { name: a, shape: cube, size: 0.1, position: [0, 0, 0.05] }\n"
+	                           "  - { name: b, shape: cube, size: 0.1, position: [0.0995, 0, 0.05] }\n"
+	                           "expect:\n";
+	char report[4096];
+	assert_int_equal(check_in(pair, "pair.yaml", "{ object: a, at: 0, overlap_at_most: 0.0001 }", report, sizeof report), 1);
+	assert_non_null(strstr(report, "overlap at most 0.0001 m at t = 0 s: 0.0005 m into 'b'"));
+	assert_int_equal(check_in(pair, "pair.yaml", "{ object: b, at: 0, overlap_at_most: 0.0006 }", report, sizeof report), 0);
 }
 
 static void test_every_object(void **state) {
@@ -1714,6 +1731,7 @@ int main(void) {
 	    cmocka_unit_test(test_lands_at),
 	    cmocka_unit_test(test_still),
 	    cmocka_unit_test(test_contact_sequence),
+	    cmocka_unit_test(test_overlap_at_most),
 	    cmocka_unit_test(test_contact_sequence_min_s),
 	    cmocka_unit_test(test_every_object),
 	    cmocka_unit_test(test_check_before_the_end),
