@@ -285,10 +285,10 @@ check-tutorial: all
 check-resume: all
 	@sh tests/resume_catalog.sh $(TOOL) scenarios
 
-# Real input (issue 10; part of make check): every hand scenario's robust sweep (12-120 frames/s x
+# Real input (part of make check): every hand scenario's robust sweep (12-120 frames/s x
 # 10 noise seeds, in process: seconds) passes in every cell, and none lacks its robust block;
 # prints the table.
-# The papers' pictures as filmstrips of catalog scenarios (issue 13): build/figures/*.png
+# The papers' pictures as filmstrips of catalog scenarios (docs/plots.md): build/figures/*.png
 figures: all
 	@sh scripts/deps.sh plots
 	@sh scripts/figures.sh $(TOOL) $(BUILD)/figures
@@ -296,7 +296,7 @@ figures: all
 check-sweep: all
 	@sh scripts/sweep_catalog.sh $(TOOL) scenarios/hand
 
-# Monte-Carlo campaigns (issue 14, docs/campaigns.md): the trials spread over GNU parallel, on this
+# Monte-Carlo campaigns (docs/campaigns.md): the trials spread over GNU parallel, on this
 # machine's cores or over ssh (SSHLOGIN is parallel's --sshlogin, e.g. 4/host1,4/host2,:);
 # RESUME=1 continues an interrupted run in OUT.
 #   make campaign CAMPAIGN=FILE [JOBS=N] [SSHLOGIN=...] [OUT=DIR] [RESUME=1]

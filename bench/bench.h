@@ -2,7 +2,7 @@
 //
 // Benchmarks report; they never fail on a time. Every timing is CLOCK_MONOTONIC around a batch
 // of steps, after a warm-up, repeated (≥ 5 times) and summarised as median with min–max beside
-// it (STYLE.md: warm-up, medians and ratios). Nothing is pinned to a core. Every stepped state
+// it. Nothing is pinned to a core. Every stepped state
 // feeds a checksum that is printed, so no work can be optimised away.
 #ifndef HS_BENCH_H
 #define HS_BENCH_H
@@ -59,7 +59,7 @@ FILE *bench_csv(const bench_opts *opts, const char *name, const char *about);
 /// Starts DIR/meta.txt: the machine, date, compiler, flags and QUICK; bench_csv adds a line per CSV.
 void bench_meta_start(const bench_opts *opts);
 
-/// The closing summary: one line per figure, and the targets of the issue.
+/// The closing summary: one line per figure, and the targets (docs/benchmarks.md, "A run").
 typedef enum bench_verdict { BENCH_INFO = 0, BENCH_MET, BENCH_NOT_MET, BENCH_UNKNOWN } bench_verdict;
 void bench_summary_add(const char *section, const char *what, const char *value, bench_verdict verdict);
 void bench_summary_print(FILE *out, const bench_opts *opts);
@@ -84,7 +84,7 @@ void bench_frame_rate(const bench_opts *opts, bench_shared *shared); // items 1 
 void bench_accuracy(const bench_opts *opts, bench_shared *shared);   // item 3
 void bench_throw(const bench_opts *opts, bench_shared *shared);      // item 4
 void bench_peers(const bench_opts *opts, bench_shared *shared);      // item 5
-void bench_collide(const bench_opts *opts, bench_shared *shared);    // item 6 (issue 11)
+void bench_collide(const bench_opts *opts, bench_shared *shared);    // item 6
 /// `--profile-collide KIND,FRAMES[,N]` (collide_scaling.c): one collision scene alone, for callgrind.
 void bench_profile_collide(const char *spec);
 /// The seed scene of item 1 timed alone (the peers' comparison when item 1 did not run).
@@ -147,7 +147,7 @@ bench_peer_result bench_peer_mujoco(const bench_opts *opts);
 #endif
 
 // ---------------------------------------------------------------------------------------------
-/// The race (issue 12, item 4; bench/race.c): one frame of the honest seed scene as handspring ran
+/// The race (bench/race.c): one frame of the honest seed scene as handspring ran
 /// it: the hand's 20 check points, the 10 cubes' poses (the 2 grasped first) and which fingers
 /// touch which cubes (bit finger · 10 + cube).
 typedef struct bench_race_frame {
@@ -160,10 +160,10 @@ typedef struct bench_race_frame {
 void bench_race_record(bench_race_frame frames[BENCH_PATH_FRAMES], double *finger_radius);
 /// The honest frame (the seed scene on noisy glove input, wrist turning, hash every frame) timed.
 bench_stats bench_honest_measure(const bench_opts *opts);
-void bench_race(const bench_opts *opts, bench_shared *shared); // issue 12, item 4
+void bench_race(const bench_opts *opts, bench_shared *shared); // section `race`
 
 // ---------------------------------------------------------------------------------------------
-/// Scaling rows of the honest frame (issue 12, item 3; bench/hand_scaling.c): cost per frame against
+/// Scaling rows of the honest frame (bench/hand_scaling.c): cost per frame against
 /// faces, grasped objects, hands and untouched objects, each against the honest frame in the same run.
 void bench_hand_scaling(const bench_opts *opts, bench_shared *shared);
 /// `--profile-scaling ROW,VALUE[,FRAMES]` (ROW faces, grasped, hands, untouched or untouched-nohash;

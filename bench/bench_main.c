@@ -36,9 +36,9 @@ static const bench_section sections[] = {
     {"accuracy", "item 3: speed against error", bench_accuracy},
     {"throw", "item 4: throw fidelity across frame rates", bench_throw},
     {"peers", "item 5: ODE and MuJoCo on the seed scene", bench_peers},
-    {"collide", "item 6: collisions that scale (issue 11)", bench_collide},
-    {"race", "issue 12 item 4: contact generation only, handspring against ODE and MuJoCo", bench_race},
-    {"scaling", "issue 12 item 3: the honest frame against faces, grasped objects, hands, untouched objects",
+    {"collide", "item 6: collisions that scale", bench_collide},
+    {"race", "contact generation only, handspring against ODE and MuJoCo", bench_race},
+    {"scaling", "the honest frame against faces, grasped objects, hands, untouched objects",
      bench_hand_scaling},
 };
 #define N_SECTIONS ((int)(sizeof sections / sizeof sections[0]))

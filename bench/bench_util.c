@@ -263,7 +263,7 @@ void bench_summary_print(FILE *out, const bench_opts *opts) {
 	for (size_t k = 0; k < wsec + wwhat + wval + 16; ++k)
 		fputc('-', out);
 	fputc('\n', out);
-	// the figures in the order they were measured, then the targets together
+	// the figures in the order they were measured, then the targets together
 	for (int pass = 0; pass < 2; ++pass) {
 		if (pass == 1) {
 			for (size_t k = 0; k < wsec + wwhat + wval + 16; ++k)

@@ -1,4 +1,4 @@
-// collide_scaling.c — item 6 of `make bench` (issue 11, item 6): what object–object collisions
+// collide_scaling.c — item 6 of `make bench`: what object–object collisions
 // cost as a world grows, and what one huge object among small ones costs, in both models.
 //
 //  - Spring walled box: N spheres (r = 5 cm, 1 kg-ish) on the floor of a frictionless walled box,
@@ -174,7 +174,7 @@ static const int box_counts[] = {10, 100, 1000, 10000};
 
 void bench_collide(const bench_opts *opts, bench_shared *shared) {
 	double us[N_BOX];
-	printf("\n== 6. Collisions that scale (issue 11, item 6) ==\n");
+	printf("\n== 6. Collisions that scale ==\n");
 	printf("spring walled box: N spheres r = %.2f m, %.2f m apart, frictionless, elastic, up to 1 m/s; frames %d-%d "
 	       "of a fresh world, median of >= %d worlds\n",
 	       CS_RADIUS, CS_GAP, CS_BOX_WARM, CS_BOX_WARM + CS_BOX_FRAMES - 1, opts->reps < 5 ? 5 : opts->reps);

@@ -113,7 +113,7 @@ typedef struct fr_scene {
 	hs_vec3 wrist[BENCH_PATH_FRAMES]; // the loop, precomputed: no trigonometry in the timed steps
 	hs_quat rot;
 	uint8_t sensors[HS_GLOVE_SENSORS];
-	// the honest frame (issue 12): the glove's reading with seeded noise, the wrist turning, per frame
+	// the honest frame: the glove's reading with seeded noise, the wrist turning, per frame
 	// of the loop (drawn when the scene is built, as a driver's reading arrives), the hash every frame
 	bool honest;
 	uint8_t noisy[BENCH_PATH_FRAMES][HS_GLOVE_SENSORS];
@@ -147,7 +147,7 @@ static bool fr_honest_search;
 // that added untouched objects can be put out of the hand's reach (bench/hand_scaling.c).
 static int fr_far_rows;
 
-// The honest frame's input (issue 12, DESIGN.md "Benchmarks that tell the truth"): the grasp
+// The honest frame's input (docs/benchmarks.md, "Frame rate": the frame a user runs): the grasp
 // posture with uniform noise of ±FR_GLOVE_UNITS sensor units on every sensor every frame (what the
 // hand scenarios' robustness sweep uses), and the wrist turning by up to FR_WOBBLE_DEG about x and
 // y over the loop (a real wrist is never held square), from a fixed seed.
@@ -545,13 +545,13 @@ void bench_frame_rate(const bench_opts *opts, bench_shared *shared) {
 				res[s][c][t] = measure((fr_shape)s, objects, touched, &poses[s][t], opts, shared, false);
 			}
 
-	// +1000 untouched resting objects around the seed scene (the issue's flatness target)
+	// +1000 untouched resting objects around the seed scene (docs/benchmarks.md's flatness target)
 	fr_result seed_plus = measure(FR_CUBE, 10 + 1000, 2, &poses[FR_CUBE][2], opts, shared, false);
 	// the seed scene again with the paper's contact rule: what swept detection and rectification cost
 	fr_paper_contacts = true;
 	fr_result seed_paper = measure(FR_CUBE, 10, 2, &poses[FR_CUBE][2], opts, shared, false);
 	fr_paper_contacts = false;
-	// the honest frame (issue 12): the seed scene on the input a user's glove and tracker give
+	// the honest frame: the seed scene on the input a user's glove and tracker give
 	fr_result honest = measure(FR_CUBE, 10, 2, &poses[FR_CUBE][2], opts, shared, true);
 
 	char about[160];
@@ -683,7 +683,7 @@ void bench_frame_rate(const bench_opts *opts, bench_shared *shared) {
 				lost += res[s][c][t].lost_on + res[s][c][t].lost_off;
 				stray += res[s][c][t].stray;
 			}
-	if (honest.valid) { // the headline: the frame a user runs (issue 12)
+	if (honest.valid) { // the headline: the frame a user runs
 		fmt_fps(value, sizeof value, &honest.on);
 		bench_summary_add("1 frame rate", "HONEST frame: seed scene, glove +-4 units noise, wrist turning, hash/frame",
 		                  value, BENCH_INFO);

@@ -1,4 +1,4 @@
-// hand_scaling.c — issue 12, item 3 of `make bench`: what the honest frame costs as one thing grows.
+// hand_scaling.c — section `scaling` of `make bench`: what the honest frame costs as one thing grows.
 //
 // The honest frame (bench/frame_rate.c): the seed scene — ten 5 cm cubes in a row, two grasped —
 // with a new glove reading every frame (±4 units of seeded noise on all 18 sensors), the wrist
@@ -415,7 +415,7 @@ void bench_hand_scaling(const bench_opts *opts, bench_shared *shared) {
 		for (int i = 0; i < row_points[r]; ++i)
 			pts[r][i] = measure_point((hsc_row)r, row_values[r][i], opts, shared);
 
-	printf("\n== Scaling of the honest frame (issue 12, item 3): us per frame, median (min-max) of %d batches, ==\n",
+	printf("\n== Scaling of the honest frame: us per frame, median (min-max) of %d batches, ==\n",
 	       opts->reps < 5 ? 5 : opts->reps);
 	printf("each interleaved with the honest frame's own batches (its us beside it; ratio: the median of this / it\n"
 	       "batch by batch). Lost: frames with a grasp lost; stray: untouched objects touched or awake after the\n"
@@ -425,7 +425,7 @@ void bench_hand_scaling(const bench_opts *opts, bench_shared *shared) {
 		print_row((hsc_row)r, pts[r]);
 
 	FILE *csv = bench_csv(opts, "hand_scaling.csv",
-	                      "issue 12 item 3: us per frame of the honest frame against one varied thing, and of the "
+	                      "us per frame of the honest frame against one varied thing, and of the "
 	                      "honest frame interleaved with it");
 	fprintf(csv, "row,value,us,us_min,us_max,honest_us,ratio,lost,stray\n");
 	for (int r = 0; r < HSC_ROWS; ++r)

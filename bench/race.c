@@ -1,4 +1,4 @@
-// race.c — issue 12, item 4 of `make bench`: a fair race. ODE and MuJoCo do handspring's job —
+// race.c — section `race` of `make bench`: a fair race. ODE and MuJoCo do handspring's job —
 // finding where a moving hand touches the objects — on the same frames, and nothing else.
 //
 // The frames: one loop of the honest seed scene (bench/frame_rate.c: ten 5 cm cubes in a row, two
@@ -281,7 +281,7 @@ void bench_race(const bench_opts *opts, bench_shared *shared) {
 	double hs_us = 1e6 * hs.median;
 	bench_progress("[race] handspring honest frame: %.3f us\n", hs_us);
 
-	printf("\n== Race (issue 12, item 4): contact generation only, on the honest seed scene's frames ==\n");
+	printf("\n== Race: contact generation only, on the honest seed scene's frames ==\n");
 	printf("one loop of %d frames: the hand as 15 capsules (r = %.4g m) through the 10 cubes, 2 carried; the 8 resting\n"
 	       "cubes asleep on every side; handspring's figure is its whole honest frame\n",
 	       BENCH_PATH_FRAMES, proto.radius);
@@ -290,7 +290,7 @@ void bench_race(const bench_opts *opts, bench_shared *shared) {
 	printf("(touches: (finger, cube) pairs in contact, summed over the loop; agree: frames with exactly handspring's "
 	       "pairs;\n extra / missing: pairs only the engine finds / only handspring finds)\n");
 	row("handspring", &hs, hs_us, NULL, hs_touches);
-	FILE *csv = bench_csv(opts, "race.csv", "contact generation only on the honest seed scene's frames (issue 12 item 4)");
+	FILE *csv = bench_csv(opts, "race.csv", "contact generation only on the honest seed scene's frames");
 	fprintf(csv, "engine,us_per_frame,us_min,us_max,peer_over_handspring,finger_cube_touches,contacts,frames_agreeing_pct,"
 	             "extra_pairs,missing_pairs\n");
 	fprintf(csv, "handspring,%.4f,%.4f,%.4f,1,%ld,,100,0,0\n", hs_us, 1e6 * hs.min, 1e6 * hs.max, hs_touches);

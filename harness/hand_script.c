@@ -170,7 +170,8 @@ static bool read_angle_list(hs_scenario_parser *p, const yaml_node_t *node, doub
 }
 
 enum { K_T, K_WRIST, K_GRIP, K_RPY, K_QUAT, K_POSTURE, K_SENSORS, K_ANGLES, K_PART0, K_COUNT = K_PART0 + 10 };
-// a finger part may be placed instead of the wrist (issue 13: no hidden geometry): tips and bases
+// a finger part may be placed instead of the wrist (writing a scenario needs no hidden geometry;
+// scenarios/README.md "Hands"): tips and bases
 // (check points finger × 4 + 3 and finger × 4)
 static const char *const key_keys[K_COUNT] = {
     "t",          "wrist",     "grip",       "rpy_deg",    "quat",        "posture",    "sensors",

@@ -1,5 +1,5 @@
 // noise.h — input noise: what a real tracker and glove add to the pose and sensors they report.
-// Noise is input, not physics (DESIGN.md "State"): the harness draws it from its own seeded
+// Noise is input, not physics (docs/model.md "Noise is input"): the harness draws it from its own seeded
 // generator and gives the world the noisy readings, so the model holds no random generator.
 #ifndef HS_HARNESS_NOISE_H
 #define HS_HARNESS_NOISE_H

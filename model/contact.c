@@ -28,7 +28,7 @@
 #endif
 
 // Grasp when n_i · n_j <= cos(threshold) + eps: with a bare comparison rounding would decide the
-// 90 deg case (two adjoining cube faces) and two builds could disagree (DESIGN.md).
+// 90 deg case (two adjoining cube faces) and two builds could disagree (docs/model.md §3).
 #define HS_GRASP_EPS 1e-9
 
 // m: what the bounds that test a finger segment for its four lines add for rounding, far above it
@@ -1490,9 +1490,9 @@ static int finger_of(int part) {
 	return part < HS_HAND_POINTS ? part / 4 : (part - HS_HAND_POINTS) / 12;
 }
 
-// Two contacts may make a grasp when they lie on different hands or different fingers (DESIGN.md
-// "Real input": two points of one finger sunk into an object are not a grasp), or with the
-// paper's "any two contacts" rule (§3.2 (2)).
+// Two contacts may make a grasp when they lie on different hands or different fingers
+// (docs/model.md §3 "Two fingers make a grasp": two points of one finger sunk into an object are
+// not a grasp), or with the paper's "any two contacts" rule (§3.2 (2)).
 static bool may_grasp(const hs_contact *a, const hs_contact *b, bool any_contacts) {
 	return any_contacts || a->hand.index1 != b->hand.index1 || finger_of(a->part) != finger_of(b->part);
 }

@@ -63,7 +63,7 @@ int hs_contact_detect_grown(hs_world *world, int object, const hs_pose *before, 
 // §3.2 rectification of a check point: p moved to the nearest face of the convex part of the
 // first object (in index order) it lies in, or p itself (hs_world_hand_rectified_points).
 hs_vec3 hs_contact_rectify(const hs_world *world, hs_vec3 p);
-// The largest n_i · n_j of a grasp: cos(threshold) plus a tolerance (DESIGN.md), once per world.
+// The largest n_i · n_j of a grasp: cos(threshold) plus a tolerance (docs/model.md §3), once per world.
 double hs_grasp_limit(double grasp_threshold_deg);
 // Fig. 2: the contact state of a set of contacts (grasp when two normals are >= threshold apart,
 // on different fingers or hands unless `any_contacts`, the paper's rule).

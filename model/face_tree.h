@@ -1,6 +1,6 @@
 // face_tree.h — a hierarchy of normal cones over each many-faced convex part, so the hand check's
 // per-point and per-line face loops (inside, nearest face, Cyrus-Beck clip, a sweep beyond a face)
-// visit the faces near the point, not every face of the part (issue 12, item 3).
+// visit the faces near the point, not every face of the part (docs/model.md §3 "Many faces").
 //
 // A node holds faces whose outward normals lie within `spread` of its unit `axis`, and the least
 // of their plane offsets; so for every face f of the node and any point p,

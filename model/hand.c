@@ -63,7 +63,7 @@ hs_hand_def hs_default_hand_def(void) {
 	d.base[2] = hs_v3(0.095, 0.005, 0.0);    // middle MCP
 	d.base[3] = hs_v3(0.092, -0.013, 0.0);   // ring MCP
 	d.base[4] = hs_v3(0.090, -0.030, 0.0);   // little MCP
-	d.dip_per_pip = 2.0 / 3.0;               // DIP is not sensed (DESIGN.md)
+	d.dip_per_pip = 2.0 / 3.0;               // DIP is not sensed (docs/model.md §1)
 	return d;
 }
 

@@ -1,5 +1,6 @@
-// hand_sweep.h — the hand's path through a step (DESIGN.md "Hand model": check points and lines
-// are tested along their path through the frame, not only where they end).
+// hand_sweep.h — the hand's path through a step (docs/model.md §3 "Swept detection, rectification
+// and contact hysteresis": check points and lines are tested along their path through the frame,
+// not only where they end).
 #ifndef HS_HAND_SWEEP_H
 #define HS_HAND_SWEEP_H
 

@@ -1,11 +1,11 @@
-// hgrid.c — the hierarchical hashed grid of hgrid.h (issue 11, item 6: collisions that scale,
+// hgrid.c — the hierarchical hashed grid of hgrid.h (docs/model.md §10: collisions that scale,
 // with objects of very different sizes and many objects in one place).
 //
 // Why levels: one cell size for all (twice the largest radius, as before) files 4000 cubes of
 // 5 cm in one cell when a 400 m box is among them, and every query returns all of them. Filing
 // each object at the level its size fits keeps every cell's share of objects O(1) for any mix.
 // Results are sorted by index, so callers iterate in the order a full scan would: no result
-// depends on the grid (DESIGN.md: determinism; array order).
+// depends on the grid (docs/model.md §10: iteration is in array order).
 #include <limits.h>
 #include <stdlib.h>
 #include <string.h>

@@ -1,6 +1,6 @@
 // motion.c — free motion and the floor of the 1999 paper (§4.1, §4.2).
 //
-// Readings fixed here (DESIGN.md leaves them open):
+// Readings fixed here (the paper leaves them open; docs/model.md §5):
 //  - Gm, the motion vector of eq. 4, is the displacement the Verlet step of eq. 3 proposes this
 //    frame: P(t-dt) - P(t-2dt) + g dt². With the literal eq. 4 a resting object has Gm = 0 and
 //    nothing could ever tip; adding this frame's gravity is what makes rule (1)-(3) fall.

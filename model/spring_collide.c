@@ -1,7 +1,7 @@
 // spring_collide.c — object–object collisions of "Dynamics in Interaction on the Responsive
 // Workbench" (§4.5: "collisions ... momentum and energy are conserved").
 //
-// Readings fixed here (DESIGN.md "Spring model" leaves them to us):
+// Readings fixed here (the paper leaves them open; docs/model.md §8 "Collisions"):
 //  - After the step, pairs that met during the frame are answered in the order of time (the
 //    earliest first, then the meetings of its two objects found again from their new paths): an
 //    impulse along the contact normal, J = −(1 + e) v_n / (1/m_a + 1/m_b) with the pair's e (the
@@ -229,7 +229,7 @@ static hs_vec3 free_part(const hs_world *world, const hs_spring_system *sys, int
 // of a contact at rest) goes only as far as that pays; a deeper one as far as that and the potential
 // energy the pair released since the frame began pay, and at least back to half the drift (objects
 // do not pass through each other); an impact's all the way. test_spring_rest's seeded closed box
-// measures that energy never rises (issue 11): a pair within the drift at the frame's start that
+// measures that energy never rises: a pair within the drift at the frame's start that
 // sank deeper used to be lifted all the way, by the drift it began with too, for nothing.
 // The way off the walls both objects of a pair touch and that n runs along (half a unit per
 // wall, into the room): zero when there is none.
@@ -387,7 +387,7 @@ static void state_at(hs_world *world, const hs_spring_system *sys, int i, double
 	b->pos = p;
 }
 
-// No tunnelling (issue 11): two objects apart at the frame's start may meet on the way, whether or
+// No tunnelling (docs/model.md §8): two objects apart at the frame's start may meet on the way, whether or
 // not they still overlap where the frame leaves them. The first fraction tau at which they meet, -1 when
 // they do not: at sub-steps no longer than the sum of their inner radii (a sphere's radius, a box's
 // smallest half extent) along their paths (path_at), so no pass through the other's inner ball is
@@ -806,7 +806,7 @@ void hs_spring_collide(hs_world *world, hs_spring_system *sys) {
 		sys->path_t0[i] = 0.0;
 	}
 	hs_spring_file_all(world, sys);
-	// Meetings in the order of time (no tunnelling, issue 11): the earliest is answered, then the
+	// Meetings in the order of time (no tunnelling): the earliest is answered, then the
 	// meetings of its two objects are found again from their new paths; at most 8 per object and
 	// frame (a pile in a wedge could bounce on), the rest are answered where the frame leaves them.
 	sys->event_count = 0;

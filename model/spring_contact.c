@@ -1,7 +1,7 @@
 // spring_contact.c — the floor and the walls of the spring model, from "Dynamics in Interaction on
 // the Responsive Workbench" (§4.2 friction, §4.5 ground and walls, Fig. 4).
 //
-// Readings fixed here (DESIGN.md "Spring model" leaves them to us):
+// Readings fixed here (the paper leaves them open; docs/model.md §8 "Ground and walls", "Friction"):
 //  - Constraints after the unconstrained step (splitting): the normal force N and the friction
 //    force are evaluated once per stretch of a frame with the object held where it is and the
 //    stylus at the frame end (the force the ground must supply to keep it still), then enter the

@@ -1,7 +1,7 @@
 // spring_grab.c — how the spring of "Dynamics in Interaction on the Responsive Workbench" gets and
 // loses its object: selection (§3), direct picking, catching and the release (§4.4).
 //
-// Readings fixed here (DESIGN.md "Spring model" leaves them to us):
+// Readings fixed here (the paper leaves them open; docs/model.md §8 "The press is neutral", §9):
 //  - Button and selection at the end of each frame (the sample that carries them): a release
 //    while the tracker says 'at rest' is a drop, otherwise a throw (the object takes the tracker's
 //    velocity estimate, §4.4); a press attaches, in this order, the object the stylus is inside

@@ -2,7 +2,7 @@
 // "Dynamics in Interaction on the Responsive Workbench" (§4.3, §4.4) with gravity and constant
 // forces, integrated exactly (the default) or by a comparison scheme.
 //
-// Readings fixed here (DESIGN.md "Spring model" leaves them to us):
+// Readings fixed here (the paper leaves them open; docs/model.md §8):
 //  - Within a frame the spring (spring_params.c) is linearised about its state at the frame start
 //    (direction u = (G − S)/|G − S|, length L): along u it has stiffness k and damping c (exactly
 //    the paper's m ẍ + c ẋ + k x = f, eq. of §4.3); across u the linearisation's stiffness is the
@@ -16,8 +16,9 @@
 //    form, e(t) = e^{−ωt} (e0 + (ė0 + ω e0) t) + a (1 − e^{−ωt}(1 + ωt)) / ω², exact for any dt
 //    and any ω (free flight is the case ω = 0: the parabola). The other integrators take one step
 //    of their scheme on the same equation.
-//  - DESIGN.md asks for a step stable at any frame rate: the exact and implicit schemes are the
-//    model's; semi-implicit Euler and RK4 stay only as the speed-vs-error benchmark's comparison.
+//  - The step must be stable at any frame rate (docs/model.md §8, "Integration"): the exact and
+//    implicit schemes are the model's; semi-implicit Euler and RK4 stay only as the speed-vs-error
+//    benchmark's comparison.
 #include "spring_integrate.h"
 
 #define HS_SERIES_LIMIT 0.5 // ω t below which (1 − e^{−x}(1 + x)) / x² is summed as a series

@@ -1,4 +1,4 @@
-// spring_near.c — which objects may meet one object in the spring model (issue 11, item 6).
+// spring_near.c — which objects may meet one object in the spring model (docs/model.md §8).
 //
 // The grid (hgrid.c) answers a query in O(1) per object, but a frame asks it about every object
 // three or four times (the touches at the frame start, the meetings, the end passes). Neighbour

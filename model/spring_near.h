@@ -1,4 +1,4 @@
-// spring_near.h — the spring model's broad phase (issue 11, item 6): which objects may meet one
+// spring_near.h — the spring model's broad phase (docs/model.md §8): which objects may meet one
 // object, through the hierarchical grid (hgrid.c) and a neighbour list that spares most queries.
 #ifndef HS_SPRING_NEAR_H
 #define HS_SPRING_NEAR_H

@@ -1,7 +1,7 @@
 // spring_params.c — the spring model's definition and each object's spring, from "Dynamics in
 // Interaction on the Responsive Workbench" (§4.2, §4.3).
 //
-// Readings fixed here (DESIGN.md "Spring model" leaves them to us):
+// Readings fixed here (the paper leaves them open; docs/model.md §8):
 //  - Rest length (§4.2: "calculated automatically from the mass ... for heavy objects a stronger
 //    and longer spring"): x0(m) = x0_ref (m / m_ref)^p, default 0.10 m · (m / 1 kg)^(1/3), clamped to
 //    [0.01 m, 1.0 m]. The cube root makes the spring grow like the object's size at fixed density;

@@ -1,8 +1,8 @@
 // spring_rest.c — resting contact between the objects of the spring model ("Dynamics in
 // Interaction on the Responsive Workbench" §4.5: "physical contact of objects is intuitively
-// equivalent with geometric intersection"; issue 11: stacks stand, friction acts between objects).
+// equivalent with geometric intersection"; here stacks stand and friction acts between objects).
 //
-// Readings fixed here (DESIGN.md "Spring model" leaves them to us):
+// Readings fixed here (the paper leaves them open; docs/model.md §8 "Resting contact between objects"):
 //  - The floor's reading (spring_contact.c) carried over to contacts between objects: with every
 //    object held where it is, the contact forces are those the touching objects, the floor and
 //    the walls must exert on each other — normal forces ≥ 0 that leave no touching pair

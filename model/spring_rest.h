@@ -1,5 +1,5 @@
 // spring_rest.h — resting contact between the spring model's objects: the forces touching objects,
-// the floor and the walls exert on each other, found at the frame start (issue 11: stacks stand,
+// the floor and the walls exert on each other, found at the frame start (so stacks stand and
 // static friction holds through contacts).
 #ifndef HS_SPRING_REST_H
 #define HS_SPRING_REST_H

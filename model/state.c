@@ -1,4 +1,4 @@
-// state.c — the world's state as one block (DESIGN.md "State"; MuJoCo's mj_getState /
+// state.c — the world's state as one block (docs/model.md "The state block"; MuJoCo's mj_getState /
 // mj_setState): the header that ties a buffer to a kind of world, the one walk over every state
 // field (world_io), and the four uses of it: size, save, load (checked first) and hash.
 #include <limits.h>

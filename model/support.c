@@ -1,4 +1,4 @@
-// support.c — the 'support' stacking mode (DESIGN.md, an alternative to the 1999 paper's §4.3):
+// support.c — the 'support' stacking mode (docs/model.md §6, an alternative to the 1999 paper's §4.3):
 // an object that sinks into objects under it is rectified upward exactly as on the floor (§4.2),
 // and its stability is judged with the hull of its contacts on their faces and G' (eq. 4-5).
 //

@@ -1,4 +1,4 @@
-// support.h — the 'support' stacking mode (DESIGN.md, instead of the 1999 paper's §4.3): objects
+// support.h — the 'support' stacking mode (docs/model.md §6, instead of the 1999 paper's §4.3): objects
 // rest on the faces of objects under them, rectified and judged for stability as on the floor.
 #ifndef HS_SUPPORT_H
 #define HS_SUPPORT_H

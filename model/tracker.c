@@ -19,7 +19,7 @@
 //    window 9): negative weights in the middle, so after an abrupt stop from speed V it reads
 //    V, 0.691 V, 0.271 V, −0.113 V, −0.366 V, −0.446 V, −0.362 V, −0.176 V, 0 at 0..8 samples after
 //    the stop — a hand that stopped seemed to move backwards at 45 % of its speed, and a release
-//    0.1 s after a stop threw the object back (issue 11). Once the window is full, the part of the
+//    0.1 s after a stop threw the object back. Once the window is full, the part of the
 //    velocity that points against the heading (the chord below) is removed: a hand's recent path
 //    and its velocity cannot disagree in direction except at such a kink. The stop response is
 //    then V, 0.691 V, 0.271 V, 0, 0, ...: the hand is at rest at most 3 samples (60 ms) after the
@@ -40,10 +40,11 @@
 //    when its speed exceeds motion_speed (default 0.20 m/s, 11 σ of the noise above); a moving hand
 //    comes to rest when its speed falls below rest_speed (default 0.10 m/s, 5.5 σ). Between the two
 //    the state does not change, so noise cannot make it flicker.
-//  - Noise is input, not physics (DESIGN.md): the tracker records exactly the stylus poses it is
-//    given. A caller simulating the Fastrak (0.03 inch = 0.762 mm RMS per axis, 0.15° RMS: its
-//    static accuracy) adds that noise to the poses it passes to hs_world_set_stylus — so the
-//    spring's anchor sees it too, as §5.1 computes the spring from the tracker data.
+//  - Noise is input, not physics (docs/model.md "Noise is input"): the tracker records exactly
+//    the stylus poses it is given. A caller simulating the Fastrak (0.03 inch = 0.762 mm RMS per
+//    axis, 0.15° RMS: its static accuracy) adds that noise to the poses it passes to
+//    hs_world_set_stylus — so the spring's anchor sees it too, as §5.1 computes the spring from
+//    the tracker data.
 #include <string.h>
 
 #include "tracker.h"

@@ -27,7 +27,7 @@ typedef struct hs_tracker {
 
 // Sets up an empty tracker whose first sample is due at or after time t (s).
 void hs_tracker_init(hs_tracker *tracker, const hs_spring_def *def, double t);
-// Records one sample exactly as given (noise is input: DESIGN.md), then updates the estimates
+// Records one sample exactly as given (noise is input: docs/model.md §10), then updates the estimates
 // and events.
 void hs_tracker_record(hs_tracker *tracker, double t, hs_vec3 position, hs_quat orientation, bool button);
 // Takes every sample due in (t0, t1] (and at t0 if due), interpolating the stylus between its poses

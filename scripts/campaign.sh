@@ -1,6 +1,7 @@
 #!/bin/sh
-# campaign.sh — a Monte-Carlo campaign's trials (issue 14) spread over GNU parallel: this machine's
-# cores, other machines over ssh, or both; the result is byte for byte the in-process run's.
+# campaign.sh — a Monte-Carlo campaign's trials (docs/campaigns.md) spread over GNU parallel: this
+# machine's cores, other machines over ssh, or both; the result is byte for byte the in-process
+# run's.
 #
 #   campaign.sh CAMPAIGN_FILE OUTDIR [--jobs N] [--chunk K] [--sshlogin LOGINS] [--ssh CMD]
 #               [--basefile PATH]... [--tool PATH] [--resume]

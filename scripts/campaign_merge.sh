@@ -1,5 +1,5 @@
 #!/bin/sh
-# campaign_merge.sh — the merge step of a campaign split into parts (issue 14), shared by
+# campaign_merge.sh — the merge step of a campaign split into parts (docs/campaigns.md), shared by
 # scripts/campaign.sh (GNU parallel) and scripts/campaign.sbatch (a Slurm job array):
 #   1. OUTDIR/trials.csv = the header (`TOOL campaign FILE --header`) + every part's rows sorted
 #      numerically by their first field (the trial index): byte for byte what the in-process run

@@ -1,5 +1,5 @@
 #!/bin/sh
-# determinism.sh — the determinism matrix (DESIGN.md "Deterministic math", "Conventions"): the tool
+# determinism.sh — the determinism matrix (docs/model.md §10, docs/determinism.md): the tool
 # built by different compilers, flags and architectures, and run on a CPU without FMA, runs the
 # catalog (scenarios/) and the randomized soak ($BUILD/soak, written by tests/soak_gen.c from a
 # fixed seed); every frame's state hash (the `hash` column of each trajectory) must equal the

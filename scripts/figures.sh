@@ -1,5 +1,5 @@
 #!/bin/sh
-# figures.sh — `make figures`: the papers' pictures drawn from catalog scenarios (issue 13, item 3):
+# figures.sh — `make figures`: the papers' pictures drawn from catalog scenarios (docs/plots.md):
 # each a filmstrip (`handspring view --strip`) of the frames nearest the times given.
 #   figures.sh TOOL OUTDIR
 set -eu

@@ -1,5 +1,5 @@
 #!/bin/sh
-# joint_recordings.sh — writes the catalog's joint recordings (issue 13 item 4) from the glove
+# joint_recordings.sh — writes the catalog's joint recordings from the glove
 # model's own motion: hand/free_manipulation's hand as MediaPipe landmarks and as OpenXR joints.
 #   joint_recordings.sh TOOL
 set -eu

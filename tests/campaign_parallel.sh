@@ -1,8 +1,8 @@
 #!/bin/sh
-# campaign_parallel.sh — `make check-campaign` (issue 14): scripts/campaign.sh spreads a campaign's
-# trials over GNU parallel, and however it splits, interrupts and resumes them, trials.csv and
-# summary.csv are byte for byte those of the in-process run (`TOOL campaign FILE --out --summary`,
-# the -j1 reference):
+# campaign_parallel.sh — `make check-campaign` (docs/campaigns.md): scripts/campaign.sh spreads a
+# campaign's trials over GNU parallel, and however it splits, interrupts and resumes them,
+# trials.csv and summary.csv are byte for byte those of the in-process run
+# (`TOOL campaign FILE --out --summary`, the -j1 reference):
 #   1. 2 local jobs;
 #   2. 2 jobs over ssh to a private sshd on 127.0.0.1 (a free port from 22022 up, its own host key,
 #      client key and config in the temporary folder; the system's sshd and ~/.ssh are not

@@ -1,11 +1,11 @@
 #!/bin/sh
-# campaign_slurm.sh — `make check-slurm` (issue 14; not part of make check): scripts/campaign.sbatch
-# on a single-node Slurm started for the test from the Debian packages (slurmctld, slurmd,
-# slurm-client, munge), all of it private: munged on its own socket and key, slurmctld and slurmd
-# in the foreground on free ports, with a slurm.conf for this host (2 CPUs, partition debug,
-# proctrack/linuxproc, task/none, select/cons_tres, no cgroups, no accounting), state, spool and
-# logs in one mktemp folder; SLURM_CONF points the clients at it. The system's /etc/slurm and
-# /etc/munge are not used, and no daemon is left running.
+# campaign_slurm.sh — `make check-slurm` (docs/campaigns.md; not part of make check):
+# scripts/campaign.sbatch on a single-node Slurm started for the test from the Debian packages
+# (slurmctld, slurmd, slurm-client, munge), all of it private: munged on its own socket and key,
+# slurmctld and slurmd in the foreground on free ports, with a slurm.conf for this host (2 CPUs,
+# partition debug, proctrack/linuxproc, task/none, select/cons_tres, no cgroups, no accounting),
+# state, spool and logs in one mktemp folder; SLURM_CONF points the clients at it. The system's
+# /etc/slurm and /etc/munge are not used, and no daemon is left running.
 #   1. a 5-task array (`sbatch --array=0-4`) and the merge job after it (`--dependency=afterok`,
 #      `sbatch --wait`): trials.csv and summary.csv byte for byte the in-process run's;
 #   2. one part removed and the whole array submitted again: only that task runs (the others find

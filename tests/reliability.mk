@@ -1,4 +1,4 @@
-# tests/reliability.mk — reliability targets (issue 6), included by the Makefile.
+# tests/reliability.mk — reliability targets (docs/building.md "Targets"), included by the Makefile.
 #
 #   make stress          numerical stress: every case in full (the 1,000,000-frame soak included),
 #                        then the randomized fault soak (tests/fault_soak.c) over FAULT_SOAK_FRAMES

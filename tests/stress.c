@@ -1,4 +1,4 @@
-// stress.c — numerical stress of the model (issue 6): extreme time steps, masses and sizes,
+// stress.c — numerical stress of the model: extreme time steps, masses and sizes,
 // stiff springs, interpenetrating starts, a hand started inside an object, contacts exactly on
 // edges, vertices and the grasp threshold, 10,000 objects and a 1,000,000-frame soak.
 //

@@ -1,4 +1,4 @@
-// test_alloc.c — the step never allocates (STYLE.md habit 3, handspring.h: "Never allocates").
+// test_alloc.c — the step never allocates (handspring.h: "Never allocates"; docs/model.md §10).
 //
 // Every heap allocation of the process is counted while a world steps: hand-model worlds (paper
 // and support stacking, hands grasping, pushing and throwing), spring worlds (stylus, spring,

@@ -1,4 +1,4 @@
-// test_campaign.c — campaigns (issue 14): the thrower's errors against the closed form of the
+// test_campaign.c — campaigns (docs/campaigns.md): the thrower's errors against the closed form of the
 // throw they make, a trial's row independent of how the trials are split, the Wilson interval
 // against published values and GSL's z, the summary's checks, and every bad campaign file's message.
 #include <stdarg.h>

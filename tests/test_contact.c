@@ -594,11 +594,11 @@ static hs_world *pyramid_world(bool any_contacts) {
 	return rig_world(&def, hs_shape_pyramid(0.08, 0.08, NULL), hs_v3(0, 0, 2), hs_v3(0, 0, 2));
 }
 
-// DESIGN.md "Real input": the DIP (6) and the tip (7) of one index finger sunk into the pyramid's
-// +x side face (normal (2, 0, 1)/√5) and its base (normal -z), 116.6 deg apart (cos = -1/√5), do
-// not grasp it by default: two contacts on one finger push at several points (3). With the paper's
-// rule (grasp_any_contacts) they grasp it (2), and a rising wrist lifts it 0.2 m in two frames;
-// by default the rising finger leaves it behind.
+// docs/model.md §3 "Two fingers make a grasp": the DIP (6) and the tip (7) of one index finger sunk
+// into the pyramid's +x side face (normal (2, 0, 1)/√5) and its base (normal -z), 116.6 deg apart
+// (cos = -1/√5), do not grasp it by default: two contacts on one finger push at several points (3).
+// With the paper's rule (grasp_any_contacts) they grasp it (2), and a rising wrist lifts it 0.2 m
+// in two frames; by default the rising finger leaves it behind.
 static void pyramid_by_one_finger(bool any_contacts) {
 	hs_world *w = pyramid_world(any_contacts);
 	hs_vec3 n = hs_scale(hs_v3(2, 0, 1), 1.0 / sqrt(5.0));

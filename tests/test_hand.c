@@ -934,11 +934,11 @@ static double throw_distance(int fps) {
 	return sqrt(dx * dx + dy * dy);
 }
 
-// DESIGN.md "Release": a throw lands in the same place at any frame rate. hand/throw_at_target at
-// 12, 17, 30, 60 and 120 frames/s lands inside the 0.15 m target: the release velocity is the
-// hand's motion over the frame it opened in. (Its swing from rest to 3.9 m/s lasts 0.1 s: at 12
-// frames/s the one held frame inside it is mid-swing, and the object's own last frame, the paper's
-// letter, landed 1.11 m short.)
+// docs/model.md §4 "Release": a throw lands in the same place at any frame rate.
+// hand/throw_at_target at 12, 17, 30, 60 and 120 frames/s lands inside the 0.15 m target: the
+// release velocity is the hand's motion over the frame it opened in. (Its swing from rest to
+// 3.9 m/s lasts 0.1 s: at 12 frames/s the one held frame inside it is mid-swing, and the object's
+// own last frame, the paper's letter, landed 1.11 m short.)
 static void test_throw_lands_at_any_rate(void **state) {
 	(void)state;
 	const int rates[] = {12, 17, 30, 60, 120};
@@ -950,7 +950,7 @@ static void test_throw_lands_at_any_rate(void **state) {
 }
 
 // ---------------------------------------------------------------------------------------------
-// A grasp under real input (issue 10; docs/model.md §3 "Grasp continuation and release"): a glove
+// A grasp under real input (docs/model.md §3 "Grasp continuation and release"): a glove
 // and tracker pick up a 5 cm cube, lift it 0.25 m and hold it 2 s, with seeded uniform noise on
 // every sensor (±L units a frame) and optionally ±1.3 mm on each wrist axis.
 
@@ -1058,7 +1058,8 @@ static bool hold_survives(double dt, int units, double wrist_m, uint64_t seed) {
 }
 
 // The hold rate over 20 seeds for each noise level, with and without wrist noise, at 1/60 and
-// 1/17 s (the table of issue 10). ±4 units (±2°) holds 20 of 20 in every column.
+// 1/17 s (the table in docs/model.md §3 "Grasp continuation and release"). ±4 units (±2°) holds
+// 20 of 20 in every column.
 static void test_grasp_holds_under_noise(void **state) {
 	(void)state;
 	const int levels[] = {0, 1, 2, 4, 8};

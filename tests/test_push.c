@@ -1,4 +1,4 @@
-// test_push.c — a push at one point on an object lying on the floor (issue 10; 1999 paper eq. 1-2
+// test_push.c — a push at one point on an object lying on the floor (1999 paper eq. 1-2
 // under §4.2, docs/model.md §4 "Pushing an object on the floor"), against closed forms.
 #include <setjmp.h>
 #include <stdarg.h>

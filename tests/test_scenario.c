@@ -600,9 +600,10 @@ static void test_hand_trace_spring(void **state) {
 	hs_scenario_destroy(s);
 }
 
-// A hand key may place a finger part instead of the wrist (issue 13 item 5): `index_tip` puts
-// the index fingertip (check point 7) on the point given, with the key's own posture and the wrist
-// turned; `thumb_base` the thumb's CMC (point 0). Two placements in one key are refused.
+// A hand key may place a finger part instead of the wrist (scenarios/README.md "Hands"):
+// `index_tip` puts the index fingertip (check point 7) on the point given, with the key's own
+// posture and the wrist turned; `thumb_base` the thumb's CMC (point 0). Two placements in one key
+// are refused.
 static void test_key_places_finger_part(void **state) {
 	(void)state;
 	hs_scenario *s = load_text("finger_part0.yaml",
@@ -631,7 +632,7 @@ static void test_key_places_finger_part(void **state) {
 	           "9: a hand key places the hand once: give one of 'wrist', 'grip' or a finger part");
 }
 
-// Joint input (issue 13 item 4): hand/free_manipulation's motion recorded as MediaPipe landmarks
+// Joint input: hand/free_manipulation's motion recorded as MediaPipe landmarks
 // and as OpenXR joints (scripts/joint_recordings.sh) drives the same run as the glove keys: the
 // same contact state of the cube in every frame, its pose within 1e-9 m (measured: 1.2e-16 m; the
 // wrist fit rounds). The fitted sensors are whole units near the glove's own, not always them
@@ -1466,7 +1467,8 @@ static void test_still_window(void **state) {
 }
 
 // ---------------------------------------------------------------------------------------------
-// issue 10: upper bounds, contact watches, load options and the robust sweep
+// Real input: upper bounds, contact watches, load options and the robust sweep
+// (scenarios/README.md "Expectations", "Robustness")
 
 // a cube dropped tilted 30 deg about x: it lands on an edge and falls onto a face
 static const char tilt_scenario[] = "description: a tilted cube dropped\n"

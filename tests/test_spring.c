@@ -173,7 +173,7 @@ static void test_critically_damped_response(void **state) {
 					assert_true(err[id] <= xd0); // bounded: never larger than the motion itself
 			}
 			if (ig == HS_INTEGRATOR_EXACT)
-				assert_true(err[1] <= 1e-3); // the issue's bar: within 1 mm at 1/60 s
+				assert_true(err[1] <= 1e-3); // docs/benchmarks.md's target: within 1 mm at 1/60 s
 			if (m == 1.0 && ig != HS_INTEGRATOR_EXACT)
 				assert_true(err[2] <= 0.05 * xd0); // every scheme converges at 1 kHz
 		}
@@ -833,12 +833,12 @@ static void test_ray_cast_and_rod(void **state) {
 	hs_world_destroy(w);
 }
 
-// Issue 11: a hanging 1 kg cube (x0 = 0.1 m, k = 490.5 N/m) carried into a frictionless wall rests
-// where the spring's force along the wall balances its weight, at every dt: the anchor at
-// (0.6, 0, 0.7), the wall holding G at x = 0.45, so d = (0.15, 0, 0.7 - z), L = |d|, and
-// k (L - x0) (0.7 - z) / L = m g. z from that equation by bisection (to 1e-15), the model within 1e-6
-// m at 1/12, 1/60 and 1/1000 s (before, with the free step projected back onto the wall: 0.6049 at
-// 1/12, 0.6410 at 1/60 and 0.6459 at 1/1000 against 0.6462883).
+// docs/model.md §8 "Ground and walls": a hanging 1 kg cube (x0 = 0.1 m, k = 490.5 N/m) carried into
+// a frictionless wall rests where the spring's force along the wall balances its weight, at every
+// dt: the anchor at (0.6, 0, 0.7), the wall holding G at x = 0.45, so d = (0.15, 0, 0.7 - z),
+// L = |d|, and k (L - x0) (0.7 - z) / L = m g. z from that equation by bisection (to 1e-15), the model
+// within 1e-6 m at 1/12, 1/60 and 1/1000 s (before, with the free step projected back onto the
+// wall: 0.6049 at 1/12, 0.6410 at 1/60 and 0.6459 at 1/1000 against 0.6462883).
 static double wall_rest_z(void) {
 	double lo = 0.3, hi = 0.7;
 	for (int k = 0; k < 200; ++k) {

@@ -175,11 +175,11 @@ static void test_ball_passes_rotated_rod(void **state) {
 	hs_world_destroy(w);
 }
 
-// No tunnelling (issue 11): at 12 frames/s a ball at 20 m/s moves 1.67 m a frame, through a 10 cm
-// ball, box or turned box at rest in its way (frictionless floor). It meets the target where their
-// surfaces touch, 0.9 m on (t = 0.045 s): equal masses, elastic, it stops there (x = -0.1 for the
-// ball and the box, the box's face at -0.05) and the target goes on at 20 m/s: at t = 0.25 s it is
-// 20 (0.25 - 0.045) = 4.1 m on.
+// No tunnelling (docs/model.md §8): at 12 frames/s a ball at 20 m/s moves 1.67 m a frame, through a
+// 10 cm ball, box or turned box at rest in its way (frictionless floor). It meets the target where
+// their surfaces touch, 0.9 m on (t = 0.045 s): equal masses, elastic, it stops there (x = -0.1 for
+// the ball and the box, the box's face at -0.05) and the target goes on at 20 m/s: at t = 0.25 s it
+// is 20 (0.25 - 0.045) = 4.1 m on.
 static void test_no_tunnelling(void **state) {
 	(void)state;
 	for (int kind = 0; kind < 3; ++kind) {
@@ -228,9 +228,7 @@ static double lcg_unit(uint64_t *s) { // bench/collide_scaling.c's generator, in
 // The broad phase changes no bit: 300 spheres sliding in a frictionless walled box (make bench's
 // scene, 30 frames, then 60 frames' hashes folded) give the same checksum as the all-pairs double
 // loop the grid replaced (sys->all_pairs), and that run has collisions in it (each one met within a
-// frame steps its two balls on for the rest of it: more object steps than frames × balls). (Until
-// issue 11's swept collisions the
-// constant 0x3085cf4e43b062e2 was pinned here from hs_bench --profile-collide box,60,300.)
+// frame steps its two balls on for the rest of it: more object steps than frames × balls).
 static uint64_t box_of_balls(bool all_pairs, double spacing, long *steps) {
 	enum { BALLS = 300, SIDE = 18 };
 	hs_world_def def = hs_default_world_def();

@@ -1,7 +1,7 @@
-// test_spring_rest.c — resting contact between the spring model's objects (spring_rest.c, issue 11):
-// stacks stand still to the bit at the paper's frame rates, the weight above reaches the floor,
-// static friction holds through contacts, restitution is the pair's, and a closed box of objects
-// never gains energy.
+// test_spring_rest.c — resting contact between the spring model's objects (spring_rest.c,
+// docs/model.md §8): stacks stand still to the bit at the paper's frame rates, the weight above
+// reaches the floor, static friction holds through contacts, restitution is the pair's, and a
+// closed box of objects never gains energy.
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>

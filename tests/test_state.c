@@ -1,8 +1,8 @@
-// test_state.c — the state block (DESIGN.md "State"): save at frame N, step, load, step again:
-// every hash equal, in the same world and in a second world built from the same definitions;
-// hand worlds with a grasp in progress and an object in flight, spring worlds with an object on
-// the spring and tracker noise. Refusals of foreign or corrupt buffers leave the world untouched.
-// The hash sees every single state field.
+// test_state.c — the state block (docs/model.md "The state block"): save at frame N, step, load,
+// step again: every hash equal, in the same world and in a second world built from the same
+// definitions; hand worlds with a grasp in progress and an object in flight, spring worlds with an
+// object on the spring and tracker noise. Refusals of foreign or corrupt buffers leave the world
+// untouched. The hash sees every single state field.
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -298,8 +298,9 @@ static void test_load_unset_hand_then_set(void **state) {
 // ---------------------------------------------------------------------------------------------
 // A spring world: a ball on the spring swung by a moving stylus, a box sliding, tracker noise.
 
-// Tracker noise is input (DESIGN.md): drawn here per frame from a generator seeded by the frame,
-// so the frames after a load see the same readings as the frames after the save.
+// Tracker noise is input (docs/model.md "Noise is input"): drawn here per frame from a generator
+// seeded by the frame, so the frames after a load see the same readings as the frames after the
+// save.
 static bool stylus_noise;
 
 static hs_vec3 noisy(hs_vec3 p, int f) {

@@ -1,4 +1,5 @@
-// test_support.c — objects on objects: the paper's §4.3 mode and the 'support' mode of DESIGN.md.
+// test_support.c — objects on objects: the paper's §4.3 mode and the 'support' mode
+// (docs/model.md §6).
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -198,7 +199,7 @@ static void drop_onto_cube(hs_stacking stacking, double size, double height, dou
 	hs_world_destroy(w);
 }
 
-// Issue 10: in both modes, 10 cm and 5 cm cubes from 0.2 m and 2 m (at 1/12 s a 2 m fall moves
+// In both modes, 10 cm and 5 cm cubes from 0.2 m and 2 m (at 1/12 s a 2 m fall moves
 // 0.52 m in its last frame, more than the cube it lands on is tall) at 12, 30 and 60 frames/s.
 static void test_drops_land_on_top_face(void **state) {
 	(void)state;
@@ -211,7 +212,7 @@ static void test_drops_land_on_top_face(void **state) {
 					drop_onto_cube(modes[m], sizes[s], heights[h], dts[d]);
 }
 
-// Support mode, issue 10: a 4 cm cube let go turned `tilt` about y (a noisy release) from
+// Support mode: a 4 cm cube let go turned `tilt` about y (a noisy release) from
 // `height` above a 10 cm cube's top lands on an edge and settles by §4.2's rules against the top
 // face: rule (2) turns it about that edge until the next face reaches the top (eq. 7's first touch
 // against the support, not only the floor), where it rests (Gm gone, G' inside). Invariants at
@@ -271,7 +272,7 @@ static double jitter(uint32_t *x) {
 	return (double)(*x % 20001u) / 10000.0 - 1.0;
 }
 
-// Support mode, issue 10: a hand lifts a bar (as manipulate.c does: pose set, prev / rot_prev the
+// Support mode: a hand lifts a bar (as manipulate.c does: pose set, prev / rot_prev the
 // frame's start, held, then hs_support_wake_neighbours) 0.1 m in 60 frames with +-0.762 mm and
 // +-0.15 deg of tracker jitter a frame. The cube on it is carried by the bar's rigid motion: its
 // pose in the bar's frame never changes (1e-12), it never sinks into the bar, and it rests every

@@ -1,4 +1,4 @@
-// test_tool_cli.c — the harness for any folder (issue 13 item 6): `handspring golden DIR` and
+// test_tool_cli.c — the harness for any folder (docs/tool.md): `handspring golden DIR` and
 // `handspring check DIR` on a temporary folder, and what `run` writes with --objects, --every,
 // --from, --to and --out -.
 #include <setjmp.h>

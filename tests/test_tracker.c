@@ -556,9 +556,10 @@ static void test_step_ramp_stop_responses(void **state) {
 	assert_int_equal(r.starts, 0);
 }
 
-// The case in a spring world: carry a ball at 1 m/s, stop abruptly, release 0.1 s later —
-// a drop (the bare fit read −0.45 m/s and threw it backwards); and after a 0.1 s linear
-// deceleration to rest, released 0.1 s later, a drop too (the bare fit read −0.15 m/s).
+// docs/model.md §9 "No motion against the path" in a spring world: carry a ball at 1 m/s, stop
+// abruptly, release 0.1 s later — a drop (the bare fit read −0.45 m/s and threw it backwards); and
+// after a 0.1 s linear deceleration to rest, released 0.1 s later, a drop too (the bare fit read
+// −0.15 m/s).
 static void test_release_after_stop_is_drop(void **state) {
 	(void)state;
 	for (int decel = 0; decel < 2; ++decel) {

@@ -1,4 +1,4 @@
-// test_view.c — `handspring view` (tool/view.c, issue 13 item 2): the files it writes exist, have
+// test_view.c — `handspring view` (tool/view.c, docs/tool.md): the files it writes exist, have
 // the frame count and size asked for, and show the objects where and as they must be (pixels read
 // with libpng), and bad options get one error line and exit status 2.
 #include <setjmp.h>

@@ -1,4 +1,4 @@
-// golden.c — `handspring check DIR [--golden GDIR]` (issue 13 item 6): every scenario below DIR
+// golden.c — `handspring check DIR [--golden GDIR]` (docs/tool.md): every scenario below DIR
 // against its golden trajectory, the way `make check` does the catalog (tests/test_golden.c): the
 // trajectory within HS_GOLDEN_TOLERANCE, contact states and rows exactly, every expectation, and a
 // second run's per-frame state hashes equal to the first's.

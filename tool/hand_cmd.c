@@ -1,5 +1,5 @@
 // hand_cmd.c — `handspring hand`: the default hand's check points in the wrist frame for a posture
-// (issue 13 item 5: writing a scenario needs no hidden geometry).
+// (so writing a scenario needs no hidden geometry).
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>

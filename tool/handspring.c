@@ -831,7 +831,8 @@ static const char *const usage_joints =
     "column when the hand has untracked samples). A hand's 'record:' reads them back.\n"
     "Exit status: 0 written, 2 bad input.\n";
 
-// `handspring joints`: a scenario's hand as a joint recording (issue 13 item 4; the catalog's).
+// `handspring joints`: a scenario's hand as a joint recording (scripts/joint_recordings.sh writes
+// the catalog's with it).
 static int cmd_joints(int argc, char **argv) {
 	const char *file = NULL, *format = NULL, *out = NULL, *rate_text = NULL;
 	long hand = 1;

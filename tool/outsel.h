@@ -1,4 +1,4 @@
-// outsel.h — what `run` and `all` write of a run (issue 13 item 6): the objects, the frames (every
+// outsel.h — what `run` and `all` write of a run (docs/tool.md): the objects, the frames (every
 // Nth, from a time to a time), and progress on stderr for long runs (tool/outsel.c).
 #ifndef HS_OUTSEL_H
 #define HS_OUTSEL_H

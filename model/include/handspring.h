@@ -20,8 +20,7 @@
 // (libccd and libm; add --static for libhandspring.a). Valid C99/C11 and C++11.
 // The models in detail: docs/model.md in the repository (index docs/README.md) — the 18-sensor
 // glove layout, check points and lines, contact states, stacking modes `paper` and `support`,
-// and every choice made where the papers are silent. A comment below that cites DESIGN.md means
-// that page.
+// and every choice made where the papers are silent.
 #ifndef HANDSPRING_H
 #define HANDSPRING_H
 
@@ -166,7 +165,7 @@ typedef struct hs_shape_id {
 	uint16_t generation;
 } hs_shape_id;
 
-/// How objects touching objects behave (1999 paper §4.3; DESIGN.md).
+/// How objects touching objects behave (1999 paper §4.3; docs/model.md §6).
 typedef enum hs_stacking {
 	HS_STACKING_PAPER,   ///< objects interfering with a moved object move with it; untouched interfering objects ignore gravity
 	HS_STACKING_SUPPORT, ///< a resting object is supported by the faces under it (rectify and stability as on the floor)
@@ -357,7 +356,7 @@ hs_status hs_world_first_fault(const hs_world *world, long *frame, hs_object_id 
 #define HS_HAND_POINTS 20   ///< check points: 4 per finger
 #define HS_HAND_LINES 60    ///< check lines: 4 long edges of each of the 15 finger segments
 
-/// Glove sensor layout (DESIGN.md). Flexion, abduction, roll and arch: angle = v × 0.5 deg.
+/// Glove sensor layout (docs/model.md §1). Flexion, abduction, roll and arch: angle = v × 0.5 deg.
 /// Wrist pitch and yaw are signed: angle = (v − 128) × 0.5 deg.
 enum hs_glove_sensor {
 	HS_SENSOR_THUMB_ROLL = 0,
