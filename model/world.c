@@ -415,13 +415,10 @@ static bool in_list(const int *list, int n, int i) {
 	return false;
 }
 
-// Paper mode: an awake object that interferes with others none of which is held up falls with them
-// as one (fall_group.c); their indices go to world->queue from *fallen (support mode's list there
-// is never used in paper mode).
+// Paper mode, an awake object that interferes with others: if nothing holds it up, it falls with
+// what rests on it (fall_group.c), whose indices go to world->queue from *fallen (support mode's
+// list there is never used in paper mode).
 static bool paper_group_falls(hs_world *world, int i, int *fallen) {
-	const hs_body *body = &world->bodies[i];
-	if (world->def.stacking != HS_STACKING_PAPER || body->asleep || !hs_object_interferes(world, i))
-		return false;
 	int n = hs_fall_group(world, i, world->queue + *fallen, world->object_count - *fallen);
 	*fallen += n;
 	return n > 0;
@@ -430,10 +427,10 @@ static bool paper_group_falls(hs_world *world, int i, int *fallen) {
 // One unheld object's frame: §4.3 in paper mode (interfering and untouched: no gravity, no
 // inertia, but rectified out of the objects under it as out of the floor, Fig. 11), else eq. 3 and
 // the floor (§4.2), the fall swept over the objects under it, and in support mode its supports.
-static void step_object(hs_world *world, int i) {
+static void step_object(hs_world *world, int i, bool interferes) {
 	hs_body *body = &world->bodies[i];
 	hs_vec3 from = body->pos;
-	if (!body->asleep && world->def.stacking == HS_STACKING_PAPER && hs_object_interferes(world, i)) {
+	if (interferes) {
 		hs_stack_rectify(world, i);
 		hs_motion_keep_above_floor(world, body);
 		body->grounded = body->floor_contacts > 0; // it may rest above the floor (carried up)
@@ -491,16 +488,17 @@ hs_status hs_world_step(hs_world *world) {
 		hs_body *body = &world->bodies[i];
 		if (body->held || body->carried || in_list(world->queue, fallen, i))
 			continue;
-		if (paper_group_falls(world, i, &fallen))
-			continue;
 		// asleep: stays as it is until woken — on the floor, on a support (support mode), where it
 		// stopped at an interference (paper mode, §4.3) — with skip_work off too (the same bits:
 		// its pose and its last turn, rot_prev, kept); one that fell asleep this frame leaves the
 		// awake list below
 		if (body->asleep)
 			continue;
+		bool interferes = world->def.stacking == HS_STACKING_PAPER && hs_object_interferes(world, i);
+		if (interferes && paper_group_falls(world, i, &fallen))
+			continue;
 		hs_body saved = *body;
-		step_object(world, i);
+		step_object(world, i, interferes);
 		if (!body_is_finite(body)) { // never let a NaN spread: freeze the object and count it
 			*body = saved;
 			hs_world_note_fault(world, i);
