@@ -28,7 +28,7 @@ endif
 
 BENCH_OBJ := $(BENCH_SRC:bench/%.c=$(BENCH_OUT)/obj/%.o)
 # what the summary prints as the build: the compiler and the flags actually used
-BENCH_ID   = -DHS_BENCH_CC='"$(CC)"' -DHS_BENCH_FLAGS='"$(strip $(filter-out -I% -W% -D%,$(CFLAGS_ALL))) -Werror (same as the library)"'
+BENCH_ID   = -DHS_BENCH_CC='"$(CC)"' -DHS_BENCH_FLAGS='"$(strip $(filter-out -I% -W% -D%,$(CFLAGS_ALL)))$(if $(filter 1,$(WERROR)), -Werror) (same as the library)"'
 
 .PHONY: bench-run bench-build bench-peers-note
 
