@@ -9,10 +9,14 @@
 #include "motion.h"
 #include "stacking.h"
 
-// j holds i up: they interfere and i's lowest point is no lower than j's G (i rests on j's upper
-// part; an object beside i, touching its side, holds nothing up).
+// j holds i up: they interfere and i's lowest point is above j's by more than the floor's
+// tolerance (i rests on j's upper part, or on a lower step of it: a cube on an L-block's foot; an
+// object beside i on the same floor, touching its side, holds nothing up).
 static bool supports(hs_world *world, int j, int i) {
-	return hs_objects_interfere(world, i, j) && hs_motion_pose_vertices(world, &world->bodies[i]) >= world->bodies[j].pos.z;
+	if (!hs_objects_interfere(world, i, j))
+		return false;
+	double low_i = hs_motion_pose_vertices(world, &world->bodies[i]);
+	return low_i > hs_motion_pose_vertices(world, &world->bodies[j]) + world->def.floor_tolerance;
 }
 
 static bool listed(const int *list, int n, int j) {

@@ -12,6 +12,7 @@
 #include "manipulate.h"
 #include "motion.h"
 #include "push.h"
+#include "stacking.h"
 #include "support.h"
 
 // Object i's world box at (pos, rot), from its memo when it was made at that pose's bits.
@@ -160,8 +161,14 @@ static void carry_along(hs_world *world, int moved, int current, rigid_move m) {
 				continue;
 			// interfering where i is now, or where it was before this move (an object resting on a
 			// held one that the hand lowers a little: under tracker noise it was left hovering)
-			if (!(bodies_overlap(world, i, j) || overlap_at_pose(world, i, was, was_rot, j)))
+			bool now = bodies_overlap(world, i, j), before = overlap_at_pose(world, i, was, was_rot, j);
+			if (!now && !before)
 				continue;
+			if (!before && hs_stack_pile_onto(world, j, i)) { // met from the side below its G: piled on i
+				hs_wake(world, j);
+				hs_grid_update(world, j);
+				continue;
+			}
 			hs_vec3 at = hs_add(m.to, hs_quat_rotate(m.turn, hs_sub(b->pos, m.from)));
 			b->prev = hs_add(b->prev, hs_sub(at, b->pos)); // carried, not thrown: no inertia is gained
 			b->pos = at;

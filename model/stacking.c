@@ -85,6 +85,25 @@ static double lift_from(const hs_world *world, const hs_body *a, const hs_body *
 	return hi;
 }
 
+bool hs_stack_pile_onto(hs_world *world, int object, int mover) {
+	hs_body *b = &world->bodies[object];
+	const hs_shape *shape = &world->shapes[b->shape];
+	double low = INFINITY;
+	for (int i = 0; i < shape->vertex_count; ++i) {
+		double z = b->pos.z + hs_quat_rotate(b->rot, shape->vertices[i]).z;
+		low = z < low ? z : low;
+	}
+	double lift = lift_from(world, b, &world->bodies[mover]);
+	if (!(lift <= b->pos.z - low))
+		return false;
+	// it stays sunk in by half the slop: interfering, so the next frames carry it along (§4.3),
+	// yet not deep enough to be lifted again (rectify_against)
+	lift -= 0.5 * HS_STACK_SLOP;
+	b->pos.z += lift;
+	b->prev.z += lift; // lifted, not thrown: no inertia gained
+	return true;
+}
+
 static bool is_under(const hs_world *world, int object, int j, double z) {
 	return j != object && world->bodies[j].pos.z <= z;
 }

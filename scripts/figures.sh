@@ -13,14 +13,14 @@ fig() { # name, scenario, times, what it shows
 	n=$((n + 1))
 	printf 'figures: %-34s %s\n' "$1.png" "$4"
 }
-# 1999 paper (Koutek & Post / the hand model)
+# the 1999 virtual-hand paper ("A Model for Manipulation of Objects with Virtual Hand in 3D Virtual Space")
 fig 1999_fig7b_scene         hand/seed_scene_hand          0,1,2,3.5     "Fig. 7b: the scene, ten cubes, a hand grasps two"
 fig 1999_fig8_polyhedra      polyhedra_drop                0,0.4,0.8,3   "Fig. 8: arbitrary polyhedra fall, tip and rest"
 fig 1999_fig9_flick          hand/flick_pyramid            0,0.9,1.2,2.6 "Fig. 9: a flick tips the pyramid over"
 fig 1999_fig10_throw         hand/throw_at_target          0.5,1,1.3,3   "Fig. 10: a throw at the target"
-fig 1999_fig11_paper         hand/stack_l_block_paper      0,1,2,3       "Fig. 11: L-block pushed onto the cube, paper stacking"
-fig 1999_fig11_support       hand/stack_l_block_support    0,1,2,3       "Fig. 11: the same with support stacking"
-# the Responsive Workbench paper
+fig 1999_fig11_paper         hand/push_l_block_into_cube_paper   0.5,1.0,1.2,2.4   "Fig. 11: an L-block pushed into a cube, which piles onto it (paper stacking)"
+fig 1999_fig11_support       hand/push_l_block_into_cube_support 0.5,1.0,1.2,2.4   "Fig. 11: the same push, support stacking: the cube pushed along"
+# the Responsive Workbench paper (Koutek & Post, "Dynamics in Interaction on the Responsive Workbench")
 fig workbench_fig1_springs   spring/lift_heavy_and_light   0,2,4,8       "Fig. 1: springs of a heavy and a light object"
 fig workbench_fig3_pull_push spring/pull_push_floor        0,2,4,8       "Fig. 3: pull and push on the floor"
 fig workbench_fig4_wall      spring/pull_into_wall         0,1,2,4       "Fig. 4: the wall stops the object, the spring stretches"

@@ -8,6 +8,7 @@
 #include <cmocka.h>
 
 #include "broadphase.h"
+#include "manipulate.h"
 #include "stacking.h"
 #include "support.h"
 #include "world_internal.h"
@@ -131,6 +132,43 @@ static void test_paper_stack_falls_as_one(void **state) {
 		}
 		hs_world_destroy(w);
 	}
+}
+
+// Paper mode, Fig. 11 (docs/model.md §6): a 10 cm cube that an L-block's 2.5 cm foot has met 3 mm
+// deep from the side is piled onto the foot: lifted exactly 2.5 cm less half the 1e-9 m
+// interference depth (interfering, so carried from then on); left there, the L-block on the floor
+// holds it up and it stays. A flat box 4 cm tall met the same way is not lifted (2.5 cm is more
+// than its G's 2 cm above its base: the foot is not below its G).
+static void test_paper_push_piles_onto_foot(void **state) {
+	(void)state;
+	hs_world *w = world_with(HS_STACKING_PAPER);
+	hs_shape *l = hs_shape_l_block(hs_v3(0.08, 0.04, 0.08), 0.025, NULL);
+	hs_object_def od = hs_default_object_def();
+	od.shape = hs_world_add_shape(w, l, NULL);
+	hs_shape_destroy(l);
+	double g = 0.0287962962962963; // G of the L-block, x and z from its back lower edge
+	od.position = hs_v3(0.0, 0.0, g);
+	hs_object_id lb = hs_world_add_object(w, &od, NULL);
+	double front = 0.08 - g;                                              // the foot's front face
+	hs_object_id cube = add_box(w, hs_v3(0.1, 0.1, 0.1), hs_v3(front - 0.003 + 0.05, 0, 0.05));
+	hs_object_id flat = add_box(w, hs_v3(0.1, 0.1, 0.04), hs_v3(front - 0.003 + 0.05, 0.2, 0.02));
+	hs_body *c = &w->bodies[cube.index1 - 1], *f = &w->bodies[flat.index1 - 1];
+	double fall = c->pos.z - c->prev.z;
+	assert_true(hs_stack_pile_onto(w, (int)cube.index1 - 1, (int)lb.index1 - 1));
+	assert_near(c->pos.z, 0.075 - 0.5e-9, 1e-12);
+	assert_near(c->pos.z - c->prev.z, fall, 1e-15); // lifted, not thrown: its motion is as it was
+	assert_true(hs_objects_interfere(w, (int)cube.index1 - 1, (int)lb.index1 - 1));
+	f->pos.y = 0.0; // the same place, in the cube's stead
+	c->pos.y = c->prev.y = 0.3;
+	assert_false(hs_stack_pile_onto(w, (int)flat.index1 - 1, (int)lb.index1 - 1));
+	assert_near(f->pos.z, 0.02, 1e-15);
+	f->pos.y = f->prev.y = 0.3;
+	c->pos.y = c->prev.y = 0.0;
+	hs_grid_update(w, (int)cube.index1 - 1);
+	hs_grid_update(w, (int)flat.index1 - 1);
+	hs_object_state s = run(w, cube, 30);
+	assert_near(s.position.z, 0.075 - 0.5e-9, 1e-12); // held up by the foot, the foot by the floor
+	hs_world_destroy(w);
 }
 
 // Both modes: a cube placed 2 cm deep in another (faces flush: no vertex strictly inside) is
@@ -398,6 +436,7 @@ int main(void) {
 	    cmocka_unit_test(test_support_overhang_past_edge_tips),
 	    cmocka_unit_test(test_paper_mode_stops_at_interference),
 	    cmocka_unit_test(test_paper_stack_falls_as_one),
+	    cmocka_unit_test(test_paper_push_piles_onto_foot),
 	    cmocka_unit_test(test_placed_inside_is_rectified),
 	    cmocka_unit_test(test_drops_land_on_top_face),
 	    cmocka_unit_test(test_support_tilted_landing_settles),
