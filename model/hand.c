@@ -455,8 +455,8 @@ static unsigned local_pose(const hs_hand_def *def, const hs_glove_table *table, 
 // Check lines (§3.1) of segment s: the 4 long edges of a square prism around it, edge e offset from
 // the axis by r along the segment's local +y, −y, +z, −z. Its ends are the check points mirrored
 // back (a sign: exact).
-static void local_segment_lines(const hs_hand_def *def, const hs_vec3 points[HS_HAND_POINTS], const hs_quat segment[15],
-                                int s, hs_vec3 out[4][2]) {
+void hs_hand_segment_lines(const hs_hand_def *def, const hs_vec3 points[HS_HAND_POINTS], const hs_quat segment[15],
+                           int s, hs_vec3 out[4][2]) {
 	double rad = def->finger_radius;
 	const hs_vec3 offsets[4] = {{0.0, rad, 0.0}, {0.0, -rad, 0.0}, {0.0, 0.0, rad}, {0.0, 0.0, -rad}};
 	int a = 4 * (s / 3) + s % 3;
@@ -471,7 +471,7 @@ void hs_hand_local_shape_with(const hs_hand_def *def, const hs_glove_table *tabl
 	local_pose(def, table, sensors, &pose, NULL);
 	memcpy(points, pose.points, sizeof pose.points);
 	for (int s = 0; s < 15; s++)
-		local_segment_lines(def, pose.points, pose.segment, s, &lines[s * 4]);
+		hs_hand_segment_lines(def, pose.points, pose.segment, s, &lines[s * 4]);
 }
 
 void hs_hand_local_shape(const hs_hand_def *def, const uint8_t sensors[HS_GLOVE_SENSORS],
@@ -546,7 +546,7 @@ void hs_hand_kinematics(const hs_hand_def *def, hs_vec3 wrist_position, hs_quat 
 static void ready_local(hs_hand *hand, int s) {
 	if ((unsigned)hand->local_ready >> s & 1u)
 		return;
-	local_segment_lines(&hand->def, hand->local.points, hand->local.segment, s, &hand->local_lines[4 * s]);
+	hs_hand_segment_lines(&hand->def, hand->local.points, hand->local.segment, s, &hand->local_lines[4 * s]);
 	hand->local_ready = (uint16_t)(hand->local_ready | 1u << s);
 }
 
@@ -581,6 +581,12 @@ static inline void check_shape(const hs_hand *hand) { (void)hand; }
 #endif
 
 void hs_hand_update_shape(hs_hand *hand) {
+	if (hand->def.joint_driven) {
+		hs_hand_joint_pose(&hand->def, hand->joints, &hand->local);
+		hand->local_ready = 0;
+		local_bounds(hand);
+		return;
+	}
 	unsigned same = local_pose(&hand->def, &hand->glove, hand->sensors, &hand->local, hand);
 	check_shape(hand);
 	hand->local_ready = (uint16_t)(hand->local_ready & hs_finger_parts(same, 3)); // a finger's lines as they were
@@ -611,7 +617,7 @@ void hs_hand_place_segment(hs_hand *hand, int s) {
 	}
 	if (!(hand->prev_lines_ready & bit)) { // not read last frame: from the shape kept with it
 		hs_vec3 local[4][2];
-		local_segment_lines(&hand->def, hand->prev_local.points, hand->prev_local.segment, s, local);
+		hs_hand_segment_lines(&hand->def, hand->prev_local.points, hand->prev_local.segment, s, local);
 		place_vectors(hand->prev_place_m, hand->prev_wrist_pos, &local[0][0], &hand->prev_lines[4 * s][0], 8);
 		hand->prev_lines_ready = (uint16_t)(hand->prev_lines_ready | bit);
 	}
@@ -649,6 +655,8 @@ void hs_hand_keep_previous(hs_hand *hand) {
 	hand->prev_wrist_pos = hand->wrist_pos;
 	hand->prev_wrist_rot = hand->wrist_rot;
 	memcpy(hand->prev_sensors, hand->sensors, sizeof hand->sensors);
+	if (hand->def.joint_driven)
+		memcpy(hand->prev_joints, hand->joints, sizeof hand->joints);
 }
 
 void hs_hand_age_wrist(hs_hand *hand) {
@@ -698,7 +706,10 @@ void hs_hand_refresh(hs_hand *hand) {
 	}
 	// the previous points and bounds: the same calls that placed them, on the previous reading;
 	// its lines from the shape kept for them
-	local_pose(&hand->def, &hand->glove, hand->prev_sensors, &hand->local, hand);
+	if (hand->def.joint_driven)
+		hs_hand_joint_pose(&hand->def, hand->prev_joints, &hand->local);
+	else
+		local_pose(&hand->def, &hand->glove, hand->prev_sensors, &hand->local, hand);
 	hand->local_ready = 0;
 	local_bounds(hand);
 	hand->prev_place_m = hs_mat3_from_quat(hand->prev_wrist_rot);

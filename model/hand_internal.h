@@ -55,6 +55,9 @@ typedef struct hs_hand {
 	hs_vec3 prev_wrist_pos; // the reading the previous points were placed from
 	hs_quat prev_wrist_rot;
 	uint8_t prev_sensors[HS_GLOVE_SENSORS];
+	// a joint-driven hand's input (def.joint_driven; state, in place of the sensors): its check
+	// points in the wrist frame now and at the end of the last step
+	hs_vec3 joints[HS_HAND_POINTS], prev_joints[HS_HAND_POINTS];
 	bool placed; // set at least once: before that its previous points are its current ones
 	// tracking (hs_world_set_hand_tracked): untracked is the input for the next step; lost_frames
 	// counts the steps run untracked since it was last seen (docs/model.md §3 "Tracking loss")
@@ -149,6 +152,14 @@ void hs_hand_local_shape(const hs_hand_def *def, const uint8_t sensors[HS_GLOVE_
 void hs_hand_local_shape_with(const hs_hand_def *def, const hs_glove_table *table,
                               const uint8_t sensors[HS_GLOVE_SENSORS], hs_vec3 points[HS_HAND_POINTS],
                               hs_vec3 lines[HS_HAND_LINES][2]);
+// Check lines (§3.1) of segment s of a shape in the wrist frame (its points and segment frames).
+void hs_hand_segment_lines(const hs_hand_def *def, const hs_vec3 points[HS_HAND_POINTS], const hs_quat segment[15],
+                           int s, hs_vec3 out[4][2]);
+// A joint-driven hand's shape in the wrist frame (hand_joints.c): the points as given, each
+// segment's frame from its two points; lines (may be NULL) as hs_hand_segment_lines places them.
+void hs_hand_joint_pose(const hs_hand_def *def, const hs_vec3 joints[HS_HAND_POINTS], hs_hand_pose *pose);
+void hs_hand_joint_shape(const hs_hand_def *def, const hs_vec3 joints[HS_HAND_POINTS], hs_vec3 points[HS_HAND_POINTS],
+                         hs_vec3 lines[HS_HAND_LINES][2]);
 // Fills the glove table of a hand definition (once, when the hand is built).
 void hs_glove_table_build(const hs_hand_def *def, hs_glove_table *table);
 // The glove's deadband (docs/model.md §1), a play operator per sensor: used[i] is held[i] (the

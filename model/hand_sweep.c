@@ -38,6 +38,17 @@ static double chain_turn_deg(const hs_hand *hand) {
 	return (worst + palm) * DEG_PER_UNIT;
 }
 
+// A joint-driven hand: the largest turn of any segment relative to the wrist over the frame
+// (its frame now against a frame ago).
+static double joint_turn_deg(const hs_hand *hand) {
+	double worst = 0.0;
+	for (int s = 0; s < 15; ++s) {
+		double a = hs_quat_angle(hs_quat_mul(hand->local.segment[s], hs_quat_conj(hand->prev_local.segment[s])));
+		worst = a > worst ? a : worst;
+	}
+	return worst * (180.0 / HS_PI);
+}
+
 static double wrist_turn_deg(const hs_hand *hand) {
 	hs_quat a = hand->prev_wrist_rot, b = hand->wrist_rot;
 	if (a.w == b.w && a.x == b.x && a.y == b.y && a.z == b.z)
@@ -75,14 +86,22 @@ static double farthest_sq(hs_vec3 c, const hs_vec3 points[HS_HAND_POINTS], const
 	return hs_hand_farthest_sq(c, &lines[0][0], 2 * HS_HAND_LINES, hs_hand_farthest_sq(c, points, HS_HAND_POINTS, r_sq));
 }
 
-// The parts at k/S of the way: the kinematics of the interpolated reading.
+// The parts at k/S of the way: the kinematics of the interpolated reading (a joint-driven hand:
+// the shape of its joints interpolated linearly in the wrist frame).
 static void place_between(hs_hand *hand, int k, int steps) {
-	uint8_t sensors[HS_GLOVE_SENSORS];
-	for (int i = 0; i < HS_GLOVE_SENSORS; ++i) // to the nearest unit, halves up: integers only
-		sensors[i] = (uint8_t)(((int)hand->prev_sensors[i] * (steps - k) + (int)hand->sensors[i] * k + steps / 2) / steps);
 	double t = (double)k / steps;
 	hs_vec3 local_points[HS_HAND_POINTS], local_lines[HS_HAND_LINES][2];
-	hs_hand_local_shape_with(&hand->def, &hand->glove, sensors, local_points, local_lines);
+	if (hand->def.joint_driven) {
+		hs_vec3 joints[HS_HAND_POINTS];
+		for (int i = 0; i < HS_HAND_POINTS; ++i)
+			joints[i] = hs_lerp(hand->prev_joints[i], hand->joints[i], t);
+		hs_hand_joint_shape(&hand->def, joints, local_points, local_lines);
+	} else {
+		uint8_t sensors[HS_GLOVE_SENSORS];
+		for (int i = 0; i < HS_GLOVE_SENSORS; ++i) // to the nearest unit, halves up: integers only
+			sensors[i] = (uint8_t)(((int)hand->prev_sensors[i] * (steps - k) + (int)hand->sensors[i] * k + steps / 2) / steps);
+		hs_hand_local_shape_with(&hand->def, &hand->glove, sensors, local_points, local_lines);
+	}
 	hs_hand_place(local_points, (const hs_vec3(*)[2])local_lines, hs_lerp(hand->prev_wrist_pos, hand->wrist_pos, t),
 	              hs_quat_slerp(hand->prev_wrist_rot, hand->wrist_rot, t), hand->path_points[k - 1],
 	              hand->path_lines[k - 1]);
@@ -98,7 +117,7 @@ void hs_hand_sweep(hs_hand *hand, bool chords_only) {
 	}
 	double turn = 0.0; // (only read above HS_HAND_PATH_DEG)
 	if (!chords_only) {
-		double chain = chain_turn_deg(hand);
+		double chain = hand->def.joint_driven ? joint_turn_deg(hand) : chain_turn_deg(hand);
 		if (!turn_within_a_piece(hand, chain))
 			turn = chain + wrist_turn_deg(hand);
 	}

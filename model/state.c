@@ -55,6 +55,8 @@ static uint64_t hand_def_checksum(uint64_t h, const hs_hand_def *d) {
 			h = hs_state_mix_f64(h, d->segment_length[f][s]);
 		h = mix_vec3(h, d->base[f]);
 	}
+	if (d->joint_driven) // only when set: a glove hand's checksum is as it was
+		h = hs_state_mix(h, 1u);
 	return h;
 }
 
@@ -163,6 +165,10 @@ static HS_FORCE_INLINE void hand_io(hs_state_io *io, hs_hand *h) {
 	hs_state_rotation(io, &h->prev_wrist_rot);
 	for (int i = 0; i < HS_GLOVE_SENSORS; ++i)
 		hs_state_u8(io, &h->prev_sensors[i]);
+	for (int i = 0; h->def.joint_driven && i < HS_HAND_POINTS; ++i)
+		hs_state_vec3(io, &h->joints[i]);
+	for (int i = 0; h->def.joint_driven && i < HS_HAND_POINTS; ++i)
+		hs_state_vec3(io, &h->prev_joints[i]);
 	hs_state_bool(io, &h->placed);
 	hs_state_bool(io, &h->untracked);
 	hs_state_int_range(io, &h->lost_frames, 0, INT_MAX);
@@ -187,7 +193,7 @@ static HS_FORCE_INLINE void hand_io(hs_state_io *io, hs_hand *h) {
 
 // A hand's words in HASH mode, as hand_io visits them (every frame: 117 at the default window),
 // gathered to be mixed four lanes at a time. HS_HASH_SELFCHECK builds compare with hand_io's walk.
-#define HAND_WORDS_MAX (68 + 7 * HS_HAND_OLDER_MAX)
+#define HAND_WORDS_MAX (68 + 6 * HS_HAND_POINTS + 7 * HS_HAND_OLDER_MAX) // joint-driven: its joints twice
 static size_t put_vec3(uint64_t *w, size_t n, hs_vec3 v) {
 	w[n] = hs_state_bits(v.x), w[n + 1] = hs_state_bits(v.y), w[n + 2] = hs_state_bits(v.z);
 	return n + 3;
@@ -222,6 +228,10 @@ static size_t put_sensors(uint64_t *w, size_t n, const uint8_t v[HS_GLOVE_SENSOR
 static size_t hand_words(const hs_hand *h, uint64_t *w) {
 	size_t n = put_sensors(w, put_quat(w, put_vec3(w, 0, h->wrist_pos), h->wrist_rot), h->sensors);
 	n = put_sensors(w, put_quat(w, put_vec3(w, n, h->prev_wrist_pos), h->prev_wrist_rot), h->prev_sensors);
+	for (int i = 0; h->def.joint_driven && i < HS_HAND_POINTS; ++i)
+		n = put_vec3(w, n, h->joints[i]);
+	for (int i = 0; h->def.joint_driven && i < HS_HAND_POINTS; ++i)
+		n = put_vec3(w, n, h->prev_joints[i]);
 	w[n++] = h->placed ? 1u : 0u;
 	w[n++] = h->untracked ? 1u : 0u;
 	w[n++] = (uint64_t)(int64_t)h->lost_frames;

@@ -601,10 +601,24 @@ static hs_hand *hand_of(const hs_world *world, hs_hand_id id) {
 	return h >= 0 ? &world->hands[h] : NULL;
 }
 
+// The hand placed from its new reading (its shape made): the first placement moves nothing.
+static hs_status place_hand(hs_hand *hand) {
+	hs_hand_place_points(hand);
+	bool first = !hand->placed;
+	hand->placed = true;
+	hs_hand_update_bounds(hand);
+	if (first) { // no motion before the first pose, no closing either
+		hs_hand_keep_previous(hand);
+		hs_grasp_reset_pairs(hand);
+	}
+	return HS_OK;
+}
+
 hs_status hs_world_set_hand(hs_world *world, hs_hand_id id, hs_vec3 wrist_position, hs_quat wrist_orientation,
                             const uint8_t reading[HS_GLOVE_SENSORS]) {
 	hs_hand *hand = hand_of(world, id);
-	if (!hand || !reading || !within(wrist_position, HS_MAX_COORDINATE) || !hs_quat_is_unit(wrist_orientation))
+	if (!hand || hand->def.joint_driven || !reading || !within(wrist_position, HS_MAX_COORDINATE) ||
+	    !hs_quat_is_unit(wrist_orientation))
 		return HS_ERR_INVALID_ARGUMENT;
 	hand->wrist_pos = wrist_position;
 	hand->wrist_rot = hs_quat_normalize(wrist_orientation);
@@ -619,15 +633,25 @@ hs_status hs_world_set_hand(hs_world *world, hs_hand_id id, hs_vec3 wrist_positi
 		memcpy(hand->sensors, sensors, sizeof hand->sensors); // the glove moved: a new hand shape
 		hs_hand_update_shape(hand);
 	}
-	hs_hand_place_points(hand);
-	bool first = !hand->placed;
-	hand->placed = true;
-	hs_hand_update_bounds(hand);
-	if (first) { // no motion before the first pose, no closing either
-		hs_hand_keep_previous(hand);
-		hs_grasp_reset_pairs(hand);
+	return place_hand(hand);
+}
+
+hs_status hs_world_set_hand_joints(hs_world *world, hs_hand_id id, hs_vec3 wrist_position, hs_quat wrist_orientation,
+                                   const hs_vec3 points[HS_HAND_POINTS]) {
+	hs_hand *hand = hand_of(world, id);
+	if (!hand || !hand->def.joint_driven || !points || !within(wrist_position, HS_MAX_COORDINATE) ||
+	    !hs_quat_is_unit(wrist_orientation))
+		return HS_ERR_INVALID_ARGUMENT;
+	for (int i = 0; i < HS_HAND_POINTS; ++i)
+		if (!within(points[i], HS_MAX_COORDINATE))
+			return HS_ERR_INVALID_ARGUMENT;
+	hand->wrist_pos = wrist_position;
+	hand->wrist_rot = hs_quat_normalize(wrist_orientation);
+	if (!hand->placed || memcmp(hand->joints, points, sizeof hand->joints) != 0) {
+		memcpy(hand->joints, points, sizeof hand->joints); // a new hand shape
+		hs_hand_update_shape(hand);
 	}
-	return HS_OK;
+	return place_hand(hand);
 }
 
 hs_status hs_world_set_hand_tracked(hs_world *world, hs_hand_id id, bool tracked) {

@@ -388,6 +388,10 @@ typedef struct hs_hand_def {
 	double segment_length[5][3]; ///< m: per finger, its three segments from the base outward
 	hs_vec3 base[5];             ///< m: MCP (thumb: CMC) in the wrist frame of a right hand
 	double dip_per_pip;          ///< DIP = dip_per_pip × PIP (not sensed; default 2/3)
+	/// The hand is driven by tracked joint positions (hs_world_set_hand_joints), not by a glove:
+	/// its check points are the joints it is given (docs/model.md §1 "Joint-driven hands").
+	/// Default false. Fixed when the hand is added.
+	bool joint_driven;
 } hs_hand_def;
 
 /// Adult defaults. Wrist frame: x toward the fingertips, y toward the thumb (right hand),
@@ -442,11 +446,20 @@ hs_hand_id hs_world_add_hand(hs_world *world, const hs_hand_def *def, hs_status 
 /// The handle of the i-th hand (0 ≤ i < hands added), in the order added; null otherwise.
 hs_hand_id hs_world_hand_at(const hs_world *world, int i);
 /// Sets a hand's wrist pose and glove sensors for the next step (HS_ERR_INVALID_ARGUMENT for an
-/// invalid handle, NULL sensors, a non-unit orientation or a position beyond HS_MAX_COORDINATE).
+/// invalid handle, a joint-driven hand, NULL sensors, a non-unit orientation or a position beyond HS_MAX_COORDINATE).
 /// After the first call each sensor passes the world's glove_deadband: the hand keeps the value it
 /// used until the reading leaves ±glove_deadband around it, then follows the reading at that distance.
 hs_status hs_world_set_hand(hs_world *world, hs_hand_id hand, hs_vec3 wrist_position,
                             hs_quat wrist_orientation, const uint8_t sensors[HS_GLOVE_SENSORS]);
+/// Sets a joint-driven hand's (hs_hand_def.joint_driven) wrist pose and its 20 check points, in
+/// the wrist frame, for the next step: the hand's shape is the points as given (a left hand's as
+/// they are, not mirrored), no glove, no deadband; each finger segment's four check lines lie
+/// finger_radius around the line between its two check points (docs/model.md §1 "Joint-driven
+/// hands"). HS_ERR_INVALID_ARGUMENT for an invalid handle, a hand that is not joint-driven (and
+/// hs_world_set_hand for one that is), NULL points, a non-unit orientation, or a position or a
+/// point beyond HS_MAX_COORDINATE (or not finite).
+hs_status hs_world_set_hand_joints(hs_world *world, hs_hand_id hand, hs_vec3 wrist_position,
+                                   hs_quat wrist_orientation, const hs_vec3 points[HS_HAND_POINTS]);
 /// Says whether the hand's tracker sees the hand for the next step (hands start tracked). An
 /// untracked hand should be set (hs_world_set_hand) to the last pose it was seen in: it keeps its
 /// grasps for tracking_hold_s, then lets them go where they are (no velocity) and touches nothing
