@@ -8,7 +8,7 @@
 #include "error.h"
 #include "expect.h"
 #include "file_list.h"
-#include "hand_script.h"
+#include "hands.h"
 #include "hs_harness.h"
 #include "noise.h"
 #include "stylus_script.h"
