@@ -30,7 +30,7 @@ BENCH_OBJ := $(BENCH_SRC:bench/%.c=$(BENCH_OUT)/obj/%.o)
 # what the summary prints as the build: the compiler and the flags actually used
 BENCH_ID   = -DHS_BENCH_CC='"$(CC)"' -DHS_BENCH_FLAGS='"$(strip $(filter-out -I% -W% -D%,$(CFLAGS_ALL)))$(if $(filter 1,$(WERROR)), -Werror) (same as the library)"'
 
-.PHONY: bench-run bench-build bench-peers-note
+.PHONY: bench-run bench-build bench-objs bench-peers-note
 
 $(BENCH_OUT)/obj/%.o: bench/%.c bench/bench.h $(wildcard model/include/*.h harness/include/*.h) bench/bench.mk
 	@mkdir -p $(dir $@)
@@ -41,6 +41,8 @@ $(BENCH_BIN): $(BENCH_OBJ) $(LIBS)
 	$(CC) $(LDFLAGS) -o $@ $(BENCH_OBJ) $(LIBS) $(BENCH_LIBS) $(LDLIBS_ALL)
 
 bench-build: $(BENCH_BIN)
+# the objects alone, for `make check-calls`
+bench-objs: $(BENCH_OBJ)
 
 bench-peers-note:
 	@if [ ! -e $(ODE_HEADER) ] || [ ! -e $(MUJOCO_HEADER) ]; then \

@@ -1,6 +1,7 @@
 // capture.c — what the expectation checks record while the run passes, each from the current
 // frame: a state at a clause's frame, a reference pose, a window's before and after, a landing,
-// contact states, a release. Called from hs_scenario_step; none of it allocates.
+// contact states, a release. Called through the predicate table's rows (hs_expect_capture,
+// expect.c, at every step); none of it allocates.
 #include <limits.h>
 #include <math.h>
 #include <string.h>
@@ -160,17 +161,24 @@ void hs_capture_sequence(const hs_scenario *s, const hs_clause *c, hs_check *k, 
 		k->u.seq.overflow++;
 }
 
-void hs_capture_contact(const hs_scenario *s, const hs_clause *c, hs_check *k, long frame) {
+// never: the clause breaks when the object is in the state (never_contact), else when it is not
+// (grasped)
+static void capture_contact(const hs_scenario *s, const hs_clause *c, hs_check *k, long frame, bool never) {
 	if (frame < c->frame || frame > c->last_frame || k->u.still.moved)
 		return;
 	hs_object_state st = hs_scenario_state_of(s, k->object);
-	bool never = c->pred >= 0 && strcmp(hs_predicates[c->pred].name, "never_contact") == 0;
 	if (never ? (long)st.contact == c->count : (long)st.contact != c->count) {
 		k->u.still.moved = true; // "moved" from what the clause allows: the first breaking frame
 		k->u.still.moved_frame = frame;
 		k->u.still.state = st;
 	}
 	k->captured = frame == c->last_frame;
+}
+void hs_capture_never_contact(const hs_scenario *s, const hs_clause *c, hs_check *k, long frame) {
+	capture_contact(s, c, k, frame, true);
+}
+void hs_capture_grasped(const hs_scenario *s, const hs_clause *c, hs_check *k, long frame) {
+	capture_contact(s, c, k, frame, false);
 }
 
 // released: the object's last release; at most one release per frame, so none is missed.
@@ -181,24 +189,6 @@ void hs_capture_release(const hs_scenario *s, const hs_clause *c, hs_check *k, l
 	if (hs_world_spring_last_release(s->world, &release) == HS_OK && release.kind != HS_RELEASE_NONE &&
 	    hs_scenario_index_of(s, release.object) == k->object)
 		k->u.release = release;
-}
-
-void hs_expect_capture(hs_scenario *s) {
-	hs_expectations *e = &s->expect;
-	long f = s->frame;
-	while (e->capture_next < e->capture_count) {
-		hs_check *k = &e->checks[e->capture_order[e->capture_next]];
-		const hs_clause *c = &e->clauses[k->clause];
-		if (c->frame > f)
-			break;
-		hs_predicates[c->pred].capture(s, c, k, f);
-		e->capture_next++;
-	}
-	for (int i = 0; i < e->live_count; ++i) {
-		hs_check *k = &e->checks[e->live[i]];
-		const hs_clause *c = &e->clauses[k->clause];
-		hs_predicates[c->pred].capture(s, c, k, f);
-	}
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -382,3 +382,23 @@ void hs_expectations_free(hs_expectations *e) {
 	free(e->members);
 	memset(e, 0, sizeof *e);
 }
+
+// What the checks record from the frame just stepped: the at-based ones due by now (in frame
+// order), then every watching one (capture.c, through the table's rows).
+void hs_expect_capture(hs_scenario *s) {
+	hs_expectations *e = &s->expect;
+	long f = s->frame;
+	while (e->capture_next < e->capture_count) {
+		hs_check *k = &e->checks[e->capture_order[e->capture_next]];
+		const hs_clause *c = &e->clauses[k->clause];
+		if (c->frame > f)
+			break;
+		hs_predicates[c->pred].capture(s, c, k, f);
+		e->capture_next++;
+	}
+	for (int i = 0; i < e->live_count; ++i) {
+		hs_check *k = &e->checks[e->live[i]];
+		const hs_clause *c = &e->clauses[k->clause];
+		hs_predicates[c->pred].capture(s, c, k, f);
+	}
+}

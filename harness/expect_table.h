@@ -63,7 +63,8 @@ void hs_capture_swing(const hs_scenario *s, const hs_clause *c, hs_check *k, lon
 void hs_capture_lands(const hs_scenario *s, const hs_clause *c, hs_check *k, long frame);
 void hs_capture_sequence(const hs_scenario *s, const hs_clause *c, hs_check *k, long frame);
 // never_contact and grasped: the first frame of [from, to] that breaks the clause (in the still store)
-void hs_capture_contact(const hs_scenario *s, const hs_clause *c, hs_check *k, long frame);
+void hs_capture_never_contact(const hs_scenario *s, const hs_clause *c, hs_check *k, long frame);
+void hs_capture_grasped(const hs_scenario *s, const hs_clause *c, hs_check *k, long frame);
 void hs_capture_release(const hs_scenario *s, const hs_clause *c, hs_check *k, long frame);
 // A check's captures in a state file, word by word (state_io.h), as its row's `store` says.
 void hs_capture_put(hs_state_io *io, hs_store store, const hs_check *k);

@@ -1,5 +1,5 @@
-// hand_script.h — hand input (1999 paper §5.1: glove + tracker): keyframes or a recorded
-// glove+tracker file, sampled per frame.
+// hand_script.h — one hand's input (1999 paper §5.1: glove + tracker): keyframes or a recorded
+// glove+tracker file, sampled per frame (hand_script.c).
 #ifndef HS_HARNESS_HAND_SCRIPT_H
 #define HS_HARNESS_HAND_SCRIPT_H
 
@@ -8,7 +8,6 @@
 
 #include "error.h"
 #include "handspring.h"
-#include "noise.h"
 
 typedef struct hs_hand_key {
 	double t;      // s
@@ -36,7 +35,7 @@ void hs_hand_script_clear(hs_hand_script *script);
 // Errors are "PATH:LINE: what is wrong".
 bool hs_record_load(const char *path, hs_hand_script *script, hs_error *err);
 
-// A thrower's error on one hand's script (throw_error.c, hs_throw_error): the script runs `delay`
+// A thrower's error on one hand's script (set by throw_error.c from hs_throw_error): the script runs `delay`
 // late; after `from` the wrist is at pivot + turn (scale (w - pivot)) for the script's w, and the
 // glove reads the script at t - timing.
 typedef struct hs_thrower {
@@ -49,32 +48,5 @@ typedef struct hs_thrower {
 // The thrower's hand at time t (hs_hand_script_sample with the errors); whether it is tracked.
 bool hs_thrower_sample(const hs_thrower *thrower, const hs_hand_script *script, double t, hs_vec3 *wrist,
                        hs_quat *rot, uint8_t sensors[HS_GLOVE_SENSORS]);
-
-// What loading a hand's joint recording found (hs_scenario_hand_fit; scenarios/README.md,
-// "Recorded joint positions").
-typedef struct hs_hand_fit {
-	bool joints;   // the hand is driven by a joint recording
-	char *record;  // the file as the scenario names it
-	long samples;  // tracked samples
-	double rms_mm; // the fit's RMS distance over their recorded check points
-} hs_hand_fit;
-
-// The hands of a scenario and their scripts.
-typedef struct hs_hands {
-	int count;
-	char **names;
-	hs_hand_id *ids;
-	hs_hand_script *scripts;
-	hs_hand_def *defs; // as added to the world
-	hs_hand_fit *fits;
-	hs_thrower thrower; // a campaign's throw error (inactive: none)
-} hs_hands;
-
-// Gives every hand its pose and glove at time t (the end of the coming frame), with the input
-// noise of `options` when `noise` is not NULL, and whether it is tracked (an untracked hand gets
-// the pose its script holds).
-void hs_hands_drive(hs_world *world, const hs_hands *hands, double t, hs_noise *noise,
-                    const hs_noise_options *options);
-void hs_hands_free(hs_hands *hands);
 
 #endif

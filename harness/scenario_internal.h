@@ -1,5 +1,5 @@
 // scenario_internal.h — the scenario as the harness's files share it: what the file built, the
-// input scripts, the expectations and the run so far.
+// input scripts, the expectations and the run so far; the queries below are scenario_access.c's.
 #ifndef HS_HARNESS_SCENARIO_INTERNAL_H
 #define HS_HARNESS_SCENARIO_INTERNAL_H
 
@@ -8,7 +8,7 @@
 #include "error.h"
 #include "expect.h"
 #include "file_list.h"
-#include "hand_script.h"
+#include "hands.h"
 #include "hs_harness.h"
 #include "noise.h"
 #include "stylus_script.h"

@@ -44,7 +44,7 @@ int hs_find_object(const hs_scenario_parser *p, const yaml_node_t *node);
 // Fails with "unknown object 'N' in WHERE", the nearest name and, when there are few, all of them.
 bool hs_unknown_object(const hs_scenario_parser *p, const yaml_node_t *node, const char *where);
 
-// hand_script.c: the world's room for hands (before it is created), then the hands
+// hands.c: the world's room for hands (before it is created), then the hands
 bool hs_count_hands(hs_scenario_parser *p, const yaml_node_t *node, hs_world_def *def);
 bool hs_read_hands(hs_scenario_parser *p, const yaml_node_t *node);
 // hand_record.c: hand h's `record:` (a file name or a mapping) into its script; a joint recording

@@ -1,7 +1,8 @@
 // throw_error.c — a human thrower's error on one throw (hs_throw_error, docs/campaigns.md): the
 // swing scaled and turned about where it starts, the fingers opening early or late against the arm.
 // Applied to the script's readings before the input noise, as a person's arm and hand would differ
-// from one throw to the next before any tracker or glove measures them.
+// from one throw to the next before any tracker or glove measures them (hs_thrower_sample,
+// hand_script.c). This file sets a hand's thrower from the error.
 #include <math.h>
 
 #include "hand_script.h"
@@ -9,22 +10,6 @@
 #include "scenario_parser.h"
 
 static const double MAX_TIMING = 1.0; // s
-
-bool hs_thrower_sample(const hs_thrower *thrower, const hs_hand_script *script, double t, hs_vec3 *wrist,
-                       hs_quat *rot, uint8_t sensors[HS_GLOVE_SENSORS]) {
-	t -= thrower->delay;
-	bool tracked = hs_hand_script_sample(script, t, wrist, rot, sensors);
-	if (!(t > thrower->from))
-		return tracked;
-	hs_vec3 arm = hs_scale(hs_sub(*wrist, thrower->pivot), thrower->scale);
-	*wrist = hs_add(thrower->pivot, hs_quat_rotate(thrower->turn, arm));
-	if (thrower->timing != 0.0) { // the glove as the script has it `timing` earlier
-		hs_vec3 w;
-		hs_quat r;
-		hs_hand_script_sample(script, t - thrower->timing, &w, &r, sensors);
-	}
-	return tracked;
-}
 
 // The turn: elevation about the horizontal line across the swing (up positive), then azimuth
 // about the vertical.
