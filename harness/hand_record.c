@@ -1,6 +1,7 @@
 // hand_record.c — a hand's `record:` (scenarios/README.md, "Hands" and "Recorded joint
 // positions"): a file name, or a mapping of the file and how to read a joint recording (frame,
-// units, placement, minimum confidence, whether the hand takes the recording's size). The file is
+// units, placement, minimum confidence, whether the hand takes the recording's size, what the
+// joints drive: the fitted glove hand or the check points themselves). The file is
 // a glove + tracker recording or a joint recording, as its header says.
 #include <stdlib.h>
 #include <string.h>
@@ -10,9 +11,10 @@
 #include "scenario_internal.h"
 #include "scenario_parser.h"
 
-enum { R_FILE, R_FRAME, R_UNITS, R_ORIGIN, R_RPY, R_MIN_CONFIDENCE, R_FIT_HAND, R_COUNT };
-static const char *const record_keys[R_COUNT] = {"file",    "frame",          "units",   "origin",
-                                                 "rpy_deg", "min_confidence", "fit_hand"};
+enum { R_FILE, R_FRAME, R_UNITS, R_ORIGIN, R_RPY, R_MIN_CONFIDENCE, R_FIT_HAND, R_DRIVE, R_COUNT };
+static const char *const record_keys[R_COUNT] = {"file",    "frame",          "units",    "origin",
+                                                 "rpy_deg", "min_confidence", "fit_hand", "drive"};
+static const char *const drives[2] = {"glove", "joints"}; // drive: what the recorded joints drive
 static const double MAX_ORIGIN = 1000.0; // m, as every position
 
 // A word among `names`, with the line that says it.
@@ -46,6 +48,12 @@ static bool read_options(hs_scenario_parser *p, const hs_fields *f, hs_joint_opt
 		if (!(o->min_confidence >= 0.0 && o->min_confidence <= 1.0))
 			return hs_yaml_fail(&p->y, v[R_MIN_CONFIDENCE], "'min_confidence' must be within [0, 1], got %s",
 			                    hs_yaml_show(v[R_MIN_CONFIDENCE]).text);
+	}
+	if (v[R_DRIVE]) {
+		hs_joint_said drive;
+		if (!read_word(p, v[R_DRIVE], "drive", drives, 2, "glove or joints", &drive))
+			return false;
+		o->drive_joints = drive.value == 1;
 	}
 	return !v[R_FIT_HAND] || hs_yaml_bool(&p->y, v[R_FIT_HAND], "fit_hand", &o->fit_hand);
 }

@@ -20,12 +20,16 @@ static void sensors_between(const hs_hand_key *a, const hs_hand_key *b, double u
 	}
 }
 
-bool hs_hand_script_sample(const hs_hand_script *script, double t, hs_vec3 *wrist, hs_quat *rot,
-                           uint8_t sensors[HS_GLOVE_SENSORS]) {
+// The keys around t (a at or before it, b after) and the fraction u of the way from a to b; before
+// the first key and after the last the nearest key holds (u = 0). False when the hand is untracked
+// at t (scenarios/README.md, "Recorded joint positions"): the key at or before t is, or t lies
+// between a tracked key and an untracked one; the hand then holds a's pose (an untracked key holds
+// the last tracked pose): nothing is interpolated across the gap.
+static bool bracket(const hs_hand_script *script, double t, const hs_hand_key **ka, const hs_hand_key **kb, double *u) {
 	const hs_hand_key *keys = script->keys;
 	int n = script->key_count;
 	const hs_hand_key *a = &keys[0], *b = &keys[0];
-	double u = 0.0;
+	*u = 0.0;
 	if (t >= keys[n - 1].t) {
 		a = b = &keys[n - 1];
 	} else if (t > keys[0].t) {
@@ -39,12 +43,23 @@ bool hs_hand_script_sample(const hs_hand_script *script, double t, hs_vec3 *wris
 		}
 		a = &keys[lo];
 		b = &keys[hi];
-		u = (t - a->t) / (b->t - a->t);
+		*u = (t - a->t) / (b->t - a->t);
 	}
-	// untracked (scenarios/README.md, "Recorded joint positions"): the key at or before t is, or t
-	// lies between a tracked key and an untracked one. The hand holds a's pose (an untracked key
-	// holds the last tracked pose): nothing is interpolated across the gap.
-	if (!a->tracked || (u > 0.0 && !b->tracked)) {
+	*ka = a;
+	*kb = b;
+	if (!a->tracked || (*u > 0.0 && !b->tracked)) {
+		*kb = a;
+		*u = 0.0;
+		return false;
+	}
+	return true;
+}
+
+bool hs_hand_script_sample(const hs_hand_script *script, double t, hs_vec3 *wrist, hs_quat *rot,
+                           uint8_t sensors[HS_GLOVE_SENSORS]) {
+	const hs_hand_key *a, *b;
+	double u;
+	if (!bracket(script, t, &a, &b, &u)) {
 		*wrist = a->wrist;
 		*rot = a->rot;
 		sensors_between(a, a, 0.0, sensors);
@@ -54,6 +69,14 @@ bool hs_hand_script_sample(const hs_hand_script *script, double t, hs_vec3 *wris
 	*rot = u > 0.0 ? hs_quat_slerp(a->rot, b->rot, u) : a->rot;
 	sensors_between(a, b, u, sensors);
 	return true;
+}
+
+void hs_hand_script_joints(const hs_hand_script *script, double t, hs_vec3 joints[HS_HAND_POINTS]) {
+	const hs_hand_key *a, *b;
+	double u;
+	bracket(script, t, &a, &b, &u);
+	for (int i = 0; i < HS_HAND_POINTS; ++i)
+		joints[i] = u > 0.0 ? hs_lerp(a->joints[i], b->joints[i], u) : a->joints[i];
 }
 
 bool hs_record_load(const char *path, hs_hand_script *script, hs_error *err) {

@@ -14,6 +14,7 @@ typedef struct hs_hand_key {
 	hs_vec3 wrist; // m
 	hs_quat rot;
 	double sensors[HS_GLOVE_SENSORS]; // sensor units, interpolated linearly, rounded when applied
+	hs_vec3 joints[HS_HAND_POINTS];   // a joint-driven hand's check points, wrist frame, linear between keys
 	bool tracked; // false: the tracker had lost the hand; pose and sensors are the last tracked ones
 } hs_hand_key;
 
@@ -29,6 +30,9 @@ typedef struct hs_hand_script {
 // key). Keyframes and glove files are always tracked.
 bool hs_hand_script_sample(const hs_hand_script *script, double t, hs_vec3 *wrist, hs_quat *rot,
                            uint8_t sensors[HS_GLOVE_SENSORS]);
+// A joint-driven hand's joints at time t (wrist frame), between the keys hs_hand_script_sample
+// takes, held as it holds them.
+void hs_hand_script_joints(const hs_hand_script *script, double t, hs_vec3 joints[HS_HAND_POINTS]);
 // Frees a script's keys and leaves it empty (a load that failed half way).
 void hs_hand_script_clear(hs_hand_script *script);
 // Reads a recorded glove+tracker CSV (header t,x,y,z,qw,qx,qy,qz,s0..s17; any rate) into keys.

@@ -288,9 +288,21 @@ void hs_hands_drive(hs_world *world, const hs_hands *hands, double t, hs_noise *
 		                   : hs_hand_script_sample(&hands->scripts[h], t, &wrist, &rot, sensors);
 		// what a real glove and tracker report (hands in order: one generator, one sequence); a hand
 		// the tracker does not see is held where it was last seen, without new noise
-		if (noise && tracked)
-			hs_noise_hand(noise, options, &wrist, &rot, sensors);
-		hs_world_set_hand(world, hands->ids[h], wrist, rot, sensors);
+		bool joints_driven = hands->defs[h].joint_driven;
+		if (noise && tracked) { // a hand driven by its joints has no glove: no sensor noise is drawn
+			hs_noise_options o = *options;
+			o.glove_units = joints_driven ? 0 : o.glove_units;
+			hs_noise_hand(noise, &o, &wrist, &rot, sensors);
+		}
+		if (joints_driven) { // its joints, with the tracker's jitter on each
+			hs_vec3 joints[HS_HAND_POINTS];
+			hs_hand_script_joints(&hands->scripts[h], t, joints);
+			if (noise && tracked)
+				hs_noise_joints(noise, options, joints);
+			hs_world_set_hand_joints(world, hands->ids[h], wrist, rot, joints);
+		} else {
+			hs_world_set_hand(world, hands->ids[h], wrist, rot, sensors);
+		}
 		hs_world_set_hand_tracked(world, hands->ids[h], tracked);
 	}
 }

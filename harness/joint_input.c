@@ -102,10 +102,17 @@ static double fit_sensors(const hs_joint_file *f, const hs_hand_def *def, hs_han
 		for (int i = 0; i < HS_GLOVE_SENSORS; ++i)
 			keys[k].sensors[i] = s[i];
 		hs_hand_kinematics(def, keys[k].wrist, keys[k].rot, s, fitted, NULL);
+		if (def->joint_driven) { // the recorded joints, the fitted hand's where one is missing
+			hs_hand_kinematics(def, hs_v3(0, 0, 0), hs_quat_identity(), s, keys[k].joints, NULL);
+			for (int i = 0; i < HS_HAND_POINTS; ++i)
+				if (sample->present >> i & 1u)
+					keys[k].joints[i] = local[i];
+		}
 		for (int i = 0; i < HS_HAND_POINTS; ++i)
 			if (sample->present >> i & 1u) {
-				sum += hs_length_sq(hs_sub(fitted[i], world[i]));
 				points++;
+				if (!def->joint_driven)
+					sum += hs_length_sq(hs_sub(fitted[i], world[i]));
 			}
 	}
 	return points > 0 ? sqrt(sum / (double)points) * 1000.0 : 0.0;
@@ -135,6 +142,7 @@ bool hs_joint_record_load(const char *path, const hs_joint_options *options, hs_
 	hs_joint_file f;
 	if (!hs_joint_file_read(path, options, def->left, &f, err))
 		return false;
+	def->joint_driven = options->drive_joints;
 	long tracked = 0;
 	bool ok = classify(path, &f, options->min_confidence, &tracked, err);
 	hs_hand_key *keys = ok ? calloc((size_t)f.count, sizeof *keys) : NULL;

@@ -27,6 +27,8 @@ typedef struct hs_joint_options {
 	hs_quat rot;
 	double min_confidence;     // a sample of lower confidence is untracked (default 0.5)
 	bool fit_hand;             // the hand's size from the recording (default true)
+	bool drive_joints;         // the recorded joints are the hand's check points (`hand: joints`;
+	                           // default false: the 18-sensor glove hand fitted to them)
 } hs_joint_options;
 
 // The options of a bare `record: FILE`.
@@ -48,7 +50,10 @@ bool hs_joint_file_is_joints(const char *path);
 
 // Reads a joint recording into keys (wrist pose and sensor values per sample, untracked samples
 // holding the last tracked pose) for a hand of definition `def`, which takes the recording's size
-// when options->fit_hand. Errors are "PATH:LINE: what is wrong".
+// when options->fit_hand. With options->drive_joints the hand is joint-driven (def->joint_driven):
+// each key also holds the recorded joints in the wrist frame (a joint not recorded in a sample: the
+// fitted hand's), and the RMS reported is over the points the model uses (0 for the recorded ones).
+// Errors are "PATH:LINE: what is wrong".
 bool hs_joint_record_load(const char *path, const hs_joint_options *options, hs_hand_def *def,
                           hs_hand_script *script, hs_joint_report *report, hs_error *err);
 

@@ -88,6 +88,11 @@ void hs_noise_hand(hs_noise *noise, const hs_noise_options *options, hs_vec3 *wr
 	}
 }
 
+void hs_noise_joints(hs_noise *noise, const hs_noise_options *options, hs_vec3 joints[HS_HAND_POINTS]) {
+	for (int i = 0; options->joint > 0.0 && i < HS_HAND_POINTS; ++i)
+		joints[i] = hs_add(joints[i], uniform3(noise, options->joint));
+}
+
 // GSL's mt19937 state (gsl/rng/mt.c): 624 words of 32 bits, each kept in an unsigned long, and the
 // position of the next word. Its size is checked against gsl_rng_size before it is used.
 typedef struct mt_state {

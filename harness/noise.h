@@ -13,6 +13,9 @@
 // The Fastrak's static accuracy (workbench paper §5.1, [13]): RMS per axis of each reading.
 #define HS_STYLUS_NOISE_POSITION (0.03 * 0.0254)        // m: 0.03 inch
 #define HS_STYLUS_NOISE_ROTATION (0.15 * HS_PI / 180.0) // rad: 0.15° per component of the rotation vector
+// An optical hand tracker's jitter on each joint of a hand it holds still (docs/model.md §1
+// "Joint-driven hands"): ±1 mm per coordinate, uniform, the realistic noise's default.
+#define HS_JOINT_NOISE 0.001
 
 // What a scenario asks for (model.spring.noise_seed, model.input_noise).
 typedef struct hs_noise_options {
@@ -20,6 +23,7 @@ typedef struct hs_noise_options {
 	int glove_units; // hands: each sensor ± this many units, uniform, every frame (0: none)
 	double wrist;    // m, hands: each wrist coordinate ± this, uniform, every frame (0: none)
 	double wrist_rotation; // rad, hands: each component of a rotation vector ± this, uniform (0: none)
+	double joint;    // m, joint-driven hands: each joint coordinate ± this, uniform, every frame (0: none)
 } hs_noise_options;
 
 typedef struct hs_noise hs_noise;
@@ -43,6 +47,9 @@ void hs_noise_stylus(hs_noise *noise, hs_vec3 *position, hs_quat *orientation);
 // sensor in order ± options->glove_units, clamped to 0..255. Nothing is drawn for a zero amplitude.
 void hs_noise_hand(hs_noise *noise, const hs_noise_options *options, hs_vec3 *wrist, hs_quat *rotation,
                    uint8_t sensors[HS_GLOVE_SENSORS]);
+// Adds uniform noise to a joint-driven hand's joints (wrist frame): each coordinate of each joint,
+// in order, ± options->joint. Nothing is drawn for a zero amplitude.
+void hs_noise_joints(hs_noise *noise, const hs_noise_options *options, hs_vec3 joints[HS_HAND_POINTS]);
 
 // The generator's state as HS_NOISE_WORDS portable words (state files: scenario_state.c): GSL's
 // mt19937 624 words of 32 bits, then the position of the next one (0 to 624). Saving fails when

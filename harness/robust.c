@@ -6,8 +6,9 @@
 #include "scenario_internal.h"
 #include "scenario_parser.h"
 
-enum { R_DT, R_SEEDS, R_GLOVE, R_WRIST, R_WRIST_DEG, R_PHASES, R_COUNT };
-static const char *const robust_keys[R_COUNT] = {"dt", "seeds", "glove_units", "wrist_mm", "wrist_deg", "phases"};
+enum { R_DT, R_SEEDS, R_GLOVE, R_WRIST, R_WRIST_DEG, R_PHASES, R_JOINT, R_COUNT };
+static const char *const robust_keys[R_COUNT] = {"dt", "seeds", "glove_units", "wrist_mm", "wrist_deg", "phases",
+                                                 "joint_mm"};
 
 // dt: a list of 1 to HS_ROBUST_MAX_DTS frame times, each as the scenario's `dt` takes it.
 static bool read_dts(hs_scenario_parser *p, const yaml_node_t *node, hs_robust *r) {
@@ -25,7 +26,8 @@ static bool read_dts(hs_scenario_parser *p, const yaml_node_t *node, hs_robust *
 	return true;
 }
 
-// glove_units, wrist_mm, wrist_deg: the cells' noise levels (hands only); the ones not given are 0.
+// glove_units, wrist_mm, wrist_deg, joint_mm: the cells' noise levels (hands only); the ones not
+// given are 0.
 static bool read_levels(hs_scenario_parser *p, const hs_fields *f, hs_robust *r) {
 	int64_t units;
 	double mm;
@@ -42,13 +44,15 @@ static bool read_levels(hs_scenario_parser *p, const hs_fields *f, hs_robust *r)
 			                    hs_yaml_show(f->value[R_WRIST]).text);
 		r->levels.wrist = mm * 1e-3;
 	}
+	if (f->value[R_JOINT] && !hs_read_joint_mm(p, f->value[R_JOINT], &r->levels.joint))
+		return false;
 	return !f->value[R_WRIST_DEG] || hs_read_wrist_deg(p, f->value[R_WRIST_DEG], &r->levels.wrist_rotation);
 }
 
 bool hs_read_robust(hs_scenario_parser *p, const yaml_node_t *node, bool hands) {
 	hs_robust *r = &p->s->robust;
 	if (node->type != YAML_MAPPING_NODE)
-		return hs_yaml_fail(&p->y, node, "'robust' must be a mapping (dt, seeds, glove_units, wrist_mm, wrist_deg, phases), got %s",
+		return hs_yaml_fail(&p->y, node, "'robust' must be a mapping (dt, seeds, glove_units, wrist_mm, wrist_deg, joint_mm, phases), got %s",
 		                    hs_yaml_got(node).text);
 	hs_fields f;
 	if (!hs_yaml_mapping(&p->y, node, robust_keys, R_COUNT, "robust", &f))
@@ -73,6 +77,6 @@ bool hs_read_robust(hs_scenario_parser *p, const yaml_node_t *node, bool hands) 
 			                    robust_keys[i]);
 	if (f.value[R_PHASES] && !hs_yaml_bool(&p->y, f.value[R_PHASES], "phases", &r->phases))
 		return false;
-	r->has_levels = f.value[R_GLOVE] || f.value[R_WRIST] || f.value[R_WRIST_DEG];
+	r->has_levels = f.value[R_GLOVE] || f.value[R_WRIST] || f.value[R_WRIST_DEG] || f.value[R_JOINT];
 	return read_levels(p, &f, r);
 }

@@ -79,12 +79,14 @@ static void realistic_noise(hs_scenario_parser *p, bool hands) {
 		p->noise.glove_units = 4;
 		p->noise.wrist = HS_STYLUS_NOISE_POSITION;
 		p->noise.wrist_rotation = HS_STYLUS_NOISE_ROTATION;
+		p->noise.joint = HS_JOINT_NOISE;
 	}
 	double k = p->options->noise_scale;
 	if (k > 0.0) { // a campaign's noise axis: the levels times k
 		p->noise.glove_units = (int)lround(p->noise.glove_units * k);
 		p->noise.wrist *= k;
 		p->noise.wrist_rotation *= k;
+		p->noise.joint *= k;
 		p->stylus_scale = k;
 	}
 }

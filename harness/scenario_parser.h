@@ -34,6 +34,8 @@ bool hs_read_dt(hs_scenario_parser *p, const yaml_node_t *node);
 bool hs_read_dt_value(hs_scenario_parser *p, const yaml_node_t *node, const char *key, double *out);
 // wrist_deg (model.input_noise, robust): degrees within [0, 180], into radians
 bool hs_read_wrist_deg(hs_scenario_parser *p, const yaml_node_t *node, double *rad);
+// joint_mm (model.input_noise, robust): millimetres within [0, 100], into metres
+bool hs_read_joint_mm(hs_scenario_parser *p, const yaml_node_t *node, double *joint);
 bool hs_read_duration(hs_scenario_parser *p, const yaml_node_t *node);
 bool hs_read_gravity(hs_scenario_parser *p, const yaml_node_t *node, hs_world_def *def);
 bool hs_read_model(hs_scenario_parser *p, const yaml_node_t *node, hs_world_def *def);

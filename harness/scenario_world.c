@@ -180,8 +180,18 @@ bool hs_read_gravity(hs_scenario_parser *p, const yaml_node_t *node, hs_world_de
 	return hs_yaml_bounded_vec3(&p->y, node, "gravity", HS_MAX_GRAVITY, "m/s^2", &def->gravity);
 }
 
-enum { IN_GLOVE, IN_WRIST, IN_SEED, IN_WRIST_DEG, IN_COUNT };
-static const char *const input_noise_keys[IN_COUNT] = {"glove_units", "wrist_mm", "seed", "wrist_deg"};
+enum { IN_GLOVE, IN_WRIST, IN_SEED, IN_WRIST_DEG, IN_JOINT, IN_COUNT };
+static const char *const input_noise_keys[IN_COUNT] = {"glove_units", "wrist_mm", "seed", "wrist_deg", "joint_mm"};
+
+bool hs_read_joint_mm(hs_scenario_parser *p, const yaml_node_t *node, double *joint) {
+	double mm;
+	if (!hs_yaml_number(&p->y, node, "joint_mm", &mm))
+		return false;
+	if (!(mm >= 0.0 && mm <= 100.0))
+		return hs_yaml_fail(&p->y, node, "'joint_mm' must be within [0, 100] mm, got %s", hs_yaml_show(node).text);
+	*joint = mm * 1e-3;
+	return true;
+}
 
 // model.input_noise: a glove's and a tracker's noise on hand input, from a seeded generator.
 static bool read_input_noise(hs_scenario_parser *p, const yaml_node_t *node) {
@@ -211,6 +221,8 @@ static bool read_input_noise(hs_scenario_parser *p, const yaml_node_t *node) {
 			                    hs_yaml_show(f.value[IN_WRIST]).text);
 		p->noise.wrist = mm * 1e-3;
 	}
+	if (f.value[IN_JOINT] && !hs_read_joint_mm(p, f.value[IN_JOINT], &p->noise.joint))
+		return false;
 	return !f.value[IN_WRIST_DEG] || hs_read_wrist_deg(p, f.value[IN_WRIST_DEG], &p->noise.wrist_rotation);
 }
 

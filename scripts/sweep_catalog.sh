@@ -31,7 +31,9 @@ for f in "$dir"/*.yaml; do
 		continue
 	fi
 	# the guard: the matrix and the noise levels the sweep ran with
-	why=$(awk '
+	joints=0
+	grep -q 'drive: *joints' "$f" && joints=1
+	why=$(awk -v joints="$joints" '
 	BEGIN { want["1/12"] = 1 / 12; want["1/17"] = 1 / 17; want["1/30"] = 1 / 30; want["1/60"] = 1 / 60; want["1/72"] = 1 / 72
 	        want["1/90"] = 1 / 90; want["1/120"] = 1 / 120 }
 	function value(s,   p) {                  # a frame time as the file wrote it: a fraction or a number
@@ -50,6 +52,8 @@ for f in "$dir"/*.yaml; do
 		if (g < 4) print "robust.glove_units is " g ", at least 4 needed"
 		if (mm < 0.762) print "robust.wrist_mm is " mm ", at least 0.762 needed"
 		if (deg < 0.15) print "robust.wrist_deg is " deg ", at least 0.15 needed"
+		j = match($0, /joints \+-[0-9.e+-]+ mm/) ? substr($0, RSTART + 9, RLENGTH - 12) + 0 : 0
+		if (joints && j < 1) print "robust.joint_mm is " j ", at least 1 needed for a hand driven by its joints"
 		next
 	}
 	/^dt / { rows = 1; next }

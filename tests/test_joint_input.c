@@ -611,6 +611,46 @@ static void test_fit_hand(void **state) {
 	}
 }
 
+// drive: joints (scenarios/README.md, "Driven by the joints"): the hand's check points are the
+// recorded landmarks 1-20 at every frame that falls on a sample (the recording's frame, placed as
+// the scenario says), where the glove hand fitted to the same file is only near them; the
+// definition is joint-driven and the fit reports 0 mm.
+static void test_drive_joints(void **state) {
+	(void)state;
+	rec r = rec_read("scenarios/hand/joints_mediapipe.csv", 40);
+	rec_style st = {.scale = 1.0};
+	rec_write("driven.csv", &r, &st);
+	hs_scenario *s = load_record("driven.yaml", "{ file: driven.csv, origin: [0.01, -0.02, 0.03], drive: joints }");
+	hs_scenario *g = load_record("fitted.yaml", "{ file: driven.csv, origin: [0.01, -0.02, 0.03] }");
+	assert_true(s->hands.defs[0].joint_driven);
+	assert_false(g->hands.defs[0].joint_driven);
+	double rms = -1.0;
+	assert_true(hs_scenario_hand_fit(s, 0, &rms, NULL, NULL));
+	assert_true(rms == 0.0);
+	double glove_off = 0.0;
+	for (int f = 1; f <= 12; ++f) { // frame f ends at t = f / 60 = sample 2 f (120 samples a second)
+		assert_true(hs_scenario_step(s));
+		assert_true(hs_scenario_step(g));
+		hs_vec3 p[HS_HAND_POINTS], q[HS_HAND_POINTS];
+		hs_world *w = hs_scenario_world(s), *wg = hs_scenario_world(g);
+		assert_int_equal(hs_world_hand_points(w, hs_world_hand_at(w, 0), p), HS_OK);
+		assert_int_equal(hs_world_hand_points(wg, hs_world_hand_at(wg, 0), q), HS_OK);
+		const double *row = &r.v[2 * f * r.cols];
+		for (int i = 0; i < HS_HAND_POINTS; ++i) {
+			hs_vec3 want = hs_v3(row[1 + 3 * (i + 1)] + 0.01, row[2 + 3 * (i + 1)] - 0.02, row[3 + 3 * (i + 1)] + 0.03);
+			assert_true(hs_distance(p[i], want) < 1e-12);
+			double d = hs_distance(q[i], want);
+			glove_off = d > glove_off ? d : glove_off;
+		}
+	}
+	assert_true(glove_off > 1e-6); // the fitted glove is near the recorded points, not on them
+	hs_scenario_destroy(s);
+	hs_scenario_destroy(g);
+	free(r.v);
+	load_fails("bad_drive.yaml", "{ file: driven.csv, drive: bones }", NULL,
+	           "/bad_drive.yaml:8: 'drive' must be glove or joints, got 'bones'");
+}
+
 // The text of the first ``` block of `kind` after `marker` in a file (malloc'd).
 static char *doc_block(const char *path, const char *marker, const char *kind) {
 	FILE *f = fopen(path, "r");
@@ -686,6 +726,7 @@ int main(void) {
 	    cmocka_unit_test(test_tracked_and_confidence),
 	    cmocka_unit_test(test_plausibility),
 	    cmocka_unit_test(test_fit_hand),
+	    cmocka_unit_test(test_drive_joints),
 	    cmocka_unit_test(test_left_hand),
 	    cmocka_unit_test(test_readme_example),
 	};
