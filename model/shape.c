@@ -1,19 +1,8 @@
 // shape.c — the built-in shapes (box, square pyramid, L-block, UV ellipsoid, sphere) and user
-// polyhedra, all made by the one builder of shape_build.c, and their release.
+// polyhedra, all made by the one builder of shape_build.c (which also releases them).
 #include <stdlib.h>
 
 #include "shape_build.h"
-
-void hs_shape_destroy(hs_shape *shape) {
-	if (!shape)
-		return;
-	free(shape->parts);
-	free(shape->vertices);
-	free(shape->faces);
-	free(shape->face_vertices);
-	free(shape->edges);
-	free(shape);
-}
 
 static bool valid_size(double x) { return isfinite(x) && x > 0.0; }
 static bool valid_size3(hs_vec3 s) { return valid_size(s.x) && valid_size(s.y) && valid_size(s.z); }

@@ -1,7 +1,8 @@
 // shape_build.c — the one builder of rigid polyhedra made of convex parts: it validates each
 // convex part (topology, planar and convex faces, a convex solid), orients its faces outward,
 // lists its edges, integrates volume and centre of gravity G (divergence theorem), then moves
-// the body frame to G. Built-ins (shape.c) and user polyhedra share the same checks.
+// the body frame to G. Built-ins (shape.c) and user polyhedra share the same checks. What it
+// allocates, hs_shape_destroy frees.
 #include <limits.h>
 #include <stdarg.h>
 #include <stdio.h>
@@ -522,4 +523,15 @@ hs_shape *hs_shape_build(hs_shape_kind kind, const part_src *parts, int part_cou
 		why[0] = '\0';
 	hs_set_status(status, HS_OK);
 	return shape;
+}
+
+void hs_shape_destroy(hs_shape *shape) {
+	if (!shape)
+		return;
+	free(shape->parts);
+	free(shape->vertices);
+	free(shape->faces);
+	free(shape->face_vertices);
+	free(shape->edges);
+	free(shape);
 }

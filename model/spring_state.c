@@ -1,4 +1,4 @@
-// spring_state.c — the spring system's part of the world's state walk (state.h): every field of
+// spring_state.c — the spring system's part of the world's state walk (state_walk.h): every field of
 // the spring system and its tracker that a later step reads, one 64-bit word each.
 //
 // Left out, on purpose: the definition and what derives from it (def, the tracker's period, window
@@ -10,8 +10,9 @@
 // numbers, stylus orientations that are not unit quaternions.
 #include <string.h>
 
+#include "spring_state.h"
 #include "spring_world.h"
-#include "state.h"
+#include "state_walk.h"
 #include "world_internal.h"
 #include "spring_system.h"
 

@@ -12,7 +12,8 @@
 
 #include "broadphase.h"
 #include "inline.h"
-#include "state.h"
+#include "spring_state.h"
+#include "state_walk.h"
 #include "world_internal.h"
 
 #define HS_STATE_MAGIC 0x3145544154535348ull // "HSSTATE1", little-endian

@@ -18,22 +18,6 @@ const char *const hs_check_usage =
     "run's state hashes equal to the first's, frame by frame. 'handspring golden DIR' writes them.\n"
     "Exit status: 0 all match, 1 one does not, 2 bad input (a folder or file that cannot be read).\n";
 
-// The folder 'golden' beside dir ("scenarios" -> "golden", "a/b/scenarios" -> "a/b/golden").
-char *hs_golden_beside(const char *dir) {
-	size_t n = strlen(dir);
-	while (n > 1 && dir[n - 1] == '/')
-		--n;
-	size_t cut = n;
-	while (cut > 0 && dir[cut - 1] != '/')
-		--cut;
-	char *r = malloc(cut + 8);
-	if (r) {
-		memcpy(r, dir, cut);
-		strcpy(r + cut, "golden");
-	}
-	return r;
-}
-
 // Runs s to the end: its trajectory into *text, its per-frame hashes into *hashes (frame 0 first).
 static long run_one(hs_scenario *s, char **text, size_t *size, uint64_t **hashes) {
 	long cap = hs_scenario_frame_count(s) + 1, n = 0;

@@ -7,7 +7,5 @@
 extern const char *const hs_check_usage;
 // `handspring check` with the arguments after `check`; the exit status.
 int hs_check_main(int argc, char **argv);
-// The folder 'golden' beside `dir` (malloc'd; NULL when out of memory).
-char *hs_golden_beside(const char *dir);
 
 #endif

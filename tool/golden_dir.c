@@ -10,8 +10,22 @@
 #include <string.h>
 #include <sys/stat.h>
 
-#include "golden.h"
 #include "golden_dir.h"
+
+char *hs_golden_beside(const char *dir) {
+	size_t n = strlen(dir);
+	while (n > 1 && dir[n - 1] == '/')
+		--n;
+	size_t cut = n;
+	while (cut > 0 && dir[cut - 1] != '/')
+		--cut;
+	char *r = malloc(cut + 8);
+	if (r) {
+		memcpy(r, dir, cut);
+		strcpy(r + cut, "golden");
+	}
+	return r;
+}
 
 char *hs_golden_default(const char *dir) {
 	size_t n = strlen(dir);

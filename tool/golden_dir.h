@@ -6,6 +6,9 @@
 #include <stdbool.h>
 #include <stddef.h>
 
+// The folder 'golden' beside `dir` ("scenarios" -> "golden", "a/b/scenarios" -> "a/b/golden"; malloc'd,
+// NULL when out of memory).
+char *hs_golden_beside(const char *dir);
 // The default goldens folder of `dir` (malloc'd; NULL when out of memory): for a folder named
 // 'scenarios' the folder 'golden' beside it (the catalog's layout: scenarios/ and golden/), for
 // any other DIR/golden.

@@ -1,9 +1,9 @@
-// state_io.c — the word visitor of state.h: every state field as one 64-bit little-endian word,
-// sized, saved, checked, loaded or hashed by the mode of the walk.
+// state_walk.c — the word visitor of state_walk.h: every state field as one 64-bit little-endian
+// word, sized, saved, checked, loaded or hashed by the mode of the walk.
 #include <limits.h>
 #include <string.h>
 
-#include "state.h"
+#include "state_walk.h"
 
 uint64_t hs_state_mix_f64(uint64_t h, double v) {
 	uint64_t bits;
