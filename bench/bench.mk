@@ -8,7 +8,7 @@ BENCH_OUT := $(BUILD)/bench
 BENCH_BIN := $(BENCH_OUT)/bin/hs_bench
 BENCH_SRC := bench/bench_main.c bench/bench_util.c bench/frame_rate.c bench/accuracy.c \
              bench/throw_fidelity.c bench/peers.c bench/collide_scaling.c bench/race.c \
-             bench/hand_scaling.c
+             bench/hand_scaling.c bench/uv_ball.c bench/joint_noise.c
 BENCH_DEFS :=
 BENCH_LIBS :=
 # where the peers' headers are looked for (point them elsewhere, or at nothing, to leave a peer out)
