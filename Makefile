@@ -225,6 +225,7 @@ check:
 	@$(MAKE) --no-print-directory check-resume
 	@$(MAKE) --no-print-directory check-files
 	@$(MAKE) --no-print-directory check-golden-dir
+	@$(MAKE) --no-print-directory check-bench-cmd
 	@$(MAKE) --no-print-directory check-python
 	@$(MAKE) --no-print-directory check-browser
 	@sh scripts/layout_check.sh
@@ -233,7 +234,7 @@ check:
 	@$(MAKE) --no-print-directory check-soak
 	@$(MAKE) --no-print-directory check-campaign
 	@$(MAKE) --no-print-directory figures
-	@echo "check: all suites passed (plain and ASan+UBSan, reliability, README examples, the docs' scenarios, resume, files in and out, golden folders, the Python bindings, the replay page in Chromium, layout, the hand scenarios' robustness sweep, the randomized fault soak, a campaign over GNU parallel, ssh and a resume, the papers' figures)"
+	@echo "check: all suites passed (plain and ASan+UBSan, reliability, README examples, the docs' scenarios, resume, files in and out, golden folders, handspring bench, the Python bindings, the replay page in Chromium, layout, the hand scenarios' robustness sweep, the randomized fault soak, a campaign over GNU parallel, ssh and a resume, the papers' figures)"
 
 # The tool's files in and out (scenarios/README.md, "How the tool writes files"): outputs that are inputs, /dev/full, planted links, pipes,
 # a full small file system (a tmpfs when root), endless inputs, the campaign lock and a part cut
@@ -252,6 +253,12 @@ check-files: all
 PYTHON  ?= /usr/bin/python3
 PY_VENV := $(BUILD)/python-venv
 .PHONY: check-python
+# `handspring bench` (docs/tool.md): its report, the frames it steps, a missing file, bad values,
+# --instr with and without valgrind (tests/bench_cmd.sh; no timing is asserted; a few seconds)
+.PHONY: check-bench-cmd
+check-bench-cmd: all
+	@sh tests/bench_cmd.sh $(TOOL)
+
 check-python: $(SOLIBS) $(TOOL)
 	@sh scripts/deps.sh python
 	@rm -rf $(PY_VENV)
