@@ -374,6 +374,11 @@ bench: all
 	@if [ -f bench/bench.mk ]; then $(MAKE) --no-print-directory -f Makefile -f bench/bench.mk bench-run; \
 	else echo "bench: no benchmarks yet"; fi
 
+# callgrind's instructions per frame of the honest, moving-glove and joint-driven frames (bench/bench.mk)
+.PHONY: bench-instr
+bench-instr: all
+	@$(MAKE) --no-print-directory -f Makefile -f bench/bench.mk bench-instr-run
+
 # Installs the headers (include/handspring/), both libraries (static, shared with their soname and
 # development links), handspring.pc and handspring-harness.pc, the tool, its man page
 # (MANDIR/man1/handspring.1) and the catalog (DATADIR/handspring/scenarios, replaced whole, with
