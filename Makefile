@@ -225,6 +225,7 @@ check:
 	@$(MAKE) --no-print-directory check-resume
 	@$(MAKE) --no-print-directory check-files
 	@$(MAKE) --no-print-directory check-golden-dir
+	@$(MAKE) --no-print-directory check-bench-cmd
 	@$(MAKE) --no-print-directory check-python
 	@$(MAKE) --no-print-directory check-browser
 	@sh scripts/layout_check.sh
@@ -234,7 +235,7 @@ check:
 	@$(MAKE) --no-print-directory check-soak
 	@$(MAKE) --no-print-directory check-campaign
 	@$(MAKE) --no-print-directory figures
-	@echo "check: all suites passed (plain and ASan+UBSan, reliability, README examples, the docs' scenarios, resume, files in and out, golden folders, the Python bindings, the replay page in Chromium, layout, the hand scenarios' robustness sweep, the randomized fault soak, a campaign over GNU parallel, ssh and a resume, the papers' figures)"
+	@echo "check: all suites passed (plain and ASan+UBSan, reliability, README examples, the docs' scenarios, resume, files in and out, golden folders, handspring bench, the Python bindings, the replay page in Chromium, layout, the hand scenarios' robustness sweep, the randomized fault soak, a campaign over GNU parallel, ssh and a resume, the papers' figures)"
 
 # The calls between source files, read from the objects' symbols (scripts/call_graph.sh): no
 # cycle within a layer, layers call one way (bench on model and harness only). Not part of check
@@ -264,6 +265,12 @@ check-files: all
 PYTHON  ?= /usr/bin/python3
 PY_VENV := $(BUILD)/python-venv
 .PHONY: check-python
+# `handspring bench` (docs/tool.md): its report, the frames it steps, a missing file, bad values,
+# --instr with and without valgrind (tests/bench_cmd.sh; no timing is asserted; a few seconds)
+.PHONY: check-bench-cmd
+check-bench-cmd: all
+	@sh tests/bench_cmd.sh $(TOOL)
+
 check-python: $(SOLIBS) $(TOOL)
 	@sh scripts/deps.sh python
 	@rm -rf $(PY_VENV)
@@ -378,6 +385,11 @@ bench: all
 	@sh scripts/deps.sh bench || echo "bench: continuing without the peers (ODE, MuJoCo)"
 	@if [ -f bench/bench.mk ]; then $(MAKE) --no-print-directory -f Makefile -f bench/bench.mk bench-run; \
 	else echo "bench: no benchmarks yet"; fi
+
+# callgrind's instructions per frame of the honest, moving-glove and joint-driven frames (bench/bench.mk)
+.PHONY: bench-instr
+bench-instr: all
+	@$(MAKE) --no-print-directory -f Makefile -f bench/bench.mk bench-instr-run
 
 # Installs the headers (include/handspring/), both libraries (static, shared with their soname and
 # development links), handspring.pc and handspring-harness.pc, the tool, its man page

@@ -66,6 +66,13 @@ void bench_summary_print(FILE *out, const bench_opts *opts);
 /// Records the machine's load average before the first timing (other processes skew medians).
 void bench_note_start(void);
 
+/// The grasp-start rule of every hand scene of the bench: the 1999 paper's (two contact normals
+/// 90° apart, no pressing toward each other nor closing asked). The seed scene's hand holds two
+/// adjacent cubes together, thumb on one and fingers on the other, as the paper's Experiment 3
+/// does; neither cube has opposed contacts, so handspring's default start rule never grasps them
+/// (scenarios/hand/seed_scene_hand.yaml runs the same rule for the same reason; docs/model.md §3).
+void bench_grasp_start(hs_world_def *wd);
+
 /// Folds 8 bytes into a running FNV-1a checksum.
 uint64_t bench_mix(uint64_t h, double x);
 
@@ -91,7 +98,12 @@ void bench_profile_collide(const char *spec);
 bench_stats bench_seed_measure(const bench_opts *opts, bool skip);
 /// N frames of the seed scene alone (for a profiler): 10 objects (or `objects`), 2 grasped; `honest`:
 /// the honest frame's input (noisy glove reading and turning wrist every frame, the hash every frame).
-void bench_profile_seed(long frames, int objects, bool skip, bool paper, bool honest);
+/// `deadband`: the measured scene's glove deadband in sensor units (−1: the world's default, 3).
+void bench_profile_seed(long frames, int objects, bool skip, bool paper, bool honest, int deadband);
+/// `--noisy-joints IN OUT`: a joint recording (handspring joints) with seeded uniform noise of
+/// ±BENCH_JOINT_NOISE_MM on every coordinate, as a hand tracker's jitter (bench/joint_noise.c).
+#define BENCH_JOINT_NOISE_MM 1.0
+int bench_noisy_joints(const char *in, const char *out);
 
 // ---------------------------------------------------------------------------------------------
 // The seed scene and the projectile, as every engine builds them (the peers use these numbers)

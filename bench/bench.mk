@@ -1,4 +1,4 @@
-# bench/bench.mk — `make bench [QUICK=1]`, read after the Makefile (its BUILD, CC, CFLAGS_ALL,
+# bench/bench.mk — `make bench [QUICK=1]` and `make bench-instr`, read after the Makefile (its BUILD, CC, CFLAGS_ALL,
 # LDLIBS_ALL, LIB): builds build/bench/bin/hs_bench with the library's own flags, runs it (progress
 # on stderr, tables and the summary on stdout), then draws bench/*.gp into build/bench/.
 # The peers are built only when their headers exist: ODE (libode-dev, <ode/ode.h>) and MuJoCo
@@ -8,7 +8,7 @@ BENCH_OUT := $(BUILD)/bench
 BENCH_BIN := $(BENCH_OUT)/bin/hs_bench
 BENCH_SRC := bench/bench_main.c bench/bench_util.c bench/frame_rate.c bench/accuracy.c \
              bench/throw_fidelity.c bench/peers.c bench/collide_scaling.c bench/race.c \
-             bench/hand_scaling.c
+             bench/hand_scaling.c bench/uv_ball.c bench/joint_noise.c
 BENCH_DEFS :=
 BENCH_LIBS :=
 # where the peers' headers are looked for (point them elsewhere, or at nothing, to leave a peer out)
@@ -30,7 +30,7 @@ BENCH_OBJ := $(BENCH_SRC:bench/%.c=$(BENCH_OUT)/obj/%.o)
 # what the summary prints as the build: the compiler and the flags actually used
 BENCH_ID   = -DHS_BENCH_CC='"$(CC)"' -DHS_BENCH_FLAGS='"$(strip $(filter-out -I% -W% -D%,$(CFLAGS_ALL)))$(if $(filter 1,$(WERROR)), -Werror) (same as the library)"'
 
-.PHONY: bench-run bench-build bench-objs bench-peers-note
+.PHONY: bench-run bench-build bench-objs bench-peers-note bench-instr-run
 
 $(BENCH_OUT)/obj/%.o: bench/%.c bench/bench.h $(wildcard model/include/*.h harness/include/*.h) bench/bench.mk
 	@mkdir -p $(dir $@)
@@ -57,3 +57,9 @@ bench-run: $(BENCH_BIN) bench-peers-note
 	@for s in bench/*.gp; do \
 		gnuplot -e "dir='$(BENCH_OUT)'; quick=$(if $(filter-out 0,$(QUICK)),1,0)" $$s || exit 1; done
 	@ls $(BENCH_OUT)/*.png $(BENCH_OUT)/*.svg
+
+# `make bench-instr` (docs/benchmarks.md, "Instructions per frame"): callgrind's instructions per
+# frame of the honest, moving-glove and joint-driven frames, the measured frames only, and their
+# checksums (bench/instr.sh); a table, status 0 whatever the counts (without valgrind it says so).
+bench-instr-run: $(BENCH_BIN) $(TOOL)
+	@sh bench/instr.sh $(BENCH_BIN) $(TOOL) $(BENCH_OUT)/instr

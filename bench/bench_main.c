@@ -7,7 +7,9 @@
 //                                 (N frames of the seed scene alone, 2 grasped, for perf; -honest: the
 //                                 honest frame's input, noisy glove, turning wrist, hash every frame;
 //                                 -paper: the paper's contact rule; callgrind
-//                                 --toggle-collect=fr_profiled_frames)
+//                                 --toggle-collect=fr_profiled_frames; after --deadband N, the measured
+//                                 world's glove deadband is N sensor units: 0, the moving-glove frame)
+//   hs_bench --noisy-joints IN OUT  (a joint recording with a tracker's jitter added: make bench-instr)
 //   hs_bench --profile-collide KIND,FRAMES[,N]   (box, hand, hand+box, spring, spring+box)
 //   hs_bench --profile-scaling ROW,VALUE[,FRAMES] (one point of the honest frame's scaling rows: faces
 //                                 6|32|128|512, grasped 0|1|2|5|10, hands 1|2|4, untouched[-nohash]
@@ -56,8 +58,20 @@ int main(int argc, char **argv) {
 	memset(&opts, 0, sizeof opts);
 	opts.out_dir = "build/bench";
 	const char *only = NULL;
+	int deadband = -1; // the world's default
 	for (int i = 1; i < argc; ++i) {
-		if (strcmp(argv[i], "--quick") == 0)
+		if (strcmp(argv[i], "--deadband") == 0 && i + 1 < argc) {
+			char *end;
+			long v = strtol(argv[++i], &end, 10);
+			if (*end != '\0' || end == argv[i] || v < 0 || v > HS_MAX_GLOVE_DEADBAND) {
+				fprintf(stderr, "hs_bench: --deadband takes 0 to %d sensor units, got '%s'\n", HS_MAX_GLOVE_DEADBAND,
+				        argv[i]);
+				return 2;
+			}
+			deadband = (int)v;
+		} else if (strcmp(argv[i], "--noisy-joints") == 0 && i + 2 < argc)
+			return bench_noisy_joints(argv[i + 1], argv[i + 2]);
+		else if (strcmp(argv[i], "--quick") == 0)
 			opts.quick = true;
 		else if (strcmp(argv[i], "--out") == 0 && i + 1 < argc)
 			opts.out_dir = argv[++i];
@@ -65,19 +79,19 @@ int main(int argc, char **argv) {
 			only = argv[++i];
 		else if (strcmp(argv[i], "--profile-seed") == 0 && i + 1 < argc) {
 			const char *comma = strchr(argv[i + 1], ',');
-			bench_profile_seed(atol(argv[i + 1]), comma ? atoi(comma + 1) : 10, true, false, false);
+			bench_profile_seed(atol(argv[i + 1]), comma ? atoi(comma + 1) : 10, true, false, false, deadband);
 			return 0;
 		} else if (strcmp(argv[i], "--profile-seed-honest") == 0 && i + 1 < argc) {
 			const char *comma = strchr(argv[i + 1], ',');
-			bench_profile_seed(atol(argv[i + 1]), comma ? atoi(comma + 1) : 10, true, false, true);
+			bench_profile_seed(atol(argv[i + 1]), comma ? atoi(comma + 1) : 10, true, false, true, deadband);
 			return 0;
 		} else if (strcmp(argv[i], "--profile-seed-paper") == 0 && i + 1 < argc) {
 			const char *comma = strchr(argv[i + 1], ',');
-			bench_profile_seed(atol(argv[i + 1]), comma ? atoi(comma + 1) : 10, true, true, false);
+			bench_profile_seed(atol(argv[i + 1]), comma ? atoi(comma + 1) : 10, true, true, false, deadband);
 			return 0;
 		} else if (strcmp(argv[i], "--profile-seed-noskip") == 0 && i + 1 < argc) {
 			const char *comma = strchr(argv[i + 1], ',');
-			bench_profile_seed(atol(argv[i + 1]), comma ? atoi(comma + 1) : 10, false, false, false);
+			bench_profile_seed(atol(argv[i + 1]), comma ? atoi(comma + 1) : 10, false, false, false, deadband);
 			return 0;
 		} else if (strcmp(argv[i], "--profile-scaling") == 0 && i + 1 < argc) {
 			bench_profile_scaling(argv[i + 1]);

@@ -330,3 +330,8 @@ void bench_split_spec(const char *spec, char *name, size_t size, const char **fi
 	if (*second)
 		++*second;
 }
+
+void bench_grasp_start(hs_world_def *wd) {
+	wd->grasp_opposed = false;
+	wd->grasp_close_mm = 0.0;
+}

@@ -138,51 +138,14 @@ static void die_status(const char *what, hs_status st) {
 	exit(2);
 }
 
-hs_shape *bench_uv_ball(int slices, int stacks, double r, hs_status *status) {
-	int nv = 2 + slices * (stacks - 1), nf = slices * stacks;
-	hs_vec3 *v = malloc((size_t)nv * sizeof *v);
-	int *fv = malloc((size_t)nf * 4 * sizeof *fv), *fs = malloc((size_t)nf * sizeof *fs);
-	if (!v || !fv || !fs)
-		die_status("ball", HS_ERR_NO_MEMORY);
-	int n = 0, m = 0, f = 0;
-	v[n++] = hs_v3(0.0, 0.0, r);
-	for (int j = 1; j < stacks; ++j) {
-		double th = HS_PI * j / stacks;
-		for (int i = 0; i < slices; ++i) {
-			double ph = 2.0 * HS_PI * i / slices;
-			v[n++] = hs_v3(r * sin(th) * cos(ph), r * sin(th) * sin(ph), r * cos(th));
-		}
-	}
-	v[n++] = hs_v3(0.0, 0.0, -r);
-	for (int j = 0; j < stacks; ++j) // ring j (1-based) slice i is vertex 1 + (j − 1) · slices + i
-		for (int i = 0; i < slices; ++i) {
-			int i1 = (i + 1) % slices, top = 1 + (j - 1) * slices, low = top + slices, k = 0, face[4];
-			if (j == 0) { // north fan
-				face[k++] = 0, face[k++] = 1 + i, face[k++] = 1 + i1;
-			} else if (j == stacks - 1) { // south fan
-				face[k++] = n - 1, face[k++] = top + i1, face[k++] = top + i;
-			} else { // planar trapezoids between rings j and j + 1
-				face[k++] = top + i, face[k++] = low + i, face[k++] = low + i1, face[k++] = top + i1;
-			}
-			memcpy(fv + m, face, (size_t)k * sizeof *face);
-			m += k;
-			fs[f++] = k;
-		}
-	char why[128] = "";
-	hs_shape *s = hs_shape_polyhedron(v, n, fv, fs, f, why, sizeof why, status);
-	if (!s)
-		fprintf(stderr, "bench: ball of %d faces: %s\n", f, why);
-	free(v);
-	free(fv);
-	free(fs);
-	return s;
-}
-
 // The contact rule of the scenes built next: false, swept detection and rectification (the
 // default); true, the 1999 paper's letter (hs_world_def.paper_contacts), to measure what they cost.
 static bool fr_paper_contacts;
 // The pose search verifies its candidates on clean input (false) or on the honest frame's (true).
 static bool fr_honest_search;
+// The glove deadband of the scenes built next (−1: the world's default); the measured scene's only,
+// set after the pose search (which keeps the default).
+static int fr_glove_deadband = -1;
 // Rows left empty between the first row and the objects that fill the grid after it (0: none), so
 // that added untouched objects can be put out of the hand's reach (bench/hand_scaling.c).
 static int fr_far_rows;
@@ -238,6 +201,9 @@ static fr_scene *scene_create(fr_shape kind, int objects, int touched, bool skip
 	wd.max_hands = 1;
 	wd.skip_work = skip;
 	wd.paper_contacts = fr_paper_contacts;
+	bench_grasp_start(&wd);
+	if (fr_glove_deadband >= 0)
+		wd.glove_deadband = fr_glove_deadband;
 	hs_status st;
 	sc->world = hs_world_create(&wd, &st);
 	if (!sc->world)
@@ -831,17 +797,26 @@ void bench_race_record(bench_race_frame frames[BENCH_PATH_FRAMES], double *finge
 __attribute__((noinline)) void fr_profiled_frames(fr_scene *sc, long frames);
 void fr_profiled_frames(fr_scene *sc, long frames) { scene_step(sc, frames); }
 
-void bench_profile_seed(long frames, int objects, bool skip, bool paper, bool honest) {
+void bench_profile_seed(long frames, int objects, bool skip, bool paper, bool honest, int deadband) {
 	fr_pose pose = find_pose(FR_CUBE, 2, 0.11, 0.0, 0);
+	if (!pose.found) {
+		printf("seed scene: no grasp pose found: not measured\n");
+		return;
+	}
 	fr_paper_contacts = paper;
+	fr_glove_deadband = deadband;
 	fr_scene *sc = scene_create(FR_CUBE, objects < 2 ? 10 : objects, 2, skip, &pose, honest);
 	fr_paper_contacts = false;
+	fr_glove_deadband = -1;
 	double t0 = bench_now();
 	fr_profiled_frames(sc, frames);
 	double el = bench_now() - t0;
-	printf("seed scene (%d objects), skip_work %s, %s contacts%s: %ld frames in %.3f s = %.3f us/frame (%.0f frames/s), "
+	char band[40] = "";
+	if (deadband >= 0)
+		snprintf(band, sizeof band, ", glove deadband %d", deadband);
+	printf("seed scene (%d objects), skip_work %s, %s contacts%s%s: %ld frames in %.3f s = %.3f us/frame (%.0f frames/s), "
 	       "grasp lost in %ld, checksum %016llx\n",
-	       sc->objects, skip ? "on" : "off", paper ? "paper" : "rectified", honest ? ", honest input" : "", frames, el,
+	       sc->objects, skip ? "on" : "off", paper ? "paper" : "rectified", honest ? ", honest input" : "", band, frames, el,
 	       1e6 * el / (double)frames,
 	       (double)frames / el, sc->lost, (unsigned long long)sc->checksum);
 	scene_destroy(sc);

@@ -92,6 +92,7 @@ static hsc_scene *multi_create(int hands, const hsc_job *jobs) {
 	if (!sc)
 		die("scene", HS_ERR_NO_MEMORY);
 	hs_world_def wd = hs_default_world_def();
+	bench_grasp_start(&wd);
 	wd.dt = BENCH_DT;
 	wd.max_objects = BENCH_PER_ROW;
 	wd.max_hands = hands;

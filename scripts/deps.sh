@@ -17,7 +17,7 @@
 #   sshd      the ssh server (make check-campaign drives campaigns through a private sshd)
 #   python    Debian's Python with numpy and pytest, pip, setuptools, venv (make check-python)
 #   browser   Chromium, Node.js and npm (make check-browser)
-#   bench     the benchmark peers ODE and MuJoCo (make bench)
+#   bench     the benchmark peers ODE and MuJoCo (make bench), valgrind (make bench-instr)
 #   fuzz      the compiler-rt runtime that holds libFuzzer (make fuzz)
 #   valgrind  valgrind (make valgrind, make determinism)
 #   check     what `make check` needs before its own targets ask for more: build, test, plots,
@@ -68,6 +68,8 @@ for group in "$@"; do
 	bench)
 		has_file /usr/include/ode/ode.h || need="$need libode-dev"
 		has_file /usr/include/mujoco/mujoco.h || need="$need libmujoco-dev"
+		# make bench-instr and handspring bench --instr count instructions with callgrind
+		has_cmd valgrind || need="$need valgrind"
 		;;
 	fuzz)
 		# libFuzzer ships in compiler-rt, packaged per LLVM version: libclang-rt-14-dev on

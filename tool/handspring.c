@@ -8,6 +8,8 @@
 //                                                        the whole catalog and a summary table
 //   handspring sweep FILE                                the scenario's robust matrix (dt x noise seeds)
 //   handspring campaign FILE ...                         many trials over axes of options (campaign_cmd.c)
+//   handspring bench FILE [--frames N] [--repeat K] [--instr]
+//                                                        a scenario's frames timed (bench_cmd.c)
 //
 // Exit status: 0 all expectations pass, 1 an expectation failed, 2 bad input or usage.
 #include <errno.h>
@@ -20,6 +22,7 @@
 #include <sys/stat.h>
 
 #include "hs_harness.h"
+#include "bench_cmd.h"
 #include "golden.h"
 #include "golden_dir.h"
 #include "hand_cmd.h"
@@ -45,6 +48,7 @@ static const char *const usage_main =
     "  golden DIR [--golden GDIR] [--force]               write a folder's goldens (default: DIR/golden)\n"
     "  view FILE [--gif OUT] [--strip OUT --at T,...] [--html OUT]\n"
     "                                                     draw a scenario in 3-D with gnuplot\n"
+    "  bench FILE [--frames N] [--repeat K] [--instr]     time a scenario's frames (and count instructions)\n"
     "Run 'handspring <command> --help' for the options of a command.\n";
 
 static const char *const usage_list =
@@ -924,7 +928,7 @@ int main(int argc, char **argv) {
 	} commands[] = {{"list", cmd_list},    {"run", cmd_run},           {"all", cmd_all},
 	                {"sweep", cmd_sweep},  {"view", hs_view_main},     {"joints", cmd_joints},
 	                {"hand", hs_hand_main}, {"check", hs_check_main},  {"golden", cmd_golden},
-	                {"campaign", hs_campaign_main}};
+	                {"campaign", hs_campaign_main}, {"bench", hs_bench_main}};
 	// `| head` closing the pipe ends the tool quietly (an inherited SIG_IGN would turn each later
 	// write into an EPIPE error instead)
 	signal(SIGPIPE, SIG_DFL);
