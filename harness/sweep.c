@@ -34,11 +34,13 @@ static void print_header(FILE *out, const hs_scenario *s, const hs_robust *r) {
 		fprintf(out, ", stylus noise (0.03 inch, 0.15 deg RMS)\n");
 	else if (s->hands.count == 0)
 		fprintf(out, ", no hand or stylus input to add noise to\n");
-	else if (r->has_levels)
-		fprintf(out, ", glove +-%d units, wrist +-%g mm, +-%g deg%s%.3g%s\n", n->glove_units, n->wrist * 1e3,
-		        n->wrist_rotation * (180.0 / HS_PI), n->joint > 0.0 ? ", joints +-" : "", n->joint * 1e3,
-		        n->joint > 0.0 ? " mm" : "");
-	else
+	else if (r->has_levels) {
+		fprintf(out, ", glove +-%d units, wrist +-%g mm, +-%g deg", n->glove_units, n->wrist * 1e3,
+		        n->wrist_rotation * (180.0 / HS_PI));
+		if (n->joint > 0.0)
+			fprintf(out, ", joints +-%g mm", n->joint * 1e3);
+		fprintf(out, "\n");
+	} else
 		fprintf(out, ", the scenario's input noise or the paper's (glove +-4 units, wrist +-0.762 mm, +-0.15 deg)\n");
 	fprintf(out, "%-10s", "dt");
 	for (int k = 1; k <= r->seeds; ++k)
