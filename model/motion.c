@@ -14,6 +14,8 @@
 // Penetration below this depth (m) is rounding, not interference: lifting it again every frame
 // would make resting objects creep.
 #define HS_RECTIFY_SLOP 1e-12
+// A tipping turn an object beside it stops within this angle (rad) is none: it leans there at rest.
+#define HS_LEAN_REST 1e-6
 
 double hs_motion_pose_vertices(hs_world *world, const hs_body *body) {
 	const hs_shape *shape = &world->shapes[body->shape];
@@ -134,6 +136,42 @@ static void keep_turning_about_edge(hs_world *world, hs_body *body, hs_vec3 moti
 	body->prev = hs_sub(body->pos, hs_mul_add(motion, -hs_dot(motion, e), e));
 }
 
+// Support mode: the smallest angle in [0, limit] at which the body, turned about the unit `axis`
+// through `c`, meets another object it is clear of now (bisected on libccd's overlap test to
+// 1e-9 rad, the angle just short of touching); `limit` when it meets none. A tall box tipping
+// over onto a cube beside it stops where it leans on the cube's edge, as the floor stops a turn
+// (eq. 7's first touch), instead of turning into the cube and being lifted out of it, off the
+// floor, frame after frame.
+static double first_touch_neighbour(hs_world *world, const hs_body *body, hs_vec3 c, hs_vec3 axis, double limit) {
+	const hs_shape *shape = &world->shapes[body->shape];
+	double reach = shape->radius + hs_length(hs_sub(body->pos, c)) * limit;
+	double best = limit;
+	for (int j = 0; j < world->object_count; ++j) {
+		const hs_body *b = &world->bodies[j];
+		const hs_shape *sb = &world->shapes[b->shape];
+		double r = reach + sb->radius;
+		if (b == body || hs_length_sq(hs_sub(b->pos, body->pos)) > r * r)
+			continue;
+		hs_quat q = hs_quat_from_axis_angle(axis, best);
+		hs_vec3 at = hs_add(c, hs_quat_rotate(q, hs_sub(body->pos, c)));
+		if (!hs_shapes_overlap(shape, at, hs_quat_normalize(hs_quat_mul(q, body->rot)), sb, b->pos, b->rot) ||
+		    hs_shapes_overlap(shape, body->pos, body->rot, sb, b->pos, b->rot))
+			continue; // clear of it at the end of the turn, or already touching it
+		double lo = 0.0, hi = best;
+		while (hi - lo > 1e-9) {
+			double mid = 0.5 * (lo + hi);
+			q = hs_quat_from_axis_angle(axis, mid);
+			at = hs_add(c, hs_quat_rotate(q, hs_sub(body->pos, c)));
+			if (hs_shapes_overlap(shape, at, hs_quat_normalize(hs_quat_mul(q, body->rot)), sb, b->pos, b->rot))
+				hi = mid;
+			else
+				lo = mid;
+		}
+		best = lo;
+	}
+	return best;
+}
+
 // Rules (1)-(3) of §4.2 for an unstable object: pick the contact vertex or edge and turn about it.
 static void tip(hs_world *world, hs_body *body, const hs_vec2 *hull, int hull_count, double height,
                 hs_vec2 g_proj, hs_vec3 gm, const hs_settle_supports *sup) {
@@ -176,6 +214,15 @@ static void tip(hs_world *world, hs_body *body, const hs_vec2 *hull, int hull_co
 		axis = hs_dot(line, axis) >= 0.0 ? line : hs_neg(line);
 	double theta = hs_atan(r_len / cg_len); // eq. 7
 	double touch = first_touch(world, body, c, axis, theta, sup);
+	if (!sup) { // on the floor alone: an object beside it can stop the turn too
+		double lean = first_touch_neighbour(world, body, c, axis, touch);
+		if (lean < touch && lean <= HS_LEAN_REST) { // leaning on it already: it rests there (§4.1)
+			stop(body);
+			world->counters.object_steps++;
+			return;
+		}
+		touch = lean;
+	}
 	bool landed = touch < theta;
 	if (landed)
 		theta = touch;

@@ -1,5 +1,6 @@
 // test_support.c — objects on objects: the paper's §4.3 mode and the 'support' mode
 // (docs/model.md §6).
+#include <math.h>
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -169,6 +170,37 @@ static void test_paper_push_piles_onto_foot(void **state) {
 	hs_object_state s = run(w, cube, 30);
 	assert_near(s.position.z, 0.075 - 0.5e-9, 1e-12); // held up by the foot, the foot by the floor
 	hs_world_destroy(w);
+}
+
+// Both modes (docs/model.md §5): a post tilted 20 deg toward a cube beside it tips over about its
+// floor edge until its face meets the cube's top edge, and rests there leaning on it, at the closed
+// form (scenarios/tip_onto_cube_*.yaml) at 12 and 144 frames/s; before, it turned into the cube,
+// was lifted out of it off the floor and rocked for seconds.
+static void test_tip_stops_on_neighbour(void **state) {
+	(void)state;
+	const double d20 = 20.0 * HS_PI / 180.0, xp = 0.04 + 0.02 * cos(d20) - 0.1 * sin(d20);
+	const double lean = atan((0.13 - xp) / 0.06);
+	for (int mode = 0; mode < 2; ++mode)
+		for (int fps = 12; fps <= 144; fps += 132) {
+			hs_world_def def = hs_default_world_def();
+			def.stacking = mode ? HS_STACKING_SUPPORT : HS_STACKING_PAPER;
+			def.dt = 1.0 / fps;
+			hs_world *w = hs_world_create(&def, NULL);
+			hs_shape *box = hs_shape_box(hs_v3(0.04, 0.04, 0.2), NULL);
+			hs_object_def od = hs_default_object_def();
+			od.shape = hs_world_add_shape(w, box, NULL);
+			hs_shape_destroy(box);
+			od.position = hs_v3(0.04, 0, 0.105);
+			od.orientation = hs_quat_from_axis_angle(hs_v3(0, 1, 0), d20);
+			hs_object_id post = hs_world_add_object(w, &od, NULL);
+			add_box(w, hs_v3(0.06, 0.06, 0.06), hs_v3(0.16, 0, 0.03));
+			hs_object_state s = run(w, post, 2 * fps);
+			assert_near(s.position.x, xp - 0.02 * cos(lean) + 0.1 * sin(lean), 1e-6);
+			assert_near(s.position.z, 0.02 * sin(lean) + 0.1 * cos(lean), 1e-6);
+			assert_int_equal(s.floor_contacts, 2);
+			assert_true(s.resting);
+			hs_world_destroy(w);
+		}
 }
 
 // Both modes: a cube placed 2 cm deep in another (faces flush: no vertex strictly inside) is
@@ -437,6 +469,7 @@ int main(void) {
 	    cmocka_unit_test(test_paper_mode_stops_at_interference),
 	    cmocka_unit_test(test_paper_stack_falls_as_one),
 	    cmocka_unit_test(test_paper_push_piles_onto_foot),
+	    cmocka_unit_test(test_tip_stops_on_neighbour),
 	    cmocka_unit_test(test_placed_inside_is_rectified),
 	    cmocka_unit_test(test_drops_land_on_top_face),
 	    cmocka_unit_test(test_support_tilted_landing_settles),
