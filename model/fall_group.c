@@ -9,14 +9,18 @@
 #include "motion.h"
 #include "stacking.h"
 
-// j holds i up: they interfere and i's lowest point is above j's by more than the floor's
-// tolerance (i rests on j's upper part, or on a lower step of it: a cube on an L-block's foot; an
-// object beside i on the same floor, touching its side, holds nothing up).
+// The least height (m) of a step that holds an object up: objects side by side on one floor
+// differ in their lowest points by rounding and by the tilt a push leaves (11 µm seen), far less.
+#define HS_HELD_UP_STEP 1e-3
+
+// j holds i up: they interfere and i's lowest point is above j's by HS_HELD_UP_STEP or more (i
+// rests on j's upper part, or on a lower step of it: a cube on an L-block's foot; an object beside
+// i on the same floor, touching its side, holds nothing up).
 static bool supports(hs_world *world, int j, int i) {
 	if (!hs_objects_interfere(world, i, j))
 		return false;
 	double low_i = hs_motion_pose_vertices(world, &world->bodies[i]);
-	return low_i > hs_motion_pose_vertices(world, &world->bodies[j]) + world->def.floor_tolerance;
+	return low_i >= hs_motion_pose_vertices(world, &world->bodies[j]) + HS_HELD_UP_STEP;
 }
 
 static bool listed(const int *list, int n, int j) {
