@@ -6,9 +6,9 @@
 #include "scenario_internal.h"
 #include "scenario_parser.h"
 
-enum { R_DT, R_SEEDS, R_GLOVE, R_WRIST, R_WRIST_DEG, R_PHASES, R_JOINT, R_COUNT };
-static const char *const robust_keys[R_COUNT] = {"dt", "seeds", "glove_units", "wrist_mm", "wrist_deg", "phases",
-                                                 "joint_mm"};
+enum { R_DT, R_SEEDS, R_GLOVE, R_WRIST, R_WRIST_DEG, R_JOINT, R_PHASES, R_COUNT };
+static const char *const robust_keys[R_COUNT] = {"dt",        "seeds",    "glove_units", "wrist_mm",
+                                                 "wrist_deg", "joint_mm", "phases"};
 
 // dt: a list of 1 to HS_ROBUST_MAX_DTS frame times, each as the scenario's `dt` takes it.
 static bool read_dts(hs_scenario_parser *p, const yaml_node_t *node, hs_robust *r) {
