@@ -314,6 +314,9 @@ figures: all
 
 check-sweep: all
 	@sh scripts/sweep_catalog.sh $(TOOL) scenarios/hand
+	@for f in $$(grep -l '^robust:' scenarios/*.yaml); do \
+		$(TOOL) sweep $$f > /dev/null || { $(TOOL) sweep $$f; echo "check-sweep: $$f failed"; exit 1; }; \
+	done; echo "check-sweep: every sweep of the objects' scenarios (scenarios/*.yaml with a robust block) passes"
 
 # Monte-Carlo campaigns (docs/campaigns.md): the trials spread over GNU parallel, on this
 # machine's cores or over ssh (SSHLOGIN is parallel's --sshlogin, e.g. 4/host1,4/host2,:);

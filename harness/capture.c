@@ -105,6 +105,33 @@ void hs_capture_conserved(const hs_scenario *s, const hs_clause *c, hs_check *k,
 	}
 }
 
+// energy_never_grows: the group's mechanical energy per unit mass, Σ (½ |v|² − g·G) over its
+// objects (J/kg: the hand model's objects have no mass), v the frame's (P(t) − P(t − dt)) / dt.
+static double group_specific_energy(const hs_scenario *s, const hs_clause *c) {
+	double e = 0.0;
+	for (int i = 0; i < c->member_count; ++i) {
+		hs_object_state st = hs_scenario_state_of(s, s->expect.members[c->first_member + i]);
+		e += 0.5 * hs_dot(st.velocity, st.velocity) - hs_dot(s->gravity, st.position);
+	}
+	return e;
+}
+
+void hs_capture_energy(const hs_scenario *s, const hs_clause *c, hs_check *k, long frame) {
+	if (frame < c->frame || frame > c->last_frame || k->captured)
+		return;
+	double e = group_specific_energy(s, c);
+	if (frame == c->frame) {
+		k->u.window.before[0] = k->u.window.peak = e;
+		k->u.window.peak_frame = frame;
+		k->u.window.began = true;
+	} else if (e > k->u.window.peak) {
+		k->u.window.peak = e;
+		k->u.window.peak_frame = frame;
+	}
+	if (frame == c->last_frame)
+		k->captured = true;
+}
+
 // swing_below: the horizontal distance (m) from the stylus to the object's G.
 static double swing_of(const hs_scenario *s, int object) {
 	hs_spring_state ss;

@@ -136,6 +136,17 @@ static bool parse_conserved(hs_scenario_parser *p, const hs_fields *f, hs_clause
 	return true;
 }
 
+static bool parse_energy(hs_scenario_parser *p, const hs_fields *f, hs_clause *c) {
+	if (!parse_flag(p, f, c))
+		return false;
+	if (!c->flag)
+		return hs_yaml_fail(&p->y, value_of(f, c), "'energy_never_grows' can only be true (leave it out otherwise)");
+	if (!read_group(p, f->value[HS_E_OBJECT], c))
+		return false;
+	c->object = -1;
+	return true;
+}
+
 static bool parse_count(hs_scenario_parser *p, const hs_fields *f, hs_clause *c) {
 	int64_t n;
 	if (!hs_yaml_integer(&p->y, value_of(f, c), name_of(c), 0, INT_MAX, &n))
@@ -380,6 +391,18 @@ static bool eval_spring_constant(const hs_scenario *s, const hs_clause *c, const
 	return fabs((x0 ? o.rest_length : o.stiffness) - c->value) <= c->tolerance;
 }
 
+static bool eval_energy(const hs_scenario *s, const hs_clause *c, const hs_check *k, hs_verdict *v) {
+	snprintf(v->what, sizeof v->what,
+	         "energy per unit mass never above its value at t = %g s by more than %g J/kg, to t = %g s",
+	         (double)c->frame * s->dt, c->tolerance, (double)c->last_frame * s->dt);
+	if (!k->captured)
+		return not_reached(s, v);
+	double grew = k->u.window.peak - k->u.window.before[0];
+	snprintf(v->measured, sizeof v->measured, "%.12g J/kg at first, highest %.12g J/kg at t = %g s (%+.3g)",
+	         k->u.window.before[0], k->u.window.peak, (double)k->u.window.peak_frame * s->dt, grew);
+	return grew <= c->tolerance;
+}
+
 static bool eval_conserved(const hs_scenario *s, const hs_clause *c, const hs_check *k, hs_verdict *v) {
 	bool momentum = c->count == HS_CONSERVE_MOMENTUM;
 	snprintf(v->what, sizeof v->what, "conserved %s from t = %g s to t = %g s within %g (relative)",
@@ -525,4 +548,5 @@ const hs_predicate hs_predicates[HS_PREDICATE_COUNT] = {
     {"stiffness",        SPR,                  "N/m",      parse_positive,    NULL,                 S_NONE,  eval_spring_constant},
     {"conserved",        SPR | FT | WIN | GRP, "relative", parse_conserved,   hs_capture_conserved, S_WIN,   eval_conserved},
     {"swing_below",      SPR | FT | WIN,       NULL,       parse_positive,    hs_capture_swing,     S_WIN,   eval_swing_below},
+    {"energy_never_grows", FT | WIN | GRP,     "J/kg",     parse_energy,      hs_capture_energy,    S_WIN,   eval_energy},
 };

@@ -8,7 +8,7 @@
 #include "state_io.h"
 
 // Rows of hs_predicates; the keys of a clause are the predicates' names, then the modifiers.
-#define HS_PREDICATE_COUNT 27
+#define HS_PREDICATE_COUNT 28
 enum { HS_E_OBJECT = HS_PREDICATE_COUNT, HS_E_AT, HS_E_TOLERANCE, HS_E_AXES, HS_E_FROM, HS_E_TO, HS_E_MIN_S, HS_E_ROBUST, HS_E_COUNT };
 
 // What a predicate accepts and how it is watched.
@@ -60,6 +60,7 @@ void hs_capture_overlap(const hs_scenario *s, const hs_clause *c, hs_check *k, l
 void hs_capture_still(const hs_scenario *s, const hs_clause *c, hs_check *k, long frame);
 void hs_capture_conserved(const hs_scenario *s, const hs_clause *c, hs_check *k, long frame);
 void hs_capture_swing(const hs_scenario *s, const hs_clause *c, hs_check *k, long frame);
+void hs_capture_energy(const hs_scenario *s, const hs_clause *c, hs_check *k, long frame);
 void hs_capture_lands(const hs_scenario *s, const hs_clause *c, hs_check *k, long frame);
 void hs_capture_sequence(const hs_scenario *s, const hs_clause *c, hs_check *k, long frame);
 // never_contact and grasped: the first frame of [from, to] that breaks the clause (in the still store)

@@ -183,5 +183,6 @@ bool hs_stack_sweep(hs_world *world, int object, hs_vec3 from) {
 	hs_stack_rectify(world, object);
 	body->spin = hs_quat_identity(); // §4.1: no inertia kept after interfering
 	body->grounded = 0;               // on an object, not on the floor
+	body->asleep = 0; // a frame's fall that ended below the floor settled it there: it lies here now
 	return true;
 }

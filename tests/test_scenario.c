@@ -238,7 +238,7 @@ static void test_load_errors(void **state) {
 	load_error("e.yaml", text,
 	           "7: expect clause needs a predicate: near, resting, floor_contacts, on_face, face_down, below, above, moved, turned_deg, "
 	           "moved_at_most, turned_at_most_deg, speed_below, overlap_at_most, velocity, attached, candidate, extension_ratio, lands_at, still, "
-	           "contact_sequence, never_contact, grasped, released, rest_length, stiffness, conserved or swing_below");
+	           "contact_sequence, never_contact, grasped, released, rest_length, stiffness, conserved, swing_below or energy_never_grows");
 	snprintf(text, sizeof text, "%s" ONE_CUBE "expect:\n  - { object: a, still: true, at: end }\n", head);
 	load_error("e.yaml", text, "7: 'at' is not used by 'still'");
 	snprintf(text, sizeof text, "%s" ONE_CUBE "expect:\n  - { object: a, still: true, from: 2 }\n", head);
@@ -420,6 +420,26 @@ static void test_overlap_at_most(void **state) {
 	assert_int_equal(check_in(pair, "pair.yaml", "{ object: a, at: 0, overlap_at_most: 0.0001 }", report, sizeof report), 1);
 	assert_non_null(strstr(report, "overlap at most 0.0001 m at t = 0 s: 0.0005 m into 'b'"));
 	assert_int_equal(check_in(pair, "pair.yaml", "{ object: b, at: 0, overlap_at_most: 0.0006 }", report, sizeof report), 0);
+}
+
+// energy_never_grows (scenarios/README.md, Expectations): a falling and landing cube never has
+// more energy per unit mass than it began with (eq. 3 loses ½ g² dt² a frame in flight); a hand
+// that lifts a cube gives it energy, and the clause says when it was highest.
+static void test_energy_never_grows(void **state) {
+	(void)state;
+	expect_pass("{ object: '*', energy_never_grows: true, tolerance: 1e-12 }", "energy per unit mass never above");
+	expect_pass("{ object: [block, high], energy_never_grows: true, tolerance: 1e-12, from: 0.2 }", "at t = 0.2 s");
+	const char *text = catalog_text("scenarios/hand/grasp_adjoining_faces.yaml");
+	char report[4096];
+	assert_int_equal(check_in(text, "grasp_adjoining_faces.yaml",
+	                          "{ object: cube, energy_never_grows: true, tolerance: 0.01, from: 0.5 }", report,
+	                          sizeof report),
+	                 1);
+	assert_non_null(strstr(report, "FAIL  line"));
+	assert_non_null(strstr(report, "cube energy per unit mass never above its value at t = 0.5 s by more than 0.01 J/kg"));
+	char bad[2048];
+	snprintf(bad, sizeof bad, "%s  - { object: block, energy_never_grows: false, tolerance: 1 }\n", drop_scenario);
+	load_error("energy.yaml", bad, "9: 'energy_never_grows' can only be true (leave it out otherwise)");
 }
 
 static void test_every_object(void **state) {
@@ -1097,7 +1117,7 @@ static void test_spring_load_errors(void **state) {
 	         "%s" ONE_CUBE "stylus: { keys: [{ t: 0, position: [0, 0, 1] }] }\n"
 	         "expect:\n  - { object: a, at: end, resting: true, to: 0.5 }\n",
 	         head);
-	load_error("e.yaml", text, "8: 'to' is only for 'still', 'never_contact', 'grasped', 'conserved' and 'swing_below'");
+	load_error("e.yaml", text, "8: 'to' is only for 'still', 'never_contact', 'grasped', 'conserved', 'swing_below' and 'energy_never_grows'");
 	snprintf(text, sizeof text,
 	         "%s" ONE_CUBE "stylus: { keys: [{ t: 0, position: [0, 0, 1] }] }\n"
 	         "expect:\n  - { object: a, still: true, from: 0.5, to: 0.5 }\n",
@@ -1734,6 +1754,7 @@ int main(void) {
 	    cmocka_unit_test(test_still),
 	    cmocka_unit_test(test_contact_sequence),
 	    cmocka_unit_test(test_overlap_at_most),
+	    cmocka_unit_test(test_energy_never_grows),
 	    cmocka_unit_test(test_contact_sequence_min_s),
 	    cmocka_unit_test(test_every_object),
 	    cmocka_unit_test(test_check_before_the_end),
