@@ -8,6 +8,7 @@
 #include "contact.h"
 #include "fall_group.h"
 #include "grasp.h"
+#include "interfere.h"
 #include "manipulate.h"
 #include "motion.h"
 #include "part_box.h"
