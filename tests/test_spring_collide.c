@@ -9,6 +9,7 @@
 #include <cmocka.h>
 
 #include "spring_collide.h"
+#include "spring_touch.h"
 #include "test_util.h"
 
 #define SQRT1_2 0.70710678118654752440
