@@ -35,6 +35,7 @@
 #include "spring_near.h"
 #include "spring_impulse.h"
 #include "spring_rest.h"
+#include "spring_body.h"
 #include "spring_touch.h"
 
 // Object i lies where the frame began, without velocity along the floor.
