@@ -3,6 +3,7 @@
 #ifndef HS_WORLD_INTERNAL_H
 #define HS_WORLD_INTERNAL_H
 
+#include <math.h>
 #include <stdbool.h>
 #include <stdint.h>
 
@@ -174,8 +175,20 @@ static inline int hs_shape_index(const hs_world *world, hs_shape_id id) {
 	return (int)id.index1 - 1;
 }
 
+// *status = value, when the caller asked for it.
+static inline void hs_set_status(hs_status *status, hs_status value) {
+	if (status)
+		*status = value;
+}
+
+// Every component finite and within ±limit (the API's checks of coordinates and speeds).
+static inline bool hs_within(hs_vec3 v, double limit) {
+	return fabs(v.x) <= limit && fabs(v.y) <= limit && fabs(v.z) <= limit;
+}
+
 // Numeric trouble (a non-finite value caught and frozen): counts it and remembers the first
 // (frame, object); `object` -1 when the fault belongs to no single object.
+// Defined in world_base.c, below every stage.
 void hs_world_note_fault(hs_world *world, int object);
 
 #endif
