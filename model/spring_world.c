@@ -1,23 +1,11 @@
-// spring_world.c — the public API of the spring model (handspring.h): switching a world to it,
-// the stylus, attaching and detaching by hand, and what a user reads back.
+// spring_world.c — the public API of the spring model (handspring.h): the stylus, attaching and
+// detaching by hand, and what a user reads back. hs_world_create makes the model (spring_system.c).
 #include <string.h>
 
-#include "spring_system.h"
 #include "spring_world.h"
 #include "world_internal.h"
 #include "spring_grab.h"
 #include "spring_params.h"
-
-hs_status hs_world_enable_springs(hs_world *world, const hs_spring_def *def) {
-	if (!world || !hs_spring_def_valid(def))
-		return HS_ERR_INVALID_ARGUMENT;
-	hs_spring_system *sys = hs_spring_system_create(def, world->def.max_objects, hs_world_time(world));
-	if (!sys)
-		return HS_ERR_NO_MEMORY;
-	hs_spring_system_destroy(world->spring);
-	world->spring = sys;
-	return HS_OK;
-}
 
 bool hs_world_springs_enabled(const hs_world *world) { return world && world->spring; }
 

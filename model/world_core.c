@@ -1,4 +1,5 @@
-// world_core.c — a world with a fixed dt that owns its shapes and objects: made, freed, its shapes and objects added and read back.
+// world_core.c — a world with a fixed dt that owns its shapes and objects: made (with the model of
+// its kind: a spring world's spring system), freed, its shapes and objects added and read back.
 // Everything is allocated when the world is built; hs_world_step (world_step.c) never allocates.
 // It calls no stage of a step: the step pipelines (step_hand.c, step_spring.c) sit above it.
 #include <stdatomic.h>
@@ -11,6 +12,7 @@
 #include "motion.h"
 #include "part_box.h"
 #include "part_reach.h"
+#include "spring_params.h"
 #include "spring_system.h"
 #include "world_internal.h"
 
@@ -42,6 +44,8 @@ hs_world_def hs_default_world_def(void) {
 	def.grasp_opposed = true;
 	def.grasp_close_mm = 10.0;
 	def.tracking_hold_s = 0.2;
+	def.kind = HS_WORLD_HAND;
+	def.spring = hs_default_spring_def();
 	return def;
 }
 
@@ -68,7 +72,8 @@ static bool valid_def(const hs_world_def *def) {
 	       def->release_window_s <= HS_MAX_RELEASE_WINDOW &&
 	       (def->release_fit == HS_RELEASE_FIT_MEAN || def->release_fit == HS_RELEASE_FIT_QUADRATIC) &&
 	       isfinite(def->grasp_close_mm) && def->grasp_close_mm >= 0.0 && def->grasp_close_mm <= 1000.0 &&
-	       isfinite(def->tracking_hold_s) && def->tracking_hold_s >= 0.0 && def->tracking_hold_s <= HS_MAX_TRACKING_HOLD;
+	       isfinite(def->tracking_hold_s) && def->tracking_hold_s >= 0.0 && def->tracking_hold_s <= HS_MAX_TRACKING_HOLD &&
+	       (def->kind == HS_WORLD_HAND || (def->kind == HS_WORLD_SPRING && hs_spring_def_valid(&def->spring)));
 }
 
 hs_world *hs_world_create(const hs_world_def *def, hs_status *status) {
@@ -116,7 +121,9 @@ hs_world *hs_world_create(const hs_world_def *def, hs_status *status) {
 	world->stale_flag = calloc(objects, sizeof *world->stale_flag);
 	world->box_memo = calloc(objects, sizeof *world->box_memo);
 	world->all_stale = true;
-	if (!world->shapes || !world->face_edges || !world->face_trees || !world->shape_grow_reach || !world->bodies || !world->queue || !world->moved_from || !world->hands || !world->contacts || !grid ||
+	if (def->kind == HS_WORLD_SPRING) // its tracker starts at the world's time, 0
+		world->spring = hs_spring_system_create(&def->spring, def->max_objects, 0.0);
+	if ((def->kind == HS_WORLD_SPRING && !world->spring) || !world->shapes || !world->face_edges || !world->face_trees || !world->shape_grow_reach || !world->bodies || !world->queue || !world->moved_from || !world->hands || !world->contacts || !grid ||
 	    !world->candidates || !world->every || !world->found || !world->awake || !world->awake_flag || !world->digest || !world->stale ||
 	    !world->stale_flag || !world->box_memo) {
 		hs_world_destroy(world);
