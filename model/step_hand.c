@@ -155,12 +155,12 @@ static HS_FORCE_INLINE void age_hands(hs_world *world) {
 }
 
 void hs_step_hand(hs_world *world) {
-	file_objects(world);
-	track_hands(world);
-	hands_move_objects(world);
-	int fallen = 0; // paper mode: objects moved with a falling group (to wake after the loop)
-	int moved = move_free_objects(world, &fallen);
-	wake_neighbours(world, moved, fallen);
-	age_hands(world);
+	file_objects(world);                           // Experiment 3: the broad phase
+	track_hands(world);                            // docs/model.md §3: tracking loss
+	hands_move_objects(world);                     // §3.2: contacts, grasps, pushes
+	int fallen = 0;                                // paper mode: objects moved with a falling group
+	int moved = move_free_objects(world, &fallen); // §4.2-§4.3: free motion, floor, stacking
+	wake_neighbours(world, moved, fallen);         // §4.3: what rested on a moved object looks again
+	age_hands(world);                              // docs/model.md §4: the hands' history
 	world->frame++;
 }

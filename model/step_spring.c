@@ -151,12 +151,12 @@ static void end_frame(hs_world *world, hs_spring_system *sys, long faults) {
 void hs_step_spring(hs_world *world) {
 	hs_spring_system *sys = world->spring;
 	long faults = world->counters.numeric_faults;
-	prepare_frame(world, sys);
-	hs_spring_rest(world, sys); // §4.5: touching objects' impulses, then their forces for the frame
-	move_objects(world, sys);
-	collide_objects(world, sys);
-	sample_tracker(world, sys);
-	press_and_release(world, sys);
-	finish_bodies(world, sys);
-	end_frame(world, sys, faults);
+	prepare_frame(world, sys);     // §4.2: new objects' geometry, the stylus's velocity
+	hs_spring_rest(world, sys);    // §4.5: touching objects' impulses, then their forces for the frame
+	move_objects(world, sys);      // §4.2-§4.5: each object alone, on the floor or in the air
+	collide_objects(world, sys);   // §4.5: collisions in the order of time
+	sample_tracker(world, sys);    // §5.1: the tracker daemon's samples of the frame
+	press_and_release(world, sys); // §3, §4.4: selection, press, catch, drop or throw
+	finish_bodies(world, sys);     // §4.2: the numeric guard, what the world reports
+	end_frame(world, sys, faults); // the frame counts
 }
