@@ -425,7 +425,7 @@ static void scene_create(scene *sc, unsigned long seed) {
 	need(hs_hand_posture(&sc->hand_def, HS_POSTURE_GRASP, 0.12, sc->wide) == HS_OK, "wide posture");
 	hand_width(sc, 0.05);
 	if (sc->noisy)
-		sc->noise_options = (hs_noise_options){false, 4, 0.762e-3, 0.15 * HS_PI / 180.0};
+		sc->noise_options = (hs_noise_options){false, 4, 0.762e-3, 0.15 * HS_PI / 180.0, 0.0}; // no joint noise: a glove hand
 	sc->at = hs_v3(0.0, 0.0, 0.4);
 	sc->reach = 0.8;
 	sc->value = -1.0;
