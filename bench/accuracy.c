@@ -86,17 +86,15 @@ static void make_world(problem_run *pr, int integ, double dt, int problem) {
 	wd.dt = dt;
 	wd.max_objects = 1;
 	wd.max_hands = 0;
+	if (integ != I_VERLET) {
+		wd.kind = HS_WORLD_SPRING;
+		wd.spring.integrator = spring_integrator[integ];
+		wd.spring.friction_static = wd.spring.friction_sliding = SLIDE_MU;
+	}
 	hs_status st;
 	pr->world = hs_world_create(&wd, &st);
 	if (!pr->world)
 		die(hs_status_string(st));
-	if (integ != I_VERLET) {
-		hs_spring_def sd = hs_default_spring_def();
-		sd.integrator = spring_integrator[integ];
-		sd.friction_static = sd.friction_sliding = SLIDE_MU;
-		if (hs_world_enable_springs(pr->world, &sd) != HS_OK)
-			die("enable springs");
-	}
 	hs_shape *cube = hs_shape_box(hs_v3(BENCH_CUBE, BENCH_CUBE, BENCH_CUBE), &st);
 	hs_object_def od = hs_default_object_def();
 	od.shape = hs_world_add_shape(pr->world, cube, &st);

@@ -71,10 +71,6 @@ static hs_world *spring_box(int n) {
 	hs_world_def wd = hs_default_world_def();
 	wd.dt = BENCH_DT;
 	wd.max_objects = n;
-	hs_status st;
-	hs_world *w = hs_world_create(&wd, &st);
-	if (!w)
-		die("world", st);
 	int side = side_of(n);
 	hs_spring_def sd = hs_default_spring_def();
 	sd.friction_static = sd.friction_sliding = 0.0;
@@ -82,8 +78,12 @@ static hs_world *spring_box(int n) {
 	sd.walls.x_min = sd.walls.y_min = 0.0;
 	double room = sqrt((double)n) * CS_GAP, step = room / side;
 	sd.walls.x_max = sd.walls.y_max = room;
-	if ((st = hs_world_enable_springs(w, &sd)) != HS_OK)
-		die("springs", st);
+	wd.kind = HS_WORLD_SPRING;
+	wd.spring = sd;
+	hs_status st;
+	hs_world *w = hs_world_create(&wd, &st);
+	if (!w)
+		die("world", st);
 	hs_shape_id ball = add_shape(w, hs_shape_sphere(CS_RADIUS, &st), st);
 	uint64_t seed = 12345;
 	for (int k = 0; k < n; ++k) {
@@ -100,13 +100,11 @@ static hs_world *mixed_sizes(bool spring, bool big_box, bool pile) {
 	hs_world_def wd = hs_default_world_def();
 	wd.dt = BENCH_DT;
 	wd.max_objects = CS_CUBES + 1;
+	wd.kind = spring ? HS_WORLD_SPRING : HS_WORLD_HAND; // the default spring definition
 	hs_status st;
 	hs_world *w = hs_world_create(&wd, &st);
 	if (!w)
 		die("world", st);
-	hs_spring_def sd = hs_default_spring_def();
-	if (spring && (st = hs_world_enable_springs(w, &sd)) != HS_OK)
-		die("springs", st);
 	hs_shape_id cube = add_shape(w, hs_shape_box(hs_v3(BENCH_CUBE, BENCH_CUBE, BENCH_CUBE), &st), st);
 	int side = side_of(CS_CUBES);
 	for (int k = 0; k < CS_CUBES; ++k)

@@ -141,9 +141,8 @@ static hs_vec3 est_tracker(const hs_vec3 *p, int k, double dt) {
 	wd.dt = dt;
 	wd.max_objects = 1;
 	wd.max_hands = 0;
+	wd.kind = HS_WORLD_SPRING; // the default spring definition
 	hs_world *w = hs_world_create(&wd, NULL);
-	hs_spring_def sd = hs_default_spring_def();
-	hs_world_enable_springs(w, &sd);
 	hs_world_set_stylus(w, p[0], hs_quat_identity(), false);
 	for (int j = 1; j <= k; ++j) { // the stylus pose at the end of frame j
 		hs_world_set_stylus(w, p[j], hs_quat_identity(), false);

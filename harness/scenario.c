@@ -158,6 +158,10 @@ static bool read_scenario(hs_scenario_parser *p, const yaml_node_t *root) {
 	s->noise_options = p->noise;
 	if (f.value[S_HANDS] && !hs_count_hands(p, f.value[S_HANDS], &def))
 		return false;
+	if (f.value[S_STYLUS]) { // a stylus makes a spring world: its kind is fixed when it is made
+		def.kind = HS_WORLD_SPRING;
+		def.spring = p->spring;
+	}
 	if (!hs_read_objects(p, f.value[S_OBJECTS], def))
 		return false;
 	if (f.value[S_HANDS] && !hs_read_hands(p, f.value[S_HANDS]))

@@ -41,7 +41,7 @@ struct hs_scenario {
 	hs_object_id *ids;
 	hs_object_state *initial; // every object at frame 0 (moved, turned_deg)
 	hs_vec3 gravity;          // m/s²: the potential energy of `conserved: energy`
-	bool springs;             // the scenario has a stylus: hs_world_enable_springs was called
+	bool springs;             // the scenario has a stylus: its world is a spring world (HS_WORLD_SPRING)
 	hs_hands hands;           // hand worlds: glove + tracker scripts (1999 paper §5.1)
 	hs_stylus_script stylus;  // spring worlds: the stylus (workbench paper §3–§5)
 	hs_noise *noise;          // the input noise's generator (NULL: no noise)

@@ -159,11 +159,7 @@ bool hs_read_stylus(hs_scenario_parser *p, const yaml_node_t *node) {
 		return hs_yaml_fail(&p->y, node, "'stylus' needs 'keys' or 'record'");
 	if (!hs_yaml_exclusive(&p->y, &f, stylus_keys, ST_KEYS, ST_RECORD, "give one"))
 		return false;
-	hs_status status = hs_world_enable_springs(s->world, &p->spring);
-	if (status != HS_OK)
-		return hs_yaml_fail(&p->y, p->spring_key ? p->spring_key : node, "cannot enable the spring model: %s",
-		                    hs_status_string(status));
-	s->springs = true;
+	s->springs = true; // the world was made a spring world (read_scenario: def.kind)
 	if (f.value[ST_KEYS])
 		return read_stylus_keys(p, f.value[ST_KEYS], &s->stylus);
 	return read_stylus_record(p, f.value[ST_RECORD], &s->stylus);

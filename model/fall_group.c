@@ -5,7 +5,7 @@
 // that nothing under it holds up falls, as one body with what rests on it, and lands as one.
 #include "broadphase.h"
 #include "fall_group.h"
-#include "manipulate.h"
+#include "interfere.h"
 #include "motion.h"
 #include "stacking.h"
 

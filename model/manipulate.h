@@ -1,5 +1,5 @@
-// manipulate.h — object motion by the hand (1999 paper eq. 1-2, grasp, push; §3.2) and
-// interference among objects (§4.3).
+// manipulate.h — object motion by the hand (1999 paper eq. 1-2, grasp, push; §3.2); interference
+// among objects (§4.3) is interfere.h's.
 #ifndef HS_MANIPULATE_H
 #define HS_MANIPULATE_H
 
@@ -11,9 +11,5 @@
 void hs_push_at_one_point(hs_body *body, hs_vec3 c, hs_vec3 b);
 // One frame of the hands: detect, classify, move touched objects, release the untouched.
 void hs_manipulate(hs_world *world);
-// §4.3: true when an untouched free object interferes with another and so ignores gravity.
-bool hs_object_interferes(hs_world *world, int object);
-// Objects i and j (not the same) overlap: interference of §4.3.
-bool hs_objects_interfere(hs_world *world, int i, int j);
 
 #endif

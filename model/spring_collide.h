@@ -4,21 +4,6 @@
 
 #include "spring_system.h"
 
-// Contact of object a (geometry ga, G at pa) with object b: the unit normal from a to b and the
-// depth (m) of the true shapes' overlap; false when they do not meet.
-bool hs_spring_contact(const hs_world *world, const hs_spring_geom *ga, hs_vec3 pa, const hs_spring_geom *gb,
-                       hs_vec3 pb, hs_vec3 *n, double *depth);
-// As hs_spring_contact, for shapes within `gap` (m) of each other: *depth is their overlap,
-// negative for shapes apart (by less than the gap), for every kind of pair.
-bool hs_spring_contact_within(const hs_world *world, const hs_spring_geom *ga, hs_vec3 pa, const hs_spring_geom *gb,
-                     hs_vec3 pb, double gap, hs_vec3 *n, double *depth);
-// Every pair of objects within `reach` (≥ gap) of each other where they are now, into sys->touch in
-// ascending (a, b) (normal and depth set, `ahead` for a pair apart by more than `gap`, the rest
-// zero), through the broad phase.
-void hs_spring_find_touches(hs_world *world, hs_spring_system *sys, double gap, double reach);
-// True when (a, b), a < b, is among sys->touch and touches, or is ahead and its force acts (the
-// rest solve closes it by the frame's end): a resting pair.
-bool hs_spring_touching(const hs_spring_system *sys, int a, int b);
 // Every overlapping pair of the world's objects (array order, shapes in sys->geom, found through
 // the broad phase sys->grid) exchanges an impulse of restitution sys->def.restitution along the
 // contact normal and is pushed apart; each object pushed gets sys->separated[i] = 1 (the caller

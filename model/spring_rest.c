@@ -29,26 +29,19 @@
 //    it is not stepped.
 #include <string.h>
 
-#include "spring_collide.h"
 #include "spring_contact.h"
+#include "spring_impulse.h"
 #include "spring_params.h"
 #include "spring_rest.h"
 #include "spring_solve.h"
+#include "spring_touch.h"
 
-#define HS_REST_STICK_SPEED 1e-6   // m/s: slower than this a contact sticks (spring_contact.c's)
 #define HS_REST_HOLD_TRAVEL 1e-9   // m: a pull on the spring that moves an object less is held
 #define HS_REST_APPROACH 1e-9      // m/s: a pair approaching slower is not answered by an impulse
 #define HS_REST_MAX_PASSES 64      // impulse passes over the touches
 // m/s × dt: pairs apart by up to this join the solve ahead of their meeting. Two objects meeting
 // from rest at less than the bounce speed (a resting push) close at most v_b dt / 2 in a frame.
 #define HS_REST_AHEAD (0.5 * HS_REST_BOUNCE_SPEED)
-
-double hs_spring_pair_restitution(const hs_world *world, const hs_spring_system *sys, int a, int b) {
-	double ea = world->bodies[a].restitution, eb = world->bodies[b].restitution;
-	ea = ea < 0.0 ? sys->def.restitution : ea;
-	eb = eb < 0.0 ? sys->def.restitution : eb;
-	return fmin(ea, eb);
-}
 
 // Gravity and the spring on object i, with every object held where it is: the spring as the frame
 // begins (a pull growing through the frame then presses the object on into what it touches, and
@@ -119,33 +112,6 @@ static void collect_active(hs_world *world, hs_spring_system *sys) {
 		}
 }
 
-// True when the floor's static friction takes the impulse `push` (N s) on object i within the
-// frame: i lies on the floor and does not slide, the push goes along or into the floor, and its
-// horizontal part is at most μ m g dt.
-static bool floor_takes(const hs_world *world, const hs_spring_system *sys, int i, hs_vec3 push) {
-	const hs_body *b = &world->bodies[i];
-	double tol = world->def.floor_tolerance, grip = sys->def.friction_static * b->mass * hs_length(world->def.gravity);
-	return b->pos.z + sys->geom[i].lo.z <= tol && hs_length(hs_v3(b->vel.x, b->vel.y, 0.0)) <= HS_REST_STICK_SPEED &&
-	       push.z <= 0.0 && hs_length(hs_v3(push.x, push.y, 0.0)) <= grip * world->def.dt;
-}
-
-bool hs_spring_pair_impulse(hs_world *world, const hs_spring_system *sys, int i, int j, hs_vec3 n, double e,
-                            bool resting) {
-	hs_body *a = &world->bodies[i], *b = &world->bodies[j];
-	double vn = hs_dot(hs_sub(b->vel, a->vel), n);
-	if (!(vn < 0.0))
-		return false;
-	double wa = 1.0 / a->mass, wb = 1.0 / b->mass;
-	if (resting && floor_takes(world, sys, i, hs_scale(n, (1.0 + e) * vn / wb)))
-		wa = 0.0; // the floor holds a: b stops against it
-	else if (resting && floor_takes(world, sys, j, hs_scale(n, -(1.0 + e) * vn / wa)))
-		wb = 0.0;
-	double impulse = -(1.0 + e) * vn / (wa + wb);
-	a->vel = hs_mul_add(a->vel, -impulse * wa, n);
-	b->vel = hs_mul_add(b->vel, impulse * wb, n);
-	return true;
-}
-
 // Impulses between touching objects still approaching, pair by pair: each a collision of two
 // bodies of restitution e ≤ 1 (or an absorption by the floor or a wall), so no pass adds energy;
 // a slow one (a contact that persists) is a resting push: against an object the floor's static
@@ -195,10 +161,10 @@ static bool closes(hs_world *world, hs_spring_system *sys, const hs_spring_touch
 	double an = free_approach(world, sys, c, dt), vn = hs_dot(hs_sub(b->vel, a->vel), c->n);
 	if (!(an < 0.0 && vn < -0.5 * an * dt))
 		return false;
-	double wa = 1.0 / a->mass, wb = 1.0 / b->mass; // an object the floor holds does not move (floor_takes)
-	if (floor_takes(world, sys, c->a, hs_scale(c->n, -vn / wb)))
+	double wa = 1.0 / a->mass, wb = 1.0 / b->mass; // an object the floor holds does not move (hs_spring_floor_takes)
+	if (hs_spring_floor_takes(world, sys, c->a, hs_scale(c->n, -vn / wb)))
 		wa = 0.0;
-	else if (floor_takes(world, sys, c->b, hs_scale(c->n, vn / wa)))
+	else if (hs_spring_floor_takes(world, sys, c->b, hs_scale(c->n, vn / wa)))
 		wb = 0.0;
 	double j = vn / (wa + wb);
 	a->vel = hs_mul_add(a->vel, j * wa, c->n);

@@ -21,14 +21,4 @@ void hs_spring_rest(hs_world *world, hs_spring_system *sys);
 // is held there all the same (it would step and fall back into the same place every frame).
 #define HS_REST_DRIFT 1e-4
 
-// The impulse of restitution e along n (unit, from i to j) when i and j approach (true then).
-// For a resting contact (`resting`), an object lying on the floor whose static friction takes the
-// impulse within the frame (μ m g dt) does not move: the other stops against it.
-bool hs_spring_pair_impulse(hs_world *world, const hs_spring_system *sys, int i, int j, hs_vec3 n, double e,
-                            bool resting);
-
-// The restitution of a pair of objects: the smaller of their own (hs_object_def.restitution; the
-// model's where unset).
-double hs_spring_pair_restitution(const hs_world *world, const hs_spring_system *sys, int a, int b);
-
 #endif

@@ -160,9 +160,10 @@ static inline hs_vec3 hs_spring_anchor_velocity(const hs_spring_system *sys, dou
 	return hs_scale(hs_sub(hs_spring_anchor(sys), hs_spring_anchor_prev(sys)), 1.0 / dt);
 }
 
-// Object i, not on the spring, through `dt` seconds of free motion on the floor or in the air from
-// where it is (spring_step.c): the rest of a frame after a collision within it (spring_collide.c).
-void hs_spring_advance(hs_world *world, hs_spring_system *sys, int i, double dt);
+// The system for a world of up to max_objects objects whose tracker starts at `time` (s); NULL
+// when out of memory. `def` is valid (hs_spring_def_valid).
+hs_spring_system *hs_spring_system_create(const hs_spring_def *def, int max_objects, double time);
+void hs_spring_system_destroy(hs_spring_system *system);
 
 // The stylus points along its own +x axis: the pointing ray (ray casting, §3) and the fishing rod.
 #define HS_STYLUS_AXIS hs_v3(1.0, 0.0, 0.0)

@@ -6,7 +6,7 @@
 // world step has already swept the fall and rectified faces flush with each other).
 #include "broadphase.h"
 #include "clip.h"
-#include "manipulate.h"
+#include "interfere.h"
 #include "motion.h"
 #include "stacking.h"
 #include "support.h"

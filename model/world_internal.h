@@ -3,6 +3,7 @@
 #ifndef HS_WORLD_INTERNAL_H
 #define HS_WORLD_INTERNAL_H
 
+#include <math.h>
 #include <stdbool.h>
 #include <stdint.h>
 
@@ -64,7 +65,7 @@ struct hs_world {
 	hs_world_counters counters; // numeric_faults is STATE, the rest are work counters
 	long first_fault_frame;     // STATE: frame of the first numeric fault (-1: none)
 	int first_fault_object;     // STATE: its object index (-1: none or not an object's)
-	hs_spring_system *spring;   // STATE (its own walk); NULL unless the world runs the spring model
+	hs_spring_system *spring;   // STATE (its own walk); made by hs_world_create for a spring world (def.kind), NULL otherwise
 	// SCRATCH for the floor and support tests, sized at hs_world_add_shape for the largest shape:
 	// hs_motion_pose_vertices writes scratch_world, hs_motion_floor_points / support.c write
 	// scratch_points, hs_motion_settle builds scratch_hull; each is read only by the caller that
@@ -174,8 +175,20 @@ static inline int hs_shape_index(const hs_world *world, hs_shape_id id) {
 	return (int)id.index1 - 1;
 }
 
+// *status = value, when the caller asked for it.
+static inline void hs_set_status(hs_status *status, hs_status value) {
+	if (status)
+		*status = value;
+}
+
+// Every component finite and within ±limit (the API's checks of coordinates and speeds).
+static inline bool hs_within(hs_vec3 v, double limit) {
+	return fabs(v.x) <= limit && fabs(v.y) <= limit && fabs(v.z) <= limit;
+}
+
 // Numeric trouble (a non-finite value caught and frozen): counts it and remembers the first
 // (frame, object); `object` -1 when the fault belongs to no single object.
+// Defined in world_base.c, below every stage.
 void hs_world_note_fault(hs_world *world, int object);
 
 #endif

@@ -46,11 +46,11 @@ static hs_world *make_world(hs_integrator integrator, double dt, double z, hs_ob
 	hs_world_def wd = hs_default_world_def();
 	wd.dt = dt;
 	wd.gravity = hs_v3(0.0, 0.0, 0.0); // k is sized with standard gravity; no weight: equilibrium at x0
-	hs_spring_def sd = hs_default_spring_def();
-	sd.integrator = integrator;
+	wd.kind = HS_WORLD_SPRING;
+	wd.spring.integrator = integrator;
 	hs_world *w = hs_world_create(&wd, &st);
 	hs_shape *ball = hs_shape_sphere(0.3, &st);
-	if (!w || !ball || hs_world_enable_springs(w, &sd) != HS_OK) {
+	if (!w || !ball) {
 		fprintf(stderr, "spring_damping: cannot make a spring world: %s\n", hs_status_string(st));
 		hs_shape_destroy(ball);
 		hs_world_destroy(w);

@@ -398,15 +398,19 @@ static void scene_create(scene *sc, unsigned long seed) {
 	def.max_objects = def.max_shapes = MAX_OBJECTS;
 	def.max_hands = 1;
 	def.stacking = gsl_rng_uniform(sc->rng) < 0.5 ? HS_STACKING_PAPER : HS_STACKING_SUPPORT;
+	double reach = 0.0;
+	if (sc->spring) { // drawn before the world is made, in the order they always were
+		hs_spring_def sd = hs_default_spring_def();
+		reach = sc->reach = uniform(sc->rng, 0.6, 1.2);
+		sd.walls = (hs_spring_walls){gsl_rng_uniform(sc->rng) < 0.7, -reach, reach, -reach, reach};
+		sd.restitution = gsl_rng_uniform(sc->rng) < 0.5 ? 1.0 : uniform(sc->rng, 0.0, 1.0); // elastic: the default
+		def.kind = HS_WORLD_SPRING;
+		def.spring = sd;
+	}
 	hs_status st = HS_OK;
 	sc->world = hs_world_create(&def, &st);
 	need(sc->world != NULL, "world");
 	if (sc->spring) {
-		hs_spring_def sd = hs_default_spring_def();
-		double reach = sc->reach = uniform(sc->rng, 0.6, 1.2);
-		sd.walls = (hs_spring_walls){gsl_rng_uniform(sc->rng) < 0.7, -reach, reach, -reach, reach};
-		sd.restitution = gsl_rng_uniform(sc->rng) < 0.5 ? 1.0 : uniform(sc->rng, 0.0, 1.0); // elastic: the default
-		need(hs_world_enable_springs(sc->world, &sd) == HS_OK, "springs");
 		sc->row = gsl_rng_uniform(sc->rng) < 0.3;
 		spring_objects(sc, reach);
 		sc->noise_options = (hs_noise_options){.stylus = sc->noisy};

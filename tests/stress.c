@@ -419,13 +419,14 @@ static void run_spring_hang(stats *st, double dt, double mass, double size, hs_i
                             double rest_length_min, long frames) {
 	scene sc;
 	hs_world_def def = world_def(dt, 2);
-	scene_init(&sc, &def);
 	hs_spring_def sd = hs_default_spring_def();
 	sd.integrator = integrator;
 	sd.rest_length_min = rest_length_min;
 	if (sd.rest_length_ref < rest_length_min)
 		sd.rest_length_ref = rest_length_min;
-	need(hs_world_enable_springs(sc.world, &sd) == HS_OK, "enable springs");
+	def.kind = HS_WORLD_SPRING;
+	def.spring = sd;
+	scene_init(&sc, &def);
 	hs_shape_id box = scene_shape(&sc, hs_shape_box(hs_v3(size, size, size), NULL));
 	double density = mass / (size * size * size);
 	// rest length of this mass: the spring stretches 20 % more when hanging
@@ -565,10 +566,11 @@ static void case_interpenetrating(stats *st) {
 	// spring model: through the floor, through each wall, into each other
 	scene sc;
 	hs_world_def def = world_def(1.0 / 60, 8);
-	scene_init(&sc, &def);
 	hs_spring_def sd = hs_default_spring_def();
 	sd.walls = (hs_spring_walls){true, -1.0, 1.0, -0.5, 0.5};
-	need(hs_world_enable_springs(sc.world, &sd) == HS_OK, "springs");
+	def.kind = HS_WORLD_SPRING;
+	def.spring = sd;
+	scene_init(&sc, &def);
 	sc.walls = true;
 	sc.wall = sd.walls;
 	hs_shape_id box = scene_shape(&sc, hs_shape_box(hs_v3(0.2, 0.2, 0.2), NULL));
@@ -818,11 +820,12 @@ static void case_spring_energy(stats *st) {
 		scene sc;
 		hs_world_def def = world_def(1.0 / 60, 40);
 		def.gravity = ZERO;
-		scene_init(&sc, &def);
 		hs_spring_def sd = hs_default_spring_def();
 		sd.restitution = e ? 0.5 : 1.0;
 		sd.walls = (hs_spring_walls){true, -2.0, 2.0, -2.0, 2.0};
-		need(hs_world_enable_springs(sc.world, &sd) == HS_OK, "springs");
+		def.kind = HS_WORLD_SPRING;
+		def.spring = sd;
+		scene_init(&sc, &def);
 		sc.walls = true;
 		sc.wall = sd.walls;
 		hs_shape_id ball = scene_shape(&sc, hs_shape_sphere(0.1, NULL));
@@ -878,9 +881,8 @@ static void case_many(stats *st) {
 	// and 10,000 objects in a spring world (elastic collisions are pairwise)
 	scene sc;
 	hs_world_def def = world_def(1.0 / 60, 10000);
+	def.kind = HS_WORLD_SPRING; // the default spring definition
 	scene_init(&sc, &def);
-	hs_spring_def sd = hs_default_spring_def();
-	need(hs_world_enable_springs(sc.world, &sd) == HS_OK, "springs");
 	hs_shape_id ball = scene_shape(&sc, hs_shape_sphere(0.02, NULL));
 	for (int r = 0; r < 100; ++r)
 		for (int c = 0; c < 100; ++c)

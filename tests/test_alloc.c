@@ -251,12 +251,11 @@ static void test_spring_world(void **state) {
 	for (int integrator = 0; integrator < 4; ++integrator) {
 		hs_world_def def = hs_default_world_def();
 		def.max_objects = 8;
+		def.kind = HS_WORLD_SPRING;
+		def.spring.integrator = (hs_integrator)integrator;
+		def.spring.walls = (hs_spring_walls){true, -1.0, 3.0, -1.0, 1.0};
 		hs_world *w = hs_world_create(&def, NULL);
 		assert_non_null(w);
-		hs_spring_def sd = hs_default_spring_def();
-		sd.integrator = (hs_integrator)integrator;
-		sd.walls = (hs_spring_walls){true, -1.0, 3.0, -1.0, 1.0};
-		assert_int_equal(hs_world_enable_springs(w, &sd), HS_OK);
 		hs_shape_id ball = add_shape(w, hs_shape_sphere(0.05, NULL));
 		hs_shape_id box = add_shape(w, hs_shape_box(hs_v3(0.1, 0.1, 0.1), NULL));
 		hs_object_id a = add_object(w, ball, hs_v3(0, 0, 0.05), hs_quat_identity(), hs_v3(0, 0, 0));

@@ -25,9 +25,11 @@ static const double Inf = INFINITY;
 // The shape handle of the last small_world.
 static hs_shape_id small_shape;
 
-// A world with one 10 cm cube (handle 1) and one hand (handle 1), room for one more object.
-static hs_world *small_world(hs_object_id *object, hs_hand_id *hand) {
+// A world of the given kind with one 10 cm cube (handle 1) and one hand (handle 1), room for one
+// more object.
+static hs_world *small_world_of(hs_world_kind kind, hs_object_id *object, hs_hand_id *hand) {
 	hs_world_def def = hs_default_world_def();
+	def.kind = kind;
 	def.max_objects = 2;
 	def.max_shapes = 2;
 	def.max_hands = 1;
@@ -47,6 +49,25 @@ static hs_world *small_world(hs_object_id *object, hs_hand_id *hand) {
 	*hand = hs_world_add_hand(w, &hd, NULL);
 	assert_int_equal(hand->index1, 1);
 	return w;
+}
+
+static hs_world *small_world(hs_object_id *object, hs_hand_id *hand) {
+	return small_world_of(HS_WORLD_HAND, object, hand);
+}
+
+// The status hs_world_create gives a world of `kind` with the spring definition `sd`.
+static hs_status create_status(hs_world_kind kind, const hs_spring_def *sd) {
+	hs_world_def def = hs_default_world_def();
+	def.kind = kind;
+	def.spring = *sd;
+	hs_status status = HS_ERR_NO_MEMORY;
+	hs_world *w = hs_world_create(&def, &status);
+	if (w)
+		assert_int_equal(status, HS_OK);
+	else
+		assert_int_not_equal(status, HS_OK);
+	hs_world_destroy(w);
+	return status;
 }
 
 // Runs `call` in a child; fails when the child does not exit normally with status 0.
@@ -619,7 +640,7 @@ static void test_springs(void **state) {
 	hs_hand_id hand;
 	hs_world *w = small_world(&obj, &hand);
 	hs_spring_def good = hs_default_spring_def();
-	// everything that needs the spring model refuses before it is enabled
+	// everything that needs the spring model refuses in a hand world
 	assert_false(hs_world_springs_enabled(w));
 	assert_false(hs_world_springs_enabled(NULL));
 	assert_int_equal(hs_world_set_stylus(w, hs_v3(0, 0, 1), hs_quat_identity(), false), HS_ERR_INVALID_ARGUMENT);
@@ -641,8 +662,10 @@ static void test_springs(void **state) {
 	do {                                                                                                \
 		d = good;                                                                                       \
 		d.field = (value);                                                                              \
-		if (hs_world_enable_springs(w, &d) != HS_ERR_INVALID_ARGUMENT)                                  \
-			fail_msg("hs_world_enable_springs accepted " #field " = " #value);                           \
+		if (create_status(HS_WORLD_SPRING, &d) != HS_ERR_INVALID_ARGUMENT)                              \
+			fail_msg("hs_world_create accepted a spring world with " #field " = " #value);             \
+		if (create_status(HS_WORLD_HAND, &d) != HS_OK) /* a hand world never reads it */              \
+			fail_msg("hs_world_create refused a hand world with spring." #field " = " #value);         \
 	} while (0)
 	REJECT_SPRING(integrator, (hs_integrator)9);
 	REJECT_SPRING(friction_static, NaN);
@@ -665,13 +688,14 @@ static void test_springs(void **state) {
 	REJECT_SPRING(select_range, 0.0);
 	d = good;
 	d.walls = (hs_spring_walls){true, 1.0, -1.0, -1.0, 1.0};
-	assert_int_equal(hs_world_enable_springs(w, &d), HS_ERR_INVALID_ARGUMENT);
+	assert_int_equal(create_status(HS_WORLD_SPRING, &d), HS_ERR_INVALID_ARGUMENT);
 	d.walls = (hs_spring_walls){true, -1.0, 1.0, NaN, 1.0};
-	assert_int_equal(hs_world_enable_springs(w, &d), HS_ERR_INVALID_ARGUMENT);
-	assert_int_equal(hs_world_enable_springs(NULL, &good), HS_ERR_INVALID_ARGUMENT);
-	assert_int_equal(hs_world_enable_springs(w, NULL), HS_ERR_INVALID_ARGUMENT);
+	assert_int_equal(create_status(HS_WORLD_SPRING, &d), HS_ERR_INVALID_ARGUMENT);
+	assert_int_equal(create_status((hs_world_kind)2, &good), HS_ERR_INVALID_ARGUMENT); // no such kind
+	assert_int_equal(create_status(HS_WORLD_SPRING, &good), HS_OK);
 	assert_false(hs_world_springs_enabled(w));
-	assert_int_equal(hs_world_enable_springs(w, &good), HS_OK);
+	hs_world_destroy(w); // the same world, made a spring world
+	w = small_world_of(HS_WORLD_SPRING, &obj, &hand);
 	assert_true(hs_world_springs_enabled(w));
 	// no stylus yet: attaching refuses
 	assert_int_equal(hs_world_spring_attach(w, obj), HS_ERR_INVALID_ARGUMENT);

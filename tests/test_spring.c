@@ -23,11 +23,11 @@ static hs_world *spring_world(double dt, hs_vec3 gravity, const hs_spring_def *s
 	hs_world_def def = hs_default_world_def();
 	def.dt = dt;
 	def.gravity = gravity;
+	def.kind = HS_WORLD_SPRING;
+	def.spring = sd ? *sd : hs_default_spring_def();
 	hs_status st;
 	hs_world *w = hs_world_create(&def, &st);
 	assert_non_null(w);
-	hs_spring_def d = sd ? *sd : hs_default_spring_def();
-	assert_int_equal(hs_world_enable_springs(w, &d), HS_OK);
 	assert_true(hs_world_springs_enabled(w));
 	return w;
 }
@@ -877,12 +877,10 @@ static void test_wall_rest_any_dt(void **state) {
 static void test_invalid_input_rejected(void **state) {
 	(void)state;
 	hs_spring_def sd = hs_default_spring_def();
-	assert_int_equal(hs_world_enable_springs(NULL, &sd), HS_ERR_INVALID_ARGUMENT);
 	hs_world_def wd = hs_default_world_def();
 	hs_status st;
 	hs_world *w = hs_world_create(&wd, &st);
 	assert_non_null(w);
-	assert_int_equal(hs_world_enable_springs(w, NULL), HS_ERR_INVALID_ARGUMENT);
 	// a world without springs refuses the spring calls
 	assert_false(hs_world_springs_enabled(w));
 	assert_int_equal(hs_world_set_stylus(w, hs_v3(0, 0, 0), hs_quat_identity(), false), HS_ERR_INVALID_ARGUMENT);
@@ -904,9 +902,16 @@ static void test_invalid_input_rejected(void **state) {
 	bad[9].motion_speed = 0.05; // below rest_speed: no hysteresis
 	bad[10].catch_radius = NAN;
 	bad[11].select_range = 0.0;
-	for (int k = 0; k < 12; ++k)
-		assert_int_equal(hs_world_enable_springs(w, &bad[k]), HS_ERR_INVALID_ARGUMENT);
-	assert_int_equal(hs_world_enable_springs(w, &sd), HS_OK);
+	wd.kind = HS_WORLD_SPRING;
+	for (int k = 0; k < 12; ++k) { // a spring world with an invalid spring definition is not made
+		wd.spring = bad[k];
+		assert_null(hs_world_create(&wd, &st));
+		assert_int_equal(st, HS_ERR_INVALID_ARGUMENT);
+	}
+	hs_world_destroy(w);
+	wd.spring = sd;
+	w = hs_world_create(&wd, &st);
+	assert_non_null(w);
 	hs_object_id none = {0}, bogus = {5, 0, 0};
 	assert_int_equal(hs_world_spring_attach(w, none), HS_ERR_INVALID_ARGUMENT);
 	assert_int_equal(hs_world_set_stylus(w, hs_v3(NAN, 0, 0), hs_quat_identity(), false), HS_ERR_INVALID_ARGUMENT);

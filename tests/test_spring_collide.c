@@ -9,6 +9,7 @@
 #include <cmocka.h>
 
 #include "spring_collide.h"
+#include "spring_touch.h"
 #include "test_util.h"
 
 #define SQRT1_2 0.70710678118654752440
@@ -21,12 +22,11 @@ typedef struct pair {
 // A spring world with shapes a and b (taken over) at the origin in the given orientations.
 static pair make_pair(hs_shape *a, hs_quat ra, hs_shape *b, hs_quat rb) {
 	hs_world_def def = hs_default_world_def();
+	def.kind = HS_WORLD_SPRING;
 	hs_status st;
 	pair p;
 	p.world = hs_world_create(&def, &st);
 	assert_non_null(p.world);
-	hs_spring_def sd = hs_default_spring_def();
-	assert_int_equal(hs_world_enable_springs(p.world, &sd), HS_OK);
 	hs_shape *shapes[2] = {a, b};
 	hs_quat rots[2] = {ra, rb};
 	for (int k = 0; k < 2; ++k) {
@@ -142,11 +142,11 @@ static void test_pyramid_sphere_libccd(void **state) {
 static void test_ball_passes_rotated_rod(void **state) {
 	(void)state;
 	hs_world_def def = hs_default_world_def();
+	def.kind = HS_WORLD_SPRING;
+	def.spring.friction_static = def.spring.friction_sliding = 0.0;
 	hs_status st;
 	hs_world *w = hs_world_create(&def, &st);
-	hs_spring_def sd = hs_default_spring_def();
-	sd.friction_static = sd.friction_sliding = 0.0;
-	assert_int_equal(hs_world_enable_springs(w, &sd), HS_OK);
+	assert_non_null(w);
 	hs_object_def od = hs_default_object_def();
 	hs_shape *rod = hs_shape_box(hs_v3(1.0, 0.05, 0.05), &st);
 	od.shape = hs_world_add_shape(w, rod, &st);
@@ -185,11 +185,11 @@ static void test_no_tunnelling(void **state) {
 	for (int kind = 0; kind < 3; ++kind) {
 		hs_world_def def = hs_default_world_def();
 		def.dt = 1.0 / 12.0;
+		def.kind = HS_WORLD_SPRING;
+		def.spring.friction_static = def.spring.friction_sliding = 0.0;
 		hs_status st;
 		hs_world *w = hs_world_create(&def, &st);
-		hs_spring_def sd = hs_default_spring_def();
-		sd.friction_static = sd.friction_sliding = 0.0;
-		assert_int_equal(hs_world_enable_springs(w, &sd), HS_OK);
+		assert_non_null(w);
 		hs_shape *ball = hs_shape_sphere(0.05, &st);
 		hs_shape *target = kind == 0 ? hs_shape_sphere(0.05, &st) : hs_shape_box(hs_v3(0.1, 0.1, 0.1), &st);
 		hs_object_def od = hs_default_object_def();
@@ -234,14 +234,16 @@ static uint64_t box_of_balls(bool all_pairs, double spacing, long *steps) {
 	hs_world_def def = hs_default_world_def();
 	def.dt = 1.0 / 60.0;
 	def.max_objects = BALLS;
-	hs_status st;
-	hs_world *w = hs_world_create(&def, &st);
 	hs_spring_def sd = hs_default_spring_def();
 	sd.friction_static = sd.friction_sliding = 0.0;
 	sd.walls.enabled = true;
 	sd.walls.x_min = sd.walls.y_min = 0.0;
 	sd.walls.x_max = sd.walls.y_max = SIDE * spacing;
-	assert_int_equal(hs_world_enable_springs(w, &sd), HS_OK);
+	def.kind = HS_WORLD_SPRING;
+	def.spring = sd;
+	hs_status st;
+	hs_world *w = hs_world_create(&def, &st);
+	assert_non_null(w);
 	w->spring->all_pairs = all_pairs;
 	hs_shape *ball = hs_shape_sphere(0.05, &st);
 	hs_object_def od = hs_default_object_def();

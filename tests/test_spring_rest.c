@@ -29,8 +29,6 @@ static scene make_scene(double hz, double wall, double friction) {
 	def.max_objects = 256;
 	hs_status st;
 	scene s;
-	s.world = hs_world_create(&def, &st);
-	assert_non_null(s.world);
 	hs_spring_def sd = hs_default_spring_def();
 	sd.friction_static = sd.friction_sliding = friction;
 	if (wall > 0.0) {
@@ -38,7 +36,10 @@ static scene make_scene(double hz, double wall, double friction) {
 		sd.walls.x_min = sd.walls.y_min = -wall;
 		sd.walls.x_max = sd.walls.y_max = wall;
 	}
-	assert_int_equal(hs_world_enable_springs(s.world, &sd), HS_OK);
+	def.kind = HS_WORLD_SPRING;
+	def.spring = sd;
+	s.world = hs_world_create(&def, &st);
+	assert_non_null(s.world);
 	hs_shape *ball = hs_shape_sphere(0.05, &st), *box = hs_shape_box(hs_v3(0.1, 0.1, 0.1), &st);
 	s.sphere = hs_world_add_shape(s.world, ball, &st);
 	s.cube = hs_world_add_shape(s.world, box, &st);

@@ -315,20 +315,26 @@ static hs_vec3 noisy(hs_vec3 p, int f) {
 	return p;
 }
 
-static hs_world *spring_world(bool noise, hs_object_id *ball) {
+// A spring world of the spring definition sd, with two spheres and a box.
+static hs_world *spring_world_with(bool noise, hs_object_id *ball, const hs_spring_def *sd) {
 	hs_world_def def = hs_default_world_def();
 	def.max_objects = 4;
+	def.kind = HS_WORLD_SPRING;
+	def.spring = *sd;
 	hs_world *w = hs_world_create(&def, NULL);
 	assert_non_null(w);
-	hs_spring_def sd = hs_default_spring_def();
 	stylus_noise = noise;
-	assert_int_equal(hs_world_enable_springs(w, &sd), HS_OK);
 	hs_shape_id sphere = add_shape(w, hs_shape_sphere(0.05, NULL));
 	hs_shape_id box = add_shape(w, hs_shape_box(hs_v3(0.1, 0.1, 0.1), NULL));
 	*ball = add_object(w, sphere, hs_v3(0, 0, 0.05), hs_v3(0, 0, 0));
 	add_object(w, box, hs_v3(1, 0, 0.05), hs_v3(-1, 0, 0));
 	add_object(w, sphere, hs_v3(0.5, 0.3, 0.6), hs_v3(0, 0, 0));
 	return w;
+}
+
+static hs_world *spring_world(bool noise, hs_object_id *ball) {
+	hs_spring_def sd = hs_default_spring_def();
+	return spring_world_with(noise, ball, &sd);
 }
 
 static void drive_stylus(hs_world *w, int f) {
@@ -485,10 +491,9 @@ static void test_refuses_other_worlds(void **state) {
 	unsigned char *spring_state = save(springs, &spring_size);
 	expect_refused(r.world, spring_state, spring_size, "kind of world");
 	expect_refused(springs, hand_state, size, "kind of world");
-	hs_world *noisy = spring_world(false, &ball);
 	hs_spring_def sd = hs_default_spring_def();
 	sd.friction_static = 0.7; // another spring definition
-	assert_int_equal(hs_world_enable_springs(noisy, &sd), HS_OK);
+	hs_world *noisy = spring_world_with(false, &ball, &sd);
 	expect_refused(noisy, spring_state, spring_size, "spring definition");
 	free(hand_state);
 	free(spring_state);

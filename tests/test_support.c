@@ -9,6 +9,7 @@
 #include <cmocka.h>
 
 #include "broadphase.h"
+#include "interfere.h"
 #include "manipulate.h"
 #include "stacking.h"
 #include "support.h"

@@ -42,11 +42,11 @@ static hs_world *spring_world(double dt, const hs_spring_def *sd) {
 	hs_world_def def = hs_default_world_def();
 	def.dt = dt;
 	def.gravity = EARTH;
+	def.kind = HS_WORLD_SPRING;
+	def.spring = sd ? *sd : hs_default_spring_def();
 	hs_status st;
 	hs_world *w = hs_world_create(&def, &st);
 	assert_non_null(w);
-	hs_spring_def d = sd ? *sd : hs_default_spring_def();
-	assert_int_equal(hs_world_enable_springs(w, &d), HS_OK);
 	return w;
 }
 

@@ -4,7 +4,7 @@
 // what they need), in CPU time of the process, K times on a freshly loaded scenario; loading and the
 // expectation check are outside the clock. --instr runs one repeat again under callgrind, counting
 // the measured frames only (--toggle-collect on hs_bench_cmd_frames), and splits the frame into
-// the stages hs_scenario_step and hs_world_step call (model/world.c).
+// the stages hs_scenario_step and the world's step pipeline call (model/world_step.c, step_hand.c).
 #include "bench_cmd.h"
 
 #include <errno.h>
@@ -227,7 +227,8 @@ static bool callgrind_run(const char *file, long frames, const char *dir) {
 	return true;
 }
 
-// The stages of a frame: what hs_scenario_step calls, and what hs_world_step calls in it.
+// The stages of a frame: what hs_scenario_step calls, and what the world's step calls in it: the
+// hand pipeline hs_step_hand (model/step_hand.c, its stages inlined), or the spring one whole.
 typedef struct bench_stage {
 	const char *caller, *callee[2], *label;
 } bench_stage;
@@ -235,11 +236,10 @@ typedef struct bench_stage {
 static const bench_stage frame_stages[] = {
     {"hs_scenario_step", {"hs_hands_drive", "hs_stylus_drive"}, "inputs: hands and stylus set from their scripts"},
     {"hs_scenario_step", {"hs_world_step", NULL}, "world step (hs_world_step), of which:"},
-    {"hs_world_step", {"hs_grid_build", NULL}, "  grid rebuilt (objects added)"},
-    {"hs_world_step", {"hs_tracking_update", NULL}, "  hands' tracking (hs_tracking_update)"},
-    {"hs_world_step", {"hs_manipulate", NULL}, "  hands on objects: contacts, grasps, pushes (hs_manipulate)"},
-    {"hs_world_step", {"hs_spring_step", NULL}, "  spring model (hs_spring_step)"},
-    {"hs_world_step", {"hs_digest_all_stale", NULL}, "  state digests (hs_digest_all_stale)"},
+    {"hs_step_hand", {"hs_grid_build", NULL}, "  grid rebuilt (objects added)"},
+    {"hs_step_hand", {"hs_tracking_update", NULL}, "  hands' tracking (hs_tracking_update)"},
+    {"hs_step_hand", {"hs_manipulate", NULL}, "  hands on objects: contacts, grasps, pushes (hs_manipulate)"},
+    {"hs_world_step", {"hs_step_spring", NULL}, "  spring model (hs_step_spring)"},
     {"hs_scenario_step", {"hs_expect_capture", NULL}, "expectations record (hs_expect_capture)"},
 };
 #define N_STAGES ((int)(sizeof frame_stages / sizeof frame_stages[0]))
@@ -257,7 +257,7 @@ static void print_stages(const hs_cg_profile *p, long frames) {
 	       (double)total / (double)frames, frames);
 	for (int i = 0; i < N_STAGES; ++i) {
 		uint64_t c = stage_cost(p, &frame_stages[i]);
-		if (strcmp(frame_stages[i].caller, "hs_world_step") == 0)
+		if (strcmp(frame_stages[i].caller, "hs_scenario_step") != 0)
 			inner += c;
 		else
 			top += c;

@@ -189,6 +189,52 @@ typedef enum hs_release_fit {
 	HS_RELEASE_FIT_QUADRATIC, ///< the slope at the release of the least-squares quadratic through where the wrist carried the object at each frame of the window; the mean for a window of one frame (two points)
 } hs_release_fit;
 
+// The spring model's definition, part of a spring world's (its section below says what it runs).
+/// How the per-frame spring-damper equation is integrated.
+typedef enum hs_integrator {
+	HS_INTEGRATOR_EXACT = 0,             ///< closed-form critically damped solution: exact for any dt (default)
+	HS_INTEGRATOR_IMPLICIT_EULER,        ///< backward Euler: unconditionally stable, first order
+	HS_INTEGRATOR_SEMI_IMPLICIT_EULER,   ///< symplectic Euler: benchmark only, unstable for large ω dt
+	HS_INTEGRATOR_RK4,                   ///< classic Runge–Kutta: benchmark only, unstable for ω dt ≳ 2.8
+} hs_integrator;
+
+/// Optional walls: vertical planes bounding the table top to [x_min, x_max] × [y_min, y_max] (m).
+typedef struct hs_spring_walls {
+	bool enabled; ///< default false
+	double x_min, x_max, y_min, y_max;
+} hs_spring_walls;
+
+typedef struct hs_spring_def {
+	hs_integrator integrator;  ///< default HS_INTEGRATOR_EXACT
+	double friction_static;    ///< μ: no sliding while the horizontal force ≤ μ N (default 0.5)
+	double friction_sliding;   ///< μ while sliding, ≤ friction_static (default 0.5: the paper's constant μ)
+	double restitution;        ///< e in [0, 1] for object–object collisions (default 1: elastic)
+	hs_spring_walls walls;     ///< default disabled
+	/// Rest length x0(m) = rest_length_ref · (m / rest_mass_ref)^rest_exponent, clamped to
+	/// [rest_length_min, rest_length_max] (m). Defaults 0.10 m at 1 kg, exponent 1/3, [0.01, 1.0] m:
+	/// x0 grows like the size of an object of fixed density (1 g → 1 cm, 1000 kg → 1 m).
+	double rest_length_ref;
+	double rest_mass_ref;      ///< kg (default 1)
+	double rest_exponent;      ///< default 1/3
+	double rest_length_min, rest_length_max;
+	double tracker_rate;       ///< Hz: tracker samples per second (default 50, §5.1)
+	int tracker_window;        ///< samples in the velocity fit, 3..HS_TRACKER_CAPACITY (default 9)
+	double rest_speed;         ///< m/s: a moving hand comes to rest below this speed (default 0.10)
+	double motion_speed;       ///< m/s: a resting hand starts moving above this speed (default 0.20)
+	double catch_radius;       ///< m: a press this close to a flying object's surface catches it, and so does a button held down with nothing attached when one arrives this close (default 0.05)
+	double grab_range;         ///< m: a press attaches the candidate only this close to its surface (default 0.5)
+	double select_range;       ///< m: length of the selection rays ('I want this one' and the stylus's pointing ray), and how far the fishing rod reaches (default 2.0)
+	double select_speed;       ///< m/s: the hand's path over the tracker's fit window selects along its heading from this speed (default 0.05)
+} hs_spring_def;
+
+/// Which model a world runs, fixed when it is created: the 1999 paper's hands (hs_world_add_hand,
+/// hs_world_set_hand, ...) or the Responsive Workbench's spring and stylus (hs_world_set_stylus,
+/// ...; the spring model's section below).
+typedef enum hs_world_kind {
+	HS_WORLD_HAND = 0,   ///< the hand model (default)
+	HS_WORLD_SPRING = 1, ///< the spring model, as hs_world_def.spring defines it
+} hs_world_kind;
+
 typedef struct hs_world_def {
 	double dt;                  ///< s, fixed frame time (default 1/60)
 	hs_vec3 gravity;            ///< m/s² (default (0, 0, -9.81))
@@ -210,13 +256,16 @@ typedef struct hs_world_def {
 	double grasp_close_mm;      ///< mm, 0..1000: a new grasp's two fingers (of one hand) must have closed by this much: their tips this much nearer than their most open lately (that peak forgets 20 mm/s); 0: no closing needed (the 1999 paper's letter). Default 10
 	bool paper_landing;         ///< false (default): a flying object that reaches the floor lands where its path through the frame met it, then is lifted out; true: lifted straight up from where the frame left it (the 1999 paper's §4.2 letter: up to the horizontal speed × dt further on; docs/model.md §5)
 	double tracking_hold_s;     ///< s, 0..HS_MAX_TRACKING_HOLD: a hand whose tracking is lost (hs_world_set_hand_tracked) keeps its grasps this long, then lets them go in place and touches nothing until tracked again (default 0.2)
+	hs_world_kind kind;         ///< the model the world runs, for its whole life (default HS_WORLD_HAND)
+	hs_spring_def spring;       ///< the spring model's definition, read when kind is HS_WORLD_SPRING (default hs_default_spring_def())
 } hs_world_def;
 
 hs_world_def hs_default_world_def(void);
 
 /// Creates a world; NULL with *status set on an invalid definition (dt outside [HS_MIN_DT, HS_MAX_DT],
 /// gravity beyond HS_MAX_GRAVITY, non-finite numbers, capacities out of range, release_window_s
-/// outside [0, HS_MAX_RELEASE_WINDOW], an unknown release_fit) or out of memory.
+/// outside [0, HS_MAX_RELEASE_WINDOW], an unknown release_fit, an unknown kind, or for a spring
+/// world an invalid hs_world_def.spring) or out of memory.
 hs_world *hs_world_create(const hs_world_def *def, hs_status *status);
 void hs_world_destroy(hs_world *world);
 
@@ -505,8 +554,9 @@ int hs_world_contacts(const hs_world *world, hs_contact *out, int max);
 
 // ---------------------------------------------------------------------------------------------
 // Spring model (Responsive Workbench): a tracked stylus moves objects through a critically damped
-// spring (Koutek & Post, §4). A world runs it once hs_world_enable_springs has been called; from
-// then on hs_world_step advances every object by this model instead of the 1999 free motion.
+// spring (Koutek & Post, §4). A world runs it when made with hs_world_def.kind HS_WORLD_SPRING
+// (hs_world_create allocates it for up to max_objects, from hs_world_def.spring); its
+// hs_world_step advances every object by this model instead of the 1999 free motion.
 //
 // Per frame: hs_world_set_stylus gives the stylus pose and button at the END of the coming frame
 // (the stylus moves linearly from its previous pose during the frame), then hs_world_step. Button
@@ -529,51 +579,11 @@ int hs_world_contacts(const hs_world *world, hs_contact *out, int max);
 // and 0.15° static accuracy, §5.1) adds that noise to the poses it passes to hs_world_set_stylus;
 // the spring's anchor then sees it too, as the paper computes the spring from the tracker data.
 
-/// How the per-frame spring-damper equation is integrated.
-typedef enum hs_integrator {
-	HS_INTEGRATOR_EXACT = 0,             ///< closed-form critically damped solution: exact for any dt (default)
-	HS_INTEGRATOR_IMPLICIT_EULER,        ///< backward Euler: unconditionally stable, first order
-	HS_INTEGRATOR_SEMI_IMPLICIT_EULER,   ///< symplectic Euler: benchmark only, unstable for large ω dt
-	HS_INTEGRATOR_RK4,                   ///< classic Runge–Kutta: benchmark only, unstable for ω dt ≳ 2.8
-} hs_integrator;
-
-/// Optional walls: vertical planes bounding the table top to [x_min, x_max] × [y_min, y_max] (m).
-typedef struct hs_spring_walls {
-	bool enabled; ///< default false
-	double x_min, x_max, y_min, y_max;
-} hs_spring_walls;
-
-typedef struct hs_spring_def {
-	hs_integrator integrator;  ///< default HS_INTEGRATOR_EXACT
-	double friction_static;    ///< μ: no sliding while the horizontal force ≤ μ N (default 0.5)
-	double friction_sliding;   ///< μ while sliding, ≤ friction_static (default 0.5: the paper's constant μ)
-	double restitution;        ///< e in [0, 1] for object–object collisions (default 1: elastic)
-	hs_spring_walls walls;     ///< default disabled
-	/// Rest length x0(m) = rest_length_ref · (m / rest_mass_ref)^rest_exponent, clamped to
-	/// [rest_length_min, rest_length_max] (m). Defaults 0.10 m at 1 kg, exponent 1/3, [0.01, 1.0] m:
-	/// x0 grows like the size of an object of fixed density (1 g → 1 cm, 1000 kg → 1 m).
-	double rest_length_ref;
-	double rest_mass_ref;      ///< kg (default 1)
-	double rest_exponent;      ///< default 1/3
-	double rest_length_min, rest_length_max;
-	double tracker_rate;       ///< Hz: tracker samples per second (default 50, §5.1)
-	int tracker_window;        ///< samples in the velocity fit, 3..HS_TRACKER_CAPACITY (default 9)
-	double rest_speed;         ///< m/s: a moving hand comes to rest below this speed (default 0.10)
-	double motion_speed;       ///< m/s: a resting hand starts moving above this speed (default 0.20)
-	double catch_radius;       ///< m: a press this close to a flying object's surface catches it, and so does a button held down with nothing attached when one arrives this close (default 0.05)
-	double grab_range;         ///< m: a press attaches the candidate only this close to its surface (default 0.5)
-	double select_range;       ///< m: length of the selection rays ('I want this one' and the stylus's pointing ray), and how far the fishing rod reaches (default 2.0)
-	double select_speed;       ///< m/s: the hand's path over the tracker's fit window selects along its heading from this speed (default 0.05)
-} hs_spring_def;
-
 hs_spring_def hs_default_spring_def(void);
 
-/// Switches a world to the spring model and allocates everything it needs (for up to the world's
-/// max_objects). Calling it again replaces the model and resets stylus, spring and tracker.
-hs_status hs_world_enable_springs(hs_world *world, const hs_spring_def *def);
 /// True when the world runs the spring model.
 bool hs_world_springs_enabled(const hs_world *world);
-/// The spring model's definition (walls, friction, ...) as enabled; HS_ERR_INVALID_ARGUMENT when
+/// The spring model's definition (walls, friction, ...) the world was made with; HS_ERR_INVALID_ARGUMENT when
 /// the world does not run it or out is NULL.
 hs_status hs_world_spring_def(const hs_world *world, hs_spring_def *out);
 

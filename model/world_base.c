@@ -1,0 +1,34 @@
+// world_base.c — what every stage of a step may ask of the world and tell it: the frame, its time,
+// the work counters and the numeric faults. It calls nothing, so the stages below the step
+// pipelines (step_hand.c, step_spring.c) never call up into them.
+#include <string.h>
+
+#include "world_internal.h"
+
+long hs_world_frame(const hs_world *world) { return world ? world->frame : 0; }
+double hs_world_time(const hs_world *world) { return world ? (double)world->frame * world->def.dt : 0.0; }
+double hs_world_dt(const hs_world *world) { return world ? world->def.dt : 0.0; }
+
+void hs_world_note_fault(hs_world *world, int object) {
+	world->counters.numeric_faults++;
+	if (world->first_fault_frame < 0) {
+		world->first_fault_frame = world->frame;
+		world->first_fault_object = object;
+	}
+}
+
+hs_status hs_world_first_fault(const hs_world *world, long *frame, hs_object_id *object) {
+	if (!world)
+		return HS_ERR_INVALID_ARGUMENT;
+	if (frame)
+		*frame = world->first_fault_frame;
+	if (object)
+		*object = hs_object_handle(world, world->first_fault_object);
+	return HS_OK;
+}
+
+hs_world_counters hs_world_get_counters(const hs_world *world) {
+	hs_world_counters none;
+	memset(&none, 0, sizeof none);
+	return world ? world->counters : none;
+}
