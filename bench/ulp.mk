@@ -19,11 +19,11 @@ ulp-cross: $(BUILD)/ulp
 	@mkdir -p $(BUILD)/cross
 	@native=$$($(BUILD)/ulp --hash); echo "native        $$native"; status=0; \
 	if command -v i686-linux-gnu-gcc >/dev/null; then \
-		i686-linux-gnu-gcc $(ULP_CROSS_FLAGS) -msse2 -mfpmath=sse -o $(BUILD)/cross/ulp-i686 bench/ulp.c model/detmath.c -lm \
+		i686-linux-gnu-gcc $(ULP_CROSS_FLAGS) -msse2 -mfpmath=sse -o $(BUILD)/cross/ulp-i686 bench/ulp.c model/detmath.c model/detmath_exp.c -lm \
 		&& h=$$($(BUILD)/cross/ulp-i686 --hash) && echo "i686 sse2     $$h" && [ "$$h" = "$$native" ] || status=1; \
 	else echo "i686: no i686-linux-gnu-gcc, skipped"; fi; \
 	if command -v aarch64-linux-gnu-gcc >/dev/null && command -v qemu-aarch64 >/dev/null; then \
-		aarch64-linux-gnu-gcc $(ULP_CROSS_FLAGS) -o $(BUILD)/cross/ulp-aarch64 bench/ulp.c model/detmath.c -lm \
+		aarch64-linux-gnu-gcc $(ULP_CROSS_FLAGS) -o $(BUILD)/cross/ulp-aarch64 bench/ulp.c model/detmath.c model/detmath_exp.c -lm \
 		&& h=$$(qemu-aarch64 -L $(AARCH64_SYSROOT) $(BUILD)/cross/ulp-aarch64 --hash) && echo "aarch64       $$h" \
 		&& [ "$$h" = "$$native" ] || status=1; \
 	else echo "aarch64: no aarch64-linux-gnu-gcc or qemu-aarch64, skipped"; fi; \
