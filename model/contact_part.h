@@ -22,7 +22,6 @@
 // for coordinates up to HS_MAX_COORDINATE (1e6 m, where a double's step is 1.2e-10 m)
 #define HS_CULL_SLACK 1e-6
 
-
 // The per-line distance tests and the frame changes are inlined (HS_FORCE_INLINE): called apart,
 // their vectors (passed by value) went through the stack on every call.
 //
@@ -73,12 +72,14 @@ static HS_FORCE_INLINE double segment_distance_sq(hs_vec3 c, hs_vec3 p0, hs_vec3
 }
 
 // Many-faced parts (HS_FACE_TREE_MIN_FACES or more) are searched through their normal-cone tree
-// (face_tree.h: the faces near the point, with the scan's answers), out of line (HS_NOINLINE); the
-// others are scanned inline, as they were.
+// (face_tree.h: the faces near the point, with the scan's answers), out of line (contact_part.c);
+// the others are scanned inline.
 static inline const hs_face_tree *tree_of(const hs_world *world, const hs_shape *shape) {
 	return &world->face_trees[shape - world->shapes];
 }
 
+// The rule ([H] §3.2 (A)): a point is in a convex part when it lies behind every face plane, here
+// of the part grown by `grow` (m; 0: the part itself).
 static inline bool scan_inside(const hs_shape *shape, const hs_part *part, hs_vec3 p, double grow) {
 	for (int f = part->first_face; f < part->first_face + part->face_count; ++f)
 		if (hs_dot(shape->faces[f].normal, p) >= shape->faces[f].offset + grow)
@@ -86,6 +87,8 @@ static inline bool scan_inside(const hs_shape *shape, const hs_part *part, hs_ve
 	return true;
 }
 
+// The face of least depth under a point (the one it is drawn back to, §3.2 rectification): the
+// first in face order on a tie.
 static inline int scan_nearest(const hs_shape *shape, const hs_part *part, hs_vec3 p) {
 	int best = part->first_face;
 	double best_depth = INFINITY;
