@@ -361,7 +361,7 @@ HS_AVX static bool held_four_clear(const hs_part *part, const held_ends *l) {
 
 // A held object's finger segment whose 4 check lines would all find nothing, decided from its
 // check points and frame before the lines are placed. A line end is its check point plus the
-// segment's y or z axis times finger_radius (hand.c, segment_lines; mirrored for a left hand):
+// segment's y or z axis times finger_radius (hand_lines.c, segment_lines; mirrored for a left hand):
 // the axes read off the segment's quaternion and taken into the body frame by one turn
 // (held_turn), it differs from the placed and moved end by rounding alone, far below
 // HS_CULL_SLACK. Each line must, by that slack, lie beside a touching check point inside the

@@ -311,32 +311,6 @@ static unsigned hand_pose_wrist(const reading *r, hand_pose *out, hs_hand *cache
 
 static hs_vec3 mirror_if(bool left, hs_vec3 v) { return left ? hs_v3(v.x, -v.y, v.z) : v; }
 
-// A segment's 4 check lines from its ends a, b and its frame q: line e runs from a + off to b + off,
-// off = hs_quat_rotate(q, v[e]), mirrored for a left hand. With SSE2, two lines at a time, one per
-// lane: each lane does hs_quat_rotate's products and sums, then the additions, in their order
-// (the same bits); the mirror is the sign of y.
-static void segment_lines(hs_quat q, const hs_vec3 v[4], hs_vec3 a, hs_vec3 b, bool left, hs_vec3 out[4][2]) {
-	int e = 0;
-#if defined(__SSE2__)
-	const __m128d flip = _mm_set1_pd(left ? -0.0 : 0.0);
-	for (; e < 4; e += 2) {
-		hs_lanes2 off = hs_lanes2_rotate(q, hs_lanes2_load(&v[e], &v[e + 1]));
-		__m128d ox = off.x, oy = off.y, oz = off.z;
-		hs_lanes2 from = {_mm_add_pd(_mm_set1_pd(a.x), ox), _mm_xor_pd(_mm_add_pd(_mm_set1_pd(a.y), oy), flip),
-		                  _mm_add_pd(_mm_set1_pd(a.z), oz)};
-		hs_lanes2 to = {_mm_add_pd(_mm_set1_pd(b.x), ox), _mm_xor_pd(_mm_add_pd(_mm_set1_pd(b.y), oy), flip),
-		                _mm_add_pd(_mm_set1_pd(b.z), oz)};
-		hs_lanes2_store(from, &out[e][0], &out[e + 1][0]);
-		hs_lanes2_store(to, &out[e][1], &out[e + 1][1]);
-	}
-#endif
-	for (; e < 4; e++) {
-		hs_vec3 off = hs_quat_rotate(q, v[e]);
-		out[e][0] = mirror_if(left, hs_add(a, off));
-		out[e][1] = mirror_if(left, hs_add(b, off));
-	}
-}
-
 // The shape in the wrist frame without its lines: the check points (mirrored for a left hand)
 // and each segment's frame. With a cache (the hand), `out` is its local shape, which holds the
 // last shape made through it: fingers that stayed the same (returned) are not written again.
@@ -350,18 +324,6 @@ static unsigned local_pose(const hs_hand_def *def, const hs_glove_table *table, 
 			out->points[i] = mirror_if(true, out->points[i]);
 	}
 	return same;
-}
-
-// Check lines (§3.1) of segment s: the 4 long edges of a square prism around it, edge e offset from
-// the axis by r along the segment's local +y, −y, +z, −z. Its ends are the check points mirrored
-// back (a sign: exact).
-void hs_hand_segment_lines(const hs_hand_def *def, const hs_vec3 points[HS_HAND_POINTS], const hs_quat segment[15],
-                           int s, hs_vec3 out[4][2]) {
-	double rad = def->finger_radius;
-	const hs_vec3 offsets[4] = {{0.0, rad, 0.0}, {0.0, -rad, 0.0}, {0.0, 0.0, rad}, {0.0, 0.0, -rad}};
-	int a = 4 * (s / 3) + s % 3;
-	segment_lines(segment[s], offsets, mirror_if(def->left, points[a]), mirror_if(def->left, points[a + 1]), def->left,
-	              out);
 }
 
 void hs_hand_local_shape_with(const hs_hand_def *def, const hs_glove_table *table,
