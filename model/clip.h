@@ -1,5 +1,5 @@
 // clip.h — Cyrus-Beck clipping of a segment against one convex part of a shape. Shape geometry
-// only: used by the hand contacts (contact.c, 1999 paper §3.2 (B)) and the support mode (support.c).
+// only: used by the hand contacts (contact_part.h, 1999 paper §3.2 (B)) and the support mode (support.c).
 #ifndef HS_CLIP_H
 #define HS_CLIP_H
 

@@ -1,5 +1,5 @@
 // face_tree.c — normal-cone hierarchies over many-faced convex parts (face_tree.h): built once
-// when a shape is added to a world, queried by the hand check (contact.c).
+// when a shape is added to a world, queried by the hand check (contact_part.h, contact_swept.c).
 #include <math.h>
 #include <stdlib.h>
 

@@ -43,7 +43,7 @@ bool hs_face_tree_build(hs_face_tree *tree, const hs_shape *shape);
 void hs_face_tree_free(hs_face_tree *tree);
 
 // All four points lie beyond the face's plane by more than `margin` (the sweep test's per-face
-// step, shared by contact.c's scan and the tree, and contact.c's pass-overs with a margin).
+// step, shared by contact_part.h's scan and the tree, and contact_cull.c's pass-overs with a margin).
 static inline bool hs_face_beyond_by(const hs_face *face, const hs_vec3 q[4], double margin) {
 	hs_vec3 n = face->normal;
 	double o = face->offset + margin;

@@ -1,5 +1,7 @@
-// hand.c — the glove-driven virtual hand of the 1999 paper (§3.1, §5.1): sensor mapping,
-// forward kinematics of the 20 check points and 60 check lines, and named postures.
+// hand.c — the kinematics of the glove-driven virtual hand of the 1999 paper (§3.1, §5.1): the
+// chains of the 20 check points and the 60 check lines, palm and wrist, the placement in the world,
+// and the caches a hand keeps between readings. The glove's calibration: glove.c; the named
+// postures: hand_posture.c.
 //
 // Frames. The wrist frame (pose from the tracker) has x toward the fingertips, y toward the
 // thumb of a right hand, z out of the back of the hand (the palm faces −z). The palm frame is
@@ -25,17 +27,12 @@
 #include <stdlib.h>
 #endif
 
+#include "glove.h"
+#include "hand.h"
 #include "hand_internal.h"
 #include "inline.h"
 
 #include "lanes2.h"
-
-// rad per sensor unit: 0.5° (paper §5.1)
-#define HS_RAD_PER_UNIT (HS_PI / 360.0)
-// sensor units per rad
-#define HS_UNITS_PER_RAD (360.0 / HS_PI)
-// the wrist sensors read 128 at a straight wrist
-#define HS_WRIST_ZERO 128
 
 // ---------------------------------------------------------------------------------------------
 // Defaults
@@ -68,62 +65,6 @@ hs_hand_def hs_default_hand_def(void) {
 }
 
 // ---------------------------------------------------------------------------------------------
-// Sensors ↔ angles
-
-hs_hand_joints hs_hand_joints_from_sensors(const hs_hand_def *def, const uint8_t sensors[HS_GLOVE_SENSORS]) {
-	hs_hand_joints j = {0};
-	if (def == NULL || sensors == NULL) // documented: zero angles
-		return j;
-	const uint8_t *v = sensors;
-	j.thumb_roll = (double)v[HS_SENSOR_THUMB_ROLL] * HS_RAD_PER_UNIT;
-	j.thumb_mcp = (double)v[HS_SENSOR_THUMB_MCP] * HS_RAD_PER_UNIT;
-	j.thumb_ip = (double)v[HS_SENSOR_THUMB_IP] * HS_RAD_PER_UNIT;
-	j.thumb_abduction = (double)v[HS_SENSOR_THUMB_ABDUCTION] * HS_RAD_PER_UNIT;
-	for (int f = 0; f < 4; f++) {
-		j.mcp[f] = (double)v[HS_SENSOR_INDEX_MCP + 2 * f] * HS_RAD_PER_UNIT;
-		j.pip[f] = (double)v[HS_SENSOR_INDEX_PIP + 2 * f] * HS_RAD_PER_UNIT;
-		j.dip[f] = def->dip_per_pip * j.pip[f];
-	}
-	for (int a = 0; a < 3; a++)
-		j.abduction[a] = (double)v[HS_SENSOR_INDEX_MIDDLE_ABDUCTION + a] * HS_RAD_PER_UNIT;
-	j.palm_arch = (double)v[HS_SENSOR_PALM_ARCH] * HS_RAD_PER_UNIT;
-	j.wrist_pitch = ((double)v[HS_SENSOR_WRIST_PITCH] - HS_WRIST_ZERO) * HS_RAD_PER_UNIT;
-	j.wrist_yaw = ((double)v[HS_SENSOR_WRIST_YAW] - HS_WRIST_ZERO) * HS_RAD_PER_UNIT;
-	return j;
-}
-
-// nearest sensor unit of an angle (rad), plus `zero`, clamped to 0..255; NaN reads as `zero`
-static uint8_t sensor_from_angle(double angle, int zero) {
-	if (isnan(angle))
-		return (uint8_t)zero;
-	double u = round(angle * HS_UNITS_PER_RAD) + (double)zero;
-	if (u < 0.0)
-		u = 0.0;
-	if (u > 255.0)
-		u = 255.0;
-	return (uint8_t)u;
-}
-
-void hs_hand_sensors_from_angles(const hs_hand_joints *joints, uint8_t sensors[HS_GLOVE_SENSORS]) {
-	if (joints == NULL || sensors == NULL)
-		return;
-	const hs_hand_joints *j = joints;
-	sensors[HS_SENSOR_THUMB_ROLL] = sensor_from_angle(j->thumb_roll, 0);
-	sensors[HS_SENSOR_THUMB_MCP] = sensor_from_angle(j->thumb_mcp, 0);
-	sensors[HS_SENSOR_THUMB_IP] = sensor_from_angle(j->thumb_ip, 0);
-	sensors[HS_SENSOR_THUMB_ABDUCTION] = sensor_from_angle(j->thumb_abduction, 0);
-	for (int f = 0; f < 4; f++) {
-		sensors[HS_SENSOR_INDEX_MCP + 2 * f] = sensor_from_angle(j->mcp[f], 0);
-		sensors[HS_SENSOR_INDEX_PIP + 2 * f] = sensor_from_angle(j->pip[f], 0);
-	}
-	for (int a = 0; a < 3; a++)
-		sensors[HS_SENSOR_INDEX_MIDDLE_ABDUCTION + a] = sensor_from_angle(j->abduction[a], 0);
-	sensors[HS_SENSOR_PALM_ARCH] = sensor_from_angle(j->palm_arch, 0);
-	sensors[HS_SENSOR_WRIST_PITCH] = sensor_from_angle(j->wrist_pitch, HS_WRIST_ZERO);
-	sensors[HS_SENSOR_WRIST_YAW] = sensor_from_angle(j->wrist_yaw, HS_WRIST_ZERO);
-}
-
-// ---------------------------------------------------------------------------------------------
 // Kinematics
 
 static const hs_vec3 X_AXIS = {1.0, 0.0, 0.0};
@@ -137,18 +78,9 @@ static hs_quat exact_rotation(hs_vec3 axis, double c, double sign) {
 	return hs_q(w, axis.x * s, axis.y * s, axis.z * s);
 }
 
-// A joint rotation by a runtime angle. The volatile round trip keeps the compiler from folding
-// sin/cos of an angle it can see as a constant (e.g. a posture's fixed sensor value) with its own
-// correctly rounded arithmetic, which libm at run time need not match in the last bit.
-static hs_half_turn half_turn(double angle) {
-	volatile double opaque = angle;
-	double h = 0.5 * opaque; // as hs_quat_from_axis_angle
-	hs_half_turn t = {hs_sin(h), hs_cos(h)};
-	return t;
-}
 // hs_quat_from_axis_angle from the half angle's sine and cosine: the same operations
 static hs_quat turn_about(hs_vec3 axis, hs_half_turn t) { return hs_q(t.c, axis.x * t.s, axis.y * t.s, axis.z * t.s); }
-static hs_quat joint_rotation(hs_vec3 axis, double angle) { return turn_about(axis, half_turn(angle)); }
+static hs_quat joint_rotation(hs_vec3 axis, double angle) { return turn_about(axis, hs_half_turn_of(angle)); }
 
 // Thumb design (not sensed; the paper's Fig. 1 leaves it open). At zero sensors the thumb's
 // metacarpal points along x turned 22.6° toward +y (cos = 12/13) about the palm z, and tilted
@@ -171,7 +103,7 @@ static hs_quat thumb_tilt_and_nail(void) {
 
 // The palm arch rolls the ring and little finger bases toward the palm (this fraction of the
 // arch angle), about the line through the middle finger's MCP parallel to the palm's x.
-static const double ARCH_SHARE[4] = {0.0, 0.0, 0.5, 1.0};
+static const double ARCH_SHARE[4] = {0.0, 0.0, HS_ARCH_RING_SHARE, 1.0};
 
 typedef hs_hand_pose hand_pose; // (hand_internal.h: a hand keeps one, its fingers' cache)
 
@@ -186,7 +118,7 @@ typedef struct reading {
 
 // The half turn of a joint angle: the table's row at the sensor's value, or computed.
 static hs_half_turn turn_of(const reading *r, int row, int sensor, double angle) {
-	return r->table ? r->table->rows[row][r->v[sensor]] : half_turn(angle);
+	return r->table ? r->table->rows[row][r->v[sensor]] : hs_half_turn_of(angle);
 }
 
 // Points and frames of one chain from its base frame `q` and its three flexions; the first
@@ -236,9 +168,9 @@ static hs_half_turn spread_turn(const reading *r, int k, double *spread) {
 	else if (k == 3)
 		*spread = -(j->abduction[1] + j->abduction[2]);
 	if (k == 3) // the sum of two readings: no row
-		return half_turn(*spread);
+		return hs_half_turn_of(*spread);
 	if (k == 1) // the angle 0: the row's value 0 (0 × 0.5°)
-		return r->table ? r->table->rows[HS_GLOVE_UNIT][0] : half_turn(*spread);
+		return r->table ? r->table->rows[HS_GLOVE_UNIT][0] : hs_half_turn_of(*spread);
 	return k == 0 ? turn_of(r, HS_GLOVE_UNIT, HS_SENSOR_INDEX_MIDDLE_ABDUCTION, *spread)
 	              : turn_of(r, HS_GLOVE_MINUS, HS_SENSOR_MIDDLE_RING_ABDUCTION, *spread);
 }
@@ -379,64 +311,6 @@ static unsigned hand_pose_wrist(const reading *r, hand_pose *out, hs_hand *cache
 
 static hs_vec3 mirror_if(bool left, hs_vec3 v) { return left ? hs_v3(v.x, -v.y, v.z) : v; }
 
-// A segment's 4 check lines from its ends a, b and its frame q: line e runs from a + off to b + off,
-// off = hs_quat_rotate(q, v[e]), mirrored for a left hand. With SSE2, two lines at a time, one per
-// lane: each lane does hs_quat_rotate's products and sums, then the additions, in their order
-// (the same bits); the mirror is the sign of y.
-static void segment_lines(hs_quat q, const hs_vec3 v[4], hs_vec3 a, hs_vec3 b, bool left, hs_vec3 out[4][2]) {
-	int e = 0;
-#if defined(__SSE2__)
-	const __m128d flip = _mm_set1_pd(left ? -0.0 : 0.0);
-	for (; e < 4; e += 2) {
-		hs_lanes2 off = hs_lanes2_rotate(q, hs_lanes2_load(&v[e], &v[e + 1]));
-		__m128d ox = off.x, oy = off.y, oz = off.z;
-		hs_lanes2 from = {_mm_add_pd(_mm_set1_pd(a.x), ox), _mm_xor_pd(_mm_add_pd(_mm_set1_pd(a.y), oy), flip),
-		                  _mm_add_pd(_mm_set1_pd(a.z), oz)};
-		hs_lanes2 to = {_mm_add_pd(_mm_set1_pd(b.x), ox), _mm_xor_pd(_mm_add_pd(_mm_set1_pd(b.y), oy), flip),
-		                _mm_add_pd(_mm_set1_pd(b.z), oz)};
-		hs_lanes2_store(from, &out[e][0], &out[e + 1][0]);
-		hs_lanes2_store(to, &out[e][1], &out[e + 1][1]);
-	}
-#endif
-	for (; e < 4; e++) {
-		hs_vec3 off = hs_quat_rotate(q, v[e]);
-		out[e][0] = mirror_if(left, hs_add(a, off));
-		out[e][1] = mirror_if(left, hs_add(b, off));
-	}
-}
-
-void hs_glove_deadband(const uint8_t held[HS_GLOVE_SENSORS], int band, const uint8_t raw[HS_GLOVE_SENSORS],
-                       uint8_t used[HS_GLOVE_SENSORS]) {
-	int i = 0;
-#if defined(__SSE2__)
-	// the clamp to [r - band, r + band] on unsigned bytes: a bound beyond 0..255 saturates there,
-	// where it cannot move a byte either
-	const __m128i b = _mm_set1_epi8((char)band);
-	for (; i + 16 <= HS_GLOVE_SENSORS; i += 16) {
-		__m128i r = _mm_loadu_si128((const __m128i *)(const void *)&raw[i]);
-		__m128i v = _mm_loadu_si128((const __m128i *)(const void *)&held[i]);
-		v = _mm_min_epu8(_mm_max_epu8(v, _mm_subs_epu8(r, b)), _mm_adds_epu8(r, b));
-		_mm_storeu_si128((__m128i *)(void *)&used[i], v);
-	}
-#endif
-	for (; i < HS_GLOVE_SENSORS; ++i) {
-		int r = raw[i], v = held[i];
-		v = v < r - band ? r - band : v > r + band ? r + band : v;
-		used[i] = (uint8_t)v;
-	}
-}
-
-void hs_glove_table_build(const hs_hand_def *def, hs_glove_table *table) {
-	for (int v = 0; v < 256; ++v) { // each angle as hs_hand_joints_from_sensors and the poses form it
-		double a = (double)v * HS_RAD_PER_UNIT;
-		table->rows[HS_GLOVE_UNIT][v] = half_turn(a);
-		table->rows[HS_GLOVE_MINUS][v] = half_turn(-a);
-		table->rows[HS_GLOVE_HALF][v] = half_turn(ARCH_SHARE[2] * a);
-		table->rows[HS_GLOVE_DIP][v] = half_turn(def->dip_per_pip * a);
-		table->rows[HS_GLOVE_WRIST][v] = half_turn(((double)v - HS_WRIST_ZERO) * HS_RAD_PER_UNIT);
-	}
-}
-
 // The shape in the wrist frame without its lines: the check points (mirrored for a left hand)
 // and each segment's frame. With a cache (the hand), `out` is its local shape, which holds the
 // last shape made through it: fingers that stayed the same (returned) are not written again.
@@ -450,18 +324,6 @@ static unsigned local_pose(const hs_hand_def *def, const hs_glove_table *table, 
 			out->points[i] = mirror_if(true, out->points[i]);
 	}
 	return same;
-}
-
-// Check lines (§3.1) of segment s: the 4 long edges of a square prism around it, edge e offset from
-// the axis by r along the segment's local +y, −y, +z, −z. Its ends are the check points mirrored
-// back (a sign: exact).
-void hs_hand_segment_lines(const hs_hand_def *def, const hs_vec3 points[HS_HAND_POINTS], const hs_quat segment[15],
-                           int s, hs_vec3 out[4][2]) {
-	double rad = def->finger_radius;
-	const hs_vec3 offsets[4] = {{0.0, rad, 0.0}, {0.0, -rad, 0.0}, {0.0, 0.0, rad}, {0.0, 0.0, -rad}};
-	int a = 4 * (s / 3) + s % 3;
-	segment_lines(segment[s], offsets, mirror_if(def->left, points[a]), mirror_if(def->left, points[a + 1]), def->left,
-	              out);
 }
 
 void hs_hand_local_shape_with(const hs_hand_def *def, const hs_glove_table *table,
@@ -726,214 +588,23 @@ void hs_hand_refresh(hs_hand *hand) {
 }
 
 // ---------------------------------------------------------------------------------------------
-// Postures
+// What the postures (hand_posture.c) solve through
 
-// sensor value a × full, rounded to the nearest unit (a in 0..1)
-static uint8_t scaled(double a, int full) { return (uint8_t)round(a * (double)full); }
-
-// Full fist (sensor units): fingers MCP 90°, PIP 100° (DIP follows); the thumb folded across
-// the middle phalanges of the index and middle fingers (roll 10°, MCP 40°, IP 60°).
-#define FIST_MCP 180
-#define FIST_PIP 200
-#define FIST_THUMB_ROLL 20
-#define FIST_THUMB_MCP 80
-#define FIST_THUMB_IP 120
-// Pinch: the index finger at MCP 50°, PIP 60°; the thumb is solved to meet its tip.
-#define PINCH_INDEX_MCP 100
-#define PINCH_INDEX_PIP 120
-// Grasp: index and middle curl along a fixed schedule in the width w (sensor units at knots,
-// linear between): MCP 30°, PIP 80° at 1 cm; PIP 51° at 5 cm; MCP 40°, PIP 25° at 12 cm. Up to
-// 5 cm the fingertips hook down behind the object's far face; wider, the fingers keep enough
-// curl that the object's top may rise ~1.5 cm above the fingertips without touching a finger.
-#define GRASP_MIN 0.01
-#define GRASP_MAX 0.12
-typedef struct grasp_knot {
-	double width; // m
-	int mcp, pip; // sensor units
-} grasp_knot;
-static const grasp_knot GRASP_KNOTS[3] = {{GRASP_MIN, 60, 160}, {0.05, 60, 102}, {GRASP_MAX, 80, 50}};
-// largest miss of a solved thumb tip, relative to the metacarpal length
-#define REACH_TOLERANCE 0.05
-
-static void set_open(uint8_t s[HS_GLOVE_SENSORS]) {
-	for (int i = 0; i < HS_GLOVE_SENSORS; i++)
-		s[i] = 0;
-	s[HS_SENSOR_WRIST_PITCH] = HS_WRIST_ZERO;
-	s[HS_SENSOR_WRIST_YAW] = HS_WRIST_ZERO;
-}
-
-static bool def_is_valid(const hs_hand_def *def) {
-	if (!(isfinite(def->finger_radius) && def->finger_radius > 0.0) || !isfinite(def->dip_per_pip))
-		return false;
-	for (int f = 0; f < 5; f++) {
-		if (!hs_vec3_is_finite(def->base[f]))
-			return false;
-		for (int s = 0; s < 3; s++)
-			if (!(isfinite(def->segment_length[f][s]) && def->segment_length[f][s] > 0.0))
-				return false;
-	}
-	return true;
-}
-
-static hs_vec3 right_hand_point(const hs_hand_def *def, const uint8_t s[HS_GLOVE_SENSORS], int i) {
+hs_vec3 hs_hand_right_point(const hs_hand_def *def, const uint8_t s[HS_GLOVE_SENSORS], int i) {
 	reading r = {def, hs_hand_joints_from_sensors(def, s), NULL, s};
 	hand_pose pose;
 	hand_pose_wrist(&r, &pose, NULL);
 	return pose.points[i];
 }
 
-static hs_vec3 thumb_tip(const hs_hand_def *def, const uint8_t s[HS_GLOVE_SENSORS]) {
+hs_vec3 hs_hand_thumb_tip(const hs_hand_def *def, const uint8_t s[HS_GLOVE_SENSORS]) {
 	reading r = {def, hs_hand_joints_from_sensors(def, s), NULL, s};
 	hand_pose pose;
 	thumb_pose(&r, &pose);
 	return pose.points[3];
 }
 
-// Places the thumb tip at `target` (right hand, palm frame = wrist frame, abduction as set in s):
-// closed-form inverse kinematics for roll, MCP and IP, rounded to sensor units, then the best of
-// the neighbouring unit combinations (roll, MCP, IP ± 1, abduction + 0..1), compared in a fixed
-// order with a strict '<' so the result is deterministic. False when the target is out of reach.
-static bool thumb_reach(const hs_hand_def *def, hs_vec3 target, uint8_t s[HS_GLOVE_SENSORS]) {
-	hs_hand_joints j = hs_hand_joints_from_sensors(def, s);
-	// metacarpal frame before roll: splay, abduction, tilt; its x along the bone
-	hs_quat m = hs_quat_mul(hs_quat_mul(thumb_splay(), joint_rotation(Z_AXIS, j.thumb_abduction)),
-	                        exact_rotation(Y_AXIS, THUMB_TILT_COS, 1.0));
-	hs_vec3 d = hs_quat_inv_rotate(m, hs_sub(target, def->base[0]));
-	// In the metacarpal frame the nail after roll φ points along (0, cos φ, sin φ), the pad the
-	// other way, and flexion keeps the proximal and distal bones in the plane of x and the pad:
-	// tip = (L0 + a, −b cos φ, −b sin φ), (a, b) the planar two-bone reach.
-	double l0 = def->segment_length[0][0], l1 = def->segment_length[0][1], l2 = def->segment_length[0][2];
-	double a = d.x - l0, b = sqrt(d.y * d.y + d.z * d.z);
-	double roll = hs_atan2(-d.z, -d.y);
-	double c = (a * a + b * b - l1 * l1 - l2 * l2) / (2.0 * l1 * l2);
-	if (!(c >= -1.0 && c <= 1.0))
-		return false;
-	double ip = hs_acos(c);
-	double mcp = hs_atan2(b, a) - hs_atan2(l2 * hs_sin(ip), l1 + l2 * hs_cos(ip));
-	hs_hand_joints want = j;
-	want.thumb_roll = roll;
-	want.thumb_mcp = mcp;
-	want.thumb_ip = ip;
-	uint8_t guess[HS_GLOVE_SENSORS];
-	hs_hand_sensors_from_angles(&want, guess);
-	const int keys[3] = {HS_SENSOR_THUMB_ROLL, HS_SENSOR_THUMB_MCP, HS_SENSOR_THUMB_IP};
-	uint8_t trial[HS_GLOVE_SENSORS], best[HS_GLOVE_SENSORS];
-	for (int i = 0; i < HS_GLOVE_SENSORS; i++)
-		trial[i] = best[i] = s[i];
-	double best_err = INFINITY;
-	for (int ab = 0; ab <= 1; ab++) {
-		int abd = (int)s[HS_SENSOR_THUMB_ABDUCTION] + ab;
-		if (abd > 255)
-			continue;
-		for (int n = 0; n < 27; n++) {
-			int step[3] = {n % 3 - 1, (n / 3) % 3 - 1, n / 9 - 1};
-			bool inside = true;
-			for (int k = 0; k < 3; k++) {
-				int v = (int)guess[keys[k]] + step[k];
-				if (v < 0 || v > 255)
-					inside = false;
-				else
-					trial[keys[k]] = (uint8_t)v;
-			}
-			if (!inside)
-				continue;
-			trial[HS_SENSOR_THUMB_ABDUCTION] = (uint8_t)abd;
-			double err = hs_distance(thumb_tip(def, trial), target);
-			if (err < best_err) {
-				best_err = err;
-				for (int i = 0; i < HS_GLOVE_SENSORS; i++)
-					best[i] = trial[i];
-			}
-		}
-	}
-	// out of the glove's range (an angle clamped to 0..127.5°): the tip misses by far more than
-	// the few tenths of a millimetre one sensor unit moves it
-	if (!(best_err <= REACH_TOLERANCE * l0))
-		return false;
-	for (int i = 0; i < HS_GLOVE_SENSORS; i++)
-		s[i] = best[i];
-	return true;
-}
-
-// Grasp of a w-wide object from above (palm down): index and middle fingertips on the far (+x)
-// face, the thumb tip on the near (−x) face, each tip r/2 inside its face, so the thumb tip sits
-// at the fingertip mean − (w − r) x̂. The fingers follow the closure schedule above (a smaller
-// object, a tighter curl); the thumb is then solved to the target computed from the fingers'
-// rounded sensor values, so the grip axis is +x to within one sensor unit of the thumb.
-// Ring and little fingers are folded as in a full fist, away from a small object.
-static hs_status grasp(const hs_hand_def *def, double w, uint8_t s[HS_GLOVE_SENSORS]) {
-	set_open(s);
-	int k = w <= GRASP_KNOTS[1].width ? 0 : 1;
-	const grasp_knot *a = &GRASP_KNOTS[k], *b = &GRASP_KNOTS[k + 1];
-	double t = (w - a->width) / (b->width - a->width);
-	uint8_t mcp = (uint8_t)round((double)a->mcp + t * (double)(b->mcp - a->mcp));
-	uint8_t pip = (uint8_t)round((double)a->pip + t * (double)(b->pip - a->pip));
-	s[HS_SENSOR_INDEX_MCP] = s[HS_SENSOR_MIDDLE_MCP] = mcp;
-	s[HS_SENSOR_INDEX_PIP] = s[HS_SENSOR_MIDDLE_PIP] = pip;
-	s[HS_SENSOR_RING_MCP] = s[HS_SENSOR_LITTLE_MCP] = FIST_MCP;
-	s[HS_SENSOR_RING_PIP] = s[HS_SENSOR_LITTLE_PIP] = FIST_PIP;
-	hs_vec3 tips = hs_scale(hs_add(right_hand_point(def, s, 7), right_hand_point(def, s, 11)), 0.5);
-	hs_vec3 target = hs_sub(tips, hs_v3(w - def->finger_radius, 0.0, 0.0));
-	return thumb_reach(def, target, s) ? HS_OK : HS_ERR_INVALID_ARGUMENT;
-}
-
-static hs_status pinch(const hs_hand_def *def, double amount, uint8_t s[HS_GLOVE_SENSORS]) {
-	uint8_t full[HS_GLOVE_SENSORS];
-	set_open(full);
-	full[HS_SENSOR_INDEX_MCP] = PINCH_INDEX_MCP;
-	full[HS_SENSOR_INDEX_PIP] = PINCH_INDEX_PIP;
-	if (!thumb_reach(def, right_hand_point(def, full, 7), full))
-		return HS_ERR_INVALID_ARGUMENT;
-	set_open(s);
-	for (int i = 0; i < HS_SENSOR_WRIST_PITCH; i++)
-		s[i] = scaled(amount, full[i]);
-	return HS_OK;
-}
-
-hs_status hs_hand_posture(const hs_hand_def *def, hs_posture posture, double amount,
-                          uint8_t sensors[HS_GLOVE_SENSORS]) {
-	if (def == NULL || sensors == NULL || !def_is_valid(def))
-		return HS_ERR_INVALID_ARGUMENT;
-	switch (posture) {
-	case HS_POSTURE_OPEN: // amount is not used
-		set_open(sensors);
-		return HS_OK;
-	case HS_POSTURE_FIST:
-	case HS_POSTURE_POINT:
-		if (!(amount >= 0.0 && amount <= 1.0))
-			return HS_ERR_INVALID_ARGUMENT;
-		set_open(sensors);
-		for (int k = posture == HS_POSTURE_POINT ? 1 : 0; k < 4; k++) {
-			sensors[HS_SENSOR_INDEX_MCP + 2 * k] = scaled(amount, FIST_MCP);
-			sensors[HS_SENSOR_INDEX_PIP + 2 * k] = scaled(amount, FIST_PIP);
-		}
-		sensors[HS_SENSOR_THUMB_ROLL] = scaled(amount, FIST_THUMB_ROLL);
-		sensors[HS_SENSOR_THUMB_MCP] = scaled(amount, FIST_THUMB_MCP);
-		sensors[HS_SENSOR_THUMB_IP] = scaled(amount, FIST_THUMB_IP);
-		return HS_OK;
-	case HS_POSTURE_PINCH:
-		if (!(amount >= 0.0 && amount <= 1.0))
-			return HS_ERR_INVALID_ARGUMENT;
-		return pinch(def, amount, sensors);
-	case HS_POSTURE_GRASP:
-		if (!(amount >= GRASP_MIN && amount <= GRASP_MAX))
-			return HS_ERR_INVALID_ARGUMENT;
-		return grasp(def, amount, sensors);
-	}
-	return HS_ERR_INVALID_ARGUMENT;
-}
-
-void hs_hand_grip(const hs_hand_def *def, const uint8_t sensors[HS_GLOVE_SENSORS], hs_vec3 *center,
-                  hs_vec3 *axis) {
-	if (def == NULL || sensors == NULL) // documented: nothing written
-		return;
-	hs_vec3 p[HS_HAND_POINTS];
-	hs_hand_kinematics(def, hs_v3(0.0, 0.0, 0.0), hs_quat_identity(), sensors, p, NULL);
-	hs_vec3 thumb = p[3], fingers = hs_scale(hs_add(p[7], p[11]), 0.5);
-	hs_vec3 d = hs_sub(fingers, thumb);
-	double len = hs_length(d);
-	if (center != NULL)
-		*center = hs_scale(hs_add(thumb, fingers), 0.5);
-	if (axis != NULL) // the tips coincide: +x of the wrist frame
-		*axis = len > 0.0 ? hs_scale(d, 1.0 / len) : hs_v3(1.0, 0.0, 0.0);
+hs_quat hs_hand_thumb_base(double thumb_abduction) {
+	return hs_quat_mul(hs_quat_mul(thumb_splay(), joint_rotation(Z_AXIS, thumb_abduction)),
+	                   exact_rotation(Y_AXIS, THUMB_TILT_COS, 1.0));
 }

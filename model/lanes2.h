@@ -1,5 +1,5 @@
 // lanes2.h — two vectors in the two lanes of three SSE2 registers (x, y and z), for the speed work's
-// hand-written loops (hand.c, contact.c): each lane then does the scalar code's operations in its
+// hand-written loops (hand.c, contact_part.h, contact_cull.c): each lane then does the scalar code's operations in its
 // order, so the bits are the scalar code's. Without SSE2 those loops take the scalar path.
 #ifndef HS_LANES2_H
 #define HS_LANES2_H

@@ -42,7 +42,7 @@ HS_AVX static inline __m256d hs_lanes4_distance_sq(hs_lanes4 p, hs_vec3 c) {
 }
 
 // The squared distance from c to each lane's segment a-b: hs_segment_param's and the distance's
-// operations in their order, the division too (contact.c, segment_distance_sq).
+// operations in their order, the division too (contact_part.h, segment_distance_sq).
 HS_AVX static inline __m256d hs_lanes4_segment_distance_sq(hs_lanes4 a, hs_lanes4 b, hs_vec3 c) {
 	const __m256d cx = _mm256_set1_pd(c.x), cy = _mm256_set1_pd(c.y), cz = _mm256_set1_pd(c.z),
 	              zero = _mm256_setzero_pd(), one = _mm256_set1_pd(1.0);

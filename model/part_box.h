@@ -28,7 +28,7 @@ static inline bool hs_part_box_takes(hs_vec3 p) {
 	return s - s == 0.0;
 }
 
-// scan_inside (contact.c): no face has dot(normal, p) >= offset + grow.
+// scan_inside (contact_part.h): no face has dot(normal, p) >= offset + grow.
 static inline bool hs_part_box_inside(const hs_part *part, hs_vec3 p, double grow) {
 	const double *o = part->box_offset;
 #if defined(__SSE2__)
@@ -46,7 +46,7 @@ static inline bool hs_part_box_inside(const hs_part *part, hs_vec3 p, double gro
 #endif
 }
 
-// scan_nearest (contact.c) of a point that takes the box's path: the first face in face order of
+// scan_nearest (contact_part.h) of a point that takes the box's path: the first face in face order of
 // the least depth offset - dot(normal, p). With an axis normal the dot is the coordinate or its
 // negation (up to the sign of a zero, which the subtraction from the offset does not keep), so each
 // depth is o[k] - p.c or o[k] - (-p.c), as there; the least found without a branch (the points

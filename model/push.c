@@ -33,7 +33,7 @@ static bool lies_on_floor(hs_world *world, const hs_body *body, int *count) {
 
 // The push lies in the floor's friction cone: it presses the object into the floor at least as
 // much as (1/μ times) it drives it sideways. The friction its press adds at the floor holds what
-// the finger's own friction (the same μ, contact.c) can drive; the object's weight, absent from
+// the finger's own friction (the same μ, contact_rules.c) can drive; the object's weight, absent from
 // eq. 1-2, is margin besides. A fingertip on a top face moves nothing however it trembles.
 static bool held_by_floor(hs_vec3 d) {
 	return d.z < 0.0 && sqrt(d.x * d.x + d.y * d.y) <= HS_PUSH_FRICTION * -d.z * (1.0 + 1e-9);

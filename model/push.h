@@ -8,7 +8,7 @@
 
 // Coulomb friction of a fingertip on an object and of an object on the floor (the same μ for
 // both, docs/model.md §4): a part drags the surface it touches sideways by at most μ times how far
-// it went into it (contact.c), and a push that presses an object on the floor at least as much
+// it went into it (contact_rules.c), and a push that presses an object on the floor at least as much
 // as it drives it sideways leaves it where it is (push.c).
 #define HS_PUSH_FRICTION 1.0
 

@@ -1,4 +1,4 @@
-// test_cull_keep.c — the hand's bounding-volume culls (contact.c, skip_work) pass over no finger
+// test_cull_keep.c — the hand's bounding-volume culls (contact_cull.c, skip_work) pass over no finger
 // part that still counts beyond an object's part: a check point that touched stays touching within
 // the release margin, a point or line that started inside stays so within twice it, and at a box's
 // corner both reach past the part's bounding sphere. A hand whose check point k starts just inside

@@ -1,4 +1,4 @@
-// test_detmath.c — the own elementary functions (detmath.c): special values, known values, ulp
+// test_detmath.c — the own elementary functions (detmath.c, detmath_exp.c): special values, known values, ulp
 // errors against long double libm (a reference only: tests are not the state), identities, and
 // golden bits so that any change in the last bit is seen.
 #include <setjmp.h>

@@ -57,7 +57,7 @@ static hs_shape *uv_ball(int slices, int stacks, double r, hs_vec3 stretch) {
 	return s;
 }
 
-// The sweep's scan, as contact.c writes it (the reference; the others are in test_scans.h).
+// The sweep's scan, as contact_swept.c writes it (the reference; the others are in test_scans.h).
 static bool scan_beyond(const hs_shape *s, const hs_part *part, const hs_vec3 q[4]) {
 	for (int f = part->first_face; f < part->first_face + part->face_count; ++f) {
 		hs_vec3 n = s->faces[f].normal;
@@ -195,7 +195,7 @@ static bool segment_meets_triangle(hs_vec3 a, hs_vec3 b, hs_vec3 v0, hs_vec3 v1,
 	return u >= -e && v >= -e && u + v <= 1.0 + e && s >= -e && s <= 1.0 + e;
 }
 
-// The faces a swept quad reaches hold every edge the quad's two triangles meet (contact.c tries
+// The faces a swept quad reaches hold every edge the quad's two triangles meet (contact_swept.c tries
 // only their edges), and leave most faces out when the quad passes close by.
 static void test_reached_faces_hold_every_edge_hit(void **state) {
 	(void)state;

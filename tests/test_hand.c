@@ -431,7 +431,7 @@ static void test_lines_placed_when_read(void **state) {
 	free(hand);
 }
 
-// Each finger's sphere through the frame (hs_hand_finger_spheres, contact.c's far_fingers) holds
+// Each finger's sphere through the frame (hs_hand_finger_spheres, contact_cull.c's hs_contact_far_fingers) holds
 // the finger's check points within finger_reach - finger_radius and its check line ends within
 // finger_reach, now, a frame ago and on the path between, for readings far apart (a path of up to
 // HS_HAND_PATH_MAX pieces) and near (one piece); the spheres are made again after the points move.

@@ -15,7 +15,7 @@
 #include "test_scans.h"
 #include "test_util.h"
 
-#define SLACK 1e-6 // contact.c's HS_CULL_SLACK
+#define SLACK 1e-6 // contact_part.h's HS_CULL_SLACK
 
 static double unit(uint64_t *state) { // [-1, 1), a fixed LCG
 	*state = *state * 6364136223846793005ull + 1442695040888963407ull;

@@ -36,7 +36,7 @@ static inline hs_world *rig_world(const hs_world_def *def, hs_shape *shape, hs_v
 	hand->radius = hand->prev_radius = hand->sweep_radius = 1000;
 	hand->path_steps = 1; // straight paths: hs_hand_sweep (run by hs_manipulate) keeps it so
 	// the tests place lines without their segment's check points (a hand's lie finger_radius from
-	// them, which contact.c's per-segment culling relies on): a radius so large that it never decides
+	// them, which contact_cull.c's per-segment culling relies on): a radius so large that it never decides
 	hand->def.finger_radius = 1000;
 	hand->placed = true;
 	return w;

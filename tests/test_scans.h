@@ -1,4 +1,4 @@
-// test_scans.h — the face scans of a convex part, written as contact.c writes them: the reference
+// test_scans.h — the face scans of a convex part, written as contact_part.h writes them: the reference
 // the coordinate tests of a box (test_part_box.c) and the face tree (test_face_tree.c) must answer
 // as, bit for bit.
 #ifndef HS_TEST_SCANS_H

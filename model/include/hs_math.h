@@ -12,7 +12,7 @@
 extern "C" {
 #endif
 
-// Deterministic elementary functions (detmath.c): built from + − × ÷ and sqrt only, so they give
+// Deterministic elementary functions (detmath.c, detmath_exp.c): built from + − × ÷ and sqrt only, so they give
 // the same bits on every CPU and compiler (glibc's libm does not: its code paths differ with and
 // without FMA). Every value that enters a world's state goes through these, never through libm's
 // sin, cos, atan2, exp, pow... Worst errors in ulps are measured by `make ulp` (docs/determinism.md).
