@@ -7,8 +7,9 @@
 #include "handspring.h"
 
 // Model part (set by hs_world_add_object, read-only while stepping; not in the saved state):
-// `shape`, `mass`. Every other field is STATE: state.c's walk (body_io) lists them all, one by
-// one, and a field added here must be added there, or save / load / hash will miss it.
+// `shape`, `mass`. Every other field is STATE: state.c's field table (body_fields) lists them all,
+// one entry each, and a field added here must be added there (save, load, check and hash all
+// follow that one table).
 typedef struct hs_body {
 	hs_vec3 pos;  // P(t): centre of gravity, m
 	hs_vec3 prev; // P(t - dt), m (§4.1: Verlet needs it)

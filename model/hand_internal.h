@@ -36,7 +36,7 @@ typedef struct hs_glove_table {
 	hs_half_turn rows[HS_GLOVE_ROWS][256];
 } hs_glove_table;
 
-// A hand of a world. MODEL: `def`. STATE (state.c's hand_io lists them): the wrist pose and
+// A hand of a world. MODEL: `def`. STATE (state.c's field table hand_fields lists them): the wrist pose and
 // sensors now and at the end of the last step, `placed`, the touch masks. CACHES, rebuilt from the state after a
 // load (hs_hand_refresh): the check points and lines now and one frame ago (the kinematics of
 // those two readings, §3.1: bit for bit what hs_world_set_hand computed), the shape in the wrist

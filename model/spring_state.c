@@ -8,103 +8,85 @@
 // the loaded orientations. A load's CHECK pass refuses what would make a later step read out of
 // bounds or compute with garbage: indices and enums out of range, flags not 0 or 1, non-finite
 // numbers, stylus orientations that are not unit quaternions.
+#include <limits.h>
 #include <string.h>
 
 #include "spring_state.h"
 #include "spring_world.h"
+#include "state_fields.h"
 #include "state_walk.h"
 #include "world_internal.h"
 #include "spring_system.h"
 
-// An enum stored as an int word, within [lo, hi].
-static void enum_io(hs_state_io *io, int *stored, int lo, int hi) { hs_state_int_range(io, stored, lo, hi); }
+#define S hs_spring_system
 
-static void tracker_ring_io(hs_tracker *tr, hs_state_io *io) {
-	for (int i = 0; i < HS_TRACKER_CAPACITY; ++i) { // all of it: unfilled slots are zero
-		hs_tracker_sample *s = &tr->ring[i];
-		hs_state_f64(io, &s->time);
-		hs_state_vec3(io, &s->position);
-		hs_state_quat(io, &s->orientation);
-		hs_state_bool(io, &s->button);
-	}
-}
+// Each object's flags, object by object over every slot (the size depends on the definitions only).
+static const hs_field object_fields[] = {
+    {HS_ALL_AT(S, on_floor, U8), .hi = 1},
+    {HS_ALL_AT(S, sliding, U8), .hi = 1},
+    {HS_ALL_AT(S, separated, U8), .hi = 1},
+};
 
-// The tracker daemon (§5.1): its clock, ring buffer, estimates and events.
-static void tracker_io(hs_tracker *tr, hs_state_io *io) {
-	hs_state_long_range(io, &tr->next_tick, 0, LONG_MAX);
-	hs_state_long_range(io, &tr->count, 0, LONG_MAX);
-	hs_state_int_range(io, &tr->head, 0, HS_TRACKER_CAPACITY - 1);
-	tracker_ring_io(tr, io);
-	hs_state_vec3(io, &tr->velocity);
-	hs_state_vec3(io, &tr->acceleration);
-	hs_state_vec3(io, &tr->heading);
-	hs_state_bool(io, &tr->at_rest);
-	int event = (int)tr->last_event;
-	enum_io(io, &event, HS_TRACKER_EVENT_NONE, HS_TRACKER_EVENT_MOTION_END);
-	tr->last_event = (hs_tracker_event)event;
-	hs_state_f64(io, &tr->last_event_time);
-	hs_state_long_range(io, &tr->motion_starts, 0, LONG_MAX);
-	hs_state_long_range(io, &tr->motion_ends, 0, LONG_MAX);
-}
+// The tracker's ring buffer, sample by sample: all of it (unfilled slots are zero).
+static const hs_field ring_fields[] = {
+    {HS_EACH(S, tracker.ring, time, F64)},
+    {HS_EACH(S, tracker.ring, position, VEC3)},
+    {HS_EACH(S, tracker.ring, orientation, QUAT)},
+    {HS_EACH(S, tracker.ring, button, BOOL)},
+};
 
-// The stylus: its poses at the end and the start of the coming frame, button, velocity.
-static void stylus_io(hs_spring_system *sys, hs_state_io *io) {
-	hs_state_bool(io, &sys->has_stylus);
-	hs_state_vec3(io, &sys->stylus);
-	hs_state_vec3(io, &sys->stylus_prev);
-	hs_state_rotation(io, &sys->rot);
-	hs_state_rotation(io, &sys->rot_prev);
-	hs_state_bool(io, &sys->button);
-	hs_state_bool(io, &sys->button_prev);
-	hs_state_vec3(io, &sys->stylus_velocity);
-}
+// A touch's forces the next frame's resting solve starts from (spring_solve.c).
+static const hs_field warm_fields[] = {
+    {HS_EACH_AT(S, warm, hs_spring_warm, a, INT), .lo = 0, .hi = -1, HS_HI_PLUS(S, capacity)},
+    {HS_EACH_AT(S, warm, hs_spring_warm, b, INT), .lo = 0, .hi = -1, HS_HI_PLUS(S, capacity)},
+    {HS_EACH_AT(S, warm, hs_spring_warm, normal, F64)},
+    {HS_EACH_AT(S, warm, hs_spring_warm, friction, VEC3)},
+};
 
-// The spring: its object, how it got it, its direction, its anchor offset, the candidate and the last release.
-static void spring_io(hs_spring_system *sys, hs_state_io *io) {
-	int n = sys->capacity;
-	hs_state_int_range(io, &sys->attached, -1, n - 1);
-	int kind = (int)sys->attach_kind;
-	enum_io(io, &kind, HS_ATTACH_NONE, HS_ATTACH_ROD);
-	sys->attach_kind = (hs_attach_kind)kind;
-	hs_state_vec3(io, &sys->axis);
-	hs_state_vec3(io, &sys->anchor_offset);
-	hs_state_int_range(io, &sys->candidate, -1, n - 1);
-	hs_release *r = &sys->release;
-	int rkind = (int)r->kind;
-	enum_io(io, &rkind, HS_RELEASE_NONE, HS_RELEASE_THROW);
-	r->kind = (hs_release_kind)rkind;
-	int object = (int)r->object.index1; // index + 1 (0: none); the world tag is rebuilt below
-	hs_state_int_range(io, &object, 0, n);
-	r->object.index1 = (uint32_t)object;
-	hs_state_f64(io, &r->time);
-	hs_state_vec3(io, &r->velocity);
-	hs_state_f64(io, &r->hand_speed);
-}
+// The spring system's state, in walk order (enums travel as int words within their range).
+static const hs_field spring_fields[] = {
+    {HS_GROUP("object flags", object_fields), HS_COUNT_AT(S, capacity)},
+    // the stylus: its poses at the end and the start of the coming frame, button, velocity
+    {HS_ONE(S, has_stylus, BOOL)},
+    {HS_ONE(S, stylus, VEC3)},
+    {HS_ONE(S, stylus_prev, VEC3)},
+    {HS_ONE(S, rot, ROTATION)},
+    {HS_ONE(S, rot_prev, ROTATION)},
+    {HS_ONE(S, button, BOOL)},
+    {HS_ONE(S, button_prev, BOOL)},
+    {HS_ONE(S, stylus_velocity, VEC3)},
+    // the spring: its object, how it got it, its direction, its anchor offset, the candidate and the last release
+    {HS_ONE(S, attached, INT), .lo = -1, .hi = -1, HS_HI_PLUS(S, capacity)},
+    {HS_ONE(S, attach_kind, INT), .lo = HS_ATTACH_NONE, .hi = HS_ATTACH_ROD},
+    {HS_ONE(S, axis, VEC3)},
+    {HS_ONE(S, anchor_offset, VEC3)},
+    {HS_ONE(S, candidate, INT), .lo = -1, .hi = -1, HS_HI_PLUS(S, capacity)},
+    {HS_ONE(S, release.kind, INT), .lo = HS_RELEASE_NONE, .hi = HS_RELEASE_THROW},
+    {HS_ONE(S, release.object.index1, U32), .lo = 0, .hi = 0, HS_HI_PLUS(S, capacity)}, // index + 1 (0: none)
+    {HS_ONE(S, release.time, F64)},
+    {HS_ONE(S, release.velocity, VEC3)},
+    {HS_ONE(S, release.hand_speed, F64)},
+    // the tracker daemon (§5.1): its clock, ring buffer, estimates and events
+    {HS_ONE(S, tracker.next_tick, LONG), .lo = 0, .hi = LONG_MAX},
+    {HS_ONE(S, tracker.count, LONG), .lo = 0, .hi = LONG_MAX},
+    {HS_ONE(S, tracker.head, INT), .lo = 0, .hi = HS_TRACKER_CAPACITY - 1},
+    {HS_GROUP("tracker.ring", ring_fields), .count = HS_TRACKER_CAPACITY},
+    {HS_ONE(S, tracker.velocity, VEC3)},
+    {HS_ONE(S, tracker.acceleration, VEC3)},
+    {HS_ONE(S, tracker.heading, VEC3)},
+    {HS_ONE(S, tracker.at_rest, BOOL)},
+    {HS_ONE(S, tracker.last_event, INT), .lo = HS_TRACKER_EVENT_NONE, .hi = HS_TRACKER_EVENT_MOTION_END},
+    {HS_ONE(S, tracker.last_event_time, F64)},
+    {HS_ONE(S, tracker.motion_starts, LONG), .lo = 0, .hi = LONG_MAX},
+    {HS_ONE(S, tracker.motion_ends, LONG), .lo = 0, .hi = LONG_MAX},
+    // the touches' warm-start forces: every slot, so the size depends on the definitions only;
+    // those beyond the count are zero (CHECK refuses others), and a hash leaves them out: a hash
+    // every frame of a 1000-object box mixed 8000 slots for its touches (+8 % instructions a
+    // frame), a default world's 512 for none
+    {HS_GROUP("warm", warm_fields), HS_COUNTED(S, warm_count), HS_COUNT_AT(S, touch_capacity)},
+};
 
-// The touches' forces the next frame's resting solve starts from (spring_solve.c): every slot, so
-// the size depends on the definitions only; those beyond the count are zero (CHECK refuses
-// others), and HASH leaves them out: a hash every frame of a 1000-object box mixed 8000 slots for
-// its touches (+8 % instructions a frame), a default world's 512 for none.
-static void warm_io(hs_spring_system *sys, hs_state_io *io) {
-	int last = sys->capacity - 1;
-	int count = hs_state_count(io, &sys->warm_count, sys->touch_capacity);
-	int slots = io->mode == HS_STATE_HASH ? count : sys->touch_capacity;
-	for (int k = 0; k < slots; ++k) {
-		hs_spring_warm *w = &sys->warm[k];
-		if (k < count) {
-			hs_state_int_range(io, &w->a, 0, last);
-			hs_state_int_range(io, &w->b, 0, last);
-			hs_state_f64(io, &w->normal);
-			hs_state_vec3(io, &w->friction);
-			continue;
-		}
-		uint64_t zero[6] = {0};
-		for (int q = 0; q < 6; ++q)
-			hs_state_zero(io, &zero[q]);
-		if (io->mode == HS_STATE_LOAD)
-			*w = (hs_spring_warm){0, 0, 0.0, {0.0, 0.0, 0.0}};
-	}
-}
+#undef S
 
 // The spring definition as one checksum: a state saved under other spring parameters is refused.
 static uint64_t def_checksum(const hs_spring_def *d) {
@@ -123,15 +105,10 @@ static uint64_t def_checksum(const hs_spring_def *d) {
 
 void hs_spring_state_io(hs_spring_system *sys, hs_state_io *io) {
 	hs_state_def(io, def_checksum(&sys->def), "the spring definition differs");
-	for (int i = 0; i < sys->capacity; ++i) { // every slot: the size depends on the definitions only
-		hs_state_u8_range(io, &sys->on_floor[i], 1);
-		hs_state_u8_range(io, &sys->sliding[i], 1);
-		hs_state_u8_range(io, &sys->separated[i], 1);
-	}
-	stylus_io(sys, io);
-	spring_io(sys, io);
-	tracker_io(&sys->tracker, io);
-	warm_io(sys, io);
+	if (io->mode == HS_STATE_HASH) // every frame: the walk inlined over the constant table
+		hs_fields_walk(io, spring_fields, HS_FIELDS_COUNT(spring_fields), sys, NULL);
+	else
+		hs_fields_io(io, spring_fields, HS_FIELDS_COUNT(spring_fields), sys, NULL);
 	if (io->mode == HS_STATE_LOAD)
 		sys->geom_count = 0; // the geometry cache is rebuilt from the loaded bodies at the next step
 }

@@ -1,7 +1,7 @@
 // spring_system.h — the spring model's system: its definition and everything a step changes
 // (stylus, spring, tracker, per-object flags), shared by the files of the spring model. Every
-// field a later step reads is visited by hs_spring_state_io (spring_state.c): a field added here
-// is added there.
+// field a later step reads is an entry of spring_state.c's field table (spring_fields), which
+// save, load, check and hash all follow: a field added here is added there.
 #ifndef HS_SPRING_SYSTEM_H
 #define HS_SPRING_SYSTEM_H
 

@@ -1,23 +1,22 @@
 // state.c — the world's state as one block (docs/model.md "The state block"; MuJoCo's mj_getState /
-// mj_setState): the header that ties a buffer to a kind of world, the one walk over every state
-// field (world_io), and the four uses of it: size, save, load (checked first) and hash.
+// mj_setState): the header that ties a buffer to a kind of world, the field tables of the object,
+// the hand and the world's own words (state_fields.h), the one walk over every state field they
+// drive (world_io), and the four uses of it: size, save, load (checked first) and hash.
 #include <limits.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#if defined(__SSE2__)
-#include <emmintrin.h>
-#endif
 
 #include "broadphase.h"
 #include "inline.h"
 #include "spring_state.h"
+#include "state_fields.h"
 #include "state_walk.h"
 #include "world_internal.h"
 
 #define HS_STATE_MAGIC 0x3145544154535348ull // "HSSTATE1", little-endian
-#define HS_STATE_FORMAT 1                    // bump when the walk changes
+#define HS_STATE_FORMAT 1                    // bump when the walk (a table's fields or order) changes
 #define HS_STATE_HEADER_WORDS 9
 #define HS_HASH_SEED 0x6A09E667F3BCC909ull // any fixed odd start
 
@@ -124,135 +123,105 @@ static int header_of(const hs_world *w, uint64_t out[HS_STATE_HEADER_WORDS], con
 	return HS_STATE_HEADER_WORDS;
 }
 
-// The walks below are inlined into each use (HS_FORCE_INLINE): where the mode is a constant (the
-// hash, every frame), the mode tests and the calls for other modes fold away, and the word count
-// stays in a register.
+// ---- the state's field tables (state_fields.h): each is the one list of its type's STATE fields,
+// in walk order; size, save, check, load, hash and the hash's gather all walk it ----
+
+// Context values of a body's walk (HS_HI_PLUS_CTX): bounds that come from the world.
+enum { BODY_VERTICES, BODY_HANDS, BODY_CONTEXT };
 
 // One object: 39 words. The model fields (shape, mass) are in the definition checksum instead.
-static HS_FORCE_INLINE void body_io(hs_state_io *io, const hs_world *w, hs_body *b) {
-	hs_state_vec3(io, &b->pos);
-	hs_state_vec3(io, &b->prev);
-	hs_state_rotation(io, &b->rot);
-	hs_state_rotation(io, &b->rot_prev);
-	hs_state_rotation(io, &b->spin);
-	hs_state_vec3(io, &b->vel);
-	hs_state_u8_range(io, &b->contact, HS_CONTACT_PUSH_MANY);
-	hs_state_int_range(io, &b->floor_contacts, 0, w->shapes[b->shape].vertex_count);
-	hs_state_u8_range(io, &b->grounded, 1);
-	hs_state_u8_range(io, &b->asleep, 1);
-	hs_state_u8_range(io, &b->held, 1);
-	hs_state_u8_range(io, &b->carried, 1);
-	hs_state_int_range(io, &b->grasped_by, 0, w->hand_count);
-	hs_state_vec3(io, &b->grip_pos);
-	hs_state_quat(io, &b->grip_rot); // zero until a grasp begins
-	hs_state_f64(io, &b->grip_spread);
-	hs_state_f64(io, &b->grip_reach);
-	hs_state_u8_range(io, &b->grip_fingers, 31);
-	hs_state_int_range(io, &b->released_by, 0, w->hand_count);
-}
+static const hs_field body_fields[] = {
+    {HS_ONE(hs_body, pos, VEC3)},
+    {HS_ONE(hs_body, prev, VEC3)},
+    {HS_ONE(hs_body, rot, ROTATION)},
+    {HS_ONE(hs_body, rot_prev, ROTATION)},
+    {HS_ONE(hs_body, spin, ROTATION)},
+    {HS_ONE(hs_body, vel, VEC3)},
+    {HS_ONE(hs_body, contact, U8), .hi = HS_CONTACT_PUSH_MANY},
+    {HS_ONE(hs_body, floor_contacts, INT), .lo = 0, HS_HI_PLUS_CTX(BODY_VERTICES)}, // its shape's vertices
+    {HS_ONE(hs_body, grounded, U8), .hi = 1},
+    {HS_ONE(hs_body, asleep, U8), .hi = 1},
+    {HS_ONE(hs_body, held, U8), .hi = 1},
+    {HS_ONE(hs_body, carried, U8), .hi = 1},
+    {HS_ONE(hs_body, grasped_by, INT), .lo = 0, HS_HI_PLUS_CTX(BODY_HANDS)},
+    {HS_ONE(hs_body, grip_pos, VEC3)},
+    {HS_ONE(hs_body, grip_rot, QUAT)}, // zero until a grasp begins
+    {HS_ONE(hs_body, grip_spread, F64)},
+    {HS_ONE(hs_body, grip_reach, F64)},
+    {HS_ONE(hs_body, grip_fingers, U8), .hi = 31},
+    {HS_ONE(hs_body, released_by, INT), .lo = 0, HS_HI_PLUS_CTX(BODY_HANDS)},
+};
+
+// A hand's older wrist poses, element by element (older_pos[0], older_rot[0], older_pos[1], ...).
+static const hs_field hand_older_fields[] = {
+    {HS_ALL(hs_hand, older_pos, VEC3)},
+    {HS_ALL(hs_hand, older_rot, ROTATION)},
+};
 
 // One hand: 68 words and 7 for each of its older_capacity older wrist poses (117 at the default
 // release window: HS_HAND_OLDER of them), the two readings its check points now and a frame ago
 // come from (the points and lines are rebuilt from them after a load), its tracking state and its
 // fingertip pairs' recent peaks, the wrist poses before those (a release's velocity), its two
-// touch masks and its two embedded masks. Its definition is
-// in the checksum; older_capacity follows from the world's (dt, release_window_s).
-static HS_FORCE_INLINE void hand_io(hs_state_io *io, hs_hand *h) {
-	hs_state_vec3(io, &h->wrist_pos);
-	hs_state_rotation(io, &h->wrist_rot);
-	for (int i = 0; i < HS_GLOVE_SENSORS; ++i)
-		hs_state_u8(io, &h->sensors[i]);
-	hs_state_vec3(io, &h->prev_wrist_pos);
-	hs_state_rotation(io, &h->prev_wrist_rot);
-	for (int i = 0; i < HS_GLOVE_SENSORS; ++i)
-		hs_state_u8(io, &h->prev_sensors[i]);
-	for (int i = 0; h->def.joint_driven && i < HS_HAND_POINTS; ++i)
-		hs_state_vec3(io, &h->joints[i]);
-	for (int i = 0; h->def.joint_driven && i < HS_HAND_POINTS; ++i)
-		hs_state_vec3(io, &h->prev_joints[i]);
-	hs_state_bool(io, &h->placed);
-	hs_state_bool(io, &h->untracked);
-	hs_state_int_range(io, &h->lost_frames, 0, INT_MAX);
-	for (int k = 0; k < HS_FINGER_PAIRS; ++k)
-		hs_state_f64(io, &h->pair_open[k]);
-	hs_state_int_range(io, &h->older_count, 0, h->older_capacity);
-	for (int i = 0; i < h->older_capacity; ++i) { // all of them (those not yet reached are zero): a fixed size
-		hs_state_vec3(io, &h->older_pos[i]);
-		hs_state_rotation(io, &h->older_rot[i]);
-	}
-	uint64_t points = h->touch_points;
-	hs_state_mask(io, &points, HS_HAND_POINTS);
-	h->touch_points = (uint32_t)points;
-	hs_state_mask(io, &h->touch_lines, HS_HAND_LINES);
-	uint64_t embedded = h->embed_points;
-	hs_state_mask(io, &embedded, HS_HAND_POINTS);
-	h->embed_points = (uint32_t)embedded;
-	hs_state_mask(io, &h->embed_lines, HS_HAND_LINES);
+// touch masks and its two embedded masks; a joint-driven hand's joints too (120 words). Its
+// definition is in the checksum; older_capacity follows from the world's (dt, release_window_s).
+static const hs_field hand_fields[] = {
+    {HS_ONE(hs_hand, wrist_pos, VEC3)},
+    {HS_ONE(hs_hand, wrist_rot, ROTATION)},
+    {HS_ALL(hs_hand, sensors, U8), .hi = UINT8_MAX},
+    {HS_ONE(hs_hand, prev_wrist_pos, VEC3)},
+    {HS_ONE(hs_hand, prev_wrist_rot, ROTATION)},
+    {HS_ALL(hs_hand, prev_sensors, U8), .hi = UINT8_MAX},
+    {HS_ALL(hs_hand, joints, VEC3), HS_WHEN(hs_hand, def.joint_driven)},
+    {HS_ALL(hs_hand, prev_joints, VEC3), HS_WHEN(hs_hand, def.joint_driven)},
+    {HS_ONE(hs_hand, placed, BOOL)},
+    {HS_ONE(hs_hand, untracked, BOOL)},
+    {HS_ONE(hs_hand, lost_frames, INT), .lo = 0, .hi = INT_MAX},
+    {HS_ALL(hs_hand, pair_open, F64)},
+    {HS_ONE(hs_hand, older_count, INT), .lo = 0, HS_HI_PLUS(hs_hand, older_capacity)},
+    // all of them (those not yet reached are zero): a fixed size
+    {HS_GROUP("older poses", hand_older_fields), HS_COUNT_AT(hs_hand, older_capacity)},
+    {HS_ONE(hs_hand, touch_points, MASK32), .hi = HS_HAND_POINTS},
+    {HS_ONE(hs_hand, touch_lines, MASK64), .hi = HS_HAND_LINES},
+    {HS_ONE(hs_hand, embed_points, MASK32), .hi = HS_HAND_POINTS},
+    {HS_ONE(hs_hand, embed_lines, MASK64), .hi = HS_HAND_LINES},
+};
+
+// The world's own words, before its objects, hands and spring system.
+static const hs_field world_fields[] = {
+    {HS_ONE(hs_world, frame, LONG), .lo = 0, .hi = LONG_MAX},
+    {HS_ONE(hs_world, counters.numeric_faults, LONG), .lo = 0, .hi = LONG_MAX},
+    {HS_ONE(hs_world, first_fault_frame, LONG), .lo = -1, .hi = LONG_MAX},
+    {HS_ONE(hs_world, first_fault_object, INT), .lo = -1, .hi = -1, HS_HI_PLUS(hs_world, object_count)},
+};
+
+// A body's walk, in any mode: inlined where the mode is a constant (the digests, every frame).
+static HS_FORCE_INLINE void body_walk(hs_state_io *io, const hs_world *w, hs_body *b, bool inline_walk) {
+	const int64_t ctx[BODY_CONTEXT] = {[BODY_VERTICES] = w->shapes[b->shape].vertex_count, [BODY_HANDS] = w->hand_count};
+	if (inline_walk)
+		hs_fields_walk(io, body_fields, HS_FIELDS_COUNT(body_fields), b, ctx);
+	else
+		hs_fields_io(io, body_fields, HS_FIELDS_COUNT(body_fields), b, ctx);
 }
+
+static void hand_walk(hs_state_io *io, hs_hand *h) { hs_fields_io(io, hand_fields, HS_FIELDS_COUNT(hand_fields), h, NULL); }
 
 #define HS_HASH_LANES {HS_HASH_SEED, ~HS_HASH_SEED, HS_HASH_SEED >> 1, 1}
 
-// A hand's words in HASH mode, as hand_io visits them (every frame: 117 at the default window),
-// gathered to be mixed four lanes at a time. HS_HASH_SELFCHECK builds compare with hand_io's walk.
+// A hand's words in HASH mode, as its walk visits them (every frame: 117 at the default window),
+// gathered (the walk in GATHER mode, inlined over its constant table) to be mixed four lanes at a
+// time. HS_HASH_SELFCHECK builds compare with the walk.
 #define HAND_WORDS_MAX (68 + 6 * HS_HAND_POINTS + 7 * HS_HAND_OLDER_MAX) // joint-driven: its joints twice
-static size_t put_vec3(uint64_t *w, size_t n, hs_vec3 v) {
-	w[n] = hs_state_bits(v.x), w[n + 1] = hs_state_bits(v.y), w[n + 2] = hs_state_bits(v.z);
-	return n + 3;
-}
-static size_t put_quat(uint64_t *w, size_t n, hs_quat q) { // w, x, y, z as hs_state_quat
-	w[n] = hs_state_bits(q.w), w[n + 1] = hs_state_bits(q.x);
-	w[n + 2] = hs_state_bits(q.y), w[n + 3] = hs_state_bits(q.z);
-	return n + 4;
-}
-// A reading's sensors, a word each (zero-extended); with SSE2 the first 16 by unpacking with zeros.
-static size_t put_sensors(uint64_t *w, size_t n, const uint8_t v[HS_GLOVE_SENSORS]) {
-	int i = 0;
-#if defined(__SSE2__)
-	const __m128i zero = _mm_setzero_si128();
-	__m128i b = _mm_loadu_si128((const __m128i *)(const void *)v);
-	__m128i h[2] = {_mm_unpacklo_epi8(b, zero), _mm_unpackhi_epi8(b, zero)}; // 16 bits
-	for (size_t k = 0; k < 2; ++k) {
-		__m128i d[2] = {_mm_unpacklo_epi16(h[k], zero), _mm_unpackhi_epi16(h[k], zero)}; // 32 bits
-		for (size_t m = 0; m < 2; ++m) {
-			_mm_storeu_si128((__m128i *)(void *)&w[n + 8 * k + 4 * m], _mm_unpacklo_epi32(d[m], zero));
-			_mm_storeu_si128((__m128i *)(void *)&w[n + 8 * k + 4 * m + 2], _mm_unpackhi_epi32(d[m], zero));
-		}
-	}
-	i = 16;
-	_Static_assert(HS_GLOVE_SENSORS >= 16, "16 sensors unpacked at once");
-#endif
-	for (; i < HS_GLOVE_SENSORS; ++i)
-		w[n + (size_t)i] = v[i];
-	return n + HS_GLOVE_SENSORS;
-}
-
-static size_t hand_words(const hs_hand *h, uint64_t *w) {
-	size_t n = put_sensors(w, put_quat(w, put_vec3(w, 0, h->wrist_pos), h->wrist_rot), h->sensors);
-	n = put_sensors(w, put_quat(w, put_vec3(w, n, h->prev_wrist_pos), h->prev_wrist_rot), h->prev_sensors);
-	for (int i = 0; h->def.joint_driven && i < HS_HAND_POINTS; ++i)
-		n = put_vec3(w, n, h->joints[i]);
-	for (int i = 0; h->def.joint_driven && i < HS_HAND_POINTS; ++i)
-		n = put_vec3(w, n, h->prev_joints[i]);
-	w[n++] = h->placed ? 1u : 0u;
-	w[n++] = h->untracked ? 1u : 0u;
-	w[n++] = (uint64_t)(int64_t)h->lost_frames;
-	for (int k = 0; k < HS_FINGER_PAIRS; ++k)
-		w[n++] = hs_state_bits(h->pair_open[k]);
-	w[n++] = (uint64_t)(int64_t)h->older_count;
-	for (int i = 0; i < h->older_capacity; ++i)
-		n = put_quat(w, put_vec3(w, n, h->older_pos[i]), h->older_rot[i]);
-	w[n++] = h->touch_points;
-	w[n++] = h->touch_lines;
-	w[n++] = h->embed_points;
-	w[n++] = h->embed_lines;
-	return n;
+static size_t hand_words(hs_hand *h, uint64_t *w) {
+	hs_state_io gather = {.mode = HS_STATE_GATHER, .gather = w};
+	hs_fields_walk(&gather, hand_fields, HS_FIELDS_COUNT(hand_fields), h, NULL);
+	return gather.words;
 }
 
 static void hand_hash(hs_state_io *io, hs_hand *h) {
 	uint64_t words[HAND_WORDS_MAX];
 #if defined(HS_HASH_SELFCHECK)
 	hs_state_io walked = *io;
-	hand_io(&walked, h);
+	hand_walk(&walked, h);
 #endif
 	hs_state_hash_words(io, words, hand_words(h, words));
 #if defined(HS_HASH_SELFCHECK)
@@ -271,7 +240,7 @@ static uint64_t body_digest(const hs_world *w, int i) {
 	hs_state_io io = {.mode = HS_STATE_HASH, .lane = HS_HASH_LANES};
 	uint64_t index = (uint64_t)i;
 	hs_state_u64(&io, &index);
-	body_io(&io, w, &w->bodies[i]); // HASH mode only reads the fields
+	body_walk(&io, w, &w->bodies[i], true); // HASH mode only reads the fields
 	return hs_state_hash_of(&io);
 }
 
@@ -326,22 +295,22 @@ static uint64_t objects_digest(hs_world *w) {
 // hash takes the objects as the sum of their digests (above); the other modes walk them in order.
 static HS_FORCE_INLINE void world_io(hs_state_io *io, hs_world *w) {
 	io->objects = w->object_count;
-	hs_state_long_range(io, &w->frame, 0, LONG_MAX);
-	hs_state_long_range(io, &w->counters.numeric_faults, 0, LONG_MAX);
-	hs_state_long_range(io, &w->first_fault_frame, -1, LONG_MAX);
-	hs_state_int_range(io, &w->first_fault_object, -1, w->object_count - 1);
+	if (io->mode == HS_STATE_HASH)
+		hs_fields_walk(io, world_fields, HS_FIELDS_COUNT(world_fields), w, NULL);
+	else
+		hs_fields_io(io, world_fields, HS_FIELDS_COUNT(world_fields), w, NULL);
 	if (io->mode == HS_STATE_HASH) {
 		uint64_t objects = objects_digest(w);
 		hs_state_u64(io, &objects);
 	} else {
 		for (int i = 0; i < w->object_count; ++i)
-			body_io(io, w, &w->bodies[i]);
+			body_walk(io, w, &w->bodies[i], false);
 	}
 	for (int h = 0; h < w->hand_count; ++h)
 		if (io->mode == HS_STATE_HASH)
 			hand_hash(io, &w->hands[h]);
 		else
-			hand_io(io, &w->hands[h]);
+			hand_walk(io, &w->hands[h]);
 	if (w->spring)
 		hs_spring_state_io(w->spring, io);
 }

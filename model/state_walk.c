@@ -33,6 +33,9 @@ static uint64_t word(hs_state_io *io, uint64_t v) {
 		io->words--; // the inline hs_state_hash_word counts its own words
 		hs_state_hash_word(io, v);
 		return v;
+	case HS_STATE_GATHER:
+		io->gather[at] = v;
+		return v;
 	case HS_STATE_SAVE:
 		if (at < io->limit)
 			put_le(io->out + 8 * at, v);
@@ -180,7 +183,7 @@ void hs_state_rotation_io(hs_state_io *io, hs_quat *v) {
 }
 
 void hs_state_def(hs_state_io *io, uint64_t checksum, const char *what) {
-	if (io->mode == HS_STATE_HASH) // definitions do not change while stepping
+	if (hs_state_hashing(io)) // definitions do not change while stepping
 		return;
 	uint64_t w = word(io, checksum);
 	if (w != checksum)

@@ -2,19 +2,23 @@
 // to size it, save it, check a buffer, load it and hash it, so they can never disagree on what the
 // state is. Every field travels as one 64-bit little-endian word (doubles by their bits, integers
 // sign-extended), so a saved state and its hash are the same on every machine, whatever its
-// struct layout or padding. The word visitor below is state_walk.c's.
+// struct layout or padding. The word visitor below is state_walk.c's; the walks are driven by
+// each state type's field table (state_fields.h: state.c's body, hand and world tables,
+// spring_state.c's spring table), which the walker turns into these calls.
 //
 // Contract for a walk (world_io in state.c, hs_spring_state_io for the spring system):
 //  - visit every STATE field once, in a fixed order that depends only on the model (counts,
 //    capacities), never on the values (the size must not change while stepping); one exception,
-//    in HASH mode only: slots beyond a count (hs_state_count) that must be zero (hs_state_zero:
-//    CHECK refuses others) may be left out (the spring's warm-start forces, spring_state.c);
+//    in HASH (and GATHER) mode only: slots beyond a count (hs_state_count) that must be zero
+//    (hs_state_zero: CHECK refuses others) may be left out (the spring's warm-start forces);
 //  - pass each field through the hs_state_* call of its type; give ranged calls the range a
 //    valid state obeys (enums, indices, flags): CHECK refuses a buffer that breaks it;
 //  - in CHECK mode nothing is written (the calls only read and validate); in LOAD mode every field
 //    is written and the walk may also reset its caches (io->mode == HS_STATE_LOAD);
+//  - GATHER writes the words HASH would mix, in order, to `gather` (a hash's fast path mixes
+//    them four lanes at a time: hs_state_hash_words);
 //  - definitions are not state: a walk may carry a checksum of its own definition with
-//    hs_state_def, which SAVE writes, CHECK requires equal and HASH skips.
+//    hs_state_def, which SAVE writes, CHECK requires equal and HASH and GATHER skip.
 #ifndef HS_STATE_WALK_H
 #define HS_STATE_WALK_H
 
@@ -32,6 +36,7 @@ typedef enum hs_state_mode {
 	HS_STATE_CHECK, // read them from `in` and validate, writing nothing (load's first pass)
 	HS_STATE_LOAD,  // read them from `in` into the fields (after a CHECK pass that passed)
 	HS_STATE_HASH,  // mix them into `hash`
+	HS_STATE_GATHER, // write them to `gather` as they would be hashed (a hash's fast path: HASH's words, in order)
 } hs_state_mode;
 
 typedef struct hs_state_io {
@@ -42,10 +47,16 @@ typedef struct hs_state_io {
 	size_t limit;            // SAVE / CHECK / LOAD: words the buffer holds
 	bool overflow;           // SAVE / CHECK / LOAD ran past limit (nothing read or written there)
 	uint64_t lane[4];        // HASH: word k is mixed into lane k mod 4 (four independent chains)
+	uint64_t *gather;        // GATHER: the words, in host order (room for all of them)
 	int objects;             // the world's object count, for walks over per-object arrays
 	const char *error;       // CHECK: why the buffer is refused (first refusal), NULL while valid
 	size_t error_word;       // CHECK: the word where it was refused
 } hs_state_io;
+
+// HASH and GATHER: the words a hash takes (slots a hash leaves out are left out of both).
+static inline bool hs_state_hashing(const hs_state_io *io) {
+	return io->mode == HS_STATE_HASH || io->mode == HS_STATE_GATHER;
+}
 
 // Mixes one 64-bit word into a running hash (multiply, xor-shift: a bijection of the running
 // value for every word, so a change in any single word changes the result).
@@ -167,7 +178,7 @@ static inline void hs_state_vec3_array(hs_state_io *io, hs_vec3 *v, int count) {
 		hs_state_vec3(io, &v[i]);
 }
 // A definition checksum: SAVE writes it, CHECK refuses a buffer whose word differs (`what`
-// names the definition in the reason), LOAD skips it, HASH ignores it.
+// names the definition in the reason), LOAD skips it, HASH and GATHER ignore it.
 void hs_state_def(hs_state_io *io, uint64_t checksum, const char *what);
 // CHECK: refuses the buffer with `why` (a static string) at the current word.
 void hs_state_refuse(hs_state_io *io, const char *why);

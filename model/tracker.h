@@ -7,7 +7,7 @@
 
 // The tracker daemon (§3, §5.1): stylus samples at a fixed rate in a ring buffer, velocity and
 // acceleration estimates, rest / motion events with hysteresis. The first four fields come from
-// the definition; every other one is state, visited by hs_spring_state_io (spring_state.c).
+// the definition; every other one is state, an entry of spring_state.c's field table.
 typedef struct hs_tracker {
 	double period;        // s between samples (1 / rate)
 	int window;           // samples in the least-squares fit
