@@ -494,12 +494,12 @@ typedef struct hs_hand_id {
 hs_hand_id hs_world_add_hand(hs_world *world, const hs_hand_def *def, hs_status *status);
 /// The handle of the i-th hand (0 ≤ i < hands added), in the order added; null otherwise.
 hs_hand_id hs_world_hand_at(const hs_world *world, int i);
-/// Sets a hand's wrist pose and glove sensors for the next step (HS_ERR_INVALID_ARGUMENT for an
-/// invalid handle, a joint-driven hand, NULL sensors, a non-unit orientation or a position beyond HS_MAX_COORDINATE).
+/// Sets a hand's wrist pose and glove reading (its 18 sensors) for the next step (HS_ERR_INVALID_ARGUMENT for an
+/// invalid handle, a joint-driven hand, a NULL reading, a non-unit orientation or a position beyond HS_MAX_COORDINATE).
 /// After the first call each sensor passes the world's glove_deadband: the hand keeps the value it
 /// used until the reading leaves ±glove_deadband around it, then follows the reading at that distance.
 hs_status hs_world_set_hand(hs_world *world, hs_hand_id hand, hs_vec3 wrist_position,
-                            hs_quat wrist_orientation, const uint8_t sensors[HS_GLOVE_SENSORS]);
+                            hs_quat wrist_orientation, const uint8_t reading[HS_GLOVE_SENSORS]);
 /// Sets a joint-driven hand's (hs_hand_def.joint_driven) wrist pose and its 20 check points, in
 /// the wrist frame, for the next step: the hand's shape is the points as given (a left hand's as
 /// they are, not mirrored), no glove, no deadband; each finger segment's four check lines lie
