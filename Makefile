@@ -22,7 +22,7 @@ LDCONFIG ?= ldconfig
 # the physics (model/) needs libccd only; the harness (harness/) adds libyaml and GSL. While a
 # model/ file still includes a GSL header (the tracker's noise, to move to the harness: noise is
 # input), GSL is added to the physics' link and to handspring.pc's Requires.private here.
-MODEL_PKGS   := ccd $(if $(shell grep -l '<gsl/' model/*.c model/*.h 2>/dev/null),gsl)
+MODEL_PKGS   := ccd $(if $(shell grep -l '<gsl/' model/*/*.c model/*/*.h 2>/dev/null),gsl)
 HARNESS_PKGS := yaml-0.1 gsl
 PKGS := $(MODEL_PKGS) $(HARNESS_PKGS)
 # recursive on purpose: pkg-config is asked only after `deps` has installed it
@@ -49,7 +49,7 @@ endif
 # determinism: no contraction into FMA, no fast-math, IEEE semantics everywhere
 FP   := -ffp-contract=off -fno-fast-math -fno-tree-vectorize -fno-tree-slp-vectorize
 # Include paths by layer: each layer sees the public headers below it and its own private ones,
-# so the compiler enforces the boundary (the harness cannot reach model/*.h).
+# so the compiler enforces the boundary (the harness cannot reach model/*/*.h).
 PUBLIC_INC  := -Imodel/include -Iharness/include
 ifeq ($(SANITIZE),1)
 # every layer, not only the programs: the library code is what the sanitizers must see
@@ -58,13 +58,15 @@ LDFLAGS    += -fsanitize=address,undefined
 endif
 CFLAGS_BASE = -std=c11 -D_POSIX_C_SOURCE=200809L $(OPT) -g $(WARN) $(FP) $(SAN_CFLAGS) $(PKG_CFLAGS) $(CFLAGS)
 CFLAGS_ALL  = $(CFLAGS_BASE) $(PUBLIC_INC)
-CFLAGS_MODEL   = $(CFLAGS_BASE) -Imodel/include -Imodel
+# the model's folders (docs/architecture.md): each one's private headers, for the model and its tests
+MODEL_INC     := $(patsubst %/,-I%,$(sort $(dir $(wildcard model/*/*.h))))
+CFLAGS_MODEL   = $(CFLAGS_BASE) -Imodel/include $(filter-out -Imodel/include,$(MODEL_INC))
 CFLAGS_HARNESS = $(CFLAGS_BASE) -Imodel/include -Iharness/include -Iharness
 # tests may look inside either layer (one test file per model file)
-CFLAGS_TESTS   = $(CFLAGS_BASE) $(PUBLIC_INC) -Imodel -Iharness -Itests
+CFLAGS_TESTS   = $(CFLAGS_BASE) $(PUBLIC_INC) $(filter-out -Imodel/include,$(MODEL_INC)) -Iharness -Itests
 LDLIBS_ALL = $(PKG_LIBS) -lm $(LDLIBS)
 
-LIB_SRC  := $(wildcard model/*.c)
+LIB_SRC  := $(wildcard model/*/*.c)
 LIB_OBJ  := $(LIB_SRC:%.c=$(BUILD)/obj/%.o)
 LIB      := $(BUILD)/libhandspring.a
 HLIB_SRC := $(wildcard harness/*.c)
@@ -74,7 +76,7 @@ HLIB     := $(BUILD)/libhandspring-harness.a
 # The tool, tests, bench and plots link these static archives (non-PIC code), so they run from
 # the build folder without LD_LIBRARY_PATH.
 LIBS     := $(HLIB) $(LIB)
-MODEL_H   = $(wildcard model/*.h model/include/*.h)
+MODEL_H   = $(wildcard model/*/*.h)
 HARNESS_H = $(wildcard harness/*.h harness/include/*.h)
 PUBLIC_H := model/include/handspring.h model/include/hs_math.h harness/include/hs_harness.h
 TOOL     := $(BUILD)/handspring

@@ -19,7 +19,7 @@
 #                        Makefile's FP flags keep the compilers from fusing a*b+c (-ffp-contract=off,
 #                        and -fno-tree-vectorize -fno-tree-slp-vectorize against GCC 12's vfmaddsub)
 #   gcc-noavx            OPT=-O2 CFLAGS=-DHS_NO_AVX: the SSE2 paths of the loops that take AVX
-#                        where the CPU has it (model/lanes4.h), on this CPU
+#                        where the CPU has it (model/math/lanes4.h), on this CPU
 #   nofma                the gcc-O2 binary run with GLIBC_TUNABLES=glibc.cpu.hwcaps=-AVX2,-FMA: the
 #                        libm code paths glibc takes on a CPU without FMA
 #   i386                 i686-linux-gnu-gcc -m32 -msse2 -mfpmath=sse -O2 (SSE2 doubles, no x87),

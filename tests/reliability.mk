@@ -121,7 +121,7 @@ FUZZ_SECONDS ?= 60
 FUZZ_CC      ?= clang
 FUZZ_DIR     := $(BUILD)/fuzz
 FUZZ_SAN     := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
-FUZZ_CFLAGS   = -std=c11 -D_POSIX_C_SOURCE=200809L -O1 -g $(WARN) $(FP) $(PUBLIC_INC) -Imodel -Iharness -Itests/fuzz $(PKG_CFLAGS) $(FUZZ_SAN)
+FUZZ_CFLAGS   = -std=c11 -D_POSIX_C_SOURCE=200809L -O1 -g $(WARN) $(FP) $(PUBLIC_INC) $(filter-out -Imodel/include,$(MODEL_INC)) -Iharness -Itests/fuzz $(PKG_CFLAGS) $(FUZZ_SAN)
 FUZZ_LIB_OBJ := $(LIB_SRC:%.c=$(FUZZ_DIR)/obj/%.o) $(HLIB_SRC:%.c=$(FUZZ_DIR)/obj/%.o)
 FUZZ_NAMES   := scenario record state joints campaign csv
 FUZZ_TARGETS := $(FUZZ_NAMES:%=$(FUZZ_DIR)/fuzz_%)

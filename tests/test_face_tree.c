@@ -1,4 +1,4 @@
-// test_face_tree.c — the normal-cone trees (model/face_tree.c) answer every query exactly as the
+// test_face_tree.c — the normal-cone trees (model/geometry/face_tree.c) answer every query exactly as the
 // scan of all faces in index order does: inside, nearest face (ties to the lower index), the
 // Cyrus-Beck clip (every field when it hits) and the four-points-beyond test, on many-faced
 // balls and stretched balls, for random points near and far, points on the surface and at the

@@ -1,4 +1,4 @@
-// test_part_box.c — a part that is a box with axis-aligned faces (model/part_box.h): which
+// test_part_box.c — a part that is a box with axis-aligned faces (model/geometry/part_box.h): which
 // parts are found to be such boxes, the coordinate inside test and nearest face answer as the
 // scans of the faces do (on faces, at ±0, grown, NaN, ties), and two ends beyond one face by more than the slack make the
 // Cyrus-Beck clip miss, while ends beyond by less do not count as apart.

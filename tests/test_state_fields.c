@@ -1,4 +1,4 @@
-// test_state_fields.c — the state's field tables (model/state_fields.h): a field added to a table
+// test_state_fields.c — the state's field tables (model/state/state_fields.h): a field added to a table
 // is followed by all four uses of the one walker the world's state uses. For each kind of entry,
 // a table with that one entry more than a base table, over the same struct: the size grows by the
 // entry's words; save writes them (they change when only that field does); load restores exactly

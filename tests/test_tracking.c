@@ -1,5 +1,5 @@
 // test_tracking.c — a hand the tracker loses and finds again, through the public API
-// (model/tracking.c; docs/model.md §3 "Tracking loss").
+// (model/hand/tracking.c; docs/model.md §3 "Tracking loss").
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>

@@ -4,7 +4,7 @@
 // what they need), in CPU time of the process, K times on a freshly loaded scenario; loading and the
 // expectation check are outside the clock. --instr runs one repeat again under callgrind, counting
 // the measured frames only (--toggle-collect on hs_bench_cmd_frames), and splits the frame into
-// the stages hs_scenario_step and the world's step pipeline call (model/world_step.c, step_hand.c).
+// the stages hs_scenario_step and the world's step pipeline call (model/step/world_step.c, step_hand.c).
 #include "bench_cmd.h"
 
 #include <errno.h>
@@ -228,7 +228,7 @@ static bool callgrind_run(const char *file, long frames, const char *dir) {
 }
 
 // The stages of a frame: what hs_scenario_step calls, and what the world's step calls in it: the
-// hand pipeline hs_step_hand (model/step_hand.c, its stages inlined), or the spring one whole.
+// hand pipeline hs_step_hand (model/step/step_hand.c, its stages inlined), or the spring one whole.
 typedef struct bench_stage {
 	const char *caller, *callee[2], *label;
 } bench_stage;
