@@ -78,7 +78,7 @@ fi
 SOAK=$(cd "$BUILD/soak" && pwd)
 
 # every build must see the same sources: an edit during the run would look like a divergence
-sources() { cat model/*.c model/*.h model/include/*.h harness/*.c harness/*.h harness/include/*.h tool/*.c Makefile "$SOAK"/*.yaml | cksum; }
+sources() { cat model/*/*.c model/*/*.h harness/*.c harness/*.h harness/include/*.h tool/*.c Makefile "$SOAK"/*.yaml | cksum; }
 before=$(sources)
 
 # cross sysroots and compilers (scripts/deps-cross.sh); checked once, only when a build needs them
