@@ -6,6 +6,7 @@
 #include <math.h>
 #include <string.h>
 
+#include "expect.h"
 #include "expect_table.h"
 #include "overlap.h"
 #include "scenario_internal.h"

@@ -5,6 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "expect.h"
 #include "expect_table.h"
 #include "scenario_internal.h"
 

@@ -3,7 +3,7 @@
 #ifndef HS_HARNESS_EXPECT_TABLE_H
 #define HS_HARNESS_EXPECT_TABLE_H
 
-#include "expect.h"
+#include "clause.h"
 #include "scenario_parser.h"
 #include "state_io.h"
 

@@ -7,7 +7,8 @@
 
 #include <stdint.h>
 
-#include "joint_input.h"
+#include "error.h"
+#include "joint_options.h"
 
 // One sample as recorded; `tracked` is decided by the loader (joint_input.c).
 typedef struct hs_joint_sample {
@@ -39,5 +40,10 @@ void hs_joint_header(hs_joint_format format, char *out, size_t size);
 bool hs_joint_file_read(const char *path, const hs_joint_options *options, bool left, hs_joint_file *file,
                         hs_error *err);
 void hs_joint_file_free(hs_joint_file *file);
+
+// True when a recorded file is a joint recording: the first line that is not blank or a comment
+// is a directive (@...) or a MediaPipe or OpenXR header. False for anything else (a glove file, or
+// a file that cannot be read: the glove reader says why).
+bool hs_joint_file_is_joints(const char *path);
 
 #endif

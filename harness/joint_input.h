@@ -5,31 +5,8 @@
 #define HS_HARNESS_JOINT_INPUT_H
 
 #include "hand_script.h"
-#include "joint_frame.h"
-
-typedef enum hs_joint_format { HS_JOINTS_NONE = 0, HS_JOINTS_MEDIAPIPE, HS_JOINTS_OPENXR } hs_joint_format;
-
-// A setting a scenario key or a file's directive says: its value (-1: not said) and its line.
-typedef struct hs_joint_said {
-	int value;
-	unsigned long line;
-} hs_joint_said;
-
-// What the scenario says about a hand's joint recording: its `record:` mapping and the hand.
-typedef struct hs_joint_options {
-	const char *scenario;      // the scenario file, for messages
-	const char *hand;          // the hand's name, for messages
-	bool side_given;           // the hand's `side` is written (else it is right by default)
-	hs_joint_said frame;       // hs_joint_frame
-	hs_joint_said units;       // hs_joint_units
-	bool placed;               // `origin` or `rpy_deg` given
-	hs_vec3 origin;            // m
-	hs_quat rot;
-	double min_confidence;     // a sample of lower confidence is untracked (default 0.5)
-	bool fit_hand;             // the hand's size from the recording (default true)
-	bool drive_joints;         // the recorded joints are the hand's check points (`hand: joints`;
-	                           // default false: the 18-sensor glove hand fitted to them)
-} hs_joint_options;
+#include "joint_file.h"
+#include "joint_options.h"
 
 // The options of a bare `record: FILE`.
 hs_joint_options hs_joint_options_default(void);
@@ -42,11 +19,6 @@ typedef struct hs_joint_report {
 	bool units_assumed;        // nor the units: m
 	unsigned long header_line; // the header's line in the file
 } hs_joint_report;
-
-// True when a recorded file is a joint recording: the first line that is not blank or a comment
-// is a directive (@...) or a MediaPipe or OpenXR header. False for anything else (a glove file, or
-// a file that cannot be read: the glove reader says why).
-bool hs_joint_file_is_joints(const char *path);
 
 // Reads a joint recording into keys (wrist pose and sensor values per sample, untracked samples
 // holding the last tracked pose) for a hand of definition `def`, which takes the recording's size

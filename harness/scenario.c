@@ -9,6 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "expect.h"
 #include "expect_table.h"
 #include "file_read.h"
 #include "scenario_internal.h"

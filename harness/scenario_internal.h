@@ -6,7 +6,7 @@
 #include <stdint.h>
 
 #include "error.h"
-#include "expect.h"
+#include "clause.h"
 #include "file_list.h"
 #include "hands.h"
 #include "hs_harness.h"

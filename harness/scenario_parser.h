@@ -1,6 +1,6 @@
 // scenario_parser.h — reading a scenario file's sections into an hs_scenario. Each section's
-// reader lives with its concept: the world (scenario_world.c), hands (hand_script.c), the stylus
-// (stylus_script.c), expectations (expect.c); scenario.c calls them in order.
+// reader lives beside its concept: the world (scenario_world.c), hands (hands_section.c), the
+// stylus (stylus_section.c), expectations (expect.c); scenario.c calls them in order.
 #ifndef HS_HARNESS_SCENARIO_PARSER_H
 #define HS_HARNESS_SCENARIO_PARSER_H
 
@@ -46,13 +46,13 @@ int hs_find_object(const hs_scenario_parser *p, const yaml_node_t *node);
 // Fails with "unknown object 'N' in WHERE", the nearest name and, when there are few, all of them.
 bool hs_unknown_object(const hs_scenario_parser *p, const yaml_node_t *node, const char *where);
 
-// hands.c: the world's room for hands (before it is created), then the hands
+// hands_section.c: the world's room for hands (before it is created), then the hands
 bool hs_count_hands(hs_scenario_parser *p, const yaml_node_t *node, hs_world_def *def);
 bool hs_read_hands(hs_scenario_parser *p, const yaml_node_t *node);
 // hand_record.c: hand h's `record:` (a file name or a mapping) into its script; a joint recording
 // may fit `def` to the recorded hand. `side_given`: the hand's side is written.
 bool hs_read_hand_record(hs_scenario_parser *p, const yaml_node_t *node, int h, bool side_given, hs_hand_def *def);
-// stylus_script.c: switches the world to the spring model (with model.spring) and reads its script
+// stylus_section.c: the stylus's script (a stylus makes the scenario's world a spring world)
 bool hs_read_stylus(hs_scenario_parser *p, const yaml_node_t *node);
 // expect.c: the clauses, then everything the run records (so stepping never allocates)
 bool hs_read_expect(hs_scenario_parser *p, const yaml_node_t *node);

@@ -18,6 +18,7 @@
 #include <string.h>
 
 #include "error.h"
+#include "expect.h"
 #include "expect_table.h"
 #include "noise.h"
 #include "scenario_internal.h"

@@ -34,7 +34,7 @@ for layer in model harness; do
 		[ -e "$f" ] || continue
 		u=$(basename "$f"); u=${u%.*}
 		sed -n 's/^#include "\([^"]*\)\.h".*/\1/p' "$f" | while read -r h; do
-			[ "$h" != "$u" ] && ls "$layer/$h.h" "$layer"/*/"$h.h" 2>/dev/null | grep -q . && echo "$u $h"
+			if [ "$h" != "$u" ] && ls "$layer/$h.h" "$layer"/*/"$h.h" 2>/dev/null | grep -q .; then echo "$u $h"; fi
 		done
 	done | sort -u | awk -v layer="$layer" '
 		{ adj[$1] = adj[$1] " " $2; nodes[$1] = 1; nodes[$2] = 1 }

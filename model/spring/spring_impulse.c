@@ -2,7 +2,6 @@
 // normal (§4.5: momentum is conserved), with the pair's restitution; spring_rest.c's touches
 // still approaching and spring_collide.c's meetings both answer with it.
 #include "spring_impulse.h"
-#include "spring_rest.h"
 
 double hs_spring_pair_restitution(const hs_world *world, const hs_spring_system *sys, int a, int b) {
 	double ea = world->bodies[a].restitution, eb = world->bodies[b].restitution;

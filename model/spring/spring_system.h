@@ -9,6 +9,8 @@
 #include "spring_params.h"
 #include "tracker.h"
 
+typedef struct hs_spring_system hs_spring_system; // (as spring_world.h names it for the world)
+
 // Touches the resting contacts hold per object (the world's max_objects of them): equal spheres
 // packed closest have 6 per object (12 neighbours, each shared); beyond, a frame counts the
 // touches it had no room for in counters.dropped_contacts and answers them as collisions.

@@ -13,7 +13,6 @@
 #include "handspring.h"
 #include "hgrid.h"
 #include "hull.h"
-#include "spring_world.h"
 
 // Fields are MODEL (built by hs_world_create / add_*, read-only while stepping), STATE (saved,
 // loaded and hashed by state.c's world walk: frame, faults, bodies, hands, spring), CACHE (derived
@@ -65,7 +64,7 @@ struct hs_world {
 	hs_world_counters counters; // numeric_faults is STATE, the rest are work counters
 	long first_fault_frame;     // STATE: frame of the first numeric fault (-1: none)
 	int first_fault_object;     // STATE: its object index (-1: none or not an object's)
-	hs_spring_system *spring;   // STATE (its own walk); made by hs_world_create for a spring world (def.kind), NULL otherwise
+	struct hs_spring_system *spring; // STATE (its own walk); made by hs_world_create for a spring world (def.kind), NULL otherwise
 	// SCRATCH for the floor and support tests, sized at hs_world_add_shape for the largest shape:
 	// hs_motion_pose_vertices writes scratch_world, hs_motion_floor_points / support.c write
 	// scratch_points, hs_motion_settle builds scratch_hull; each is read only by the caller that
