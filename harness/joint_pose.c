@@ -85,24 +85,10 @@ static void refine(const hs_hand_def *def, uint32_t present, uint8_t s[HS_GLOVE_
 	}
 }
 
-// The unit quaternion of a rotation matrix (Shepperd: from the largest of the four squares).
+// The unit quaternion of a rotation matrix (hs_quat_from_columns).
 hs_quat hs_joint_quat_of(double m[3][3]) {
-	double tr = m[0][0] + m[1][1] + m[2][2];
-	hs_quat q;
-	if (tr > 0.0) {
-		double s = 2.0 * sqrt(1.0 + tr);
-		q = hs_q(0.25 * s, (m[2][1] - m[1][2]) / s, (m[0][2] - m[2][0]) / s, (m[1][0] - m[0][1]) / s);
-	} else if (m[0][0] > m[1][1] && m[0][0] > m[2][2]) {
-		double s = 2.0 * sqrt(1.0 + m[0][0] - m[1][1] - m[2][2]);
-		q = hs_q((m[2][1] - m[1][2]) / s, 0.25 * s, (m[0][1] + m[1][0]) / s, (m[0][2] + m[2][0]) / s);
-	} else if (m[1][1] > m[2][2]) {
-		double s = 2.0 * sqrt(1.0 + m[1][1] - m[0][0] - m[2][2]);
-		q = hs_q((m[0][2] - m[2][0]) / s, (m[0][1] + m[1][0]) / s, 0.25 * s, (m[1][2] + m[2][1]) / s);
-	} else {
-		double s = 2.0 * sqrt(1.0 + m[2][2] - m[0][0] - m[1][1]);
-		q = hs_q((m[1][0] - m[0][1]) / s, (m[0][2] + m[2][0]) / s, (m[1][2] + m[2][1]) / s, 0.25 * s);
-	}
-	return hs_quat_normalize(q);
+	return hs_quat_from_columns(hs_v3(m[0][0], m[1][0], m[2][0]), hs_v3(m[0][1], m[1][1], m[2][1]),
+	                            hs_v3(m[0][2], m[1][2], m[2][2]));
 }
 
 // An orthonormal frame (columns) spanned by three points: a→b, then c's part across it.

@@ -12,27 +12,6 @@
 
 static hs_vec3 mirror_if(bool left, hs_vec3 v) { return left ? hs_v3(v.x, -v.y, v.z) : v; }
 
-// The unit quaternion of the rotation whose matrix has columns x, y, z (orthonormal, right-handed):
-// Shepperd's method, from the largest of the four squares.
-static hs_quat quat_of_columns(hs_vec3 x, hs_vec3 y, hs_vec3 z) {
-	double tr = x.x + y.y + z.z;
-	hs_quat q;
-	if (tr > 0.0) {
-		double s = 2.0 * sqrt(1.0 + tr);
-		q = hs_q(0.25 * s, (y.z - z.y) / s, (z.x - x.z) / s, (x.y - y.x) / s);
-	} else if (x.x > y.y && x.x > z.z) {
-		double s = 2.0 * sqrt(1.0 + x.x - y.y - z.z);
-		q = hs_q((y.z - z.y) / s, 0.25 * s, (y.x + x.y) / s, (z.x + x.z) / s);
-	} else if (y.y > z.z) {
-		double s = 2.0 * sqrt(1.0 + y.y - x.x - z.z);
-		q = hs_q((z.x - x.z) / s, (y.x + x.y) / s, 0.25 * s, (z.y + y.z) / s);
-	} else {
-		double s = 2.0 * sqrt(1.0 + z.z - x.x - y.y);
-		q = hs_q((x.y - y.x) / s, (z.x + x.z) / s, (z.y + y.z) / s, 0.25 * s);
-	}
-	return hs_quat_normalize(q);
-}
-
 // The frame of a segment from a to b (right-hand wrist frame): x along it, z the back of the hand
 // (+z) less its part along x, or +y where the segment points nearly along z. A segment of no
 // length (two joints recorded at one place) keeps the wrist's axes.
@@ -44,7 +23,7 @@ static hs_quat segment_frame(hs_vec3 a, hs_vec3 b) {
 	hs_vec3 x = hs_scale(d, 1.0 / len);
 	hs_vec3 ref = fabs(x.z) < 0.9 ? hs_v3(0.0, 0.0, 1.0) : hs_v3(0.0, 1.0, 0.0);
 	hs_vec3 z = hs_normalize(hs_sub(ref, hs_scale(x, hs_dot(ref, x))));
-	return quat_of_columns(x, hs_cross(z, x), z);
+	return hs_quat_from_columns(x, hs_cross(z, x), z);
 }
 
 void hs_hand_joint_pose(const hs_hand_def *def, const hs_vec3 joints[HS_HAND_POINTS], hs_hand_pose *pose) {

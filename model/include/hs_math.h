@@ -100,6 +100,27 @@ static inline hs_vec3 hs_quat_rotate(hs_quat q, hs_vec3 v) {
 	return hs_add(hs_add(v, hs_scale(t, q.w)), hs_cross(u, t));
 }
 static inline hs_vec3 hs_quat_inv_rotate(hs_quat q, hs_vec3 v) { return hs_quat_rotate(hs_quat_conj(q), v); }
+// The unit quaternion of the rotation whose matrix has columns x, y, z (orthonormal, right-handed):
+// Shepperd's method, from the largest of the four squares (IEEE operations only: the same bits
+// everywhere).
+static inline hs_quat hs_quat_from_columns(hs_vec3 x, hs_vec3 y, hs_vec3 z) {
+	double tr = x.x + y.y + z.z;
+	hs_quat q;
+	if (tr > 0.0) {
+		double s = 2.0 * sqrt(1.0 + tr);
+		q = hs_q(0.25 * s, (y.z - z.y) / s, (z.x - x.z) / s, (x.y - y.x) / s);
+	} else if (x.x > y.y && x.x > z.z) {
+		double s = 2.0 * sqrt(1.0 + x.x - y.y - z.z);
+		q = hs_q((y.z - z.y) / s, 0.25 * s, (y.x + x.y) / s, (z.x + x.z) / s);
+	} else if (y.y > z.z) {
+		double s = 2.0 * sqrt(1.0 + y.y - x.x - z.z);
+		q = hs_q((z.x - x.z) / s, (y.x + x.y) / s, 0.25 * s, (z.y + y.z) / s);
+	} else {
+		double s = 2.0 * sqrt(1.0 + z.z - x.x - y.y);
+		q = hs_q((x.y - y.x) / s, (z.x + x.z) / s, (z.y + y.z) / s, 0.25 * s);
+	}
+	return hs_quat_normalize(q);
+}
 // roll about x, then pitch about y, then yaw about z (extrinsic), radians
 static inline hs_quat hs_quat_from_rpy(double roll, double pitch, double yaw) {
 	hs_quat qx = hs_quat_from_axis_angle(hs_v3(1, 0, 0), roll);
