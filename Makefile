@@ -243,13 +243,15 @@ check:
 # The calls between source files, read from the objects' symbols (scripts/call_graph.sh): no
 # cycle within a layer, layers call one way (bench on model and harness only); part of check (seconds
 # once built). check-calls-selftest (part of check, seconds):
-# tiny objects that call each other, or against the layers, make the script fail.
+# tiny objects that call each other, or against the layers, make the script fail; tiny trees with
+# an include cycle, a long function or the model including the harness fail the layout check.
 .PHONY: check-calls check-calls-selftest
 check-calls: $(TOOL)
 	@$(MAKE) --no-print-directory -f Makefile -f bench/bench.mk bench-objs
 	@sh scripts/call_graph.sh model=$(LIB) harness=$(HLIB) $(BUILD)/obj/tool tool=$(BUILD)/obj/gen bench=$(BUILD)/bench/obj
 check-calls-selftest:
 	@sh tests/call_graph_test.sh $(CC)
+	@sh tests/layout_check_test.sh
 
 # The tool's files in and out (scenarios/README.md, "How the tool writes files"): outputs that are inputs, /dev/full, planted links, pipes,
 # a full small file system (a tmpfs when root), endless inputs, the campaign lock and a part cut
