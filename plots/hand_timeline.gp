@@ -74,7 +74,7 @@ do for [s in list] {
         set title (spring ? "(a) on the spring" : "(a) hand contact state") . (n > 1 ? " per object (lines offset by 0.04 each so that all show)" : "")
         flick = s eq 'hand/flick_pyramid'
         if (flick) {
-            set label 11 "frame 24: the index tip pushes at one point (eq. 1-2);\nframe 25: it has lifted off, the pyramid flies on (eq. 3)" at 27, 1.25 font ",10"
+            set label 11 "frame 60: the index tip pushes at one point (eq. 1-2);\nframe 61: it follows through clear of it, the pyramid flies on (eq. 3)" at 63, 1.25 font ",10"
         }
         set yrange [-0.3:3.5]
         if (spring) { eval spring_state_names } else { eval state_names }

@@ -330,7 +330,10 @@ static void move_by_contacts(hs_world *world, hs_body *body, hs_contact_state st
 // are remembered scaled by 1 / after (at most HS_PUSH_SPEEDUP). Without it a flick's spin and
 // velocity depended on where the frames fell: the same 2 cm push over the last 46 % of a 1/30 s
 // frame and over the last 92 % of a 1/60 s frame left the pyramid half as fast at 30 frames/s.
-#define HS_PUSH_SPEEDUP 4.0
+// The cap bounds what noise on a touch in a frame's last tenth can launch (at 4, a flick a
+// 12-30 frames/s tracker saw reach the face in the last quarter of a frame flew on too slowly to
+// tip the pyramid over).
+#define HS_PUSH_SPEEDUP 10.0
 static void remember_motion(hs_body *body, hs_vec3 old_pos, hs_quat old_rot, double after) {
 	body->prev = old_pos;
 	body->rot_prev = old_rot;
