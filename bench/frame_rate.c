@@ -693,9 +693,12 @@ void bench_frame_rate(const bench_opts *opts, bench_shared *shared) {
 		fmt_fps(value, sizeof value, &honest.on);
 		bench_summary_add("1 frame rate", "HONEST frame: seed scene, glove +-4 units noise, wrist turning, hash/frame",
 		                  value, BENCH_INFO);
-		snprintf(value, sizeof value, "%.0fx  (%.3f us/frame; grasp lost %ld frames)", 1.0 / honest.on.median / 17.0,
-		         1e6 * honest.on.median, honest.lost_on);
-		bench_summary_add("1 frame rate", "honest frame: ratio to the paper's 17 frames/s", value, BENCH_INFO);
+		// the one ratio to the paper, and why it is no speed-up: its 17 frames/s were drawn, rendering
+		// included, on a 1990s SGI workstation; this frame is the check alone
+		snprintf(value, sizeof value, "%.0fx  (%.3f us/frame, no rendering; grasp lost %ld frames)",
+		         1.0 / honest.on.median / 17.0, 1e6 * honest.on.median, honest.lost_on);
+		bench_summary_add("1 frame rate", "honest / the paper's 17 frames/s DRAWN on a 1990s SGI: not a speed-up", value,
+		                  BENCH_INFO);
 		snprintf(value, sizeof value, "%.0f frames/s (%.3f us/frame)", 1.0 / honest.on.median, 1e6 * honest.on.median);
 		bench_summary_add("target", "honest frame >= 1,000,000 frames/s, 1 core", value,
 		                  1.0 / honest.on.median >= 1e6 ? BENCH_MET : BENCH_NOT_MET);
@@ -705,8 +708,6 @@ void bench_frame_rate(const bench_opts *opts, bench_shared *shared) {
 		shared->seed_dt = BENCH_DT;
 		fmt_fps(value, sizeof value, &seed->on);
 		bench_summary_add("1 frame rate", "seed scene, constant glove reading (cache hits), frames/s", value, BENCH_INFO);
-		snprintf(value, sizeof value, "%.0fx  (%.3f us/frame)", 1.0 / seed->on.median / 17.0, 1e6 * seed->on.median);
-		bench_summary_add("1 frame rate", "constant reading: ratio to the paper's 17 frames/s", value, BENCH_INFO);
 		snprintf(value, sizeof value, "%.0f frames/s", 1.0 / seed->on.median);
 		bench_summary_add("target", "seed scene >= 500,000 frames/s, full check, 1 core", value,
 		                  1.0 / seed->on.median >= 500000.0 ? BENCH_MET : BENCH_NOT_MET);

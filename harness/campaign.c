@@ -10,9 +10,9 @@
 #include "file_read.h"
 #include "yaml_read.h"
 
-enum { C_SCENARIO, C_SEED, C_TRIALS, C_JUDGE, C_AXES, C_THROW, C_TARGET, C_DESCRIPTION, C_COUNT };
-static const char *const campaign_keys[C_COUNT] = {"scenario", "seed", "trials", "judge",
-                                                   "axes",     "throw", "target", "description"};
+enum { C_SCENARIO, C_SEED, C_TRIALS, C_JUDGE, C_AXES, C_THROW, C_TARGET, C_DESCRIPTION, C_VISITOR, C_COUNT };
+static const char *const campaign_keys[C_COUNT] = {"scenario", "seed",   "trials",      "judge",         "axes",
+                                                   "throw",    "target", "description", "visitor_throws"};
 
 // A model value goes into a YAML text as it was written: numbers and words only.
 static bool plain_word(const char *s) {
@@ -203,6 +203,24 @@ static int find_name(const hs_yaml *y, const yaml_node_t *node, const hs_scenari
 	return -1;
 }
 
+// When the script starts to open the hand: the last key before the first whose glove reading
+// differs from the reading at `from` (`release` when none does by then). throw_underarm opens from
+// its key at the release, throw_at_target from the key 10 ms before it.
+static double glove_opens(const hs_hand_script *script, double from, double release) {
+	uint8_t held[HS_GLOVE_SENSORS], now[HS_GLOVE_SENSORS];
+	hs_vec3 wrist;
+	hs_quat rot;
+	hs_hand_script_sample(script, from, &wrist, &rot, held);
+	for (int i = 0; i < script->key_count && script->keys[i].t <= release; ++i) {
+		if (script->keys[i].t <= from)
+			continue;
+		hs_hand_script_sample(script, script->keys[i].t, &wrist, &rot, now);
+		if (memcmp(now, held, sizeof now) != 0)
+			return i > 0 && script->keys[i - 1].t > from ? script->keys[i - 1].t : from;
+	}
+	return release;
+}
+
 enum { T_HAND, T_FROM, T_RELEASE, T_TIMING, T_SPEED, T_DIRECTION, T_PHASE, T_COUNT };
 static const char *const throw_keys[T_COUNT] = {"hand",  "from",          "release", "timing_ms",
                                                 "speed", "direction_deg", "phase"};
@@ -236,6 +254,7 @@ static bool read_throw(hs_campaign *c, const hs_yaml *y, const yaml_node_t *node
 	t->phase = true;
 	if (f.value[T_PHASE] && !hs_yaml_bool(y, f.value[T_PHASE], "phase", &t->phase))
 		return false;
+	t->opens[index] = glove_opens(&s->hands.scripts[t->hand[index]], t->from, t->release);
 	t->given = true;
 	return true;
 }
@@ -386,6 +405,20 @@ static bool check_scenarios(hs_campaign *c, const hs_yaml *y, const hs_fields *f
 	return !f->value[C_THROW] || check_thrower_range(c, y, f->value[C_THROW]);
 }
 
+// visitor_throws: a visitor's throws, 1 to the trials of a cell; only with a thrower.
+static bool read_visitor_throws(hs_campaign *c, const hs_yaml *y, const yaml_node_t *node) {
+	int64_t n = HS_CAMPAIGN_VISITOR_THROWS;
+	if (node && !c->thrower.given)
+		return hs_yaml_fail(y, node, "'visitor_throws' needs a 'throw': a visitor is a thrower's throws");
+	if (!c->thrower.given)
+		return true; // no visitors
+	long most = c->per_cell < HS_CAMPAIGN_MAX_VISITOR_THROWS ? c->per_cell : HS_CAMPAIGN_MAX_VISITOR_THROWS;
+	if (node && !hs_yaml_integer(y, node, "visitor_throws", 1, most, &n))
+		return false;
+	c->visitor_throws = n > c->per_cell ? c->per_cell : (long)n; // the default, when a cell has fewer trials
+	return true;
+}
+
 static bool read_campaign(hs_campaign *c, const hs_yaml *y, const yaml_node_t *root) {
 	hs_fields f;
 	if (root->type != YAML_MAPPING_NODE)
@@ -404,7 +437,8 @@ static bool read_campaign(hs_campaign *c, const hs_yaml *y, const yaml_node_t *r
 		return hs_yaml_fail(y, f.value[C_JUDGE], "'judge' must be robust or all, got %s", hs_yaml_got(f.value[C_JUDGE]).text);
 	c->judge_all = f.value[C_JUDGE] && hs_yaml_scalar_is(f.value[C_JUDGE], "all");
 	return read_scenarios(c, y, f.value[C_SCENARIO]) && (!f.value[C_AXES] || read_axes(c, y, f.value[C_AXES])) &&
-	       count_trials(c, y, root) && check_scenarios(c, y, &f) && check_cells(c, y->err);
+	       count_trials(c, y, root) && check_scenarios(c, y, &f) && read_visitor_throws(c, y, f.value[C_VISITOR]) &&
+	       check_cells(c, y->err);
 }
 
 hs_campaign *hs_campaign_load(const char *path, hs_error *err) {

@@ -10,6 +10,8 @@
 
 enum { HS_CAMPAIGN_MAX_AXES = 8, HS_CAMPAIGN_MAX_VALUES = 64, HS_CAMPAIGN_MAX_WORD = 48 };
 enum { HS_CAMPAIGN_MAX_OPTIONS = 16 }; // model options in one value of the `model` axis
+// a visitor's throws (`visitor_throws`): the default, docs/campaigns.md says why; the most
+enum { HS_CAMPAIGN_VISITOR_THROWS = 5, HS_CAMPAIGN_MAX_VISITOR_THROWS = 1000 };
 #define HS_CAMPAIGN_MAX_TRIALS 100000000L
 #define HS_CAMPAIGN_TRUNCATE 4.0 // a thrower's draws are normal, cut at this many SD
 
@@ -37,6 +39,9 @@ typedef struct hs_thrower_spec {
 	double from, release;         // s
 	double timing, speed, angle;  // SD: s, relative, rad (azimuth and elevation each)
 	bool phase;                   // the script starts U[0, dt) late: the frame clock's phase
+	// s, in each scenario: when the hand's script starts to open it (its glove's last key before
+	// `release` with the reading at `from`); a grasp lost before that is no throw (campaign_run.c)
+	double opens[HS_CAMPAIGN_MAX_VALUES];
 } hs_thrower_spec;
 
 typedef struct hs_target {
@@ -56,6 +61,7 @@ struct hs_campaign {
 	uint64_t seed;
 	long per_cell, cells, trials;
 	bool judge_all; // every clause, not only the robust ones
+	long visitor_throws; // with a thrower: trials k to k + visitor_throws - 1 of a cell are one visitor
 	int axis_count;
 	hs_axis axes[HS_CAMPAIGN_MAX_AXES];
 	hs_thrower_spec thrower;
@@ -79,5 +85,7 @@ typedef struct hs_trial {
 void hs_trial_prepare(const hs_campaign *c, long index, hs_trial *t);
 enum { HS_CAMPAIGN_HEADER = 1024 };
 void hs_campaign_header(const hs_campaign *c, char *text, size_t size);
+// Whether the trial rows say if the grasp was lost in the swing: a thrower and a target given.
+static inline bool hs_campaign_watches_grasp(const hs_campaign *c) { return c->thrower.given && c->target.given; }
 
 #endif

@@ -105,6 +105,8 @@ void hs_campaign_header(const hs_campaign *c, char *text, size_t size) {
 		append(text, size, ",timing_ms,speed,azimuth_deg,elevation_deg,delay_ms");
 	if (c->target.given)
 		append(text, size, ",distance");
+	if (hs_campaign_watches_grasp(c))
+		append(text, size, ",grasp_lost");
 	append(text, size, ",hit,clauses");
 }
 
@@ -115,8 +117,8 @@ void hs_campaign_write_header(const hs_campaign *c, FILE *out) {
 }
 
 // The row: the trial, its cell's values, the draws, then the outcome.
-static void write_row(const hs_campaign *c, const hs_trial *t, double distance, bool hit, const char *clauses,
-                      FILE *out) {
+static void write_row(const hs_campaign *c, const hs_trial *t, double distance, bool lost, bool hit,
+                      const char *clauses, FILE *out) {
 	fprintf(out, "%ld,%ld,%ld,%llu", t->index, t->cell, t->k, (unsigned long long)t->seed);
 	for (int a = 0; a < c->axis_count; ++a) {
 		const hs_axis *axis = &c->axes[a];
@@ -133,7 +135,26 @@ static void write_row(const hs_campaign *c, const hs_trial *t, double distance, 
 	}
 	if (c->target.given)
 		fprintf(out, ",%.17g", distance);
+	if (hs_campaign_watches_grasp(c))
+		fprintf(out, ",%d", lost ? 1 : 0);
 	fprintf(out, ",%d,%s\n", hit ? 1 : 0, clauses);
+}
+
+// Runs the trial to its end; returns whether the thrown object was out of a grasp at a frame of
+// the swing before the hand began to open (from `from` to `opens`, both moved by the trial's clock
+// phase, the opening also by its timing error): the grasp was lost, or never made, and the thrower
+// did not throw it. A thrower's miss is a throw that held to the opening and landed outside.
+static bool run_watching_grasp(hs_scenario *s, const hs_campaign *c, const hs_trial *t) {
+	bool watch = hs_campaign_watches_grasp(c), lost = false;
+	const hs_throw_error *e = &t->error;
+	double from = c->thrower.from + e->delay, opens = c->thrower.opens[t->scenario_index] + e->timing + e->delay;
+	int object = watch ? c->target.object[t->scenario_index] : 0;
+	while (hs_scenario_step(s)) {
+		double time = ((double)s->frame - s->phase) * s->dt; // the scripts' clock, as the inputs'
+		if (watch && !lost && time >= from - 1e-9 && time < opens - 1e-9)
+			lost = hs_scenario_state_of(s, object).contact != HS_CONTACT_GRASP;
+	}
+	return lost;
 }
 
 bool hs_campaign_run_trial(hs_campaign *c, long trial, FILE *out, hs_error *err) {
@@ -145,8 +166,7 @@ bool hs_campaign_run_trial(hs_campaign *c, long trial, FILE *out, hs_error *err)
 	hs_scenario *s = hs_scenario_load_source(&c->source[t.scenario_index], &t.options, err);
 	if (!s)
 		return false;
-	while (hs_scenario_step(s)) {
-	}
+	bool lost = run_watching_grasp(s, c, &t);
 	char clauses[24] = "fault";
 	bool fault = s->step_status != HS_OK || hs_scenario_faults(s) > 0;
 	unsigned long line = fault ? 0 : hs_expect_first_failure(s, !c->judge_all);
@@ -160,7 +180,7 @@ bool hs_campaign_run_trial(hs_campaign *c, long trial, FILE *out, hs_error *err)
 		distance = sqrt(dx * dx + dy * dy);
 		hit = !fault && distance <= c->target.radius;
 	}
-	write_row(c, &t, distance, hit, clauses, out);
+	write_row(c, &t, distance, lost, hit, clauses, out);
 	hs_scenario_destroy(s);
 	return true;
 }

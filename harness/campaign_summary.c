@@ -1,7 +1,9 @@
 // campaign_summary.c — a campaign's trial rows, summed up per cell: trials, hits, the hit rate and
-// its Wilson score interval (95 %), the mean distance to the target. The rows are read back from
-// the merged CSV, so the summary of a run spread over many machines is the summary of the same
-// bytes as a run on one.
+// its Wilson score interval (95 %), the mean distance to the target; with a thrower the misses
+// split into grasps lost in the swing and the thrower's misses, and the rate per visitor (a
+// visitor: visitor_throws consecutive trials of a cell, hit when any of them hits; beside it the
+// binomial 1 - (1 - rate)^N). The rows are read back from the merged CSV, so the summary of a run
+// spread over many machines is the summary of the same bytes as a run on one.
 #include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
@@ -31,7 +33,10 @@ void hs_wilson_interval(long hits, long n, double *lo, double *hi) {
 
 typedef struct cell_sum {
 	long trials, hits, faults;
-	double distance; // summed in trial order
+	long lost;                  // misses (not faulted) whose grasp was lost in the swing
+	long visitors, visitor_hits; // complete groups of visitor_throws trials; those with a hit
+	bool group_hit;             // the current group has a hit so far
+	double distance;            // summed in trial order
 } cell_sum;
 
 // The fields of one row, split in place at the commas; -1 when there are more than `most`.
@@ -58,6 +63,19 @@ static bool whole(const char *text, long *out) {
 	return true;
 }
 
+// Trial k of a cell belongs to visitor k / visitor_throws; a last group cut short by the cell's
+// end is no visitor.
+static void count_visitor(const hs_campaign *c, long k, bool hit, cell_sum *s) {
+	long n = c->visitor_throws;
+	if (n < 1 || k >= c->per_cell / n * n)
+		return;
+	s->group_hit = (k % n != 0 && s->group_hit) || hit;
+	if (k % n == n - 1) {
+		s->visitors++;
+		s->visitor_hits += s->group_hit;
+	}
+}
+
 // Row `expect`: its trial is `expect`, its field count the header's, hit 0 or 1, a finite distance.
 static bool read_row(const hs_campaign *c, char *line, long expect, int fields, cell_sum *sums, const char *path,
                      unsigned long at, hs_error *err) {
@@ -69,17 +87,24 @@ static bool read_row(const hs_campaign *c, char *line, long expect, int fields, 
 		return hs_set_error(err, path, at, "trial %ld expected (rows sorted by trial, each once), got '%.20s'", expect, f[0]);
 	if (!whole(f[fields - 2], &hit) || (hit != 0 && hit != 1))
 		return hs_set_error(err, path, at, "'hit' must be 0 or 1, got '%.20s'", f[fields - 2]);
+	int grasp = hs_campaign_watches_grasp(c) ? 1 : 0, distance = fields - 3 - grasp;
+	long lost = 0;
+	if (grasp && (!whole(f[fields - 3], &lost) || (lost != 0 && lost != 1)))
+		return hs_set_error(err, path, at, "'grasp_lost' must be 0 or 1, got '%.20s'", f[fields - 3]);
 	cell_sum *s = &sums[trial / c->per_cell];
+	bool fault = strcmp(f[fields - 1], "fault") == 0;
 	s->trials++;
 	s->hits += hit;
-	s->faults += strcmp(f[fields - 1], "fault") == 0;
+	s->faults += fault;
+	s->lost += lost && !hit && !fault;
 	if (c->target.given) {
 		char *end;
-		double d = strtod(f[fields - 3], &end);
-		if (end == f[fields - 3] || *end || !isfinite(d))
-			return hs_set_error(err, path, at, "'distance' must be a finite number, got '%.20s'", f[fields - 3]);
+		double d = strtod(f[distance], &end);
+		if (end == f[distance] || *end || !isfinite(d))
+			return hs_set_error(err, path, at, "'distance' must be a finite number, got '%.20s'", f[distance]);
 		s->distance += d;
 	}
+	count_visitor(c, trial % c->per_cell, hit != 0, s);
 	return true;
 }
 
@@ -156,11 +181,28 @@ static void write_values(const hs_campaign *c, long cell, FILE *out, const char 
 	}
 }
 
+// The thrower's columns: grasps lost, the other misses (faults apart), the visitors.
+static void write_thrower_columns(const hs_campaign *c, const cell_sum *s, FILE *out) {
+	if (hs_campaign_watches_grasp(c))
+		fprintf(out, ",%ld,%ld", s->lost, s->trials - s->hits - s->lost - s->faults);
+	if (!c->thrower.given)
+		return;
+	double lo, hi, p = (double)s->hits / (double)s->trials;
+	hs_wilson_interval(s->visitor_hits, s->visitors, &lo, &hi);
+	fprintf(out, ",%ld,%ld,%ld,%.6f,%.6f,%.6f,%.6f", c->visitor_throws, s->visitors, s->visitor_hits,
+	        s->visitors > 0 ? (double)s->visitor_hits / (double)s->visitors : 0.0, lo, hi,
+	        1.0 - pow(1.0 - p, (double)c->visitor_throws));
+}
+
 static void write_summary(const hs_campaign *c, const cell_sum *sums, FILE *out) {
 	fputs("cell", out);
 	for (int a = 0; a < c->axis_count; ++a)
 		fprintf(out, ",%s", c->axes[a].name);
-	fprintf(out, ",trials,hits,rate,lo95,hi95,faults%s\n", c->target.given ? ",mean_distance" : "");
+	fprintf(out, ",trials,hits,rate,lo95,hi95,faults%s%s%s\n", c->target.given ? ",mean_distance" : "",
+	        hs_campaign_watches_grasp(c) ? ",grasp_lost,misses" : "",
+	        c->thrower.given ? ",visitor_throws,visitors,visitor_hits,visitor_rate,visitor_lo95,visitor_hi95,"
+	                           "visitor_binomial"
+	                         : "");
 	for (long k = 0; k < c->cells; ++k) {
 		double lo, hi;
 		hs_wilson_interval(sums[k].hits, sums[k].trials, &lo, &hi);
@@ -170,15 +212,35 @@ static void write_summary(const hs_campaign *c, const cell_sum *sums, FILE *out)
 		        (double)sums[k].hits / (double)sums[k].trials, lo, hi, sums[k].faults);
 		if (c->target.given)
 			fprintf(out, ",%.6f", sums[k].distance / (double)sums[k].trials);
+		write_thrower_columns(c, &sums[k], out);
 		fputs("\n", out);
 	}
 }
 
+// A cell's grasps lost, the thrower's misses and the rate per visitor, as table columns.
+static void write_thrower_table(const hs_campaign *c, const cell_sum *s, FILE *out) {
+	if (hs_campaign_watches_grasp(c))
+		fprintf(out, "  %10ld %7ld", s->lost, s->trials - s->hits - s->lost - s->faults);
+	if (!c->thrower.given)
+		return;
+	double lo, hi, p = (double)s->hits / (double)s->trials;
+	hs_wilson_interval(s->visitor_hits, s->visitors, &lo, &hi);
+	fprintf(out, "  %5ld %6.3f [%.3f, %.3f] %9.3f", s->visitors,
+	        s->visitors > 0 ? (double)s->visitor_hits / (double)s->visitors : 0.0, lo, hi,
+	        1.0 - pow(1.0 - p, (double)c->visitor_throws));
+}
+
 static void write_table(const hs_campaign *c, const cell_sum *sums, FILE *out) {
-	fprintf(out, "campaign %s: %ld cells x %ld trials\n%6s", c->path, c->cells, c->per_cell, "cell");
+	fprintf(out, "campaign %s: %ld cells x %ld trials", c->path, c->cells, c->per_cell);
+	if (c->thrower.given)
+		fprintf(out, "; a visitor: %ld throws, hit when any hits (binomial: 1 - (1 - rate)^%ld)", c->visitor_throws,
+		        c->visitor_throws);
+	fprintf(out, "\n%6s", "cell");
 	for (int a = 0; a < c->axis_count; ++a)
 		fprintf(out, " %*s", column_width(&c->axes[a]), c->axes[a].name);
-	fprintf(out, " %8s %8s  %-17s%s\n", "hits", "rate", "95 % (Wilson)", c->target.given ? " mean distance" : "");
+	fprintf(out, " %8s %8s  %-17s%s%s%s\n", "hits", "rate", "95 % (Wilson)", c->target.given ? " mean distance" : "",
+	        hs_campaign_watches_grasp(c) ? "  grasp lost  misses" : "",
+	        c->thrower.given ? "  visitors  rate  95 % (Wilson)  binomial" : "");
 	for (long k = 0; k < c->cells; ++k) {
 		double lo, hi;
 		hs_wilson_interval(sums[k].hits, sums[k].trials, &lo, &hi);
@@ -187,6 +249,7 @@ static void write_table(const hs_campaign *c, const cell_sum *sums, FILE *out) {
 		fprintf(out, " %8ld %8.3f  [%.3f, %.3f]", sums[k].hits, (double)sums[k].hits / (double)sums[k].trials, lo, hi);
 		if (c->target.given)
 			fprintf(out, "    %.3f m", sums[k].distance / (double)sums[k].trials);
+		write_thrower_table(c, &sums[k], out);
 		if (sums[k].faults > 0)
 			fprintf(out, "    %ld FAULTED", sums[k].faults);
 		fputs("\n", out);

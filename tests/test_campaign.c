@@ -1,6 +1,7 @@
 // test_campaign.c — campaigns (docs/campaigns.md): the thrower's errors against the closed form of the
 // throw they make, a trial's row independent of how the trials are split, the Wilson interval
-// against published values and GSL's z, the summary's checks, and every bad campaign file's message.
+// against published values and GSL's z, the summary's checks, grasps lost apart from the thrower's
+// misses, the rate per visitor, and every bad campaign file's message.
 #include <stdarg.h>
 #include <stddef.h>
 #include <stdint.h>
@@ -12,11 +13,14 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "campaign_internal.h"
 #include "test_util.h"
 
 #define THROW "scenarios/hand/throw_at_target.yaml"
 #define SMALL "tests/campaigns/tiny.yaml"
 #define BAD_DIR "tests/bad_campaign"
+#define VISITORS "tests/campaigns/visitors.yaml"
+#define GRASP_LOST "tests/campaigns/grasp_lost.yaml"
 
 // v turned by `elevation` about -y (the line across a swing toward +x: up is positive), then by
 // `azimuth` about z.
@@ -230,7 +234,8 @@ static void test_summary_checks_the_rows(void **state) {
 	fclose(sum);
 	assert_string_equal(err.message, "rows.csv:1: 1 of 40 trials faulted (a step failed or a value went non-finite): "
 	                                 "their clauses column says fault");
-	assert_non_null(strstr(summary, "lo95,hi95,faults,mean_distance\n0,"));
+	assert_non_null(strstr(summary, "lo95,hi95,faults,mean_distance,grasp_lost,misses,visitor_throws,visitors,"
+	                                "visitor_hits,visitor_rate,visitor_lo95,visitor_hi95,visitor_binomial\n0,"));
 	const char *cell0 = strstr(summary, "\n0,") + 1; // cell,dt,noise,threshold,trials,hits,rate,lo,hi,faults
 	assert_string_equal(field(cell0, 9), "1");
 	assert_string_equal(field(strstr(cell0, "\n1,") + 1, 9), "0");
@@ -247,6 +252,159 @@ static void test_summary_checks_the_rows(void **state) {
 	assert_string_equal(err.message, "rows.csv:3: trial 1 expected (rows sorted by trial, each once), got '7'");
 	hs_campaign_destroy(c);
 	free(rows), free(all);
+}
+
+// The line of the first clause of `path` whose text holds `needle` (the scenario's own lines, so
+// the test follows edits of the file).
+static unsigned long clause_line(const char *path, const char *needle) {
+	FILE *f = fopen(path, "r");
+	assert_non_null(f);
+	char line[1024];
+	unsigned long n = 0, found = 0;
+	while (!found && fgets(line, sizeof line, f))
+		found = ++n, found = strstr(line, needle) && strstr(line, "- {") ? n : 0;
+	fclose(f);
+	assert_true(found > 0);
+	return found;
+}
+
+// A cell's summary row (a static copy of the line, one of two) from a summary CSV text.
+static const char *summary_row(const char *summary, long cell) {
+	static char rows[2][1024];
+	static int k;
+	char *row = rows[k = !k], start[24];
+	snprintf(start, sizeof start, "\n%ld,", cell);
+	const char *at = strstr(summary, start);
+	assert_non_null(at);
+	snprintf(row, sizeof rows[0], "%.*s", (int)strcspn(at + 1, "\n"), at + 1);
+	return row;
+}
+
+// The summary CSV of a header and rows.
+static void summarize_rows(const hs_campaign *c, const char *rows, char *summary, size_t size) {
+	char header[HS_CAMPAIGN_HEADER];
+	hs_campaign_header(c, header, sizeof header);
+	size_t n = strlen(header) + strlen(rows) + 2;
+	char *all = malloc(n);
+	assert_non_null(all);
+	snprintf(all, n, "%s\n%s", header, rows);
+	FILE *in = fmemopen(all, strlen(all), "r"), *out = fmemopen(summary, size, "w");
+	hs_error err;
+	int status = hs_campaign_summarize(c, in, "rows.csv", out, NULL, &err);
+	fclose(in);
+	fclose(out);
+	if (status != 0)
+		fail_msg("%s", err.message);
+	free(all);
+}
+
+// When the script opens the hand: throw_underarm from its key at the release (2.0 s),
+// throw_at_target from its key 10 ms before the campaign's release (1.3 s, opened by 1.31 s).
+static void test_glove_opens(void **state) {
+	(void)state;
+	hs_error err;
+	hs_campaign *c = hs_campaign_load(GRASP_LOST, &err), *d = hs_campaign_load(SMALL, &err);
+	assert_non_null(c);
+	assert_non_null(d);
+	assert_near(c->thrower.opens[0], 2.0, 1e-12);
+	assert_near(d->thrower.opens[0], 1.3, 1e-12);
+	hs_campaign_destroy(c);
+	hs_campaign_destroy(d);
+}
+
+// Without input noise the grasp holds through every swing; with three times the paper's noise it
+// is lost in every throw of this file: those rows say grasp_lost 1, they miss, and the scenario's
+// own grasp clauses (its contact sequence or its grasp from 0.8 s to 1.95 s) fail first, which no
+// row of a held grasp does. The summary counts them apart from the thrower's misses.
+static void test_grasp_lost_apart(void **state) {
+	(void)state;
+	hs_error err;
+	hs_campaign *c = hs_campaign_load(GRASP_LOST, &err);
+	if (!c)
+		fail_msg("%s", err.message);
+	char header[HS_CAMPAIGN_HEADER];
+	hs_campaign_header(c, header, sizeof header);
+	assert_non_null(strstr(header, ",distance,grasp_lost,hit,clauses"));
+	char seq[16], held[16];
+	snprintf(seq, sizeof seq, "L%lu", clause_line("scenarios/hand/throw_underarm.yaml", "contact_sequence"));
+	snprintf(held, sizeof held, "L%lu", clause_line("scenarios/hand/throw_underarm.yaml", "grasped: true"));
+	char *rows = rows_of(c, 0, hs_campaign_trials(c));
+	long lost[2] = {0, 0};
+	for (const char *row = rows; *row; row = strchr(row, '\n') + 1) {
+		long cell = atol(field(row, 1));
+		// trial,cell,k,seed,dt,noise,throw_scale,5 draws,distance,grasp_lost,hit,clauses
+		bool was_lost = strcmp(field(row, 13), "1") == 0, grasp_clause = strcmp(field(row, 15), seq) == 0 ||
+		                                                                  strcmp(field(row, 15), held) == 0;
+		assert_int_equal(was_lost, grasp_clause);
+		if (was_lost)
+			assert_string_equal(field(row, 14), "0"); // no hit
+		lost[cell] += was_lost;
+	}
+	assert_int_equal(lost[0], 0);
+	assert_int_equal(lost[1], 12);
+	char summary[4096];
+	summarize_rows(c, rows, summary, sizeof summary);
+	assert_non_null(strstr(summary, ",faults,mean_distance,grasp_lost,misses,visitor_throws,"));
+	// cell,dt,noise,throw_scale,trials,hits,rate,lo95,hi95,faults,mean_distance,grasp_lost,misses
+	const char *noisy = summary_row(summary, 1);
+	assert_string_equal(field(noisy, 5), "0");
+	assert_string_equal(field(noisy, 11), "12");
+	assert_string_equal(field(noisy, 12), "0");
+	hs_campaign_destroy(c);
+	free(rows);
+}
+
+// Sets the hit (and grasp_lost) field of trial i's row in place: both are one digit.
+static void set_outcome(char *rows, long i, char lost, char hit) {
+	char *row = rows;
+	for (long k = 0; k < i; ++k)
+		row = strchr(row, '\n') + 1;
+	char *last = row + strcspn(row, "\n");
+	while (*--last != ',') { // the clauses field
+	}
+	last[-1] = hit;
+	last[-3] = lost;
+}
+
+// Visitors of 3 throws, four a cell of 13 (the 13th throw is no visitor's). Cell 0 hits with
+// throws 1, 7 and 8: visitors 0 and 2 hit, 2 of 4, while a throw hits 3 times in 13, so the
+// binomial is 1 - (10/13)^3. Cell 1 hits with its 13th throw only: no visitor hits. A grasp lost
+// in a throw that hits anyway is a hit, not a grasp lost.
+static void test_visitors(void **state) {
+	(void)state;
+	hs_error err;
+	hs_campaign *c = hs_campaign_load(VISITORS, &err);
+	if (!c)
+		fail_msg("%s", err.message);
+	assert_int_equal(c->visitor_throws, 3);
+	char *rows = rows_of(c, 0, hs_campaign_trials(c));
+	for (long i = 0; i < 26; ++i)
+		set_outcome(rows, i, '0', i == 1 || i == 7 || i == 8 || i == 25 ? '1' : '0');
+	set_outcome(rows, 7, '1', '1');
+	set_outcome(rows, 9, '1', '0');
+	char summary[4096];
+	summarize_rows(c, rows, summary, sizeof summary);
+	// cell,dt,trials,hits,rate,lo95,hi95,faults,mean_distance,grasp_lost,misses,
+	// visitor_throws,visitors,visitor_hits,visitor_rate,visitor_lo95,visitor_hi95,visitor_binomial
+	const char *first = summary_row(summary, 0), *second = summary_row(summary, 1);
+	assert_string_equal(field(first, 3), "3");
+	assert_string_equal(field(first, 9), "1");  // trial 9 lost its grasp and missed; trial 7 hit
+	assert_string_equal(field(first, 10), "9"); // the thrower's misses: 13 - 3 - 1
+	assert_string_equal(field(first, 11), "3");
+	assert_string_equal(field(first, 12), "4");
+	assert_string_equal(field(first, 13), "2");
+	assert_near(atof(field(first, 14)), 0.5, 1e-12);
+	assert_near(atof(field(first, 17)), 1.0 - pow(10.0 / 13.0, 3.0), 1e-6);
+	double lo, hi;
+	hs_wilson_interval(2, 4, &lo, &hi);
+	assert_near(atof(field(first, 15)), lo, 1e-6);
+	assert_near(atof(field(first, 16)), hi, 1e-6);
+	assert_string_equal(field(second, 3), "1");
+	assert_string_equal(field(second, 13), "0");
+	assert_near(atof(field(second, 14)), 0.0, 0.0);
+	assert_near(atof(field(second, 17)), 1.0 - pow(12.0 / 13.0, 3.0), 1e-6);
+	hs_campaign_destroy(c);
+	free(rows);
 }
 
 // Every tests/bad_campaign file: its first line "# expect: MESSAGE" is what the load says.
@@ -287,6 +445,9 @@ int main(void) {
 	    cmocka_unit_test(test_split_is_the_whole),
 	    cmocka_unit_test(test_wilson_interval),
 	    cmocka_unit_test(test_summary_checks_the_rows),
+	    cmocka_unit_test(test_glove_opens),
+	    cmocka_unit_test(test_grasp_lost_apart),
+	    cmocka_unit_test(test_visitors),
 	    cmocka_unit_test(test_bad_campaigns),
 	};
 	return cmocka_run_group_tests(tests, NULL, NULL);
