@@ -8,7 +8,7 @@ BENCH_OUT := $(BUILD)/bench
 BENCH_BIN := $(BENCH_OUT)/bin/hs_bench
 BENCH_SRC := bench/bench_main.c bench/bench_util.c bench/frame_rate.c bench/accuracy.c \
              bench/throw_fidelity.c bench/peers.c bench/collide_scaling.c bench/race.c \
-             bench/hand_scaling.c bench/uv_ball.c bench/joint_noise.c
+             bench/hand_scaling.c bench/uv_ball.c bench/joint_noise.c bench/floor.c bench/floor_detect.c
 BENCH_DEFS :=
 BENCH_LIBS :=
 # where the peers' headers are looked for (point them elsewhere, or at nothing, to leave a peer out)
@@ -32,7 +32,7 @@ BENCH_ID   = -DHS_BENCH_CC='"$(CC)"' -DHS_BENCH_FLAGS='"$(strip $(filter-out -I%
 
 .PHONY: bench-run bench-build bench-objs bench-peers-note bench-instr-run
 
-$(BENCH_OUT)/obj/%.o: bench/%.c bench/bench.h $(wildcard model/include/*.h harness/include/*.h) bench/bench.mk
+$(BENCH_OUT)/obj/%.o: bench/%.c bench/bench.h bench/floor.h $(wildcard model/include/*.h harness/include/*.h) bench/bench.mk
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS_ALL) $(BENCH_DEFS) $(BENCH_ID) -Ibench -c $< -o $@
 
