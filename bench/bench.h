@@ -191,6 +191,9 @@ void bench_race_record(bench_race_frame frames[BENCH_PATH_FRAMES], double *finge
 /// The honest frame (the seed scene on noisy glove input, wrist turning, hash every frame) timed.
 bench_stats bench_honest_measure(const bench_opts *opts);
 void bench_race(const bench_opts *opts, bench_shared *shared); // section `race`
+/// `--profile-race ENGINE,N` (ode or mujoco): N frames of one peer at its matched radius, for
+/// callgrind --toggle-collect=race_profiled_frames.
+void bench_profile_race(const char *spec);
 
 // ---------------------------------------------------------------------------------------------
 /// The floor (bench/floor.c): one frame of the honest frame as its contact detection saw it.

@@ -100,6 +100,9 @@ int main(int argc, char **argv) {
 			return 0;
 		} else if (strcmp(argv[i], "--floor-check") == 0) {
 			return bench_floor_check();
+		} else if (strcmp(argv[i], "--profile-race") == 0 && i + 1 < argc) {
+			bench_profile_race(argv[i + 1]);
+			return 0;
 		} else if (strcmp(argv[i], "--profile-floor") == 0 && i + 1 < argc) {
 			bench_profile_floor(atol(argv[i + 1]));
 			return 0;
