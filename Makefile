@@ -275,6 +275,7 @@ PY_VENV := $(BUILD)/python-venv
 .PHONY: check-bench-cmd
 check-bench-cmd: all
 	@sh tests/bench_cmd.sh $(TOOL)
+	@$(MAKE) --no-print-directory check-bench-floor
 
 check-python: $(SOLIBS) $(TOOL)
 	@sh scripts/deps.sh python
@@ -393,6 +394,14 @@ bench: all
 	@sh scripts/deps.sh bench || echo "bench: continuing without the peers (ODE, MuJoCo)"
 	@if [ -f bench/bench.mk ]; then $(MAKE) --no-print-directory -f Makefile -f bench/bench.mk bench-run; \
 	else echo "bench: no benchmarks yet"; fi
+
+# the honest frame against the least code that finds its contacts (bench/floor.c): CPU time in
+# interleaved pairs, instructions by callgrind; check-bench-floor (in check-bench-cmd): the same contacts
+.PHONY: bench-floor check-bench-floor
+bench-floor: all
+	@$(MAKE) --no-print-directory -f Makefile -f bench/bench.mk bench-floor-run
+check-bench-floor: all
+	@$(MAKE) --no-print-directory -f Makefile -f bench/bench.mk check-bench-floor-run
 
 # callgrind's instructions per frame of the honest, moving-glove and joint-driven frames (bench/bench.mk)
 .PHONY: bench-instr

@@ -44,6 +44,24 @@ bench_stats bench_measure(bench_step_fn step, void *state, const bench_opts *opt
 double bench_measure_pair(bench_step_fn step_a, void *a, bench_step_fn step_b, void *b, const bench_opts *opts,
                           bench_stats *out_a, bench_stats *out_b);
 
+/// s of CPU time of this process (CLOCK_PROCESS_CPUTIME_ID): time the process was not given is not counted.
+double bench_cpu_now(void);
+
+/// Two cases in interleaved batches (a, b, a, b, ...) timed on the process's CPU clock, ≥ 7 pairs.
+typedef struct bench_pair {
+	bench_stats a, b;                   ///< s per step of each
+	double ratio, ratio_min, ratio_max; ///< a's time over b's in the same pair: median and range
+	int pairs;
+} bench_pair;
+bench_pair bench_measure_pair_cpu(bench_step_fn step_a, void *a, bench_step_fn step_b, void *b, const bench_opts *opts);
+
+/// True when valgrind is on PATH.
+bool bench_have_valgrind(void);
+/// The instructions callgrind counts in the function `toggle` (--toggle-collect) when this program
+/// runs again under valgrind with the flags `args` (its files: opts->out_dir/cg*); −1 without
+/// valgrind or when the run failed. Each `args` is run once per process.
+double bench_callgrind(const bench_opts *opts, const char *args, const char *toggle);
+
 /// Median of n values (sorts a copy; n ≤ 64).
 double bench_median(const double *values, int n);
 
@@ -173,6 +191,37 @@ void bench_race_record(bench_race_frame frames[BENCH_PATH_FRAMES], double *finge
 /// The honest frame (the seed scene on noisy glove input, wrist turning, hash every frame) timed.
 bench_stats bench_honest_measure(const bench_opts *opts);
 void bench_race(const bench_opts *opts, bench_shared *shared); // section `race`
+/// `--profile-race ENGINE,N` (ode or mujoco): N frames of one peer at its matched radius, for
+/// callgrind --toggle-collect=race_profiled_frames.
+void bench_profile_race(const char *spec);
+
+// ---------------------------------------------------------------------------------------------
+/// The floor (bench/floor.c): one frame of the honest frame as its contact detection saw it.
+#define BENCH_FLOOR_CUBES 10
+#define BENCH_FLOOR_MAX_CONTACTS 64
+#define BENCH_FLOOR_SETUP 6 ///< frames of the honest scene's set-up (the hand comes down and closes)
+typedef struct bench_floor_frame {
+	hs_vec3 points[HS_HAND_POINTS];       ///< m: the check points after the step (the world's)
+	hs_vec3 lines[HS_HAND_LINES][2];      ///< m: the check lines, from the reading the hand used
+	hs_vec3 pos[BENCH_FLOOR_CUBES];       ///< m: each cube where handspring tested it (a held cube
+	hs_quat rot[BENCH_FLOOR_CUBES];       ///<    carried to the hand's new pose first)
+	hs_vec3 pos_before[BENCH_FLOOR_CUBES];///< m: each cube at the start of the frame
+	hs_quat rot_before[BENCH_FLOOR_CUBES];
+	uint16_t held;                        ///< bit i: cube i was grasped when the frame began
+	int contacts;                         ///< handspring's contacts this frame (hs_world_contacts)
+	uint8_t part[BENCH_FLOOR_MAX_CONTACTS], cube[BENCH_FLOOR_MAX_CONTACTS]; ///< check point i or 20 + line j; cube
+} bench_floor_frame;
+/// Builds the honest frame's scene with its BENCH_FLOOR_SETUP set-up frames recorded, then steps it
+/// n frames more as the honest frame does; frames gets BENCH_FLOOR_SETUP + n. Returns how many
+/// frames' check points differ from the kinematics of the reading the hand used (0: the recorded
+/// lines are the world's own).
+long bench_floor_record(bench_floor_frame *frames, int n);
+void bench_floor(const bench_opts *opts, bench_shared *shared); // section `floor`
+/// `--floor-check`: 0 when the floor finds handspring's contacts on every recorded frame (and a
+/// floor without its memory of parts that started inside does not), else 1.
+int bench_floor_check(void);
+/// `--profile-floor N`: N frames of the floor alone (callgrind --toggle-collect=floor_profiled_frames).
+void bench_profile_floor(long frames);
 
 // ---------------------------------------------------------------------------------------------
 /// Scaling rows of the honest frame (bench/hand_scaling.c): cost per frame against

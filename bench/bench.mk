@@ -8,7 +8,7 @@ BENCH_OUT := $(BUILD)/bench
 BENCH_BIN := $(BENCH_OUT)/bin/hs_bench
 BENCH_SRC := bench/bench_main.c bench/bench_util.c bench/frame_rate.c bench/accuracy.c \
              bench/throw_fidelity.c bench/peers.c bench/collide_scaling.c bench/race.c \
-             bench/hand_scaling.c bench/uv_ball.c bench/joint_noise.c
+             bench/hand_scaling.c bench/uv_ball.c bench/joint_noise.c bench/floor.c bench/floor_detect.c
 BENCH_DEFS :=
 BENCH_LIBS :=
 # where the peers' headers are looked for (point them elsewhere, or at nothing, to leave a peer out)
@@ -30,9 +30,9 @@ BENCH_OBJ := $(BENCH_SRC:bench/%.c=$(BENCH_OUT)/obj/%.o)
 # what the summary prints as the build: the compiler and the flags actually used
 BENCH_ID   = -DHS_BENCH_CC='"$(CC)"' -DHS_BENCH_FLAGS='"$(strip $(filter-out -I% -W% -D%,$(CFLAGS_ALL)))$(if $(filter 1,$(WERROR)), -Werror) (same as the library)"'
 
-.PHONY: bench-run bench-build bench-objs bench-peers-note bench-instr-run
+.PHONY: bench-run bench-build bench-objs bench-peers-note bench-instr-run bench-floor-run check-bench-floor-run
 
-$(BENCH_OUT)/obj/%.o: bench/%.c bench/bench.h $(wildcard model/include/*.h harness/include/*.h) bench/bench.mk
+$(BENCH_OUT)/obj/%.o: bench/%.c bench/bench.h bench/floor.h $(wildcard model/include/*.h harness/include/*.h) bench/bench.mk
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS_ALL) $(BENCH_DEFS) $(BENCH_ID) -Ibench -c $< -o $@
 
@@ -63,3 +63,14 @@ bench-run: $(BENCH_BIN) bench-peers-note
 # checksums (bench/instr.sh); a table, status 0 whatever the counts (without valgrind it says so).
 bench-instr-run: $(BENCH_BIN) $(TOOL)
 	@sh bench/instr.sh $(BENCH_BIN) $(TOOL) $(BENCH_OUT)/instr
+
+# `make bench-floor` (docs/benchmarks.md, "The floor"): the honest frame against the floor, CPU time
+# in interleaved pairs and callgrind's instructions of each (when valgrind is on PATH); status 0.
+bench-floor-run: $(BENCH_BIN)
+	@mkdir -p $(BENCH_OUT)
+	@$(BENCH_BIN) --out $(BENCH_OUT) --only floor
+
+# `make check-bench-floor`: the floor finds handspring's contacts on each of the 600 honest frames,
+# and a floor without its memory of parts that started inside is caught (under a second once built)
+check-bench-floor-run: $(BENCH_BIN)
+	@$(BENCH_BIN) --floor-check

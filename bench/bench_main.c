@@ -9,6 +9,10 @@
 //                                 -paper: the paper's contact rule; callgrind
 //                                 --toggle-collect=fr_profiled_frames; after --deadband N, the measured
 //                                 world's glove deadband is N sensor units: 0, the moving-glove frame)
+//   hs_bench --floor-check           (the floor finds handspring's contacts frame by frame: bench/floor.c)
+//   hs_bench --profile-floor N       (N frames of the floor alone; callgrind --toggle-collect=floor_profiled_frames)
+//   hs_bench --profile-race ENGINE,N (N frames of the race's ENGINE, ode or mujoco, at its matched radius;
+//                                 callgrind --toggle-collect=race_profiled_frames)
 //   hs_bench --noisy-joints IN OUT  (a joint recording with a tracker's jitter added: make bench-instr)
 //   hs_bench --profile-collide KIND,FRAMES[,N]   (box, hand, hand+box, spring, spring+box)
 //   hs_bench --profile-scaling ROW,VALUE[,FRAMES] (one point of the honest frame's scaling rows: faces
@@ -39,6 +43,7 @@ static const bench_section sections[] = {
     {"throw", "item 4: throw fidelity across frame rates", bench_throw},
     {"peers", "item 5: ODE and MuJoCo on the seed scene", bench_peers},
     {"collide", "item 6: collisions that scale", bench_collide},
+    {"floor", "the honest frame against the least code that finds its contacts", bench_floor},
     {"race", "contact generation only, handspring against ODE and MuJoCo", bench_race},
     {"scaling", "the honest frame against faces, grasped objects, hands, untouched objects",
      bench_hand_scaling},
@@ -92,6 +97,14 @@ int main(int argc, char **argv) {
 		} else if (strcmp(argv[i], "--profile-seed-noskip") == 0 && i + 1 < argc) {
 			const char *comma = strchr(argv[i + 1], ',');
 			bench_profile_seed(atol(argv[i + 1]), comma ? atoi(comma + 1) : 10, false, false, false, deadband);
+			return 0;
+		} else if (strcmp(argv[i], "--floor-check") == 0) {
+			return bench_floor_check();
+		} else if (strcmp(argv[i], "--profile-race") == 0 && i + 1 < argc) {
+			bench_profile_race(argv[i + 1]);
+			return 0;
+		} else if (strcmp(argv[i], "--profile-floor") == 0 && i + 1 < argc) {
+			bench_profile_floor(atol(argv[i + 1]));
 			return 0;
 		} else if (strcmp(argv[i], "--profile-scaling") == 0 && i + 1 < argc) {
 			bench_profile_scaling(argv[i + 1]);

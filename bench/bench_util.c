@@ -15,6 +15,12 @@ double bench_now(void) {
 	return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
+double bench_cpu_now(void) {
+	struct timespec ts;
+	clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+	return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
 static int compare_double(const void *a, const void *b) {
 	double x = *(const double *)a, y = *(const double *)b;
 	return (x > y) - (x < y);
@@ -63,11 +69,13 @@ static bench_stats stats_of(const double *times, int reps, long batch) {
 	return st;
 }
 
-static double time_batch(bench_step_fn step, void *state, long batch) {
-	double t0 = bench_now();
+static double time_batch_on(double (*clock)(void), bench_step_fn step, void *state, long batch) {
+	double t0 = clock();
 	step(state, batch);
-	return (bench_now() - t0) / (double)batch;
+	return (clock() - t0) / (double)batch;
 }
+
+static double time_batch(bench_step_fn step, void *state, long batch) { return time_batch_on(bench_now, step, state, batch); }
 
 bench_stats bench_measure(bench_step_fn step, void *state, const bench_opts *opts) {
 	long batch = warm_up(step, state, opts);
@@ -91,6 +99,80 @@ double bench_measure_pair(bench_step_fn step_a, void *a, bench_step_fn step_b, v
 	*out_a = stats_of(times_a, reps, batch_a);
 	*out_b = stats_of(times_b, reps, batch_b);
 	return bench_median(ratios, reps);
+}
+
+bench_pair bench_measure_pair_cpu(bench_step_fn step_a, void *a, bench_step_fn step_b, void *b, const bench_opts *opts) {
+	long batch_a = warm_up(step_a, a, opts), batch_b = warm_up(step_b, b, opts);
+	double times_a[64], times_b[64], ratios[64];
+	int reps = reps_of(opts) < 7 ? 7 : reps_of(opts);
+	bench_pair p;
+	for (int r = 0; r < reps; ++r) {
+		times_a[r] = time_batch_on(bench_cpu_now, step_a, a, batch_a);
+		times_b[r] = time_batch_on(bench_cpu_now, step_b, b, batch_b);
+		ratios[r] = times_a[r] / times_b[r];
+	}
+	p.a = stats_of(times_a, reps, batch_a);
+	p.b = stats_of(times_b, reps, batch_b);
+	bench_stats r = stats_of(ratios, reps, 0);
+	p.ratio = r.median, p.ratio_min = r.min, p.ratio_max = r.max;
+	p.pairs = reps;
+	return p;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Callgrind: this program run again under valgrind, one profiling flag, the toggled function only
+
+#define CG_CACHE 16
+static struct {
+	char args[96];
+	double instr;
+} cg_cache[CG_CACHE];
+static int cg_cached;
+
+static double callgrind_total(const char *path) {
+	FILE *f = fopen(path, "r");
+	if (!f)
+		return -1.0;
+	char line[512];
+	double total = -1.0;
+	while (fgets(line, sizeof line, f)) // the last totals: or summary: line
+		if (strncmp(line, "totals:", 7) == 0 || strncmp(line, "summary:", 8) == 0)
+			total = strtod(strchr(line, ':') + 1, NULL);
+	fclose(f);
+	return total;
+}
+
+bool bench_have_valgrind(void) { return system("command -v valgrind > /dev/null 2>&1") == 0; }
+
+double bench_callgrind(const bench_opts *opts, const char *args, const char *toggle) {
+	for (int i = 0; i < cg_cached; ++i)
+		if (strcmp(cg_cache[i].args, args) == 0)
+			return cg_cache[i].instr;
+	char self[512], name[96], cmd[8192], out[768];
+	ssize_t n = readlink("/proc/self/exe", self, sizeof self - 1);
+	if (n <= 0 || !bench_have_valgrind())
+		return -1.0;
+	self[n] = 0;
+	snprintf(name, sizeof name, "%s", args); // the file name: the flags' letters and digits
+	for (char *c = name; *c; ++c)
+		if (!((*c >= 'a' && *c <= 'z') || (*c >= '0' && *c <= '9')))
+			*c = '_';
+	snprintf(out, sizeof out, "%s/cg%s", opts->out_dir, name);
+	int len = snprintf(cmd, sizeof cmd,
+	         "valgrind --tool=callgrind --callgrind-out-file='%s.cg' --toggle-collect=%s '%s' --out '%s' %s > '%s.txt' 2> "
+	         "'%s.log'",
+	                   out, toggle, self, opts->out_dir, args, out, out);
+	if (len < 0 || (size_t)len >= sizeof cmd)
+		return -1.0;
+	bench_progress("[callgrind] %s (toggle %s)\n", args, toggle);
+	char path[800];
+	snprintf(path, sizeof path, "%s.cg", out);
+	double total = system(cmd) == 0 ? callgrind_total(path) : -1.0;
+	if (cg_cached < CG_CACHE) {
+		snprintf(cg_cache[cg_cached].args, sizeof cg_cache[cg_cached].args, "%s", args);
+		cg_cache[cg_cached++].instr = total;
+	}
+	return total;
 }
 
 void bench_progress(const char *fmt, ...) {

@@ -119,6 +119,11 @@ typedef struct fr_scene {
 	uint8_t noisy[BENCH_PATH_FRAMES][HS_GLOVE_SENSORS];
 	hs_quat turns[BENCH_PATH_FRAMES];
 	bool no_hash;     // honest input without the per-frame hash (what the hash costs, hand_scaling.c)
+	// the reading the hand uses after the glove deadband, as hs_world_set_hand documents it (the
+	// floor's recording rebuilds the check lines from it; never read by the timed steps)
+	uint8_t used[HS_GLOVE_SENSORS];
+	bool used_set;
+	int deadband;
 	int k;            // frame within the loop
 	long frames;      // stepped so far
 	long lost;        // frames with a target not GRASP
@@ -131,6 +136,16 @@ static void scene_destroy(fr_scene *sc) {
 		return;
 	hs_world_destroy(sc->world);
 	free(sc);
+}
+
+// What hs_world_set_hand does to a reading (its documented deadband): the first reading is used
+// as it is; after it each sensor keeps its value until the reading leaves ±deadband around it.
+static void mirror_reading(fr_scene *sc, const uint8_t reading[HS_GLOVE_SENSORS]) {
+	for (int i = 0; i < HS_GLOVE_SENSORS; ++i) {
+		int r = reading[i], v = sc->used_set ? sc->used[i] : r;
+		sc->used[i] = (uint8_t)(v < r - sc->deadband ? r - sc->deadband : v > r + sc->deadband ? r + sc->deadband : v);
+	}
+	sc->used_set = true;
 }
 
 static void die_status(const char *what, hs_status st) {
@@ -189,6 +204,57 @@ static void honest_input(fr_scene *sc, const fr_pose *pose) {
 	bench_honest_readings(sc->sensors, BENCH_HONEST_SEED, sc->noisy, sc->turns);
 }
 
+// The floor's recording (bench_floor_record): when set, the steps of scene_create's set-up and of the
+// recording are written here, one bench_floor_frame each.
+static bench_floor_frame *fr_rec;
+static long fr_rec_count, fr_rec_differ;
+
+static void record_poses(const fr_scene *sc, hs_vec3 *pos, hs_quat *rot) {
+	for (int i = 0; i < BENCH_FLOOR_CUBES && i < sc->objects; ++i) {
+		hs_object_state os;
+		hs_world_object_state(sc->world, hs_world_object_at(sc->world, i), &os);
+		pos[i] = os.position;
+		rot[i] = os.orientation;
+	}
+}
+
+// One step with the hand set to (wrist, rot, reading), recorded into fr_rec when it is set.
+static void record_step(fr_scene *sc, hs_vec3 wrist, hs_quat rot, const uint8_t reading[HS_GLOVE_SENSORS]) {
+	bench_floor_frame *r = fr_rec ? &fr_rec[fr_rec_count++] : NULL;
+	mirror_reading(sc, reading);
+	hs_world_set_hand(sc->world, sc->hand, wrist, rot, reading);
+	if (!r) {
+		hs_world_step(sc->world);
+		return;
+	}
+	hs_hand_def hd = hs_default_hand_def();
+	hs_vec3 points[HS_HAND_POINTS];
+	hs_hand_kinematics(&hd, wrist, rot, sc->used, points, r->lines);
+	record_poses(sc, r->pos_before, r->rot_before);
+	r->held = 0;
+	for (int i = 0; i < BENCH_FLOOR_CUBES && i < sc->objects; ++i) {
+		hs_object_state os;
+		hs_world_object_state(sc->world, hs_world_object_at(sc->world, i), &os);
+		r->held |= (uint16_t)((os.contact == HS_CONTACT_GRASP) << i);
+	}
+	hs_world_step(sc->world);
+	hs_world_hand_points(sc->world, sc->hand, r->points);
+	fr_rec_differ += memcmp(points, r->points, sizeof points) != 0;
+	record_poses(sc, r->pos, r->rot);
+	for (int i = 0; i < BENCH_FLOOR_CUBES; ++i)
+		if (!(r->held >> i & 1u)) { // tested where the frame began; a held cube where the hand took it
+			r->pos[i] = r->pos_before[i];
+			r->rot[i] = r->rot_before[i];
+		}
+	hs_contact cs[BENCH_FLOOR_MAX_CONTACTS];
+	int m = hs_world_contacts(sc->world, cs, BENCH_FLOOR_MAX_CONTACTS);
+	r->contacts = m < BENCH_FLOOR_MAX_CONTACTS ? m : BENCH_FLOOR_MAX_CONTACTS;
+	for (int c = 0; c < r->contacts; ++c) {
+		r->part[c] = (uint8_t)cs[c].part;
+		r->cube[c] = (uint8_t)(cs[c].object.index1 - 1);
+	}
+}
+
 // Builds `objects` objects (the touched ones first, at their cells) and the hand at frame 0 of the
 // loop; `pose` places the hand (nothing touched: the pose of the pair, 0.3 m higher).
 static fr_scene *scene_create(fr_shape kind, int objects, int touched, bool skip, const fr_pose *pose, bool honest) {
@@ -208,6 +274,7 @@ static fr_scene *scene_create(fr_shape kind, int objects, int touched, bool skip
 	sc->world = hs_world_create(&wd, &st);
 	if (!sc->world)
 		die_status("world", st);
+	sc->deadband = wd.glove_deadband;
 	hs_shape *shape = make_shape(kind);
 	hs_object_def od = hs_default_object_def();
 	double rest_z;
@@ -266,13 +333,9 @@ static fr_scene *scene_create(fr_shape kind, int objects, int touched, bool skip
 		uint8_t wide[HS_GLOVE_SENSORS];
 		if (hs_hand_posture(&hd, HS_POSTURE_GRASP, 0.12, wide) != HS_OK)
 			die_status("posture", HS_ERR_INVALID_ARGUMENT);
-		for (int k = 4; k >= 0; --k) { // down 5 cm in 5 frames, open
-			hs_world_set_hand(sc->world, sc->hand, hs_add(sc->wrist[0], hs_v3(0, 0, 0.01 * k)), sc->rot, wide);
-			hs_world_step(sc->world);
-		}
-		hs_world_set_hand(sc->world, sc->hand, sc->wrist[0], honest ? sc->turns[0] : sc->rot,
-		                  honest ? sc->noisy[0] : sc->sensors);
-		hs_world_step(sc->world);
+		for (int k = 4; k >= 0; --k) // down 5 cm in 5 frames, open
+			record_step(sc, hs_add(sc->wrist[0], hs_v3(0, 0, 0.01 * k)), sc->rot, wide);
+		record_step(sc, sc->wrist[0], honest ? sc->turns[0] : sc->rot, honest ? sc->noisy[0] : sc->sensors);
 	}
 	if (honest) // a user who hashes every frame has hashed the set-up too: every object digested once
 		(void)hs_world_hash(sc->world);
@@ -791,6 +854,21 @@ void bench_race_record(bench_race_frame frames[BENCH_PATH_FRAMES], double *finge
 		}
 	}
 	scene_destroy(sc);
+}
+
+long bench_floor_record(bench_floor_frame *frames, int n) {
+	fr_pose pose = find_pose(FR_CUBE, 2, 0.11, 0.0, 0);
+	fr_rec = frames;
+	fr_rec_count = fr_rec_differ = 0;
+	fr_scene *sc = scene_create(FR_CUBE, BENCH_FLOOR_CUBES, 2, true, &pose, true);
+	for (int f = 0; f < n && fr_rec_count == BENCH_FLOOR_SETUP + f; ++f) { // as scene_step's honest frame
+		record_step(sc, sc->wrist[sc->k], sc->turns[sc->k], sc->noisy[sc->k]);
+		sc->checksum ^= hs_world_hash(sc->world);
+		sc->k = sc->k + 1 == BENCH_PATH_FRAMES ? 0 : sc->k + 1;
+	}
+	fr_rec = NULL;
+	scene_destroy(sc);
+	return fr_rec_differ;
 }
 
 // `hs_bench --profile-seed N`: N frames of the seed scene and nothing else, for perf or callgrind.

@@ -13,10 +13,12 @@
 //    other), qpos set, mj_kinematics + mj_collision; contype/conaffinity so that only capsule-box
 //    pairs are tested.
 // The same sleeping on both sides: the eight resting cubes are never moved, nor tested against the
-// floor or each other (handspring's resting cubes are asleep). handspring's figure is its whole
-// honest frame — glove kinematics, the full check, the grasp, the carrying, the state hash — which
-// is more than contact generation. The jobs are shown to match by their contacts: per frame, the
-// (finger, cube) pairs in contact in each engine, against handspring's.
+// floor or each other (handspring's resting cubes are asleep). Each peer's capsule radius is
+// searched so that its (finger, cube) pairs over the loop match handspring's count, and each peer is
+// timed in interleaved pairs of batches with handspring's whole honest frame (glove kinematics, the
+// full check, the grasp, the carrying, the state hash: more than contact generation), on CPU time;
+// with valgrind on PATH, callgrind counts both sides' instructions (--profile-race,
+// --profile-seed-honest). The output says what differs between the sides.
 #include <stdlib.h>
 #include <string.h>
 
@@ -118,11 +120,11 @@ static void ode_frame(void *state, long frames) {
 	}
 }
 
-static bool ode_run(race_job proto, const bench_opts *opts, race_job *out, bench_stats *st) {
+static void *ode_create(race_job proto) {
 	dInitODE2(0);
 	ode_race *r = calloc(1, sizeof *r);
 	if (!r)
-		return false;
+		return NULL;
 	r->job = proto;
 	r->hand = dSimpleSpaceCreate(0);
 	r->cubes = dHashSpaceCreate(0);
@@ -135,15 +137,17 @@ static bool ode_run(race_job proto, const bench_opts *opts, race_job *out, bench
 		dGeomSetData(r->cube[i], (void *)(intptr_t)i);
 		ode_place(r->cube[i], proto.frames[0].pos[i], proto.frames[0].rot[i]);
 	}
-	ode_frame(r, BENCH_PATH_FRAMES); // one loop counted: the contacts compared
-	*out = r->job;
-	r->job.k = 0;
-	*st = bench_measure(ode_frame, r, opts);
+	return r;
+}
+
+static void ode_set_radius(void *state, double radius) { ((ode_race *)state)->job.radius = radius; } // set each frame
+
+static void ode_destroy(void *state) {
+	ode_race *r = state;
 	dSpaceDestroy(r->hand);
 	dSpaceDestroy(r->cubes);
 	free(r);
 	dCloseODE();
-	return true;
 }
 #endif
 
@@ -192,11 +196,11 @@ static void mj_frame(void *state, long frames) {
 	}
 }
 
-static bool mj_run(race_job proto, const bench_opts *opts, race_job *out, bench_stats *st) {
+static void *mj_create(race_job proto) {
 	size_t size = 16384, len = 0;
 	char *xml = malloc(size);
 	if (!xml)
-		return false;
+		return NULL;
 	double h = 0.5 * BENCH_CUBE;
 	len += (size_t)snprintf(xml + len, size - len, "<mujoco model=\"race\"><option timestep=\"%.17g\"/><worldbody>\n",
 	                        BENCH_DT);
@@ -220,7 +224,7 @@ static bool mj_run(race_job proto, const bench_opts *opts, race_job *out, bench_
 		free(xml);
 		free(vfs);
 		free(r);
-		return false;
+		return NULL;
 	}
 	mj_defaultVFS(vfs);
 	int n = (int)strlen(xml);
@@ -234,7 +238,7 @@ static bool mj_run(race_job proto, const bench_opts *opts, race_job *out, bench_
 	if (!r->m) {
 		fprintf(stderr, "bench: race: MuJoCo: %s\n", error);
 		free(r);
-		return false;
+		return NULL;
 	}
 	r->d = mj_makeData(r->m);
 	r->job = proto;
@@ -242,30 +246,91 @@ static bool mj_run(race_job proto, const bench_opts *opts, race_job *out, bench_
 	r->capsule_geom0 = r->m->body_geomadr[mj_name2id(r->m, mjOBJ_BODY, "seg0")];
 	for (int i = 0; i < 10; ++i)
 		mj_place(r->d, i, proto.frames[0].pos[i], proto.frames[0].rot[i]);
-	mj_frame(r, BENCH_PATH_FRAMES);
-	*out = r->job;
-	r->job.k = 0;
-	*st = bench_measure(mj_frame, r, opts);
+	return r;
+}
+
+// The capsules' radius: their size and bounding radius (half-length + radius) in the model.
+static void mj_set_radius(void *state, double radius) {
+	mj_race *r = state;
+	for (int g = r->capsule_geom0; g < r->capsule_geom0 + RACE_SEGMENTS; ++g) {
+		r->m->geom_rbound[g] = r->m->geom_size[3 * g + 1] + radius;
+		r->m->geom_size[3 * g] = radius;
+	}
+	r->job.radius = radius;
+}
+
+static void mj_destroy(void *state) {
+	mj_race *r = state;
 	mj_deleteData(r->d);
 	mj_deleteModel(r->m);
 	free(r);
-	return true;
 }
 #endif
 
-static void row(const char *name, const bench_stats *st, double hs_us, const race_job *job, long hs_touches) {
-	double us = 1e6 * st->median;
-	if (!job) {
-		printf("%-11s %9.3f (%.3f-%.3f) %10.2fx   %8ld %8s %7s %7s %7s\n", name, us, 1e6 * st->min, 1e6 * st->max, 1.0,
-		       hs_touches, "-", "-", "-", "-");
-		return;
-	}
-	printf("%-11s %9.3f (%.3f-%.3f) %10.2fx   %8ld %8ld %6.1f%% %7ld %7ld\n", name, us, 1e6 * st->min, 1e6 * st->max,
-	       us / hs_us, job->touches, job->contacts, 100.0 * (double)job->agree / (double)job->frames_run, job->extra,
-	       job->missing);
+// A peer: made from the recorded frames, its capsules' radius set, stepped one frame at a time.
+// Each one's state starts with its race_job.
+typedef struct race_engine {
+	const char *name, *key;
+	void *(*create)(race_job proto);
+	void (*set_radius)(void *state, double radius);
+	bench_step_fn step;
+	void (*destroy)(void *state);
+} race_engine;
+
+static const race_engine engines[] = {
+#ifdef HS_BENCH_ODE
+    {"ODE", "ode", ode_create, ode_set_radius, ode_frame, ode_destroy},
+#endif
+#ifdef HS_BENCH_MUJOCO
+    {"MuJoCo", "mujoco", mj_create, mj_set_radius, mj_frame, mj_destroy},
+#endif
+    {NULL, NULL, NULL, NULL, NULL, NULL},
+};
+
+// One loop at `radius` from frame 0, its counts kept in the job; returns the (finger, cube) pairs.
+static long loop_at(const race_engine *e, void *state, double radius) {
+	race_job *job = state, keep = *job;
+	e->set_radius(state, radius);
+	memset(job, 0, sizeof *job);
+	job->frames = keep.frames;
+	job->radius = radius;
+	e->step(state, BENCH_PATH_FRAMES);
+	return job->touches;
 }
 
-void bench_race(const bench_opts *opts, bench_shared *shared) {
+// The capsules' radius whose pairs over the loop match handspring's `target`: the largest radius
+// in [0, 2 finger_radius] with at most `target` pairs (pairs only grow with the radius), by
+// bisection, 48 halvings; the least radius above it when that one's count is nearer.
+static double match_radius(const race_engine *e, void *state, double finger_radius, long target) {
+	double lo = 0.0, hi = 2.0 * finger_radius;
+	if (loop_at(e, state, hi) <= target)
+		lo = hi;
+	for (int it = 0; it < 48 && hi > lo; ++it) {
+		double mid = 0.5 * (lo + hi);
+		if (loop_at(e, state, mid) <= target)
+			lo = mid;
+		else
+			hi = mid;
+	}
+	long at_lo = loop_at(e, state, lo), at_hi = loop_at(e, state, hi);
+	double r = labs(at_lo - target) <= labs(at_hi - target) ? lo : hi;
+	loop_at(e, state, r); // its counts kept
+	return r;
+}
+
+static void *race_make(const race_engine *e, const race_job *proto, long hs_touches, double *radius) {
+	void *state = e->create(*proto);
+	if (!state)
+		return NULL;
+	*radius = match_radius(e, state, proto->radius, hs_touches);
+	return state;
+}
+
+// `hs_bench --profile-race ENGINE,N`: N frames of one peer at its matched radius, for callgrind.
+__attribute__((noinline)) void race_profiled_frames(const race_engine *e, void *state, long frames);
+void race_profiled_frames(const race_engine *e, void *state, long frames) { e->step(state, frames); }
+
+static race_job race_proto(long *hs_touches) {
 	race_job proto;
 	memset(&proto, 0, sizeof proto);
 	proto.frames = malloc(BENCH_PATH_FRAMES * sizeof *proto.frames);
@@ -274,65 +339,132 @@ void bench_race(const bench_opts *opts, bench_shared *shared) {
 		exit(2);
 	}
 	bench_race_record(proto.frames, &proto.radius);
-	long hs_touches = 0;
+	*hs_touches = 0;
 	for (int f = 0; f < BENCH_PATH_FRAMES; ++f)
-		hs_touches += __builtin_popcountll(proto.frames[f].touch);
-	bench_stats hs = bench_honest_measure(opts);
-	double hs_us = 1e6 * hs.median;
-	bench_progress("[race] handspring honest frame: %.3f us\n", hs_us);
+		*hs_touches += __builtin_popcountll(proto.frames[f].touch);
+	return proto;
+}
 
-	printf("\n== Race: contact generation only, on the honest seed scene's frames ==\n");
-	printf("one loop of %d frames: the hand as 15 capsules (r = %.4g m) through the 10 cubes, 2 carried; the 8 resting\n"
-	       "cubes asleep on every side; handspring's figure is its whole honest frame\n",
-	       BENCH_PATH_FRAMES, proto.radius);
-	printf("%-11s %27s %11s   %8s %8s %7s %7s %7s\n", "engine", "us/frame median (min-max)", "/handspring",
-	       "touches", "contacts", "agree", "extra", "missing");
-	printf("(touches: (finger, cube) pairs in contact, summed over the loop; agree: frames with exactly handspring's "
-	       "pairs;\n extra / missing: pairs only the engine finds / only handspring finds)\n");
-	row("handspring", &hs, hs_us, NULL, hs_touches);
-	FILE *csv = bench_csv(opts, "race.csv", "contact generation only on the honest seed scene's frames");
-	fprintf(csv, "engine,us_per_frame,us_min,us_max,peer_over_handspring,finger_cube_touches,contacts,frames_agreeing_pct,"
-	             "extra_pairs,missing_pairs\n");
-	fprintf(csv, "handspring,%.4f,%.4f,%.4f,1,%ld,,100,0,0\n", hs_us, 1e6 * hs.min, 1e6 * hs.max, hs_touches);
+void bench_profile_race(const char *spec) {
+	char name[32];
+	const char *frames, *unused;
+	bench_split_spec(spec, name, sizeof name, &frames, &unused);
+	long hs_touches;
+	race_job proto = race_proto(&hs_touches);
+	for (const race_engine *e = engines; e->name; ++e) {
+		if (strcmp(e->key, name) != 0)
+			continue;
+		double radius;
+		void *state = race_make(e, &proto, hs_touches, &radius);
+		if (state) {
+			long n = frames ? atol(frames) : 600;
+			race_profiled_frames(e, state, n);
+			printf("race %s: %ld frames at radius %.6f m, %ld pairs a loop (handspring %ld)\n", e->name, n, radius,
+			       ((race_job *)state)->touches, hs_touches);
+			e->destroy(state);
+		}
+	}
+	free(proto.frames);
+}
+
+static void instr_text(char *out, size_t size, double instr) {
+	if (instr < 0.0)
+		snprintf(out, size, "-");
+	else
+		snprintf(out, size, "%.0f", instr);
+}
+
+// One peer: its radius matched, then timed in interleaved pairs with handspring's honest frame.
+static bool race_one(const race_engine *e, const race_job *proto, long hs_touches, const bench_opts *opts, FILE *csv,
+                     double hs_instr, double *ratio) {
+	double radius;
+	void *state = race_make(e, proto, hs_touches, &radius);
+	if (!state)
+		return false;
+	race_job job = *(race_job *)state;
+	bench_scene *hs = bench_honest_scene(BENCH_SHAPE_CUBE, 10, 0);
+	bench_pair p = bench_measure_pair_cpu(e->step, state, bench_scene_step, hs, opts);
+	bench_scene_destroy(hs);
+	e->destroy(state);
+	char args[64], peer_i[32], ratio_i[32] = "-";
+	snprintf(args, sizeof args, "--profile-race %s,600", e->key);
+	double instr = bench_callgrind(opts, args, "race_profiled_frames") / 600.0;
+	instr_text(peer_i, sizeof peer_i, instr);
+	if (instr > 0.0 && hs_instr > 0.0)
+		snprintf(ratio_i, sizeof ratio_i, "%.2fx", instr / hs_instr);
+	printf("%-7s %9.6f %6ld %5ld %5ld %7.1f%% %8.3f (%.3f-%.3f) %8.3f %6.2fx (%.2f-%.2f) %9s %7s\n", e->name, radius,
+	       job.touches, job.extra, job.missing, 100.0 * (double)job.agree / (double)job.frames_run, 1e6 * p.a.median,
+	       1e6 * p.a.min, 1e6 * p.a.max, 1e6 * p.b.median, p.ratio, p.ratio_min, p.ratio_max, peer_i, ratio_i);
+	fprintf(csv, "%s,%.6f,%ld,%ld,%ld,%ld,%ld,%.1f,%.4f,%.4f,%.4f,%.4f,%.3f,%.3f,%.3f,%s,%s\n", e->name, radius,
+	        job.touches, hs_touches, job.extra, job.missing, job.contacts,
+	        100.0 * (double)job.agree / (double)job.frames_run, 1e6 * p.a.median, 1e6 * p.a.min, 1e6 * p.a.max,
+	        1e6 * p.b.median, p.ratio, p.ratio_min, p.ratio_max, instr < 0.0 ? "" : peer_i,
+	        instr < 0.0 ? "" : ratio_i);
+	char value[192];
+	snprintf(value, sizeof value, "%.2fx handspring's CPU time (%.2f-%.2f), %s instructions; pairs %ld vs %ld at r = %.4f m",
+	         p.ratio, p.ratio_min, p.ratio_max, ratio_i, job.touches, hs_touches, radius);
+	bench_summary_add("race", e->name, value, BENCH_INFO);
+	*ratio = p.ratio;
+	return true;
+}
+
+static void race_header(double finger_radius, double hs_instr, long hs_touches) {
+	char hs_i[32];
+	instr_text(hs_i, sizeof hs_i, hs_instr);
+	printf("\n== Race: contact generation only, on the honest seed scene's frames (CPU time, interleaved pairs) ==\n");
+	printf("what differs between the sides:\n"
+	       " - handspring runs its whole honest frame (glove kinematics from the noisy reading, the check of 20 check\n"
+	       "   points and 60 check lines with its rules, the grasp, carrying the 2 cubes, the state hash): %s\n"
+	       "   instructions a frame (callgrind, fr_profiled_frames);\n"
+	       " - each peer only generates capsule-box contacts on one recorded loop of %d frames: the hand as 15\n"
+	       "   capsules (one per finger segment, check point to check point) moved to the recorded points, the 2\n"
+	       "   carried cubes to their recorded poses, the 8 resting cubes never moved nor tested against each other;\n"
+	       " - handspring's fingers are points and prism edges %.4f m from the axis; each peer's capsule radius is\n"
+	       "   searched (bisection: the largest radius whose (finger, cube) pairs over the loop do not exceed\n"
+	       "   handspring's %ld) so that the pair counts match.\n",
+	       hs_i, BENCH_PATH_FRAMES, finger_radius, hs_touches);
+	printf("(pairs: (finger, cube) pairs in contact summed over the loop; extra / missing: pairs only the peer / only\n"
+	       " handspring finds; agree: frames with exactly handspring's pairs; times: CPU us a frame, median (min-max) of\n"
+	       " the peer's batches, handspring's in the same pairs, and the peer's time over handspring's per pair)\n");
+	printf("%-7s %9s %6s %5s %5s %8s %22s %8s %21s %9s %7s\n", "engine", "radius m", "pairs", "extra", "miss", "agree",
+	       "peer us (min-max)", "hs us", "peer/hs (min-max)", "instr", "/hs");
+}
+
+void bench_race(const bench_opts *opts, bench_shared *shared) {
+	long hs_touches;
+	race_job proto = race_proto(&hs_touches);
+	double hs_instr = bench_callgrind(opts, "--profile-seed-honest 600", "fr_profiled_frames") / 600.0;
+	race_header(proto.radius, hs_instr, hs_touches);
+	FILE *csv = bench_csv(opts, "race.csv", "contact generation only on the honest seed scene's frames, CPU time in "
+	                                        "interleaved pairs with handspring's honest frame");
+	fprintf(csv, "engine,radius_m,pairs,handspring_pairs,extra_pairs,missing_pairs,contacts,frames_agreeing_pct,"
+	             "us_per_frame,us_min,us_max,handspring_us,peer_over_handspring,ratio_min,ratio_max,instr_per_frame,"
+	             "instr_over_handspring\n");
 	double worst = INFINITY;
 	int peers = 0;
-	char value[160];
-	struct {
-		const char *name;
-		bool (*run)(race_job, const bench_opts *, race_job *, bench_stats *);
-	} engines[] = {
-#ifdef HS_BENCH_ODE
-	    {"ODE", ode_run},
-#endif
-#ifdef HS_BENCH_MUJOCO
-	    {"MuJoCo", mj_run},
-#endif
-	    {NULL, NULL},
-	};
-	for (int e = 0; engines[e].name; ++e) {
-		race_job job;
-		bench_stats st;
-		if (!engines[e].run(proto, opts, &job, &st))
+	for (const race_engine *e = engines; e->name; ++e) {
+		double ratio;
+		if (!race_one(e, &proto, hs_touches, opts, csv, hs_instr, &ratio))
 			continue;
 		peers++;
-		row(engines[e].name, &st, hs_us, &job, hs_touches);
-		double ratio = 1e6 * st.median / hs_us, agree = 100.0 * (double)job.agree / (double)job.frames_run;
-		fprintf(csv, "%s,%.4f,%.4f,%.4f,%.3f,%ld,%ld,%.1f,%ld,%ld\n", engines[e].name, 1e6 * st.median, 1e6 * st.min,
-		        1e6 * st.max, ratio, job.touches, job.contacts, agree, job.extra, job.missing);
-		shared->checksum ^= (uint64_t)job.touches * 0x9E3779B97F4A7C15ull + (uint64_t)job.contacts;
-		snprintf(value, sizeof value, "%.2f us/frame = %.2fx handspring's; pairs %ld vs %ld (%ld extra, %ld missing)",
-		         1e6 * st.median, ratio, job.touches, hs_touches, job.extra, job.missing);
-		bench_summary_add("race", engines[e].name, value, BENCH_INFO);
 		worst = ratio < worst ? ratio : worst;
+		shared->checksum ^= (uint64_t)(ratio > 0.0) * 0x9E3779B97F4A7C15ull;
 	}
 	fclose(csv);
 	free(proto.frames);
+#ifndef HS_BENCH_ODE
+	printf("ODE: not built (libode-dev not installed: sh scripts/deps.sh bench): skipped\n");
+#endif
+#ifndef HS_BENCH_MUJOCO
+	printf("MuJoCo: not built (libmujoco-dev not installed: sh scripts/deps.sh bench): skipped\n");
+#endif
 	if (peers == 0) {
 		bench_summary_add("target", "race: >= 10x faster than ODE and MuJoCo (contacts only)", "peers not built",
 		                  BENCH_UNKNOWN);
 		return;
 	}
-	snprintf(value, sizeof value, "fastest peer %.2fx handspring's honest frame (%.2f us)", worst, hs_us);
+	char value[160];
+	snprintf(value, sizeof value, "fastest peer %.2fx handspring's honest frame (CPU time, interleaved)", worst);
 	bench_summary_add("target", "race: >= 10x faster than ODE and MuJoCo (contacts only)", value,
 	                  peers == 2 && worst >= 10.0 ? BENCH_MET : BENCH_NOT_MET);
 }
