@@ -87,9 +87,11 @@ bool hs_read_duration(hs_scenario_parser *p, const yaml_node_t *node) {
 // ---------------------------------------------------------------------------------------------
 // model.spring: the options of the spring model (workbench paper §4); read into p->spring
 
-enum { SP_INTEGRATOR, SP_FRICTION, SP_SLIDING, SP_RESTITUTION, SP_WALLS, SP_NOISE_SEED, SP_COUNT };
-static const char *const spring_keys[SP_COUNT] = {"integrator", "friction", "sliding_friction",
-                                                  "restitution", "walls",    "noise_seed"};
+enum { SP_INTEGRATOR, SP_FRICTION, SP_SLIDING, SP_RESTITUTION, SP_WALLS, SP_NOISE_SEED, SP_AT_PRESS, SP_COLLISIONS, SP_COUNT };
+static const char *const spring_keys[SP_COUNT] = {"integrator", "friction",   "sliding_friction", "restitution",
+                                                  "walls",      "noise_seed", "spring_at_press",  "collisions"};
+static bool read_choice(hs_scenario_parser *p, const yaml_node_t *node, const char *key, const char *first,
+                        const char *second, bool *is_second);
 static const char *const integrator_names[] = {"exact", "implicit_euler", "semi_implicit_euler", "rk4"};
 
 // A coefficient in [0, hi] (hi < 0: no upper bound).
@@ -171,7 +173,9 @@ static bool read_spring(hs_scenario_parser *p, const yaml_node_t *node) {
 		p->seeded = p->noise.stylus = true; // the harness draws it: the model adds none (d->noise stays off)
 		p->seed = (unsigned long)seed;
 	}
-	return true;
+	// the workbench paper's letter, one rule each (docs/model.md §11): the default first
+	return read_choice(p, f.value[SP_AT_PRESS], "spring_at_press", "rest", "pen_tip", &d->pen_tip_spring) &&
+	       read_choice(p, f.value[SP_COLLISIONS], "collisions", "resting", "paper", &d->paper_collisions);
 }
 
 // Checked here, at its own line, against the API's limit (hs_world_create would only say
@@ -252,10 +256,15 @@ static bool read_choice(hs_scenario_parser *p, const yaml_node_t *node, const ch
 // The release velocity's estimator (docs/model.md §4 "Release"): release_fit and release_window_s,
 // flat keys so that a campaign overrides one at a time.
 static bool read_release(hs_scenario_parser *p, const yaml_node_t *fit, const yaml_node_t *window, hs_world_def *def) {
-	bool quadratic = def->release_fit == HS_RELEASE_FIT_QUADRATIC;
-	if (!read_choice(p, fit, "release_fit", "mean", "quadratic", &quadratic))
-		return false;
-	def->release_fit = quadratic ? HS_RELEASE_FIT_QUADRATIC : HS_RELEASE_FIT_MEAN;
+	if (fit && hs_yaml_scalar_is(fit, "object")) // the 1999 paper's letter: eq. 3 from the object
+		def->release_fit = HS_RELEASE_FIT_OBJECT;
+	else if (fit) {
+		bool quadratic = false;
+		if (!hs_yaml_scalar_is(fit, "mean") && !hs_yaml_scalar_is(fit, "quadratic"))
+			return hs_yaml_fail(&p->y, fit, "'release_fit' must be mean, quadratic or object, got %s", hs_yaml_got(fit).text);
+		quadratic = hs_yaml_scalar_is(fit, "quadratic");
+		def->release_fit = quadratic ? HS_RELEASE_FIT_QUADRATIC : HS_RELEASE_FIT_MEAN;
+	}
 	if (!window)
 		return true;
 	if (!hs_yaml_number(&p->y, window, "release_window_s", &def->release_window_s))
@@ -287,16 +296,45 @@ static bool read_grasp_start(hs_scenario_parser *p, const hs_fields *f, int firs
 	       read_bounded(p, f->value[first + 2], "tracking_hold_s", 0.0, HS_MAX_TRACKING_HOLD, "s", &def->tracking_hold_s);
 }
 
+// `letter` first (the whole of a paper's letter: hs_world_def_letter), then the finer switches
+// that restore one rule of the letter each, and the grasp's end margins (docs/model.md §11).
+static bool read_letter_rules(hs_scenario_parser *p, const hs_fields *f, int first, hs_world_def *def) {
+	const yaml_node_t *letter = f->value[first];
+	if (letter) {
+		hs_letter l = HS_LETTER_NONE;
+		if (hs_yaml_scalar_is(letter, "hand1999"))
+			l = HS_LETTER_HAND1999;
+		else if (hs_yaml_scalar_is(letter, "workbench"))
+			l = HS_LETTER_WORKBENCH;
+		else if (!hs_yaml_scalar_is(letter, "none"))
+			return hs_yaml_fail(&p->y, letter, "'letter' must be none, hand1999 or workbench, got %s", hs_yaml_got(letter).text);
+		def->spring = p->spring; // the spring options are kept apart until the world is made (scenario.c)
+		hs_world_def_letter(def, l);
+		p->spring = def->spring;
+	}
+	return read_choice(p, f->value[first + 1], "grasp_end", "margins", "paper", &def->paper_grasp_end) &&
+	       read_choice(p, f->value[first + 2], "floor_push", "floor", "paper", &def->paper_floor_push) &&
+	       read_choice(p, f->value[first + 3], "push_end", "stop", "paper", &def->paper_push_end) &&
+	       read_choice(p, f->value[first + 4], "tipping", "edge", "paper", &def->paper_tipping) &&
+	       read_choice(p, f->value[first + 5], "carry", "rigid", "paper", &def->paper_carry) &&
+	       read_bounded(p, f->value[first + 6], "grasp_release_mm", 0.0, 1000.0, "mm", &def->grasp_release_mm) &&
+	       read_bounded(p, f->value[first + 7], "grasp_open_mm", 0.0, 1000.0, "mm", &def->grasp_open_mm);
+}
+
 bool hs_read_model(hs_scenario_parser *p, const yaml_node_t *node, hs_world_def *def) {
 	static const char *const names[] = {"grasp_threshold_deg", "stacking",       "floor_tolerance",
 	                                    "skip_work",           "spring",         "input_noise",
 	                                    "grasp_rule",          "contacts",       "glove_deadband",
 	                                    "release_fit",         "release_window_s", "grasp_opposed",
-	                                    "grasp_close_mm",      "tracking_hold_s",  "landing"};
+	                                    "grasp_close_mm",      "tracking_hold_s",  "landing",
+	                                    "letter",              "grasp_end",        "floor_push",
+	                                    "push_end",            "tipping",          "carry",
+	                                    "grasp_release_mm",    "grasp_open_mm"};
 	if (node->type != YAML_MAPPING_NODE)
 		return hs_yaml_fail(&p->y, node, "'model' must be a mapping, got %s", hs_yaml_got(node).text);
 	hs_fields f;
-	if (!hs_yaml_mapping(&p->y, node, names, 15, "model", &f) || !read_grasp_start(p, &f, 11, def))
+	if (!hs_yaml_mapping(&p->y, node, names, 23, "model", &f) || !read_letter_rules(p, &f, 15, def) ||
+	    !read_grasp_start(p, &f, 11, def))
 		return false;
 	bool stacking_support = def->stacking == HS_STACKING_SUPPORT;
 	// the realistic rule first, the paper's letter second (docs/model.md §3, §6)

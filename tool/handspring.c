@@ -58,7 +58,7 @@ static const char *const usage_list =
 
 static const char *const usage_run =
     "usage: handspring run FILE [--out TRAJ.csv] [--hands-out HANDS.csv] [--save-at FRAME --state-out PATH]\n"
-    "                           [--resume PATH] [--dt DT] [--noise-seed N] [--phase F] [--strict]\n"
+    "                           [--resume PATH] [--dt DT] [--noise-seed N] [--phase F] [--letter L] [--strict]\n"
     "Runs the scenario FILE and prints its name, frames, objects, one PASS/FAIL line per expectation\n"
     "with the measured value, and the final state hash.\n"
     "  --out TRAJ.csv     also write the trajectory (one row per object per frame, frame 0 included);\n"
@@ -84,6 +84,9 @@ static const char *const usage_run =
     "                     noise. Neither goes with --save-at or --resume (a state file names the file only).\n"
     "  --phase F          run the input scripts F of a frame late (0 <= F < 1): the same motions with\n"
     "                     the frames falling elsewhere on them (as a sweep's seeds do); not with --resume\n"
+    "  --letter L         run the scenario under a paper's letter, every departure of that model off\n"
+    "                     (hand1999 or workbench; none: the defaults), whatever the file's model says;\n"
+    "                     the file's own model keys give way to it (docs/model.md §11)\n"
     "  --strict           treat the load's warnings (an object under the floor, objects overlapping at\n"
     "                     the start, a hand under the floor, a sphere in a hand world) as bad input:\n"
     "                     they are printed and the scenario is not run (exit status 2)\n"
@@ -121,7 +124,7 @@ static bool parse_seed(const char *text, unsigned long *seed) {
 	return *text != '\0';
 }
 
-// --dt, --noise-seed and --phase at argv[*i]: true when it was one of them (*status set on a usage error).
+// --dt, --noise-seed, --phase and --letter at argv[*i]: true when it was one of them (*status set on a usage error).
 static bool parse_load_option(int argc, char **argv, int *i, hs_scenario_options *o, int *status) {
 	bool missing = false;
 	const char *v = NULL;
@@ -135,6 +138,20 @@ static bool parse_load_option(int argc, char **argv, int *i, hs_scenario_options
 		o->phase = missing ? -1.0 : strtod(v, &end);
 		if (missing || end == v || *end || !(o->phase >= 0.0 && o->phase < 1.0))
 			*status = hs_cli_usage_error("run", usage_run, "%s needs a fraction of a frame within [0, 1)", "--phase");
+		return true;
+	}
+	if (hs_cli_option_value(argc, argv, i, "--letter", &v, &missing)) {
+		static const char *const texts[] = {"{letter: none}", "{letter: hand1999}", "{letter: workbench}"};
+		static const char *const names[] = {"none", "hand1999", "workbench"};
+		o->model_count = 0;
+		for (int k = 0; k < 3 && !missing; ++k)
+			if (strcmp(v, names[k]) == 0) {
+				o->model_texts = &texts[k];
+				o->model_count = 1;
+				o->model_path = "--letter";
+			}
+		if (o->model_count == 0)
+			*status = hs_cli_usage_error("run", usage_run, "%s needs none, hand1999 or workbench", "--letter");
 		return true;
 	}
 	if (hs_cli_option_value(argc, argv, i, "--noise-seed", &v, &missing)) {
@@ -199,8 +216,8 @@ static int parse_run(int argc, char **argv, run_options *o) {
 		return hs_cli_usage_error("run", usage_run, "%s", "missing the scenario FILE");
 	if ((o->save_at >= 0) != (o->state_out != NULL))
 		return hs_cli_usage_error("run", usage_run, "%s", "--save-at and --state-out go together");
-	if ((o->load.dt > 0.0 || o->load.noise || o->load.phase > 0.0) && (o->state_out || o->resume))
-		return hs_cli_usage_error("run", usage_run, "%s", "--dt, --noise-seed and --phase do not go with --save-at or --resume");
+	if ((o->load.dt > 0.0 || o->load.noise || o->load.phase > 0.0 || o->load.model_count > 0) && (o->state_out || o->resume))
+		return hs_cli_usage_error("run", usage_run, "%s", "--dt, --noise-seed, --phase and --letter do not go with --save-at or --resume");
 	return -1;
 }
 

@@ -203,6 +203,11 @@ static bool holder_holds(const hs_world *world, const hs_contact *cs, int n, uin
 // hold (a finger lifted off within the margin), which keeps a held object at one detection a frame.
 static bool grasp_continues(hs_world *world, int i, const hs_pose *before, int first, int *n) {
 	hs_body *body = &world->bodies[i];
+	if (world->def.paper_grasp_end) { // [H] §3.2: "successive instances in which grasping is recognized"
+		*n = hs_contact_detect(world, i, before);
+		return hs_contact_classify(&world->contacts[first], *n, world->grasp_limit, world->def.grasp_any_contacts) ==
+		       HS_CONTACT_GRASP;
+	}
 	uint32_t holder = (uint32_t)body->grasped_by;
 	const hs_hand *hand = &world->hands[holder - 1];
 	unsigned fingers = body->grip_fingers;
@@ -333,7 +338,7 @@ hs_contact_state hs_grasp_detect(hs_world *world, int i, int first, int *n, bool
 		// the holder let go: the release rule starts. The fingers are judged against the object
 		// where the hand carried it this frame (they open around it, in the hand's frame); left
 		// where it was, a hand that lets go while moving fast would sweep through it.
-		body->released_by = body->grasped_by;
+		body->released_by = world->def.paper_grasp_end ? 0 : body->grasped_by; // the letter sets no hand aside
 		body->grip_spread = whole_hand_opening(&world->hands[body->grasped_by - 1]);
 		// a hand that let go must close anew to grasp again: its pairs' peaks start from here
 		hs_grasp_reset_pairs(&world->hands[body->grasped_by - 1]);

@@ -84,6 +84,8 @@ typedef struct rigid_move {
 // (3.4 cm at 12 frames/s) before the two met again.
 static void carry_along(hs_world *world, int moved, int current, rigid_move m) {
 	hs_vec3 d = hs_sub(m.to, m.from);
+	if (world->def.paper_carry) // [H] §4.3's letter: translated along with it
+		m.turn = hs_quat_identity();
 	bool turned = m.turn.x != 0.0 || m.turn.y != 0.0 || m.turn.z != 0.0;
 	if (world->def.stacking != HS_STACKING_PAPER || !(hs_length_sq(d) > 0.0 || turned))
 		return;
@@ -240,7 +242,10 @@ static void release_motion(const hs_world *world, const hs_body *body, const hs_
 // those frames. Any other release (a push ends, `last` its contact state) flies on with the motion
 // and turn of its last frame (§4.1), unless it is left on the floor (push.c).
 static void release(hs_world *world, hs_body *body, hs_contact_state last) {
-	if (body->grasped_by > 0) {
+	if (body->grasped_by > 0 && world->def.release_fit == HS_RELEASE_FIT_OBJECT) {
+		// the letter: eq. 3 from its last two held positions (grasp.c left it at the last) and turn
+		body->spin = hs_quat_normalize(hs_quat_mul(body->rot, hs_quat_conj(body->rot_prev)));
+	} else if (body->grasped_by > 0) {
 		const hs_hand *hand = &world->hands[body->grasped_by - 1];
 		double dt = world->def.dt;
 		hs_vec3 v_dt;
@@ -253,7 +258,7 @@ static void release(hs_world *world, hs_body *body, hs_contact_state last) {
 		body->spin = turn;
 	} else {
 		body->spin = hs_quat_normalize(hs_quat_mul(body->rot, hs_quat_conj(body->rot_prev)));
-		if (hs_push_release_on_floor(world, body, last == HS_CONTACT_PUSH_MANY)) { // it stays on the floor
+		if (!world->def.paper_push_end && hs_push_release_on_floor(world, body, last == HS_CONTACT_PUSH_MANY)) { // it stays on the floor
 			body->grasped_by = 0;
 			return;
 		}
@@ -312,7 +317,7 @@ static void move_by_contacts(hs_world *world, hs_body *body, hs_contact_state st
 		hs_grasp_follow_wrist(body, &world->hands[h]);
 	} else if (state == HS_CONTACT_PUSH_ONE) {
 		body->grasped_by = 0;
-		if (!hs_push_on_floor(world, body, cs[0].point, cs[0].finger)) // on the floor: model.md §4
+		if (world->def.paper_floor_push || !hs_push_on_floor(world, body, cs[0].point, cs[0].finger)) // on the floor: model.md §4
 			hs_push_at_one_point(body, cs[0].point, cs[0].finger);
 	} else {
 		body->grasped_by = 0;
@@ -433,7 +438,8 @@ void hs_manipulate(hs_world *world) {
 		bool continues = false;
 		bool at_rest = body->prev.x == old_pos.x && body->prev.y == old_pos.y && body->prev.z == old_pos.z;
 		hs_contact_state state = hs_grasp_detect(world, i, first, &n, &continues);
-		if (state == HS_CONTACT_PUSH_ONE && !at_rest && !body->grasped_by && outruns(body, &world->contacts[first])) {
+		if (state == HS_CONTACT_PUSH_ONE && !at_rest && !body->grasped_by && !world->def.paper_push_end &&
+		    outruns(body, &world->contacts[first])) {
 			state = HS_CONTACT_NONE; // it turns on by its own motion (eq. 3), the finger left behind
 			world->contact_count = first;
 		}
@@ -453,8 +459,9 @@ void hs_manipulate(hs_world *world) {
 		hs_motion_keep_above_floor(world, body); // §4.2 for a pushed object; the trajectory shows its floor contacts
 		if (state == HS_CONTACT_GRASP && pose_changed(body, carried_to)) // pressed into the floor: it slid in the grip
 			hs_grasp_slip(body, &world->hands[body->grasped_by - 1]);
-		double after = state == HS_CONTACT_PUSH_ONE && at_rest ? 1.0 - world->contacts[first].t : 1.0;
-		if (!push_drives_nothing(state, &world->contacts[first], n, at_rest)) // else its motion is kept
+		bool letter = world->def.paper_push_end; // eq. 3 from its last two positions, as they fall
+		double after = state == HS_CONTACT_PUSH_ONE && at_rest && !letter ? 1.0 - world->contacts[first].t : 1.0;
+		if (letter || !push_drives_nothing(state, &world->contacts[first], n, at_rest)) // else its motion is kept
 			remember_motion(body, old_pos, old_rot, after);
 		body->held = 1;
 		hs_wake(world, i);

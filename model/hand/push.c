@@ -145,7 +145,7 @@ bool hs_push_on_floor(hs_world *world, hs_body *body, hs_vec3 c, hs_vec3 b) {
 
 void hs_push_many(hs_world *world, hs_body *body, hs_vec3 d) {
 	int count = 0;
-	if (lies_on_floor(world, body, &count)) {
+	if (!world->def.paper_floor_push && lies_on_floor(world, body, &count)) {
 		if (held_by_floor(d))
 			return;
 		d.z = 0.0;

@@ -187,6 +187,7 @@ typedef enum hs_stacking {
 typedef enum hs_release_fit {
 	HS_RELEASE_FIT_MEAN,      ///< the mean motion over the window: where the wrist carries the object at the release less where it carried it a window before, over that time
 	HS_RELEASE_FIT_QUADRATIC, ///< the slope at the release of the least-squares quadratic through where the wrist carried the object at each frame of the window; the mean for a window of one frame (two points)
+	HS_RELEASE_FIT_OBJECT,    ///< the 1999 paper's letter: eq. 3 goes on from the object's last two held positions and its last turn (the window is not used; at 12 frames/s a throw lands about a frame's swing short)
 } hs_release_fit;
 
 // The spring model's definition, part of a spring world's (its section below says what it runs).
@@ -225,6 +226,9 @@ typedef struct hs_spring_def {
 	double grab_range;         ///< m: a press attaches the candidate only this close to its surface (default 0.5)
 	double select_range;       ///< m: length of the selection rays ('I want this one' and the stylus's pointing ray), and how far the fishing rod reaches (default 2.0)
 	double select_speed;       ///< m/s: the hand's path over the tracker's fit window selects along its heading from this speed (default 0.05)
+	// The Responsive Workbench paper's letter, one rule at a time (docs/model.md §11); false by default.
+	bool pen_tip_spring;       ///< true: a press hangs the spring from the pen tip itself, at its length then (§4.4 as written; the default's anchor puts the spring at rest, so nothing jerks at the press)
+	bool paper_collisions;     ///< true: objects touching objects are only impacts ([W] §4.5: "equivalent with geometric intersection"): no resting-contact forces, every impact bounces with the pair's restitution (no 5 cm/s threshold)
 } hs_spring_def;
 
 /// Which model a world runs, fixed when it is created: the 1999 paper's hands (hs_world_add_hand,
@@ -256,11 +260,28 @@ typedef struct hs_world_def {
 	double grasp_close_mm;      ///< mm, 0..1000: a new grasp's two fingers (of one hand) must have closed by this much: their tips this much nearer than their most open lately (that peak forgets 20 mm/s); 0: no closing needed (the 1999 paper's letter). Default 10
 	bool paper_landing;         ///< false (default): a flying object that reaches the floor lands where its path through the frame met it, then is lifted out; true: lifted straight up from where the frame left it (the 1999 paper's §4.2 letter: up to the horizontal speed × dt further on; docs/model.md §5)
 	double tracking_hold_s;     ///< s, 0..HS_MAX_TRACKING_HOLD: a hand whose tracking is lost (hs_world_set_hand_tracked) keeps its grasps this long, then lets them go in place and touches nothing until tracked again (default 0.2)
+	// The 1999 paper's letter, one rule at a time (docs/model.md §11 "The papers' letter"); each false by default.
+	bool paper_grasp_end;       ///< true: a grasp goes on while this frame's contacts make a grasp ([H] §3.2: "successive instances in which grasping is recognized"): no opening or margin rule, no release set-aside
+	bool paper_floor_push;      ///< true: a push on an object on the floor moves it by eq. 1-2 and the floor lifts it out (§4.2), with no sliding, yaw or tipping about a floor edge
+	bool paper_push_end;        ///< true: a push that ends goes on by eq. 3 from the object's last two positions: no stop on the floor, no speed over the time after the touch, a finger that drives nothing stops it, no object outrunning a finger
+	bool paper_tipping;         ///< true: a turn about one floor vertex that lands a second loses its motion there (§4.2 rule (1)) instead of turning on about the new edge
+	bool paper_carry;           ///< true: in paper stacking what interferes with a moved object is translated with it (§4.3), not turned with it
 	hs_world_kind kind;         ///< the model the world runs, for its whole life (default HS_WORLD_HAND)
 	hs_spring_def spring;       ///< the spring model's definition, read when kind is HS_WORLD_SPRING (default hs_default_spring_def())
 } hs_world_def;
 
 hs_world_def hs_default_world_def(void);
+
+/// The papers' letter as a whole (docs/model.md §11 "The papers' letter").
+typedef enum hs_letter {
+	HS_LETTER_NONE = 0,      ///< the defaults: every realistic rule on
+	HS_LETTER_HAND1999 = 1,  ///< the 1999 virtual-hand paper as written: every departure of the hand model off
+	HS_LETTER_WORKBENCH = 2, ///< the Responsive Workbench paper as written: every departure of the spring model off
+} hs_letter;
+
+/// Sets in *def every option the letter names to that paper's letter (HS_LETTER_NONE: to the
+/// defaults), leaving every other field as it is. HS_ERR_INVALID_ARGUMENT for an unknown letter.
+hs_status hs_world_def_letter(hs_world_def *def, hs_letter letter);
 
 /// Creates a world; NULL with *status set on an invalid definition (dt outside [HS_MIN_DT, HS_MAX_DT],
 /// gravity beyond HS_MAX_GRAVITY, non-finite numbers, capacities out of range, release_window_s

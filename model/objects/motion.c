@@ -234,7 +234,8 @@ static void tip(hs_world *world, hs_body *body, const hs_vec2 *hull, int hull_co
 	rectify(world, body, hs_motion_pose_vertices(world, body));
 	// on the floor alone, in paper mode: support mode's step of an object on the floor and a
 	// support read the kept motion as a turn over both and sank a cube 5 µm into the floor
-	if (landed && hull_count == 1 && !sup && height == 0.0 && world->def.stacking == HS_STACKING_PAPER)
+	if (landed && hull_count == 1 && !sup && height == 0.0 && world->def.stacking == HS_STACKING_PAPER &&
+	    !world->def.paper_tipping)
 		keep_turning_about_edge(world, body, motion);
 	world->counters.object_steps++;
 }

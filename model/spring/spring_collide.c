@@ -332,7 +332,8 @@ static bool answer(hs_world *world, hs_spring_system *sys, int i, int j, double 
 			return false; // at rest on each other, within the gap
 	}
 	// an impact slower than HS_REST_BOUNCE_SPEED is a resting push: no bounce (spring_rest.h)
-	bool push = resting || -hs_dot(hs_sub(b->vel, a->vel), n) <= HS_REST_BOUNCE_SPEED;
+	double bounce = sys->def.paper_collisions ? 0.0 : HS_REST_BOUNCE_SPEED; // the letter: every impact bounces
+	bool push = resting || -hs_dot(hs_sub(b->vel, a->vel), n) <= bounce;
 	hs_spring_pair_impulse(world, sys, i, j, n, push ? 0.0 : hs_spring_pair_restitution(world, sys, i, j), push);
 	separate(world, sys, i, j, n, depth, push);
 	// the rest of the frame, from where they met; a push (no bounce) stops there: moved on by the

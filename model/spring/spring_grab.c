@@ -138,7 +138,7 @@ void hs_spring_attach(hs_world *world, hs_spring_system *sys, int i, hs_attach_k
 	if (hs_length(down) == 0.0)
 		down = hs_v3(0.0, 0.0, -1.0);
 	bool inside = hs_spring_geom_inside(&g, body->pos, sys->stylus);
-	if (kind == HS_ATTACH_API) { // the literal spring from the pen tip: tests set its extension
+	if (kind == HS_ATTACH_API || sys->def.pen_tip_spring) { // the literal spring from the pen tip
 		sys->axis = len > 0.0 ? hs_scale(d, 1.0 / len) : down;
 		sys->anchor_offset = hs_v3(0.0, 0.0, 0.0);
 	} else {

@@ -100,6 +100,8 @@ static uint64_t def_checksum(const hs_spring_def *d) {
 	h = hs_state_mix(h, (uint64_t)(int64_t)d->tracker_window);
 	for (size_t i = 0; i < sizeof numbers / sizeof numbers[0]; ++i)
 		h = hs_state_mix_f64(h, numbers[i]);
+	if (d->pen_tip_spring || d->paper_collisions) // the letter's rules: only when set (older checksums stay)
+		h = hs_state_mix(h, 0x57424c4554u ^ ((d->pen_tip_spring ? 1u : 0u) | (d->paper_collisions ? 2u : 0u)));
 	return h;
 }
 

@@ -87,6 +87,11 @@ static uint64_t definition_checksum(const hs_world *w) {
 		h = hs_state_mix_f64(h, d->tracking_hold_s);
 		h = hs_state_mix(h, d->paper_landing ? 1u : 0u);
 	}
+	if (d->paper_grasp_end || d->paper_floor_push || d->paper_push_end || d->paper_tipping || d->paper_carry) {
+		unsigned rules = (d->paper_grasp_end ? 1u : 0u) | (d->paper_floor_push ? 2u : 0u) | (d->paper_push_end ? 4u : 0u) |
+		                 (d->paper_tipping ? 8u : 0u) | (d->paper_carry ? 16u : 0u);
+		h = hs_state_mix(h, 0x6c6574746572u ^ rules); // "letter"
+	}
 	for (int i = 0; i < w->shape_count; ++i)
 		h = shape_checksum(h, &w->shapes[i]);
 	for (int i = 0; i < w->object_count; ++i) {

@@ -152,7 +152,8 @@ void hs_step_spring(hs_world *world) {
 	hs_spring_system *sys = world->spring;
 	long faults = world->counters.numeric_faults;
 	prepare_frame(world, sys);     // §4.2: new objects' geometry, the stylus's velocity
-	hs_spring_rest(world, sys);    // §4.5: touching objects' impulses, then their forces for the frame
+	if (!sys->def.paper_collisions)
+		hs_spring_rest(world, sys); // §4.5: touching objects' impulses, then their forces for the frame
 	move_objects(world, sys);      // §4.2-§4.5: each object alone, on the floor or in the air
 	collide_objects(world, sys);   // §4.5: collisions in the order of time
 	sample_tracker(world, sys);    // §5.1: the tracker daemon's samples of the frame

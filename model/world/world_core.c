@@ -70,7 +70,8 @@ static bool valid_def(const hs_world_def *def) {
 	       (def->stacking == HS_STACKING_PAPER || def->stacking == HS_STACKING_SUPPORT) &&
 	       isfinite(def->release_window_s) && def->release_window_s >= 0.0 &&
 	       def->release_window_s <= HS_MAX_RELEASE_WINDOW &&
-	       (def->release_fit == HS_RELEASE_FIT_MEAN || def->release_fit == HS_RELEASE_FIT_QUADRATIC) &&
+	       (def->release_fit == HS_RELEASE_FIT_MEAN || def->release_fit == HS_RELEASE_FIT_QUADRATIC ||
+	        def->release_fit == HS_RELEASE_FIT_OBJECT) &&
 	       isfinite(def->grasp_close_mm) && def->grasp_close_mm >= 0.0 && def->grasp_close_mm <= 1000.0 &&
 	       isfinite(def->tracking_hold_s) && def->tracking_hold_s >= 0.0 && def->tracking_hold_s <= HS_MAX_TRACKING_HOLD &&
 	       (def->kind == HS_WORLD_HAND || (def->kind == HS_WORLD_SPRING && hs_spring_def_valid(&def->spring)));
