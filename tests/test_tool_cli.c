@@ -260,9 +260,39 @@ static void test_campaign_cli(void **state) {
 	}
 }
 
+// --letter runs the file to a paper's letter: the paper/ catalog's letter file and its default twin
+// with --letter hand1999 land the 12 frames/s throw where the letter's closed form puts it.
+static void test_run_letter(void **state) {
+	(void)state;
+	const char *letter[] = {"run", "scenarios/paper/throw_12fps_default.yaml", "--letter", "hand1999", NULL};
+	result r = tool(letter);
+	assert_int_equal(r.status, 1); // the default file's landing clauses fail under the letter
+	assert_non_null(strstr(r.out, "(at [0.7645, 0, 0.025])"));
+	done(&r);
+	const char *none[] = {"run", "scenarios/paper/throw_12fps_letter.yaml", "--letter", "none", NULL};
+	r = tool(none);
+	assert_int_equal(r.status, 1); // and the letter file's fail under the defaults
+	assert_non_null(strstr(r.out, "(at [1.97377969"));
+	done(&r);
+	const char *const bad[][10] = {{"run", "scenarios/seed_scene.yaml", "--letter", "paper", NULL},
+	                              {"run", "scenarios/seed_scene.yaml", "--letter", NULL},
+	                              {"run", "scenarios/seed_scene.yaml", "--letter", "hand1999", "--save-at", "3", "--state-out",
+	                               "/tmp/x.state", NULL}};
+	const char *said[] = {"--letter needs none, hand1999 or workbench", "--letter needs none, hand1999 or workbench",
+	                      "do not go with --save-at or --resume"};
+	for (int k = 0; k < 3; ++k) {
+		r = tool(bad[k]);
+		assert_int_equal(r.status, 2);
+		if (!strstr(r.err, said[k]))
+			fail_msg("case %d: %s", k, r.err);
+		done(&r);
+	}
+}
+
 int main(void) {
 	const struct CMUnitTest tests[] = {
 	    cmocka_unit_test(test_golden_then_check),
+	    cmocka_unit_test(test_run_letter),
 	    cmocka_unit_test(test_run_filters),
 	    cmocka_unit_test(test_out_to_device),
 	    cmocka_unit_test(test_hand_points),

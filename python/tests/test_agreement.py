@@ -56,6 +56,7 @@ def r_names(path):
     (["--dt", "0.0125"], {"dt": 0.0125}),
     (["--noise-seed", "7"], {"noise_seed": 7}),
     (["--noise-seed", "3", "--phase", "0.5", "--dt", "1/30"], {"noise_seed": 3, "phase": 0.5, "dt": "1/30"}),
+    (["--letter", "hand1999", "--dt", "1/12"], {"model": {"letter": "hand1999"}, "dt": "1/12"}),
 ])
 def test_run_options_match_tool(args, kw):
     path = "scenarios/hand/throw_at_target.yaml"
