@@ -314,9 +314,9 @@ check-resume: all
 # 10 noise seeds, in process: seconds) passes in every cell, and none lacks its robust block;
 # prints the table.
 # The papers' pictures as filmstrips of catalog scenarios (docs/plots.md): build/figures/*.png
-figures: all
+figures: all $(patsubst plots/%.c,$(BUILD)/plots/bin/%,$(wildcard plots/*.c))   # the generators of Figs. 3-4
 	@sh scripts/deps.sh plots
-	@sh scripts/figures.sh $(TOOL) $(BUILD)/figures
+	@sh scripts/figures.sh $(TOOL) $(BUILD)/figures $(BUILD)/plots/bin
 
 check-sweep: all
 	@sh scripts/sweep_catalog.sh $(TOOL) scenarios/hand

@@ -10,7 +10,8 @@ set xlabel 'objects in the scene'
 set ylabel 'frames/s (median; bars: min-max)'
 # a QUICK run says so in the title (make bench passes quick=1)
 qnote = (exists("quick") && quick != 0) ? "\n[QUICK run: fewer batches, rougher figures]" : ""
-set title "Fig. 13 redrawn: frames/s of the full hand-object check (one hand, 20 points + 60 lines)\nthe paper: 17 frames drawn per second at 10 objects, 2 grasped - rendering included, on a machine Experiment 3 does not name\n(the system ran on an SGI Onyx RE2, R8000); here the check alone, no rendering: the ratio is not a like-for-like speed-up".qnote
+set tmargin 7   # the title's four lines (five in a quick run) stay inside the picture
+set title "Fig. 13 redrawn: frames/s of the full hand-object check (one hand, 20 points + 60 lines)\nthe paper: 17 frames drawn per second at 10 objects, 2 grasped, rendering included\n(on a machine Experiment 3 does not name; the system ran on an SGI Onyx RE2, R8000);\nhere the check alone, no rendering: the ratio is not a like-for-like speed-up".qnote
 set key outside right top
 set grid
 set xrange [0.8:1300]

@@ -5,7 +5,8 @@
 # height, and for a single object the angle it has turned since frame 0.
 #
 #   gnuplot -e "traj='build/traj'; out='build/plots'" plots/hand_timeline.gp
-#       the flick (hand/flick_pyramid, Fig. 9): hand_timeline.png/.svg, and every hand/ scenario's
+#       a grasp's approach (hand/push_then_grasp: states 0, 1, 3, 2, 0 as in Fig. 12): hand_timeline.png/.svg,
+#       and every hand/ scenario's
 #       states side by side: hand_timeline_catalog.png/.svg
 #   gnuplot -e "traj='build/traj'; out='build/plots'; scn='hand/two_hands_pass'" plots/hand_timeline.gp
 #       any catalog scenario: hand_timeline_two_hands_pass.png/.svg
@@ -29,7 +30,7 @@ colors = "#1f77b4 #d62728 #2ca02c #ff7f0e #9467bd #8c564b #e377c2 #7f7f7f #bcbd2
 color(i) = word(colors, (i - 1) % 10 + 1)
 
 single = exists("scn")
-list = single ? scn : 'hand/flick_pyramid'
+list = single ? scn : 'hand/push_then_grasp'
 do for [s in list] {
     file = traj.'/'.s.'.csv'
     objs = objects(file)
