@@ -149,6 +149,7 @@ void hs_spring_attach(hs_world *world, hs_spring_system *sys, int i, hs_attach_k
 	}
 	if (sys->candidate == i)
 		sys->candidate = -1;
+	hs_spring_technique_grab(world, sys, i, kind); // a technique without spring (spring_hold.c)
 }
 
 void hs_spring_press(hs_world *world, hs_spring_system *sys) {
@@ -198,4 +199,5 @@ void hs_spring_detach(hs_world *world, hs_spring_system *sys, bool classify, dou
 	sys->attached = -1;
 	sys->attach_kind = HS_ATTACH_NONE;
 	sys->anchor_offset = hs_v3(0.0, 0.0, 0.0);
+	hs_spring_technique_release(world, sys, i, classify); // massless, or sent home (spring_hold.c)
 }
