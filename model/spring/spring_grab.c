@@ -63,7 +63,7 @@ static int catch_pick(const hs_world *world, const hs_spring_system *sys, hs_vec
 	int best = -1;
 	double best_d = INFINITY;
 	for (int i = 0; i < world->object_count; ++i) {
-		if (sys->on_floor[i])
+		if (sys->on_floor[i] || world->bodies[i].mass == 0.0) // (a massless object never flies)
 			continue;
 		double d = hs_spring_geom_distance(&sys->geom[i], world->bodies[i].pos, s);
 		if (d <= sys->def.catch_radius && d < best_d) {
@@ -158,7 +158,8 @@ void hs_spring_press(hs_world *world, hs_spring_system *sys) {
 	hs_vec3 s = sys->stylus;
 	int pick = direct_pick(world, sys, s);
 	if (pick >= 0) { // inside a flying object is catching it too
-		hs_spring_attach(world, sys, pick, sys->on_floor[pick] ? HS_ATTACH_PICK : HS_ATTACH_CATCH);
+		bool flying = !sys->on_floor[pick] && world->bodies[pick].mass > 0.0;
+		hs_spring_attach(world, sys, pick, flying ? HS_ATTACH_CATCH : HS_ATTACH_PICK);
 		return;
 	}
 	int best = catch_pick(world, sys, s);
