@@ -7,6 +7,7 @@
 
 #include "spring_body.h"
 #include "spring_contact.h"
+#include "spring_technique.h"
 #include "world_internal.h"
 
 typedef struct frame_ctx {

@@ -25,6 +25,7 @@
 //    rod's tip moves with the pen and swings as it turns (rod length × angle).
 #include "spring_grab.h"
 #include "spring_params.h"
+#include "spring_technique.h"
 
 // The object the stylus is inside (nearest centre first), -1 when none.
 static int direct_pick(const hs_world *world, const hs_spring_system *sys, hs_vec3 s) {

@@ -1,5 +1,5 @@
-// spring_hold.c — a technique's hold from the grab to the release, and the magnet gesture
-// ("Dynamics in Interaction on the Responsive Workbench" §3); docs/techniques.md.
+// spring_hold.c — a technique's hold from the grab to the release ("Dynamics in Interaction on
+// the Responsive Workbench" §3); docs/techniques.md.
 //
 // Readings fixed here:
 //  - The technique in force at the grab is the hold's for its whole length (a change applies to
@@ -9,27 +9,11 @@
 //    position"): HS_RELEASE_MODE_HAND is the spring model's drop or throw; HS_RELEASE_MODE_RETURN
 //    puts a button release's object back where it was at the grab (for the magnet: before it
 //    came), at rest. A massless object keeps no velocity: it stays where it is let go.
-//  - The magnet (§3: "a fully extended hand bends in the elbow and moves into his working sphere"),
-//    from the tracked stylus alone (the workbench tracks the pen and the head, not the arm): with
-//    nothing on the spring, the arm counts as extended while the stylus is at least magnet_far
-//    from the shoulder point `body`, and the selection candidate then (the pointing ray or the
-//    hand's path, spring_grab.c) is remembered with the time; when the stylus comes within
-//    magnet_near of `body` no more than magnet_within after it was last extended, that object is
-//    brought to the pen (G at the stylus, at rest) and held as the slave. A slow return or a
-//    reach that stops short of the sphere grabs nothing; the button is not used (it releases).
 #include <string.h>
 
-#include "spring_grab.h"
+#include "spring_system.h"
 #include "spring_technique.h"
 #include "world_internal.h"
-
-void hs_spring_technique_init(hs_spring_technique *t) {
-	memset(t, 0, sizeof *t);
-	t->set = hs_default_technique_def();
-	t->hold = HS_TECHNIQUE_SPRING;
-	t->grab_rot = t->grab_obj_rot = t->home_rot = hs_quat_identity();
-	t->magnet_object = -1;
-}
 
 bool hs_spring_massless_allowed(const hs_world *world) { return world->spring && world->spring->def.techniques; }
 
@@ -79,30 +63,4 @@ void hs_spring_technique_release(hs_world *world, hs_spring_system *sys, int i, 
 	if (body->mass == 0.0)
 		body->vel = hs_v3(0.0, 0.0, 0.0);
 	sys->release.velocity = body->vel;
-}
-
-void hs_spring_magnet(hs_world *world, hs_spring_system *sys, double t1) {
-	hs_spring_technique *t = &sys->tech;
-	if (!sys->def.techniques || !t->set.magnet || sys->attached >= 0)
-		return;
-	double reach = hs_distance(sys->stylus, t->set.body);
-	if (reach >= t->set.magnet_far) {
-		if (sys->candidate >= 0) {
-			t->magnet_object = sys->candidate;
-			t->magnet_seen = t1;
-		}
-		return;
-	}
-	if (t->magnet_object < 0 || reach > t->set.magnet_near)
-		return;
-	int i = t->magnet_object;
-	t->magnet_object = -1;
-	if (t1 - t->magnet_seen > t->set.magnet_within)
-		return; // too slow: no gesture
-	hs_body *body = &world->bodies[i];
-	t->home_pos = body->pos;
-	t->home_rot = body->rot;
-	body->pos = sys->stylus; // brought to the pen, at rest
-	body->vel = hs_v3(0.0, 0.0, 0.0);
-	hs_spring_attach(world, sys, i, HS_ATTACH_MAGNET);
 }

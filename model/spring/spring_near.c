@@ -16,6 +16,7 @@
 
 #include "hgrid.h"
 #include "spring_near.h"
+#include "spring_technique.h"
 
 #define HS_NEAR_SKIN 0.5 // of a typical object's width (the grid's cell)
 

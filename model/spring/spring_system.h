@@ -7,7 +7,7 @@
 
 #include "spring_geom.h"
 #include "spring_params.h"
-#include "spring_technique.h"
+#include "spring_technique_state.h"
 #include "tracker.h"
 
 typedef struct hs_spring_system hs_spring_system; // (as spring_world.h names it for the world)

@@ -3,6 +3,7 @@
 #include <string.h>
 
 #include "spring_system.h"
+#include "spring_technique.h"
 #include "world_internal.h"
 
 hs_technique_def hs_default_technique_def(void) {

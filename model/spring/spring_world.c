@@ -6,6 +6,7 @@
 #include "world_internal.h"
 #include "spring_grab.h"
 #include "spring_params.h"
+#include "spring_technique.h"
 
 bool hs_world_springs_enabled(const hs_world *world) { return world && world->spring; }
 

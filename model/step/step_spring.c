@@ -17,6 +17,7 @@
 #include "spring_contact.h"
 #include "spring_grab.h"
 #include "spring_rest.h"
+#include "spring_technique.h"
 #include "step.h"
 #include "world_internal.h"
 
