@@ -253,6 +253,17 @@ check-calls-selftest:
 	@sh tests/call_graph_test.sh $(CC)
 	@sh tests/layout_check_test.sh
 
+# The manipulation techniques beyond the spring (docs/techniques.md): their unit tests, then the
+# catalog scenarios that show them, each run against its golden.
+TECHNIQUE_SCENARIOS := $(addprefix scenarios/spring/,technique_slave.yaml technique_stick.yaml technique_cross_plane.yaml \
+	technique_cross_surface.yaml magnet_gesture.yaml massless_world.yaml)
+.PHONY: check-techniques
+check-techniques: $(TOOL) $(BUILD)/tests/test_spring_technique
+	@$(BUILD)/tests/test_spring_technique
+	@d=$$(mktemp -d) && mkdir -p $$d/s $$d/s/golden && cp $(TECHNIQUE_SCENARIOS) $$d/s/ && \
+	for f in $(TECHNIQUE_SCENARIOS); do cp golden/spring/$$(basename $$f .yaml).csv $$d/s/golden/; done && \
+	$(TOOL) check $$d/s; rc=$$?; rm -rf $$d; exit $$rc
+
 # The tool's files in and out (scenarios/README.md, "How the tool writes files"): outputs that are inputs, /dev/full, planted links, pipes,
 # a full small file system (a tmpfs when root), endless inputs, the campaign lock and a part cut
 # short then resumed; on the plain and the sanitizer builds' tools.

@@ -9,8 +9,8 @@
 #include "expect_table.h"
 #include "scenario_internal.h"
 
-static const char *const attach_names[] = {"none", "pick", "catch", "select", "api", "rod"};
-static const char *const release_names[] = {"none", "drop", "throw"};
+static const char *const attach_names[] = {"none", "pick", "catch", "select", "api", "rod", "magnet"};
+static const char *const release_names[] = {"none", "drop", "throw", "return"};
 
 // "not reached" for a check whose frames the run never got to.
 static bool not_reached(const hs_scenario *s, hs_verdict *v) {
@@ -69,20 +69,22 @@ static bool parse_attached(hs_scenario_parser *p, const hs_fields *f, hs_clause 
 	int kind = hs_yaml_word(v, attach_names, 4); // "api" is no way a scenario attaches
 	if (kind <= HS_ATTACH_NONE && hs_yaml_is_scalar(v) && hs_yaml_scalar_is(v, "rod"))
 		kind = HS_ATTACH_ROD;
+	if (kind <= HS_ATTACH_NONE && hs_yaml_is_scalar(v) && hs_yaml_scalar_is(v, "magnet"))
+		kind = HS_ATTACH_MAGNET;
 	if (kind > HS_ATTACH_NONE) {
 		c->flag = true;
 		c->count = kind;
 	} else if (!(hs_yaml_is_scalar(v) && hs_yaml_bool(&p->y, v, name_of(c), &c->flag))) {
-		return hs_yaml_fail(&p->y, v, "'attached' must be true, false, pick, catch, select or rod, got %s", hs_yaml_got(v).text);
+		return hs_yaml_fail(&p->y, v, "'attached' must be true, false, pick, catch, select, rod or magnet, got %s", hs_yaml_got(v).text);
 	}
 	return true;
 }
 
 static bool parse_released(hs_scenario_parser *p, const hs_fields *f, hs_clause *c) {
 	const yaml_node_t *v = value_of(f, c);
-	int kind = hs_yaml_word(v, release_names, 3);
+	int kind = hs_yaml_word(v, release_names, 4);
 	if (kind < 0)
-		return hs_yaml_fail(&p->y, v, "'released' must be drop, throw or none, got %s", hs_yaml_got(v).text);
+		return hs_yaml_fail(&p->y, v, "'released' must be drop, throw, return or none, got %s", hs_yaml_got(v).text);
 	c->count = kind;
 	return true;
 }

@@ -87,9 +87,10 @@ bool hs_read_duration(hs_scenario_parser *p, const yaml_node_t *node) {
 // ---------------------------------------------------------------------------------------------
 // model.spring: the options of the spring model (workbench paper §4); read into p->spring
 
-enum { SP_INTEGRATOR, SP_FRICTION, SP_SLIDING, SP_RESTITUTION, SP_WALLS, SP_NOISE_SEED, SP_AT_PRESS, SP_COLLISIONS, SP_COUNT };
+enum { SP_INTEGRATOR, SP_FRICTION, SP_SLIDING, SP_RESTITUTION, SP_WALLS, SP_NOISE_SEED, SP_AT_PRESS, SP_COLLISIONS, SP_TECHNIQUES, SP_COUNT };
 static const char *const spring_keys[SP_COUNT] = {"integrator", "friction",   "sliding_friction", "restitution",
-                                                  "walls",      "noise_seed", "spring_at_press",  "collisions"};
+                                                  "walls",      "noise_seed", "spring_at_press",  "collisions",
+                                                  "techniques"};
 static bool read_choice(hs_scenario_parser *p, const yaml_node_t *node, const char *key, const char *first,
                         const char *second, bool *is_second);
 static const char *const integrator_names[] = {"exact", "implicit_euler", "semi_implicit_euler", "rk4"};
@@ -173,6 +174,8 @@ static bool read_spring(hs_scenario_parser *p, const yaml_node_t *node) {
 		p->seeded = p->noise.stylus = true; // the harness draws it: the model adds none (d->noise stays off)
 		p->seed = (unsigned long)seed;
 	}
+	if (f.value[SP_TECHNIQUES] && !hs_yaml_bool(&p->y, f.value[SP_TECHNIQUES], "techniques", &d->techniques))
+		return false; // the techniques beyond the spring and massless objects (docs/techniques.md)
 	// the workbench paper's letter, one rule each (docs/model.md §11): the default first
 	return read_choice(p, f.value[SP_AT_PRESS], "spring_at_press", "rest", "pen_tip", &d->pen_tip_spring) &&
 	       read_choice(p, f.value[SP_COLLISIONS], "collisions", "resting", "paper", &d->paper_collisions);
@@ -636,8 +639,10 @@ static bool read_object_def(hs_scenario_parser *p, const hs_fields *f, const yam
 	if (f->value[O_DENSITY]) {
 		if (!hs_yaml_number(&p->y, f->value[O_DENSITY], "density", &def->density))
 			return false;
-		if (!(def->density > 0.0))
-			return hs_yaml_fail(&p->y, f->value[O_DENSITY], "'density' must be > 0 kg/m^3, got %s",
+		bool massless = def->density == 0.0 && hs_world_springs_enabled(p->s->world) && p->spring.techniques;
+		if (!(def->density > 0.0) && !massless)
+			return hs_yaml_fail(&p->y, f->value[O_DENSITY],
+			                    "'density' must be > 0 kg/m^3, got %s",
 			                    hs_yaml_show(f->value[O_DENSITY]).text);
 	}
 	if (f->value[O_RESTITUTION]) {

@@ -85,4 +85,13 @@ void hs_stylus_drive(hs_world *world, const hs_stylus_script *script, double t, 
 	if (noise)
 		hs_noise_stylus(noise, &position, &rot);
 	hs_world_set_stylus(world, position, rot, button); // the keys were validated: finite, unit
+	if (!script->techniques)
+		return;
+	int k = stylus_key_at(script->keys, script->count, t + STYLUS_TIME_SLOP); // a step, as the button
+	const hs_stylus_key *key = &script->keys[k < 0 ? 0 : k];
+	hs_technique_def def = script->gesture;
+	def.technique = key->technique;
+	def.release = key->release;
+	def.magnet = key->magnet;
+	hs_world_spring_set_technique(world, &def); // validated with the section (model.spring.techniques)
 }

@@ -15,11 +15,17 @@ typedef struct hs_stylus_key {
 	hs_vec3 position; // m
 	hs_quat rot;
 	bool button;
+	// the techniques (docs/techniques.md), a step like the button: what the key leaves out it keeps
+	hs_technique technique;
+	hs_release_mode release;
+	bool magnet;
 } hs_stylus_key;
 
 typedef struct hs_stylus_script {
 	int count;
 	hs_stylus_key *keys; // strictly increasing t
+	bool techniques;     // keys set the techniques (hs_world_spring_set_technique) every frame
+	hs_technique_def gesture; // the magnet's body point and thresholds (the section's `gesture`)
 } hs_stylus_script;
 
 // The stylus at the end of a frame ending at time t: positions linear between keys, orientations

@@ -229,6 +229,11 @@ typedef struct hs_spring_def {
 	// The Responsive Workbench paper's letter, one rule at a time (docs/model.md §11); false by default.
 	bool pen_tip_spring;       ///< true: a press hangs the spring from the pen tip itself, at its length then (§4.4 as written; the default's anchor puts the spring at rest, so nothing jerks at the press)
 	bool paper_collisions;     ///< true: objects touching objects are only impacts ([W] §4.5: "equivalent with geometric intersection"): no resting-contact forces, every impact bounces with the pair's restitution (no 5 cm/s threshold)
+	/// The manipulation techniques beyond the spring (hs_world_spring_set_technique: slave, stick,
+	/// cross-plane, cross-surface, the magnet gesture, the release back home) and massless objects
+	/// (density 0); docs/techniques.md. Their settings and each hold's grab then belong to the
+	/// world's state (saved, loaded, hashed); off (default false), a world saves and hashes as without them.
+	bool techniques;
 } hs_spring_def;
 
 /// Which model a world runs, fixed when it is created: the 1999 paper's hands (hs_world_add_hand,
@@ -303,7 +308,7 @@ typedef struct hs_object_def {
 	hs_quat orientation;      ///< unit quaternion, body → world
 	hs_vec3 velocity;         ///< m/s at t = 0
 	hs_vec3 angular_velocity; ///< rad/s at t = 0, world frame
-	double density;           ///< kg/m³ (spring model: mass = density × volume; default 500)
+	double density;           ///< kg/m³ (spring model: mass = density × volume; default 500); 0 (massless, kinematic: docs/techniques.md) only in a spring world with hs_spring_def.techniques
 	/// Spring model: e in [0, 1] of this object's collisions with objects; a pair takes the smaller
 	/// of its two objects' e (the less elastic decides). Negative (default −1): the model's
 	/// hs_spring_def.restitution.
@@ -629,12 +634,47 @@ typedef enum hs_attach_kind {
 	HS_ATTACH_SELECT, ///< the 'I want this one' candidate, within grab_range
 	HS_ATTACH_API,    ///< hs_world_spring_attach
 	HS_ATTACH_ROD,    ///< the candidate beyond grab_range, within select_range: the 'fishing rod' (§4.4), the anchor fixed in the stylus's frame
+	HS_ATTACH_MAGNET, ///< the magnet gesture (§3; hs_technique_def.magnet): brought to the stylus from afar
 } hs_attach_kind;
+
+/// How a held object follows the stylus (§2.2, §3; docs/techniques.md). Set with
+/// hs_world_spring_set_technique; a hold keeps the technique it began with.
+typedef enum hs_technique {
+	HS_TECHNIQUE_SPRING = 0,    ///< the spring of §4 (default)
+	HS_TECHNIQUE_SLAVE,         ///< no spring: the pen's translation and rotation since the grab applied to the object (it turns about its own G)
+	HS_TECHNIQUE_STICK,         ///< no spring: the object rides rigidly on the pen's ray (it turns about the pen)
+	HS_TECHNIQUE_CROSS_PLANE,   ///< no spring: G follows where the pointing ray meets the plane z = G's z at the grab
+	HS_TECHNIQUE_CROSS_SURFACE, ///< no spring: the object sits where the pointing ray first meets another object or the floor
+} hs_technique;
+
+/// What a button release does besides ending the hold.
+typedef enum hs_release_mode {
+	HS_RELEASE_MODE_HAND = 0, ///< a drop or a throw, by the hand's motion (§4.4; default)
+	HS_RELEASE_MODE_RETURN,   ///< the object is sent back to where it was at the grab, at rest (§3)
+} hs_release_mode;
+
+/// The techniques in force (state of the world, not definition).
+typedef struct hs_technique_def {
+	hs_technique technique;   ///< for the next grab (default HS_TECHNIQUE_SPRING)
+	hs_release_mode release;  ///< for button releases (default HS_RELEASE_MODE_HAND)
+	bool magnet;              ///< the magnet gesture grabs (default false)
+	hs_vec3 body;             ///< m: the user's shoulder, centre of the working sphere (default (0, 0, 0))
+	double magnet_far;        ///< m: the arm counts as extended with the stylus this far from `body` (default 0.6)
+	double magnet_near;       ///< m: the working sphere's radius, < magnet_far (default 0.35)
+	double magnet_within;     ///< s: from extended to inside the working sphere at most this long (default 0.6)
+} hs_technique_def;
+hs_technique_def hs_default_technique_def(void);
+/// Sets the techniques; HS_ERR_INVALID_ARGUMENT unless the world was made with
+/// hs_spring_def.techniques, or for values out of range (non-finite, 0 < magnet_near < magnet_far,
+/// magnet_within > 0, body within HS_MAX_COORDINATE).
+hs_status hs_world_spring_set_technique(hs_world *world, const hs_technique_def *def);
+hs_status hs_world_spring_technique(const hs_world *world, hs_technique_def *out);
 
 /// The stylus and the spring after the last step.
 typedef struct hs_spring_state {
 	hs_object_id attached;      ///< the object on the spring (null handle when none)
 	hs_attach_kind attach_kind;
+	hs_technique technique;     ///< how the attached object follows (HS_TECHNIQUE_SPRING when none); without the spring anchor is the stylus and length, extension and force are 0
 	hs_object_id candidate;     ///< the selection candidate ('I want this one', §3), null when none
 	hs_vec3 stylus;             ///< m
 	hs_quat stylus_orientation;
@@ -697,6 +737,7 @@ typedef enum hs_release_kind {
 	HS_RELEASE_NONE = 0,
 	HS_RELEASE_DROP,  ///< released with the hand at rest: the object keeps its own velocity and falls
 	HS_RELEASE_THROW, ///< released with the hand moving: the object takes the hand's velocity
+	HS_RELEASE_RETURN, ///< HS_RELEASE_MODE_RETURN: sent back to where it was at the grab, at rest
 } hs_release_kind;
 
 typedef struct hs_release {

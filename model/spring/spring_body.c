@@ -7,6 +7,7 @@
 
 #include "spring_body.h"
 #include "spring_contact.h"
+#include "spring_technique.h"
 #include "world_internal.h"
 
 typedef struct frame_ctx {
@@ -85,6 +86,10 @@ static void fly_along_walls(const frame_ctx *fx, hs_spring_segment *sg, const hs
 // One object through one frame: on the floor (friction) or in the air, then the walls.
 static void step_body(const frame_ctx *fx, int i) {
 	hs_spring_system *sys = fx->sys;
+	if (hs_spring_technique_moves(fx->world, sys, i)) { // no spring, no weight: spring_technique.c
+		hs_spring_technique_advance(fx->world, sys, i, fx->dt);
+		return;
+	}
 	hs_body *body = &fx->world->bodies[i];
 	const hs_spring_geom *g = &sys->geom[i];
 	bool attached = i == sys->attached;

@@ -25,6 +25,7 @@
 //    rod's tip moves with the pen and swings as it turns (rod length × angle).
 #include "spring_grab.h"
 #include "spring_params.h"
+#include "spring_technique.h"
 
 // The object the stylus is inside (nearest centre first), -1 when none.
 static int direct_pick(const hs_world *world, const hs_spring_system *sys, hs_vec3 s) {
@@ -63,7 +64,7 @@ static int catch_pick(const hs_world *world, const hs_spring_system *sys, hs_vec
 	int best = -1;
 	double best_d = INFINITY;
 	for (int i = 0; i < world->object_count; ++i) {
-		if (sys->on_floor[i])
+		if (sys->on_floor[i] || world->bodies[i].mass == 0.0) // (a massless object never flies)
 			continue;
 		double d = hs_spring_geom_distance(&sys->geom[i], world->bodies[i].pos, s);
 		if (d <= sys->def.catch_radius && d < best_d) {
@@ -149,6 +150,7 @@ void hs_spring_attach(hs_world *world, hs_spring_system *sys, int i, hs_attach_k
 	}
 	if (sys->candidate == i)
 		sys->candidate = -1;
+	hs_spring_technique_grab(world, sys, i, kind); // a technique without spring (spring_hold.c)
 }
 
 void hs_spring_press(hs_world *world, hs_spring_system *sys) {
@@ -157,7 +159,8 @@ void hs_spring_press(hs_world *world, hs_spring_system *sys) {
 	hs_vec3 s = sys->stylus;
 	int pick = direct_pick(world, sys, s);
 	if (pick >= 0) { // inside a flying object is catching it too
-		hs_spring_attach(world, sys, pick, sys->on_floor[pick] ? HS_ATTACH_PICK : HS_ATTACH_CATCH);
+		bool flying = !sys->on_floor[pick] && world->bodies[pick].mass > 0.0;
+		hs_spring_attach(world, sys, pick, flying ? HS_ATTACH_CATCH : HS_ATTACH_PICK);
 		return;
 	}
 	int best = catch_pick(world, sys, s);
@@ -198,4 +201,5 @@ void hs_spring_detach(hs_world *world, hs_spring_system *sys, bool classify, dou
 	sys->attached = -1;
 	sys->attach_kind = HS_ATTACH_NONE;
 	sys->anchor_offset = hs_v3(0.0, 0.0, 0.0);
+	hs_spring_technique_release(world, sys, i, classify); // massless, or sent home (spring_hold.c)
 }

@@ -16,6 +16,7 @@
 
 #include "hgrid.h"
 #include "spring_near.h"
+#include "spring_technique.h"
 
 #define HS_NEAR_SKIN 0.5 // of a typical object's width (the grid's cell)
 
@@ -137,7 +138,7 @@ static int filter_list(hs_spring_system *sys, const int *list, int n, hs_vec3 lo
 
 // The objects whose boxes may meet lo..hi (a query about object i), from i's neighbour list while
 // the query lies within its skin, else from the grid.
-static int near_box(const hs_world *world, hs_spring_system *sys, int i, hs_vec3 lo, hs_vec3 hi, const int **out) {
+static int near_box_all(const hs_world *world, hs_spring_system *sys, int i, hs_vec3 lo, hs_vec3 hi, const int **out) {
 	*out = sys->near;
 	if (sys->all_pairs) {
 		for (int j = 0; j < world->object_count; ++j)
@@ -157,6 +158,12 @@ static int near_box(const hs_world *world, hs_spring_system *sys, int i, hs_vec3
 		return filter_list(sys, sys->nb + sys->nb_start[i], sys->nb_start[i + 1] - sys->nb_start[i], lo, hi);
 	}
 	return hs_hgrid_query(&sys->grid, lo, hi, sys->near);
+}
+
+// As near_box_all, without the objects the techniques leave out of contacts (spring_technique.c).
+static int near_box(const hs_world *world, hs_spring_system *sys, int i, hs_vec3 lo, hs_vec3 hi, const int **out) {
+	int count = near_box_all(world, sys, i, lo, hi, out);
+	return hs_spring_technique_filter(world, sys, i, sys->near, count);
 }
 
 int hs_spring_near(const hs_world *world, hs_spring_system *sys, int i, double reach, const int **out) {

@@ -94,7 +94,7 @@ hs_spring_params hs_spring_params_of(const hs_spring_def *def, const hs_world *w
 	x0 = x0 > def->rest_length_max ? def->rest_length_max : x0;
 	sp.x0 = x0;
 	sp.k = mass * gravity_magnitude(world) / (HS_HANG_EXTENSION * x0); // §4.2
-	sp.omega = sqrt(sp.k / mass);
+	sp.omega = mass > 0.0 ? sqrt(sp.k / mass) : 0.0; // massless (k = 0): no spring to speak of
 	sp.c = 2.0 * sqrt(sp.k * mass); // §4.3: critical damping
 	return sp;
 }

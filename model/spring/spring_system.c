@@ -101,6 +101,7 @@ hs_spring_system *hs_spring_system_create(const hs_spring_def *def, int max_obje
 	sys->rot = sys->rot_prev = hs_quat_identity();
 	sys->attached = -1;
 	sys->candidate = -1;
+	hs_spring_technique_init(&sys->tech);
 	sys->axis = hs_v3(0.0, 0.0, -1.0);
 	return sys;
 }

@@ -7,6 +7,7 @@
 
 #include "spring_geom.h"
 #include "spring_params.h"
+#include "spring_technique_state.h"
 #include "tracker.h"
 
 typedef struct hs_spring_system hs_spring_system; // (as spring_world.h names it for the world)
@@ -141,6 +142,7 @@ struct hs_spring_system {
 	                       // stylus's frame for the fishing rod (HS_ATTACH_ROD)
 	int candidate; // body index, -1 when none
 	hs_release release;
+	hs_spring_technique tech; // the techniques beyond the spring (spring_technique.c)
 };
 
 // The spring's anchor at the end of the coming frame and at its start: the stylus plus the offset

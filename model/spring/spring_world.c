@@ -6,6 +6,7 @@
 #include "world_internal.h"
 #include "spring_grab.h"
 #include "spring_params.h"
+#include "spring_technique.h"
 
 bool hs_world_springs_enabled(const hs_world *world) { return world && world->spring; }
 
@@ -62,12 +63,15 @@ hs_status hs_world_spring_state(const hs_world *world, hs_spring_state *out) {
 	memset(out, 0, sizeof *out);
 	out->attached = hs_object_handle(world, sys->attached);
 	out->attach_kind = sys->attach_kind;
+	out->technique = sys->attached >= 0 ? (hs_technique)sys->tech.hold : HS_TECHNIQUE_SPRING;
 	out->candidate = hs_object_handle(world, sys->candidate);
 	out->stylus = sys->stylus;
 	out->stylus_orientation = sys->rot;
 	out->button = sys->button;
 	out->stylus_velocity = sys->stylus_velocity;
-	if (sys->attached >= 0) {
+	if (sys->attached >= 0 && sys->tech.hold != HS_TECHNIQUE_SPRING) {
+		out->anchor = sys->stylus; // no spring: nothing stretches
+	} else if (sys->attached >= 0) {
 		const hs_body *body = &world->bodies[sys->attached];
 		hs_spring_params sp = hs_spring_params_of(&sys->def, world, body->mass);
 		out->anchor = hs_spring_anchor(sys);

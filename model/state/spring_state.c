@@ -57,11 +57,11 @@ static const hs_field spring_fields[] = {
     {HS_ONE(S, stylus_velocity, VEC3)},
     // the spring: its object, how it got it, its direction, its anchor offset, the candidate and the last release
     {HS_ONE(S, attached, INT), .lo = -1, .hi = -1, HS_HI_PLUS(S, capacity)},
-    {HS_ONE(S, attach_kind, INT), .lo = HS_ATTACH_NONE, .hi = HS_ATTACH_ROD},
+    {HS_ONE(S, attach_kind, INT), .lo = HS_ATTACH_NONE, .hi = HS_ATTACH_MAGNET},
     {HS_ONE(S, axis, VEC3)},
     {HS_ONE(S, anchor_offset, VEC3)},
     {HS_ONE(S, candidate, INT), .lo = -1, .hi = -1, HS_HI_PLUS(S, capacity)},
-    {HS_ONE(S, release.kind, INT), .lo = HS_RELEASE_NONE, .hi = HS_RELEASE_THROW},
+    {HS_ONE(S, release.kind, INT), .lo = HS_RELEASE_NONE, .hi = HS_RELEASE_RETURN},
     {HS_ONE(S, release.object.index1, U32), .lo = 0, .hi = 0, HS_HI_PLUS(S, capacity)}, // index + 1 (0: none)
     {HS_ONE(S, release.time, F64)},
     {HS_ONE(S, release.velocity, VEC3)},
@@ -79,6 +79,25 @@ static const hs_field spring_fields[] = {
     {HS_ONE(S, tracker.last_event_time, F64)},
     {HS_ONE(S, tracker.motion_starts, LONG), .lo = 0, .hi = LONG_MAX},
     {HS_ONE(S, tracker.motion_ends, LONG), .lo = 0, .hi = LONG_MAX},
+    // the techniques (spring_technique.c), only in worlds made with them (def.techniques): their
+    // settings, the hold's grab and home, the magnet's memory
+    {HS_ONE(S, tech.set.technique, INT), .lo = HS_TECHNIQUE_SPRING, .hi = HS_TECHNIQUE_CROSS_SURFACE, HS_WHEN(S, def.techniques)},
+    {HS_ONE(S, tech.set.release, INT), .lo = HS_RELEASE_MODE_HAND, .hi = HS_RELEASE_MODE_RETURN, HS_WHEN(S, def.techniques)},
+    {HS_ONE(S, tech.set.magnet, BOOL), HS_WHEN(S, def.techniques)},
+    {HS_ONE(S, tech.set.body, VEC3), HS_WHEN(S, def.techniques)},
+    {HS_ONE(S, tech.set.magnet_far, F64), HS_WHEN(S, def.techniques)},
+    {HS_ONE(S, tech.set.magnet_near, F64), HS_WHEN(S, def.techniques)},
+    {HS_ONE(S, tech.set.magnet_within, F64), HS_WHEN(S, def.techniques)},
+    {HS_ONE(S, tech.hold, INT), .lo = HS_TECHNIQUE_SPRING, .hi = HS_TECHNIQUE_CROSS_SURFACE, HS_WHEN(S, def.techniques)},
+    {HS_ONE(S, tech.grab_stylus, VEC3), HS_WHEN(S, def.techniques)},
+    {HS_ONE(S, tech.grab_rot, ROTATION), HS_WHEN(S, def.techniques)},
+    {HS_ONE(S, tech.grab_pos, VEC3), HS_WHEN(S, def.techniques)},
+    {HS_ONE(S, tech.grab_obj_rot, ROTATION), HS_WHEN(S, def.techniques)},
+    {HS_ONE(S, tech.plane_offset, VEC3), HS_WHEN(S, def.techniques)},
+    {HS_ONE(S, tech.home_pos, VEC3), HS_WHEN(S, def.techniques)},
+    {HS_ONE(S, tech.home_rot, ROTATION), HS_WHEN(S, def.techniques)},
+    {HS_ONE(S, tech.magnet_object, INT), .lo = -1, .hi = -1, HS_HI_PLUS(S, capacity), HS_WHEN(S, def.techniques)},
+    {HS_ONE(S, tech.magnet_seen, F64), HS_WHEN(S, def.techniques)},
     // the touches' warm-start forces: every slot, so the size depends on the definitions only;
     // those beyond the count are zero (CHECK refuses others), and a hash leaves them out: a hash
     // every frame of a 1000-object box mixed 8000 slots for its touches (+8 % instructions a
@@ -98,6 +117,8 @@ static uint64_t def_checksum(const hs_spring_def *d) {
 	uint64_t h = hs_state_mix(0x5350524E47ull, (uint64_t)d->integrator); // "SPRNG"
 	h = hs_state_mix(h, d->walls.enabled ? 1u : 0u);
 	h = hs_state_mix(h, (uint64_t)(int64_t)d->tracker_window);
+	if (d->techniques) // (mixed only when on: the checksum of a world without them is as it was)
+		h = hs_state_mix(h, 0x54454348ull); // "TECH"
 	for (size_t i = 0; i < sizeof numbers / sizeof numbers[0]; ++i)
 		h = hs_state_mix_f64(h, numbers[i]);
 	if (d->pen_tip_spring || d->paper_collisions) // the letter's rules: only when set (older checksums stay)

@@ -17,6 +17,7 @@
 #include "spring_contact.h"
 #include "spring_grab.h"
 #include "spring_rest.h"
+#include "spring_technique.h"
 #include "step.h"
 #include "world_internal.h"
 
@@ -71,6 +72,7 @@ static void prepare_frame(hs_world *world, hs_spring_system *sys) {
 		sys->geom[i] = hs_spring_geom_of(world, &world->bodies[i]);
 	sys->geom_count = n;
 	check_params_cache(world, sys);
+	hs_spring_technique_prepare(world, sys); // massless objects and kinematic holds meet no one
 	sys->stylus_velocity = hs_scale(hs_sub(sys->stylus, sys->stylus_prev), 1.0 / world->def.dt);
 }
 
@@ -127,6 +129,7 @@ static void sample_tracker(hs_world *world, hs_spring_system *sys) {
 static void press_and_release(hs_world *world, hs_spring_system *sys) {
 	double t1 = (double)(world->frame + 1) * world->def.dt;
 	hs_spring_update_candidate(world, sys);
+	hs_spring_magnet(world, sys, t1); // §3: the magnet gesture (spring_hold.c)
 	if (sys->button && !sys->button_prev)
 		hs_spring_press(world, sys);
 	else if (sys->button && sys->attached < 0) // held in the object's path: it is caught on arrival

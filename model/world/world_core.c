@@ -13,6 +13,7 @@
 #include "part_box.h"
 #include "part_reach.h"
 #include "spring_params.h"
+#include "spring_technique.h"
 #include "spring_system.h"
 #include "world_internal.h"
 
@@ -331,7 +332,8 @@ hs_object_id hs_world_add_object(hs_world *world, const hs_object_def *def, hs_s
 	hs_object_id none = {0};
 	if (!world || !def || hs_shape_index(world, def->shape) < 0 || !hs_within(def->position, HS_MAX_COORDINATE) ||
 	    !hs_within(def->velocity, HS_MAX_SPEED) || !hs_within(def->angular_velocity, HS_MAX_SPEED) ||
-	    !hs_quat_is_unit(def->orientation) || !isfinite(def->density) || !(def->density > 0.0) ||
+	    !hs_quat_is_unit(def->orientation) || !isfinite(def->density) ||
+	    !(def->density > 0.0 || (def->density == 0.0 && hs_spring_massless_allowed(world))) ||
 	    !(def->restitution <= 1.0)) {
 		hs_set_status(status, HS_ERR_INVALID_ARGUMENT);
 		return none;
