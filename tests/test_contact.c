@@ -566,7 +566,7 @@ static void test_release_options_refused(void **state) {
 		assert_null(hs_world_create(&def, &st));
 		assert_int_equal(st, HS_ERR_INVALID_ARGUMENT);
 	}
-	const int fits[] = {-1, 2};
+	const int fits[] = {-1, 3}; // below MEAN and past OBJECT
 	for (int k = 0; k < 2; ++k) {
 		hs_world_def def = hs_default_world_def();
 		def.release_fit = (hs_release_fit)fits[k];
