@@ -325,7 +325,7 @@ check-resume: all
 # 10 noise seeds, in process: seconds) passes in every cell, and none lacks its robust block;
 # prints the table.
 # The papers' pictures as filmstrips of catalog scenarios (docs/plots.md): build/figures/*.png
-figures: all $(patsubst plots/%.c,$(BUILD)/plots/bin/%,$(wildcard plots/*.c))   # the generators of Figs. 3-4
+figures: all $(patsubst plots/%.c,$(BUILD)/plots/bin/%,$(wildcard plots/*.c))   # the generators of Figs. 3-6
 	@sh scripts/deps.sh plots
 	@sh scripts/figures.sh $(TOOL) $(BUILD)/figures $(BUILD)/plots/bin
 

@@ -1,8 +1,8 @@
 #!/bin/sh
 # figures.sh — `make figures`: the papers' pictures drawn from catalog scenarios (docs/plots.md):
 # each a filmstrip (`handspring view --strip`) of the frames nearest the times given.
-# Figs. 3 and 4 of the 1999 paper are drawn by gnuplot from plots/paper_push.c and
-# plots/paper_normals.c (run from BINDIR, the plots' generators), which check the model's numbers.
+# Figs. 3-6 of the 1999 paper are drawn by gnuplot from plots/paper_push.c, plots/paper_normals.c and
+# plots/paper_hull.c (run from BINDIR, the plots' generators), which check the model's numbers.
 #   figures.sh TOOL OUTDIR [BINDIR]
 set -eu
 tool=$1
@@ -18,11 +18,14 @@ fig() { # name, scenario, times, what it shows
 }
 # the 1999 virtual-hand paper ("A Model for Manipulation of Objects with Virtual Hand in 3D Virtual Space")
 # Fig. 1 (the hand's check points) is hand_wrist_frame.png, below; Figs. 5-6 (the floor's rules)
-# as filmstrips: on two floor vertices a box short of its balance point settles back, one past
-# it tips over, and a pyramid set on its apex (one vertex) tips onto a face
-fig 1999_fig5_6_settles      box_tip_short                 0,0.2,0.35,1  "Figs. 5-6 (2): on an edge, G' short of it: turns back onto its base"
-fig 1999_fig5_6_tips         box_tip_past                  0,0.3,0.5,1   "Figs. 5-6 (2): on an edge, G' past it: tips over onto its side"
-fig 1999_fig6_apex           pyramid_apex                  0,0.15,0.2,1  "Fig. 6 (1): on one vertex: turns about it (rule (1)) down onto a face"
+# are drawn from the model's state by paper_hull (below); beside them, filmstrips of scenarios it
+# draws: on two floor vertices a box short of its balance point settles back, one past it tips
+# over, a pyramid set on its apex (one vertex) tips onto a face, and an L-block stood on the end of
+# its upright (four vertices, G' outside) falls over onto the ends of both arms
+fig 1999_fig5_6_settles      box_tip_short                 0,0.2,0.35,1  "Figs. 5-6 (2), filmstrip: on an edge, G' short of it: turns back onto its base"
+fig 1999_fig5_6_tips         box_tip_past                  0,0.3,0.5,1   "Figs. 5-6 (2), filmstrip: on an edge, G' past it: tips over onto its side"
+fig 1999_fig6_apex           pyramid_apex                  0,0.15,0.2,1  "Fig. 6 (1), filmstrip: on one vertex: turns about it (rule (1)) down onto a face"
+fig 1999_fig6_3_l_block      l_block_on_end                0,0.15,0.25,1 "Fig. 6 (3), filmstrip: on four vertices, G' outside: falls about the nearest hull edge"
 fig 1999_fig7b_scene         hand/seed_scene_hand          0,1,2,3.5     "Fig. 7b: the scene, ten cubes, a hand grasps two"
 fig 1999_fig8_manipulation   hand/grasp_polyhedron         0.4,0.8,1.6,2.6 "Fig. 8: the hand picks up, carries and turns a hexagonal prism"
 fig 1999_fig8_polyhedra      polyhedra_drop                0,0.4,0.8,3   "Fig. 8 (objects): arbitrary polyhedra fall, tip and rest"
@@ -46,16 +49,19 @@ rm -f "$out/hand_timeline_push_then_grasp.svg"
 mv "$out/hand_timeline_push_then_grasp.png" "$out/1999_fig12_states.png"
 n=$((n + 1))
 printf 'figures: %-34s %s\n' "1999_fig12_states.png" "Fig. 12: contact states 0, 1, 3, 2, 0 of hand/push_then_grasp"
-# Figs. 3 and 4: the push split into T and R at a real contact; the normals and an edge's pseudo-normal
-for g in paper_push paper_normals; do
+# Figs. 3-6: the push split into T and R at a real contact; the normals and an edge's pseudo-normal;
+# the floor vertices' hull and G', each of §4.2's cases with the model's next frame checked
+for g in paper_push paper_normals paper_hull; do
 	"$bin/$g" "$out" > /dev/null || { echo "figures: $g failed" >&2; exit 1; }
 	gnuplot -e "out='$out'" "plots/$g.gp"
 done
 mv "$out/paper_push.png" "$out/1999_fig3_push.png"
 mv "$out/paper_normals.png" "$out/1999_fig4_normals.png"
-n=$((n + 2))
+mv "$out/paper_hull.png" "$out/1999_fig5_6_hull.png"
+n=$((n + 3))
 printf 'figures: %-34s %s\n' "1999_fig3_push.png" "Fig. 3: a push at one point, CB = T + R (eq. 1-2), checked against the model"
 printf 'figures: %-34s %s\n' "1999_fig4_normals.png" "Fig. 4: contact normals and an edge's pseudo-normal; a grasp"
+printf 'figures: %-34s %s\n' "1999_fig5_6_hull.png" "Figs. 5-6: floor vertices, hull, G'; stable, rules (1), (2)-a, (2)-b, (3), checked against the model"
 # the default hand's check points in the wrist frame (handspring hand): top and side views, for
 # scenarios/README.md (writing a hand scenario needs no hidden geometry)
 "$tool" hand --posture open > "$out/hand_open.csv"
