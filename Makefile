@@ -276,6 +276,7 @@ PY_VENV := $(BUILD)/python-venv
 check-bench-cmd: all
 	@sh tests/bench_cmd.sh $(TOOL)
 	@$(MAKE) --no-print-directory check-bench-floor
+	@$(MAKE) --no-print-directory check-bench-fig13
 
 check-python: $(SOLIBS) $(TOOL)
 	@sh scripts/deps.sh python
@@ -397,11 +398,14 @@ bench: all
 
 # the honest frame against the least code that finds its contacts (bench/floor.c): CPU time in
 # interleaved pairs, instructions by callgrind; check-bench-floor (in check-bench-cmd): the same contacts
-.PHONY: bench-floor check-bench-floor
+.PHONY: bench-floor check-bench-floor check-bench-fig13
 bench-floor: all
 	@$(MAKE) --no-print-directory -f Makefile -f bench/bench.mk bench-floor-run
 check-bench-floor: all
 	@$(MAKE) --no-print-directory -f Makefile -f bench/bench.mk check-bench-floor-run
+# the frame-rate sweep's grasp poses hold what each row claims (bench/fig13.c; in check-bench-cmd)
+check-bench-fig13: all
+	@$(MAKE) --no-print-directory -f Makefile -f bench/bench.mk check-bench-fig13-run
 
 # callgrind's instructions per frame of the honest, moving-glove and joint-driven frames (bench/bench.mk)
 .PHONY: bench-instr
