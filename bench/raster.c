@@ -30,9 +30,10 @@ bench_raster *bench_raster_create(void) {
 		fprintf(stderr, "bench: no memory for a %dx%d image\n", BENCH_RASTER_W, BENCH_RASTER_H);
 		exit(2);
 	}
-	// over the seed row (y = 0.3 m), from the front and above, looking down at it
-	hs_vec3 target = hs_v3(0.0, 0.3, 0.03);
-	r->eye = hs_v3(0.0, -0.05, 0.35);
+	// the seed row (y = 0.3 m) from the front and above, the hands' whole loop in view (up to
+	// 0.2 m above a grasp, 0.5 m for a hand that grasps nothing)
+	hs_vec3 target = hs_v3(0.0, 0.3, 0.2);
+	r->eye = hs_v3(0.0, -0.6, 0.6);
 	r->forward = hs_normalize(hs_sub(target, r->eye));
 	r->right = hs_normalize(hs_cross(r->forward, hs_v3(0.0, 0.0, 1.0)));
 	r->up = hs_cross(r->right, r->forward);
