@@ -271,7 +271,8 @@ PYTHON  ?= /usr/bin/python3
 PY_VENV := $(BUILD)/python-venv
 .PHONY: check-python
 # `handspring bench` (docs/tool.md): its report, the frames it steps, a missing file, bad values,
-# --instr with and without valgrind (tests/bench_cmd.sh; no timing is asserted; a few seconds)
+# --instr with and without valgrind (tests/bench_cmd.sh; no timing is asserted; a few seconds);
+# then the bench's floor and its Fig. 13 rows' grasps (check-bench-floor, check-bench-fig13)
 .PHONY: check-bench-cmd
 check-bench-cmd: all
 	@sh tests/bench_cmd.sh $(TOOL)
