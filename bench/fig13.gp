@@ -27,6 +27,7 @@ set title "Fig. 13 redrawn: lines, the hand-object check alone (4 touched: 2 han
 set key outside center bottom horizontal maxcols 3 spacing 1.1
 set grid
 set xrange [0.8:1300]
+set yrange [10:*]   # the paper's 17 frames/s is the lowest line; an absent series stays out
 touched = '0 1 2 4'
 label(t) = t eq '4' ? sprintf('cubes, %s touched (2 hands)', t) : sprintf('cubes, %s touched', t)
 # one series: the rows of a shape and a touched count (awk keeps gnuplot's lines unbroken; an
