@@ -282,11 +282,13 @@ PYTHON  ?= /usr/bin/python3
 PY_VENV := $(BUILD)/python-venv
 .PHONY: check-python
 # `handspring bench` (docs/tool.md): its report, the frames it steps, a missing file, bad values,
-# --instr with and without valgrind (tests/bench_cmd.sh; no timing is asserted; a few seconds)
+# --instr with and without valgrind (tests/bench_cmd.sh; no timing is asserted; a few seconds);
+# then the bench's floor and its Fig. 13 rows' grasps (check-bench-floor, check-bench-fig13)
 .PHONY: check-bench-cmd
 check-bench-cmd: all
 	@sh tests/bench_cmd.sh $(TOOL)
 	@$(MAKE) --no-print-directory check-bench-floor
+	@$(MAKE) --no-print-directory check-bench-fig13
 
 check-python: $(SOLIBS) $(TOOL)
 	@sh scripts/deps.sh python
@@ -408,11 +410,14 @@ bench: all
 
 # the honest frame against the least code that finds its contacts (bench/floor.c): CPU time in
 # interleaved pairs, instructions by callgrind; check-bench-floor (in check-bench-cmd): the same contacts
-.PHONY: bench-floor check-bench-floor
+.PHONY: bench-floor check-bench-floor check-bench-fig13
 bench-floor: all
 	@$(MAKE) --no-print-directory -f Makefile -f bench/bench.mk bench-floor-run
 check-bench-floor: all
 	@$(MAKE) --no-print-directory -f Makefile -f bench/bench.mk check-bench-floor-run
+# the frame-rate sweep's grasp poses hold what each row claims (bench/fig13.c; in check-bench-cmd)
+check-bench-fig13: all
+	@$(MAKE) --no-print-directory -f Makefile -f bench/bench.mk check-bench-fig13-run
 
 # callgrind's instructions per frame of the honest, moving-glove and joint-driven frames (bench/bench.mk)
 .PHONY: bench-instr

@@ -62,6 +62,10 @@ bool bench_have_valgrind(void);
 /// valgrind or when the run failed. Each `args` is run once per process.
 double bench_callgrind(const bench_opts *opts, const char *args, const char *toggle);
 
+/// The inclusive instructions of function `fn` in the callgrind run bench_callgrind made for
+/// `args` (read with callgrind_annotate); −1 when that run or the function is missing.
+double bench_callgrind_fn(const bench_opts *opts, const char *args, const char *fn);
+
 /// Median of n values (sorts a copy; n ≤ 64).
 double bench_median(const double *values, int n);
 
@@ -264,6 +268,31 @@ void bench_honest_readings(const uint8_t held[HS_GLOVE_SENSORS], uint64_t seed,
 /// wrist at the start of the loop and the squeezed posture the noise is drawn around. False when
 /// the pose search found no grasp.
 bool bench_honest_hand(int touched, hs_vec3 centroid, hs_vec3 *wrist, uint8_t held[HS_GLOVE_SENSORS]);
+
+// ---------------------------------------------------------------------------------------------
+/// Fig. 13 at 10 objects (bench/fig13.c): 0, 1, 2, 4 grasped, the check alone and the check plus
+/// drawing the scene (bench/raster.h), instructions and stages by callgrind.
+void bench_fig13(const bench_opts *opts, bench_shared *shared); // section `fig13`
+/// The frame-rate sweep's cube scene (bench/frame_rate.c) with `objects` cubes, `touched` 0, 1, 2 or 4
+/// of them grasped (4: two hands, one per pair), skip_work on, the pose the sweep found; drawn every
+/// frame when `draw`. NULL when no grasp pose was found.
+bench_scene *bench_fig13_scene(int objects, int touched, bool draw);
+/// A scene whose hands hover 0.3 m above the `touched` cubes they claim (the grasp check must catch it).
+bench_scene *bench_fig13_false_scene(int touched);
+/// The fewest touched objects GRASP on any frame stepped, frames with one lost, frames stepped, and
+/// untouched objects now touched or awake.
+void bench_fig13_held(const bench_scene *scene, int *grasped_min, long *lost, long *frames, int *stray);
+/// Steps `frames` more frames and gives, per frame, the objects tested against a hand after the
+/// bounding-volume check (hs_world_counters.hand_tests) and the contacts found (hs_world_contacts).
+void bench_fig13_work(bench_scene *scene, long frames, double *tests, double *contacts);
+/// The scene's last drawn frame as a PPM image; false when it is not drawn or cannot be written.
+bool bench_fig13_picture(const bench_scene *scene, const char *path);
+/// `--profile-fig13 TOUCHED,FRAMES[,draw|alone]`: one row alone, drawn, or its touched cubes without
+/// the other eight (callgrind --toggle-collect=fr_profiled_frames).
+void bench_profile_fig13(const char *spec);
+/// `--fig13-check`: 0 when every cube row of the sweep grasps, on every frame of two loops, all it
+/// claims (and a hovering hand is caught), else 1.
+int bench_fig13_check(void);
 
 
 #endif

@@ -10,6 +10,9 @@
 //                                 --toggle-collect=fr_profiled_frames; after --deadband N, the measured
 //                                 world's glove deadband is N sensor units: 0, the moving-glove frame)
 //   hs_bench --floor-check           (the floor finds handspring's contacts frame by frame: bench/floor.c)
+//   hs_bench --fig13-check           (every cube row of the frame-rate sweep grasps what it claims: bench/fig13.c)
+//   hs_bench --profile-fig13 T,N[,draw|alone] (N frames of the 10-cube row with T grasped; `draw`: drawn,
+//                                 `alone`: the T cubes alone; callgrind --toggle-collect=fr_profiled_frames)
 //   hs_bench --profile-floor N       (N frames of the floor alone; callgrind --toggle-collect=floor_profiled_frames)
 //   hs_bench --profile-race ENGINE,N (N frames of the race's ENGINE, ode or mujoco, at its matched radius;
 //                                 callgrind --toggle-collect=race_profiled_frames)
@@ -39,6 +42,7 @@ typedef struct bench_section {
 
 static const bench_section sections[] = {
     {"frame_rate", "items 1-2: Fig. 13 frame rate, skipping", bench_frame_rate},
+    {"fig13", "Fig. 13 at 10 cubes: 0/1/2/4 grasped, the check alone and with drawing", bench_fig13},
     {"accuracy", "item 3: speed against error", bench_accuracy},
     {"throw", "item 4: throw fidelity across frame rates", bench_throw},
     {"peers", "item 5: ODE and MuJoCo on the seed scene", bench_peers},
@@ -100,6 +104,11 @@ int main(int argc, char **argv) {
 			return 0;
 		} else if (strcmp(argv[i], "--floor-check") == 0) {
 			return bench_floor_check();
+		} else if (strcmp(argv[i], "--fig13-check") == 0) {
+			return bench_fig13_check();
+		} else if (strcmp(argv[i], "--profile-fig13") == 0 && i + 1 < argc) {
+			bench_profile_fig13(argv[i + 1]);
+			return 0;
 		} else if (strcmp(argv[i], "--profile-race") == 0 && i + 1 < argc) {
 			bench_profile_race(argv[i + 1]);
 			return 0;

@@ -144,20 +144,26 @@ static double callgrind_total(const char *path) {
 
 bool bench_have_valgrind(void) { return system("command -v valgrind > /dev/null 2>&1") == 0; }
 
+// Where the run for `args` writes: out_dir/cg + the flags' letters and digits (+ .cg, .txt, .log).
+static void cg_out(const bench_opts *opts, const char *args, char *out, size_t size) {
+	char name[96];
+	snprintf(name, sizeof name, "%s", args);
+	for (char *c = name; *c; ++c)
+		if (!((*c >= 'a' && *c <= 'z') || (*c >= '0' && *c <= '9')))
+			*c = '_';
+	snprintf(out, size, "%s/cg%s", opts->out_dir, name);
+}
+
 double bench_callgrind(const bench_opts *opts, const char *args, const char *toggle) {
 	for (int i = 0; i < cg_cached; ++i)
 		if (strcmp(cg_cache[i].args, args) == 0)
 			return cg_cache[i].instr;
-	char self[512], name[96], cmd[8192], out[768];
+	char self[512], cmd[8192], out[768];
 	ssize_t n = readlink("/proc/self/exe", self, sizeof self - 1);
 	if (n <= 0 || !bench_have_valgrind())
 		return -1.0;
 	self[n] = 0;
-	snprintf(name, sizeof name, "%s", args); // the file name: the flags' letters and digits
-	for (char *c = name; *c; ++c)
-		if (!((*c >= 'a' && *c <= 'z') || (*c >= '0' && *c <= '9')))
-			*c = '_';
-	snprintf(out, sizeof out, "%s/cg%s", opts->out_dir, name);
+	cg_out(opts, args, out, sizeof out);
 	int len = snprintf(cmd, sizeof cmd,
 	         "valgrind --tool=callgrind --callgrind-out-file='%s.cg' --toggle-collect=%s '%s' --out '%s' %s > '%s.txt' 2> "
 	         "'%s.log'",
@@ -173,6 +179,30 @@ double bench_callgrind(const bench_opts *opts, const char *args, const char *tog
 		cg_cache[cg_cached++].instr = total;
 	}
 	return total;
+}
+
+double bench_callgrind_fn(const bench_opts *opts, const char *args, const char *fn) {
+	char out[768], cmd[1024], line[1024], key[128];
+	cg_out(opts, args, out, sizeof out);
+	// a symbol's own line ends "file:fn [binary]"; the lines of code inlined into it have no brackets
+	snprintf(key, sizeof key, ":%s [", fn);
+	int len = snprintf(cmd, sizeof cmd, "callgrind_annotate --inclusive=yes --threshold=100 '%s.cg' 2>/dev/null", out);
+	if (len < 0 || (size_t)len >= sizeof cmd)
+		return -1.0;
+	FILE *p = popen(cmd, "r");
+	if (!p)
+		return -1.0;
+	double found = -1.0;
+	while (fgets(line, sizeof line, p))
+		if (found < 0.0 && strstr(line, key)) {
+			double v = 0.0; // "12,345,678 (12.3%)  file:fn [binary]"
+			for (const char *c = line; *c == ' ' || *c == ',' || (*c >= '0' && *c <= '9'); ++c)
+				if (*c >= '0' && *c <= '9')
+					v = 10.0 * v + (*c - '0');
+			found = v;
+		}
+	pclose(p);
+	return found;
 }
 
 void bench_progress(const char *fmt, ...) {
