@@ -63,7 +63,8 @@ static void test_off_by_default(void **state) {
 	assert_int_equal(hs_world_spring_set_technique(w, &d), HS_ERR_INVALID_ARGUMENT);
 	hs_status st;
 	hs_object_def od = hs_default_object_def();
-	od.shape = hs_world_add_shape(w, hs_shape_box(hs_v3(0.1, 0.1, 0.1), &st), &st);
+	hs_shape *box = hs_shape_box(hs_v3(0.1, 0.1, 0.1), &st); // the world copies it
+	od.shape = hs_world_add_shape(w, box, &st);
 	od.density = 0.0;
 	hs_world_add_object(w, &od, &st);
 	assert_int_equal(st, HS_ERR_INVALID_ARGUMENT);
@@ -75,10 +76,11 @@ static void test_off_by_default(void **state) {
 	d = hs_default_technique_def();
 	d.technique = (hs_technique)7;
 	assert_int_equal(hs_world_spring_set_technique(w, &d), HS_ERR_INVALID_ARGUMENT);
-	od.shape = hs_world_add_shape(w, hs_shape_box(hs_v3(0.1, 0.1, 0.1), &st), &st);
+	od.shape = hs_world_add_shape(w, box, &st);
 	hs_world_add_object(w, &od, &st);
 	assert_int_equal(st, HS_OK);
 	hs_world_destroy(w);
+	hs_shape_destroy(box);
 }
 
 // Slave: the pen's translation since the grab, and its turn about the object's own G.
