@@ -148,8 +148,7 @@ void hs_world_destroy(hs_world *world) {
 	hs_spring_system_destroy(world->spring);
 	for (int i = 0; i < world->shape_count; ++i) {
 		free_shape_arrays(&world->shapes[i]);
-		free(world->face_edges[i].first);
-		free(world->face_edges[i].edges);
+		hs_face_edges_free(&world->face_edges[i]);
 		hs_face_tree_free(&world->face_trees[i]);
 	}
 	free(world->shapes);
@@ -202,35 +201,6 @@ static bool copy_shape(hs_shape *dst, const hs_shape *src) {
 		free_shape_arrays(dst);
 		return false;
 	}
-	return true;
-}
-
-static bool face_in_range(const hs_shape *shape, int f) { return f >= 0 && f < shape->face_count; }
-
-// The shape's edges listed by face (hs_face_edges): counted, then filled in edge order.
-static bool index_face_edges(const hs_shape *shape, hs_face_edges *out) {
-	out->first = calloc((size_t)shape->face_count + 1, sizeof *out->first);
-	out->edges = malloc((size_t)(2 * shape->edge_count > 0 ? 2 * shape->edge_count : 1) * sizeof *out->edges);
-	if (!out->first || !out->edges) {
-		free(out->first);
-		free(out->edges);
-		out->first = out->edges = NULL;
-		return false;
-	}
-	for (int e = 0; e < shape->edge_count; ++e)
-		for (int k = 0; k < 2; ++k)
-			if (face_in_range(shape, shape->edges[e].faces[k]))
-				out->first[shape->edges[e].faces[k] + 1]++;
-	for (int f = 0; f < shape->face_count; ++f)
-		out->first[f + 1] += out->first[f];
-	int *fill = out->first; // advanced per face while filling, then moved back
-	for (int e = 0; e < shape->edge_count; ++e)
-		for (int k = 0; k < 2; ++k)
-			if (face_in_range(shape, shape->edges[e].faces[k]))
-				out->edges[fill[shape->edges[e].faces[k]]++] = e;
-	for (int f = shape->face_count; f > 0; --f)
-		fill[f] = fill[f - 1];
-	fill[0] = 0;
 	return true;
 }
 
@@ -300,11 +270,9 @@ hs_shape_id hs_world_add_shape(hs_world *world, const hs_shape *shape, hs_status
 		world->shape_grow_reach[world->shape_count] =
 		    fmax(world->shape_grow_reach[world->shape_count], copy->parts[p].grow_reach);
 	}
-	if (!index_face_edges(copy, &world->face_edges[world->shape_count]) ||
+	if (!hs_face_edges_build(&world->face_edges[world->shape_count], copy) ||
 	    !hs_face_tree_build(&world->face_trees[world->shape_count], copy)) {
-		free(world->face_edges[world->shape_count].first);
-		free(world->face_edges[world->shape_count].edges);
-		world->face_edges[world->shape_count] = (hs_face_edges){0};
+		hs_face_edges_free(&world->face_edges[world->shape_count]);
 		free_shape_arrays(copy);
 		hs_set_status(status, HS_ERR_NO_MEMORY);
 		return none;

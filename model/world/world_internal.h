@@ -9,6 +9,7 @@
 
 #include "body.h"
 #include "hand_internal.h"
+#include "face_edges.h"
 #include "face_tree.h"
 #include "handspring.h"
 #include "hgrid.h"
@@ -19,13 +20,6 @@
 // from model and state; invalidated or rebuilt after a load) or SCRATCH (per call, never read
 // before it is written in the same step). Work counters other than numeric_faults are outside
 // the state: they count what was done, not what will happen.
-// A shape's edges by face: face f's are edges[first[f] .. first[f + 1]), in index order, so the
-// edge between two faces is found among one face's few edges, not by a scan of every edge.
-typedef struct hs_face_edges {
-	int *first; // face_count + 1
-	int *edges; // 2 x edge_count
-} hs_face_edges;
-
 // An object's world box (hs_part_world_box) at two poses, the older replaced first.
 typedef struct hs_box_memo {
 	hs_vec3 pos[2], centre[2], half[2];
