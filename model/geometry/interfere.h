@@ -14,16 +14,7 @@
 
 // Object i's world box at (pos, rot), from its memo when it was made at that pose's bits.
 static HS_FORCE_INLINE int memo_box(const hs_world *world, int i, hs_vec3 pos, hs_quat rot) {
-	hs_box_memo *m = &world->box_memo[i];
-	for (int k = 0; k < m->filled; ++k)
-		if (memcmp(&m->pos[k], &pos, sizeof pos) == 0 && memcmp(&m->rot[k], &rot, sizeof rot) == 0)
-			return k;
-	int k = m->filled < 2 ? m->filled++ : m->older;
-	m->older = (uint8_t)(1 - k);
-	m->pos[k] = pos;
-	m->rot[k] = rot;
-	hs_part_world_box(&world->shapes[world->bodies[i].shape], 0, pos, rot, &m->centre[k], &m->half[k]);
-	return k;
+	return hs_box_memo_find(&world->box_memo[i], &world->shapes[world->bodies[i].shape], pos, rot);
 }
 
 // The bounding spheres (radii summing to r) of an object at pos and object b lie apart: no overlap.

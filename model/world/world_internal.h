@@ -8,6 +8,7 @@
 #include <stdint.h>
 
 #include "body.h"
+#include "box_memo.h"
 #include "hand_internal.h"
 #include "face_edges.h"
 #include "face_tree.h"
@@ -20,13 +21,6 @@
 // from model and state; invalidated or rebuilt after a load) or SCRATCH (per call, never read
 // before it is written in the same step). Work counters other than numeric_faults are outside
 // the state: they count what was done, not what will happen.
-// An object's world box (hs_part_world_box) at two poses, the older replaced first.
-typedef struct hs_box_memo {
-	hs_vec3 pos[2], centre[2], half[2];
-	hs_quat rot[2];
-	uint8_t filled, older; // entries made (0..2), and the one to replace next
-} hs_box_memo;
-
 // The resting objects near a box (broadphase.c, hs_grid_near): a neighbour list with a skin.
 #define HS_NEAR_BOXES 4      // lists kept at once (a hand and the objects it holds: one)
 #define HS_NEAR_LISTED 64    // objects a list holds at most (more: the grid answers alone)
@@ -110,8 +104,7 @@ struct hs_world {
 	int stale_count;
 	bool all_stale;
 	// CACHE: the world boxes of single-part objects at their last two poses tested for interference
-	// (manipulate.c): a held object's box is made once a frame, not once per neighbour, and a
-	// resting neighbour's once. Keyed by the pose's bits, so never stale (a shape never changes).
+	// (box_memo.h, interfere.h)
 	hs_box_memo *box_memo;
 	char state_error[160]; // why the last hs_world_load_state refused ("" when it did not)
 };
