@@ -158,7 +158,7 @@ static void lists_in_a_busy_world(hs_stacking stacking, double fps, bool noisy) 
 		moved += fabs(p.x - (0.12 + 0.07 * col)) + fabs(p.y - 0.065 * (row - 1)) > 1e-3;
 	}
 	assert_true(moved >= 1);                          // the hand did work among them
-	assert_true(on.world->near_hits > frames);        // most answers came from the lists
+	assert_true(on.world->near_lists.hits > frames);        // most answers came from the lists
 	assert_true(on.world->awake_count < 3 * ROW / 2); // and most came to rest again
 	hs_world_destroy(on.world);
 	hs_world_destroy(off.world);
@@ -213,7 +213,7 @@ static void test_object_coming_to_rest_is_found(void **state) {
 	int dropped;
 	hs_world *w = drop_world(&dropped);
 	int f = until_at_rest(w, dropped);
-	assert_true(w->near_hits > f / 2); // a list made while it fell answered most queries
+	assert_true(w->near_lists.hits > f / 2); // a list made while it fell answered most queries
 	check_answer(w, SLOT, 0.06, "the slot at rest", f);
 	hs_world_destroy(w);
 }

@@ -31,7 +31,7 @@ void hs_grid_update(hs_world *world, int i) {
 	if (!world->grid_built || !grid_read(world))
 		return; // not built yet (the first step builds it), or not read (nor its lists)
 	if (!world->awake_flag[i]) // a resting object filed anew (a load, objects added, or carried):
-		world->near_epoch++;   // the neighbour lists may miss it
+		world->near_lists.epoch++;   // the neighbour lists may miss it
 	hs_hgrid_file(&world->grid, i, world->bodies[i].pos);
 }
 
@@ -66,7 +66,7 @@ int hs_grid_query(const hs_world *world, hs_vec3 center, double radius, int *out
 // answered from that list's resting objects and the awake list, each object's centre tested
 // against the query's box grown by its own half-extent (the grid's contract, not its cells). A
 // resting object moves only through hs_grid_update, and one that comes to rest leaves the awake
-// list (hs_awake_compact): either makes every list stale (near_epoch). A list's box is its first
+// list (hs_awake_compact): either makes every list stale (near_lists.epoch). A list's box is its first
 // query's grown by a skin of a typical object's width (the grid's level-0 cell), so a hand that
 // moves a few mm a frame reuses it for many frames. Every answer holds all the objects the
 // callers' own tests can pass, in index order: no result depends on the lists.
@@ -114,8 +114,8 @@ static int list_answer(hs_world *world, const hs_near_list *l, hs_vec3 c, double
 
 static hs_near_list *list_holding(hs_world *world, hs_vec3 c, double r) {
 	for (int k = 0; k < HS_NEAR_BOXES; ++k) {
-		hs_near_list *l = &world->near_lists[k];
-		if (l->epoch == world->near_epoch && c.x - r >= l->lo[0] && c.x + r <= l->hi[0] && c.y - r >= l->lo[1] &&
+		hs_near_list *l = &world->near_lists.list[k];
+		if (l->epoch == world->near_lists.epoch && c.x - r >= l->lo[0] && c.x + r <= l->hi[0] && c.y - r >= l->lo[1] &&
 		    c.y + r <= l->hi[1])
 			return l;
 	}
@@ -127,9 +127,9 @@ static hs_near_list *list_holding(hs_world *world, hs_vec3 c, double r) {
 static int list_and_answer(hs_world *world, hs_vec3 c, double r) {
 	double grown = r + world->grid.cell0;
 	int n = grid_answer(world, c, grown, world->found);
-	hs_near_list *l = &world->near_lists[0];
+	hs_near_list *l = &world->near_lists.list[0];
 	for (int k = 1; k < HS_NEAR_BOXES; ++k)
-		l = world->near_lists[k].used < l->used ? &world->near_lists[k] : l;
+		l = world->near_lists.list[k].used < l->used ? &world->near_lists.list[k] : l;
 	l->epoch = 0;
 	l->count = 0;
 	for (int k = 0; k < n; ++k) {
@@ -149,8 +149,8 @@ static int list_and_answer(hs_world *world, hs_vec3 c, double r) {
 	l->hi[0] = c.x + grown;
 	l->lo[1] = c.y - grown;
 	l->hi[1] = c.y + grown;
-	l->epoch = world->near_epoch;
-	l->used = ++world->near_clock;
+	l->epoch = world->near_lists.epoch;
+	l->used = ++world->near_lists.clock;
 	return list_answer(world, l, c, r);
 }
 
@@ -162,8 +162,8 @@ static HS_NOINLINE int grid_near(hs_world *world, hs_vec3 center, double radius)
 	hs_near_list *l = list_holding(world, center, radius);
 	if (!l)
 		return list_and_answer(world, center, radius);
-	l->used = ++world->near_clock;
-	world->near_hits++;
+	l->used = ++world->near_lists.clock;
+	world->near_lists.hits++;
 	return list_answer(world, l, center, radius);
 }
 
@@ -209,7 +209,7 @@ void hs_awake_compact(hs_world *world) {
 		hs_digest_stale(world, i); // the step changes no other object (skip_work changes no result)
 		if (b->asleep && !b->held && !b->carried) {
 			world->awake_flag[i] = 0;
-			world->near_epoch++; // at rest where no neighbour list looked for it
+			world->near_lists.epoch++; // at rest where no neighbour list looked for it
 		}
 		else
 			world->awake[kept++] = i;

@@ -113,7 +113,7 @@ hs_world *hs_world_create(const hs_world_def *def, hs_status *status) {
 		for (size_t i = 0; i < objects; ++i)
 			world->every[i] = (int)i;
 	world->near = world->every;
-	world->near_epoch = 1; // a neighbour list never made (epoch 0) never answers
+	world->near_lists.epoch = 1; // a neighbour list never made (epoch 0) never answers
 	world->awake = calloc(objects, sizeof *world->awake);
 	world->awake_flag = calloc(objects, sizeof *world->awake_flag);
 	world->digest = calloc(objects, sizeof *world->digest);

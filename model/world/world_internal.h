@@ -15,24 +15,13 @@
 #include "handspring.h"
 #include "hgrid.h"
 #include "hull.h"
+#include "near_list.h"
 
 // Fields are MODEL (built by hs_world_create / add_*, read-only while stepping), STATE (saved,
 // loaded and hashed by state.c's world walk: frame, faults, bodies, hands, spring), CACHE (derived
 // from model and state; invalidated or rebuilt after a load) or SCRATCH (per call, never read
 // before it is written in the same step). Work counters other than numeric_faults are outside
 // the state: they count what was done, not what will happen.
-// The resting objects near a box (broadphase.c, hs_grid_near): a neighbour list with a skin.
-#define HS_NEAR_BOXES 4      // lists kept at once (a hand and the objects it holds: one)
-#define HS_NEAR_LISTED 64    // objects a list holds at most (more: the grid answers alone)
-#define HS_NEAR_AWAKE_MAX 32 // lists are read only while this few objects are awake
-typedef struct hs_near_list {
-	double lo[2], hi[2]; // m: the box (x, y)
-	long epoch;          // hs_world.near_epoch when listed (0: never; near_epoch starts at 1)
-	long used;           // hs_world.near_clock when it last answered
-	int count;
-	int index[HS_NEAR_LISTED]; // ascending
-} hs_near_list;
-
 struct hs_world {
 	hs_world_def def;   // MODEL
 	uint16_t tag;       // MODEL: this world's tag in its handles (never 0)
@@ -81,11 +70,8 @@ struct hs_world {
 	// CACHE: broad phase (broadphase.c), objects filed by the floor cell of their centre, each at
 	// the level of its bounding radius (hgrid.c)
 	hs_hgrid grid;
-	// CACHE: the resting objects near a few boxes, listed from the grid (broadphase.c); a list is
-	// stale once near_epoch moved on (an object came to rest, or moved while resting)
-	hs_near_list near_lists[HS_NEAR_BOXES];
-	long near_epoch, near_clock;
-	long near_hits; // queries a list answered (tests: the lists are used)
+	// CACHE: the resting objects near a few boxes, listed from the grid (near_list.h)
+	hs_near_lists near_lists;
 	bool grid_built;    // false until built at the first step
 	bool grid_dirty;    // objects were added (or a state loaded) since it was built
 	// CACHE: the awake objects in index order, the only ones the step visits when skip_work is on;
