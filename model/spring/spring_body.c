@@ -21,7 +21,7 @@ static hs_spring_params params_of(const frame_ctx *fx, int i) {
 	hs_spring_system *sys = fx->sys;
 	double mass = fx->world->bodies[i].mass;
 	if (memcmp(&sys->params_mass[i], &mass, sizeof mass) != 0) {
-		sys->params[i] = hs_spring_params_of(&sys->def, fx->world, mass);
+		sys->params[i] = hs_spring_params_of(&sys->def, fx->gravity, mass);
 		sys->params_mass[i] = mass;
 	}
 	return sys->params[i];

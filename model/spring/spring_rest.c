@@ -52,7 +52,7 @@ static hs_vec3 free_force(const hs_world *world, const hs_spring_system *sys, in
 	hs_vec3 f = hs_scale(world->def.gravity, b->mass);
 	if (i != sys->attached)
 		return f;
-	hs_spring_params sp = hs_spring_params_of(&sys->def, world, b->mass);
+	hs_spring_params sp = hs_spring_params_of(&sys->def, world->def.gravity, b->mass);
 	return hs_add(f, hs_spring_force(&sp, sys->axis, b->pos, hs_v3(0.0, 0.0, 0.0), hs_spring_anchor_prev(sys),
 	                                 hs_spring_anchor_velocity(sys, dt)));
 }
@@ -228,7 +228,7 @@ static bool holds(const hs_world *world, const hs_spring_system *sys, int k) {
 	double left = hs_length(r->acc) * b->mass;
 	double allowed = HS_REST_TOLERANCE * (hs_length(r->force) + r->floor_normal);
 	if (i == sys->attached)
-		allowed += hs_spring_params_of(&sys->def, world, b->mass).k * HS_REST_HOLD_TRAVEL;
+		allowed += hs_spring_params_of(&sys->def, world->def.gravity, b->mass).k * HS_REST_HOLD_TRAVEL;
 	return left <= allowed;
 }
 

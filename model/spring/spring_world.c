@@ -69,7 +69,7 @@ hs_status hs_world_spring_state(const hs_world *world, hs_spring_state *out) {
 	out->stylus_velocity = sys->stylus_velocity;
 	if (sys->attached >= 0) {
 		const hs_body *body = &world->bodies[sys->attached];
-		hs_spring_params sp = hs_spring_params_of(&sys->def, world, body->mass);
+		hs_spring_params sp = hs_spring_params_of(&sys->def, world->def.gravity, body->mass);
 		out->anchor = hs_spring_anchor(sys);
 		out->length = hs_distance(body->pos, out->anchor);
 		out->extension = out->length - sp.x0;
@@ -85,7 +85,7 @@ hs_status hs_world_spring_object(const hs_world *world, hs_object_id id, hs_spri
 		return HS_ERR_INVALID_ARGUMENT;
 	const hs_spring_system *sys = world->spring;
 	const hs_body *body = &world->bodies[i];
-	hs_spring_params sp = hs_spring_params_of(&sys->def, world, body->mass);
+	hs_spring_params sp = hs_spring_params_of(&sys->def, world->def.gravity, body->mass);
 	memset(out, 0, sizeof *out);
 	out->mass = sp.mass;
 	out->rest_length = sp.x0;
