@@ -38,8 +38,8 @@ static pair make_pair(hs_shape *a, hs_quat ra, hs_shape *b, hs_quat rb) {
 		hs_world_add_object(p.world, &od, &st);
 		assert_int_equal(st, HS_OK);
 	}
-	p.ga = hs_spring_geom_of(p.world, &p.world->bodies[0]);
-	p.gb = hs_spring_geom_of(p.world, &p.world->bodies[1]);
+	p.ga = hs_spring_geom_of(&p.world->shapes[p.world->bodies[0].shape], &p.world->bodies[0]);
+	p.gb = hs_spring_geom_of(&p.world->shapes[p.world->bodies[1].shape], &p.world->bodies[1]);
 	return p;
 }
 

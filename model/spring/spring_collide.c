@@ -345,7 +345,8 @@ static bool answer(hs_world *world, hs_spring_system *sys, int i, int j, double 
 			sys->path_vel[ends[q]] = world->bodies[ends[q]].vel;
 			sys->path_t0[ends[q]] = tau;
 			if (ends[q] != sys->attached && !push)
-				hs_spring_advance(world, sys, ends[q], (1.0 - tau) * world->def.dt);
+				hs_spring_advance(sys, ends[q], &world->bodies[ends[q]], &world->def, (1.0 - tau) * world->def.dt,
+				                  &world->counters);
 		}
 	}
 	sys->separated[i] = sys->separated[j] = 1;

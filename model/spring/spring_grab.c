@@ -131,7 +131,7 @@ void hs_spring_attach(hs_world *world, hs_spring_system *sys, int i, hs_attach_k
 	sys->attach_kind = kind;
 	const hs_body *body = &world->bodies[i];
 	hs_spring_params sp = hs_spring_params_of(&sys->def, world->def.gravity, body->mass);
-	hs_spring_geom g = i < sys->geom_count ? sys->geom[i] : hs_spring_geom_of(world, body);
+	hs_spring_geom g = i < sys->geom_count ? sys->geom[i] : hs_spring_geom_of(&world->shapes[body->shape], body);
 	hs_vec3 d = hs_sub(body->pos, sys->stylus);
 	double len = hs_length(d);
 	hs_vec3 down = hs_normalize(world->def.gravity);

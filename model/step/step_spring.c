@@ -68,7 +68,7 @@ static void prepare_frame(hs_world *world, hs_spring_system *sys) {
 	if (sys->geom_count < n) // the broad phase's levels follow the geometry
 		sys->grid_count = -1;
 	for (int i = sys->geom_count; i < n; ++i) // objects added since the last frame
-		sys->geom[i] = hs_spring_geom_of(world, &world->bodies[i]);
+		sys->geom[i] = hs_spring_geom_of(&world->shapes[world->bodies[i].shape], &world->bodies[i]);
 	sys->geom_count = n;
 	check_params_cache(world, sys);
 	sys->stylus_velocity = hs_scale(hs_sub(sys->stylus, sys->stylus_prev), 1.0 / world->def.dt);
@@ -85,7 +85,7 @@ static void move_objects(hs_world *world, hs_spring_system *sys) {
 	}
 	for (int i = 0; i < n; ++i) {
 		if (!sys->held[i]) {
-			hs_spring_advance(world, sys, i, world->def.dt);
+			hs_spring_advance(sys, i, &world->bodies[i], &world->def, world->def.dt, &world->counters);
 			continue;
 		}
 		world->bodies[i].vel = hs_v3(0.0, 0.0, 0.0); // held still by its contacts: not stepped
