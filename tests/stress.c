@@ -27,6 +27,7 @@
 #include <string.h>
 #include <time.h>
 
+#include "hs_bench.h"
 #include "manipulate.h"
 #include "world_internal.h"
 
@@ -664,13 +665,13 @@ static void case_hand_inside(stats *st) {
 // tests/test_contact.c does, so no kinematics rounds them).
 static int exact_world(scene *sc, hs_quat q, hs_vec3 g, int kind, double threshold_deg) {
 	hs_world_def def = world_def(1.0 / 60, 1);
-	def.skip_work = false;
 	def.grasp_threshold_deg = threshold_deg;
 	// the threshold's comparison is what is tested: a grasp starts on the normals alone (the
 	// paper's letter), parts placed by hand close on nothing and adjoining faces are not opposed
 	def.grasp_opposed = false;
 	def.grasp_close_mm = 0.0;
 	scene_init(sc, &def);
+	hs_world_set_skip_work(sc->world, false);
 	hs_shape_id cube = scene_shape(sc, hs_shape_box(hs_v3(0.1, 0.1, 0.1), NULL));
 	int i = scene_add(sc, cube, g, q, ZERO, 500);
 	hs_hand_def hd = hs_default_hand_def();

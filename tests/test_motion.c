@@ -6,6 +6,7 @@
 
 #include <cmocka.h>
 
+#include "hs_bench.h"
 #include "motion.h"
 #include "world_internal.h"
 #include "test_util.h"
@@ -13,10 +14,10 @@
 static hs_world *make_world(double dt, bool skip) {
 	hs_world_def def = hs_default_world_def();
 	def.dt = dt;
-	def.skip_work = skip;
 	hs_status st;
 	hs_world *w = hs_world_create(&def, &st);
 	assert_non_null(w);
+	hs_world_set_skip_work(w, skip);
 	assert_int_equal(st, HS_OK);
 	return w;
 }

@@ -13,6 +13,7 @@
 
 #include <cmocka.h>
 
+#include "hs_bench.h"
 #include "handspring.h"
 #include "broadphase.h"
 #include "test_util.h"
@@ -63,13 +64,13 @@ static hand_rig hand_world(double cube_size, int extra_objects, bool skip_work) 
 	hs_world_def def = hs_default_world_def();
 	def.max_objects = 4 + extra_objects > 8 ? 4 + extra_objects : 8;
 	def.max_objects = rig_max_objects > def.max_objects ? rig_max_objects : def.max_objects;
-	def.skip_work = skip_work;
 	def.grasp_any_contacts = rig_any_contacts;
 	def.dt = 1.0 / rig_fps;
 	def.release_window_s = rig_release_window;
 	def.release_fit = rig_release_fit;
 	r.world = hs_world_create(&def, NULL);
 	assert_non_null(r.world);
+	hs_world_set_skip_work(r.world, skip_work);
 	hs_shape_id cube = add_shape(r.world, hs_shape_box(hs_v3(cube_size, cube_size, cube_size), NULL));
 	hs_shape_id block = add_shape(r.world, hs_shape_box(hs_v3(0.1, 0.06, 0.04), NULL));
 	r.target = add_object(r.world, cube, hs_v3(0, 0, 0.025), hs_v3(0, 0, 0));

@@ -8,6 +8,7 @@
 
 #include <cmocka.h>
 
+#include "hs_bench.h"
 #include "broadphase.h"
 #include "interfere.h"
 #include "manipulate.h"
@@ -394,9 +395,9 @@ static void test_support_carried_by_lifted_support(void **state) {
 static uint64_t settle_hash(bool skip) {
 	hs_world_def def = hs_default_world_def();
 	def.stacking = HS_STACKING_SUPPORT;
-	def.skip_work = skip;
 	def.dt = 1.0 / 12;
 	hs_world *w = hs_world_create(&def, NULL);
+	hs_world_set_skip_work(w, skip);
 	add_box(w, hs_v3(0.1, 0.1, 0.1), hs_v3(0.3, 0, 0.05));
 	add_box(w, hs_v3(0.04, 0.04, 0.04), hs_v3(0.31, 0.005, 0.15));
 	run(w, add_box(w, hs_v3(0.04, 0.04, 0.04), hs_v3(0.6, 0, 0.5)), 60);

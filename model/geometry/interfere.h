@@ -30,7 +30,7 @@ static HS_FORCE_INLINE bool overlap_at_pose(const hs_world *world, int i, hs_vec
 	const hs_shape *sa = &world->shapes[world->bodies[i].shape], *sb = &world->shapes[b->shape];
 	if (spheres_apart(sa->radius + sb->radius, pos, b))
 		return false; // no narrow test
-	if (world->def.skip_work && sa->part_count == 1 && sb->part_count == 1 && sa->kind != HS_SHAPE_SPHERE &&
+	if (world->skip_work && sa->part_count == 1 && sb->part_count == 1 && sa->kind != HS_SHAPE_SPHERE &&
 	    sb->kind != HS_SHAPE_SPHERE) {
 		int ka = memo_box(world, i, pos, rot), kb = memo_box(world, j, b->pos, b->rot);
 		const hs_box_memo *ma = &world->box_memo[i], *mb = &world->box_memo[j];

@@ -229,13 +229,13 @@ int hs_contact_detect_grown(hs_world *world, int object, const hs_pose *before, 
 			world->counters.hand_tests++;
 		// finger by finger for an object the hand did not carry, in the ungrown test (a carried one
 		// has them all near, and its points and lines are passed over by cheaper tests)
-		bool fingers = world->def.skip_work && !before && grow == 0.0;
+		bool fingers = world->skip_work && !before && grow == 0.0;
 		if (fingers)
 			hs_hand_finger_spheres(&world->hands[h]);
 		for (int p = 0; p < shape->part_count; ++p) {
 			const hs_part *part = &shape->parts[p];
 			unsigned far = 0;
-			if (world->def.skip_work) {
+			if (world->skip_work) {
 				hs_vec3 c = to_world(&now, part->center);
 				if (!hs_contact_sphere_near(world, hand, c, part->radius, part->grow_reach, grow))
 					continue;
@@ -244,11 +244,11 @@ int hs_contact_detect_grown(hs_world *world, int object, const hs_pose *before, 
 				}
 			}
 			int from = world->contact_count;
-			detect_points(world, object, h, part, &now, &then, before != NULL, world->def.skip_work, grow, far);
+			detect_points(world, object, h, part, &now, &then, before != NULL, world->skip_work, grow, far);
 			uint32_t touching = hand->touch_points; // touched last frame, or touch this part now
 			for (int k = from; k < world->contact_count; ++k)
 				touching |= 1u << world->contacts[k].part;
-			detect_lines(world, object, h, part, &now, &then, before != NULL, world->def.skip_work, grow, touching, far);
+			detect_lines(world, object, h, part, &now, &then, before != NULL, world->skip_work, grow, touching, far);
 		}
 	}
 	if (grow == 0.0 && !world->def.paper_contacts)

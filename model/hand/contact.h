@@ -43,7 +43,7 @@ static inline bool hs_contact_sphere_near(const hs_world *world, const hs_hand *
 static inline bool hs_contact_hand_near(const hs_world *world, const hs_body *body, const hs_hand *hand, double grow) {
 	if (hand->lost_frames > world->hold_frames) // lost past the hold: it touches nothing (tracking.c)
 		return false;
-	return !world->def.skip_work || hs_contact_sphere_near(world, hand, body->pos, world->shapes[body->shape].radius,
+	return !world->skip_work || hs_contact_sphere_near(world, hand, body->pos, world->shapes[body->shape].radius,
 	                                                       world->shape_grow_reach[body->shape], grow);
 }
 

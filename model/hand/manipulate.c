@@ -273,7 +273,7 @@ static bool untouched(const hs_body *b) {
 // narrow tests start with), those held last frame (they may be let go) and those under a release
 // rule, in index order.
 static void collect_candidates(hs_world *world) {
-	bool skip = world->def.skip_work;
+	bool skip = world->skip_work;
 	// carried or held last frame means awake: only the awake list needs looking at
 	for (int k = 0, n = skip ? world->awake_count : world->object_count; k < n; ++k)
 		world->bodies[skip ? world->awake[k] : k].carried = 0;

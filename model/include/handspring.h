@@ -248,7 +248,6 @@ typedef struct hs_world_def {
 	bool paper_contacts;        ///< false (default): swept detection, rectification and contact hysteresis (docs/model.md §3); true: the 1999 paper's letter (parts tested where they end the frame; a part inside drives C to where it is)
 	double grasp_release_mm;    ///< mm: a held object stays grasped while its holder's fingers grasp it grown by this much (default 5; docs/model.md §3)
 	double grasp_open_mm;       ///< mm: the grasp ends when the holding fingertips spread or reach out this much more than when it began (default 8)
-	bool skip_work;             ///< bounding-volume rejection and sleeping on (default true); off only to measure what they save
 	int glove_deadband;         ///< sensor units, 0..HS_MAX_GLOVE_DEADBAND: a glove sensor moves the hand only once its reading leaves ±this around the value last used, which then follows it at this distance (default 3; 0: every raw reading, the 1999 paper's letter; docs/model.md §1)
 	double release_window_s;    ///< s, 0..HS_MAX_RELEASE_WINDOW: a released grasp flies with the hand's velocity over its last round(this / dt) frames, at least 1, at most HS_MAX_RELEASE_FRAMES (default 0.05: 1 frame at 12 frames/s, 3 at 60, 6 at 120; docs/model.md §4 "Release")
 	hs_release_fit release_fit; ///< how that velocity is taken from those frames (default HS_RELEASE_FIT_MEAN); the spin is the wrist's mean turn over them either way
@@ -355,7 +354,7 @@ uint64_t hs_world_hash(const hs_world *world);
 // kind (0 hand world, 1 spring world), object count, hand count, shape count, contact capacity,
 // and a checksum of the definitions (dt, gravity, floor tolerance, stacking, grasp threshold and rule,
 // every shape's counts, vertices and volume, every object's shape and mass, every hand
-// definition; not max_objects, max_shapes or skip_work, which change no result). Then the
+// definition; not max_objects, max_shapes or the skipping of work (hs_bench.h), which change no result). Then the
 // world: frame, numeric faults, first fault frame and object; per object 39 words (pose, previous
 // pose, rot_prev, spin, velocity, contact state, floor contacts, grounded / asleep / held /
 // carried, grasped_by, grip pose, grip spread and reach, grip fingers, released_by); per hand 67 words and 7 a kept older wrist pose (wrist pose and 18 sensors as last set and as

@@ -311,7 +311,7 @@ static void fly(hs_world *world, hs_body *body) {
 	world->counters.object_steps++;
 
 	const hs_shape *shape = &world->shapes[body->shape];
-	if (world->def.skip_work && body->pos.z - shape->radius > world->def.floor_tolerance) {
+	if (world->skip_work && body->pos.z - shape->radius > world->def.floor_tolerance) {
 		body->floor_contacts = 0; // the bounding sphere is clear of the floor
 		return;
 	}

@@ -96,7 +96,7 @@ static HS_FORCE_INLINE void hands_move_objects(hs_world *world) {
 // (step_object). In: the awake list. Out: bodies; support mode's moved objects in world->queue and
 // moved_from (the count returned); paper mode's fallen groups in world->queue (*fallen).
 static HS_FORCE_INLINE int move_free_objects(hs_world *world, int *fallen) {
-	bool skip = world->def.skip_work;
+	bool skip = world->skip_work;
 	int visits = skip ? world->awake_count : world->object_count;
 	if (skip) // the sleeping objects cost nothing (the awake list holds the others, in index order)
 		world->counters.sleeping_skips += world->object_count - world->awake_count;
@@ -141,7 +141,7 @@ static HS_FORCE_INLINE void wake_neighbours(hs_world *world, int moved, int fall
 	for (int k = 0; k < fallen; ++k)
 		hs_wake(world, world->queue[k]);
 	hs_awake_compact(world);
-	if (!world->def.skip_work) // every object was looked at (the awake list does not bound what may have changed)
+	if (!world->skip_work) // every object was looked at (the awake list does not bound what may have changed)
 		hs_digest_all_stale(world);
 }
 

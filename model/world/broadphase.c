@@ -24,7 +24,7 @@
 // grows past the limit files every object at its next step (grid_dirty). skip_work is fixed
 // when the world is made.
 static bool grid_read(const hs_world *world) {
-	return world->def.skip_work && world->object_count > HS_GRID_SCAN_MAX;
+	return world->skip_work && world->object_count > HS_GRID_SCAN_MAX;
 }
 
 void hs_grid_update(hs_world *world, int i) {

@@ -3,6 +3,7 @@
 // pipelines (step_hand.c, step_spring.c) never call up into them.
 #include <string.h>
 
+#include "hs_bench.h"
 #include "world_internal.h"
 
 long hs_world_frame(const hs_world *world) { return world ? world->frame : 0; }
@@ -32,3 +33,12 @@ hs_world_counters hs_world_get_counters(const hs_world *world) {
 	memset(&none, 0, sizeof none);
 	return world ? world->counters : none;
 }
+
+hs_status hs_world_set_skip_work(hs_world *world, bool on) {
+	if (!world || world->object_count > 0) // the grid and the awake list are set up as objects come
+		return HS_ERR_INVALID_ARGUMENT;
+	world->skip_work = on;
+	return HS_OK;
+}
+
+bool hs_world_skip_work(const hs_world *world) { return world && world->skip_work; }

@@ -37,7 +37,6 @@ hs_world_def hs_default_world_def(void) {
 	def.grasp_threshold_deg = 90.0;
 	def.grasp_release_mm = 5.0;
 	def.grasp_open_mm = 8.0;
-	def.skip_work = true;
 	def.glove_deadband = 3;
 	def.release_window_s = 0.05;
 	def.release_fit = HS_RELEASE_FIT_MEAN;
@@ -88,6 +87,7 @@ hs_world *hs_world_create(const hs_world_def *def, hs_status *status) {
 	}
 	world->def = *def;
 	world->tag = next_world_tag();
+	world->skip_work = true;
 	world->first_fault_frame = -1;
 	world->first_fault_object = -1;
 	world->grasp_limit = hs_grasp_limit(def->grasp_threshold_deg);

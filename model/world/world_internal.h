@@ -25,6 +25,7 @@
 struct hs_world {
 	hs_world_def def;   // MODEL
 	uint16_t tag;       // MODEL: this world's tag in its handles (never 0)
+	bool skip_work;     // MODEL: culls, the grid and sleeping on (hs_bench.h; true unless a benchmark or test says)
 	int shape_count;    // MODEL
 	hs_shape *shapes;   // MODEL: deep copies, def.max_shapes of them
 	hs_face_edges *face_edges; // MODEL: each shape's edges by face (contact.c), built with its copy
