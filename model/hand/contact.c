@@ -36,18 +36,18 @@ static bool same_pose(const hs_body *b) {
 // `grow` > 0: against the part grown by that much (the grasp's release margin, docs/model.md §3);
 // swept detection runs for the part itself only. `moved`: the object moved since the last frame
 // (a held object): points are culled where they end (their motion relative to it is small).
-static void detect_points(hs_world *world, int object, int h, const hs_part *part, const hs_frame *body,
-                          const hs_frame *before, bool moved, bool cull, double grow, unsigned far) {
+static void detect_points(hs_world *world, int object, int h, const hs_part *part, const hs_part_cache *pc,
+                          const hs_frame *body, const hs_frame *before, bool moved, bool cull, double grow, unsigned far) {
 	const hs_shape *shape = &world->shapes[world->bodies[object].shape];
 	const hs_hand *hand = &world->hands[h];
 	hs_vec3 center = to_world(body, part->center); // cull before the transform
-	double r = part->radius + part->grow_reach * grow, r_sq = r * r; // grown: its corners reach further
+	double r = part->radius + pc->grow_reach * grow, r_sq = r * r; // grown: its corners reach further
 	bool paper = world->def.paper_contacts, swept = grow == 0.0 && !paper;
 	int steps = moved ? 1 : hand->path_steps; // a held object moves with the hand: chords suffice
 	bool still = !moved && same_pose(&world->bodies[object]);
 	// passed over: far fingers' points (far_fingers), and those beyond the sphere now unless paths count
 	uint32_t todo = ((1u << HS_HAND_POINTS) - 1u) & ~hs_finger_parts(far, 4);
-	uint32_t near = cull ? hs_contact_points_near_part(hand, part, center, r, swept, hs_contact_keep(world, hand)) : todo;
+	uint32_t near = cull ? hs_contact_points_near_part(hand, pc->grow_reach, center, r, swept, hs_contact_keep(world, hand)) : todo;
 	double margin = world->def.grasp_release_mm * 1e-3;
 	if (!swept || moved)
 		todo &= near;
@@ -124,12 +124,13 @@ static bool across(hs_clip c) {
 // (B) check lines against the part: across it now (reached it this frame, sunk in, or across it
 // since before it touched anything, as the check points in detect_points), or swept across it
 // during the frame. A line with an end inside is the check points' business.
-static void detect_lines(hs_world *world, int object, int h, const hs_part *part, const hs_frame *body,
-                         const hs_frame *before, bool moved, bool cull, double grow, uint32_t touching, unsigned far) {
+static void detect_lines(hs_world *world, int object, int h, const hs_part *part, const hs_part_cache *pc,
+                         const hs_frame *body, const hs_frame *before, bool moved, bool cull, double grow, uint32_t touching,
+                         unsigned far) {
 	const hs_shape *shape = &world->shapes[world->bodies[object].shape];
 	const hs_hand *hand = &world->hands[h];
 	hs_vec3 center = to_world(body, part->center);
-	double r = part->radius + part->grow_reach * grow; // grown: its corners reach further
+	double r = part->radius + pc->grow_reach * grow; // grown: its corners reach further
 	bool paper = world->def.paper_contacts, swept = grow == 0.0 && !paper;
 	int steps = moved ? 1 : hand->path_steps; // a held object moves with the hand: chords suffice
 	hs_segment_bounds sb = hs_contact_segment_bounds(world, hand, r);
@@ -148,7 +149,7 @@ static void detect_lines(hs_world *world, int object, int h, const hs_part *part
 		if ((!(near >> s & 1u) && !hs_contact_axis_path_near(hand, a, steps, center, sb.rp)) ||
 		    (swept && hs_contact_ends_deep(world, hand, touching, a, body, shape, part, sb.deep, &memo)) ||
 		    (plain && !moved && steps == 1 && hs_contact_segment_clear_of_a_face(world, h, a, body, before, shape, part)) ||
-		    (plain && moved && hs_part_is_box(part) && hs_contact_held_lines_clear(world, h, s, a, body, shape, part, touching, grow, &turn)))
+		    (plain && moved && hs_part_is_box(pc) && hs_contact_held_lines_clear(world, h, s, a, body, shape, part, touching, grow, &turn)))
 			continue; // far, each line beside a touching point, or clear (seen before it is placed)
 		hs_hand_ready_segment(&world->hands[h], s); // its lines are read from here on
 		bool all_near = (sb.ri > 0.0 && d_sq <= sb.ri * sb.ri) || (swept && !plain); // all within r now
@@ -234,21 +235,22 @@ int hs_contact_detect_grown(hs_world *world, int object, const hs_pose *before, 
 			hs_hand_finger_spheres(&world->hands[h]);
 		for (int p = 0; p < shape->part_count; ++p) {
 			const hs_part *part = &shape->parts[p];
+			const hs_part_cache *pc = &world->part_cache[body->shape][p];
 			unsigned far = 0;
 			if (world->skip_work) {
 				hs_vec3 c = to_world(&now, part->center);
-				if (!hs_contact_sphere_near(world, hand, c, part->radius, part->grow_reach, grow))
+				if (!hs_contact_sphere_near(world, hand, c, part->radius, pc->grow_reach, grow))
 					continue;
 				if (fingers) {
-					far = hs_contact_far_fingers(hand, part, c, part->radius + HS_CULL_SLACK, hs_contact_keep(world, hand));
+					far = hs_contact_far_fingers(hand, pc->grow_reach, c, part->radius + HS_CULL_SLACK, hs_contact_keep(world, hand));
 				}
 			}
 			int from = world->contact_count;
-			detect_points(world, object, h, part, &now, &then, before != NULL, world->skip_work, grow, far);
+			detect_points(world, object, h, part, pc, &now, &then, before != NULL, world->skip_work, grow, far);
 			uint32_t touching = hand->touch_points; // touched last frame, or touch this part now
 			for (int k = from; k < world->contact_count; ++k)
 				touching |= 1u << world->contacts[k].part;
-			detect_lines(world, object, h, part, &now, &then, before != NULL, world->skip_work, grow, touching, far);
+			detect_lines(world, object, h, part, pc, &now, &then, before != NULL, world->skip_work, grow, touching, far);
 		}
 	}
 	if (grow == 0.0 && !world->def.paper_contacts)

@@ -112,14 +112,15 @@ static inline bool hs_contact_held_lines_clear(hs_world *world, int h, int s, in
 	return hs_contact_held_lines_clear_plain(world, h, s, a, body, shape, part, touching, grow, turn);
 }
 // The fingers (bit f) far from a part's bounding sphere (centre c, radius `reach`) through the frame.
-unsigned hs_contact_far_fingers(const hs_hand *hand, const hs_part *part, hs_vec3 c, double reach, double hand_keep);
+// grow_reach: the part's (part_cache.h).
+unsigned hs_contact_far_fingers(const hs_hand *hand, double grow_reach, hs_vec3 c, double reach, double hand_keep);
 
 // The check points near the part now: within r, its sphere grown by `grow` (its corners reach
 // further: part_reach.h); and, in the swept test, a point that touched (or started inside) within
 // the sphere grown further by the release margin (or twice it), where it still counts.
-static inline uint32_t hs_contact_points_near_part(const hs_hand *hand, const hs_part *part, hs_vec3 center, double r, bool swept,
+static inline uint32_t hs_contact_points_near_part(const hs_hand *hand, double grow_reach, hs_vec3 center, double r, bool swept,
                                                    double hand_keep) {
-	double keep = r + part->grow_reach * hand_keep;
+	double keep = r + grow_reach * hand_keep;
 	uint32_t within = 0, near = hs_contact_points_near(hand, center, r * r, keep * keep, &within);
 	return swept ? near | (within & (hand->touch_points | hand->embed_points)) : near;
 }

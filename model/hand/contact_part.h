@@ -116,24 +116,25 @@ int hs_contact_nearest_many(const hs_world *world, const hs_shape *shape, const 
 
 #if defined(HS_SELFCHECK)
 // Sanitizer builds: a box part's queries return what the scan of its faces returns.
-static inline bool box_inside(const hs_shape *shape, const hs_part *part, hs_vec3 p, double grow) {
-	bool inside = hs_part_box_inside(part, p, grow);
+static inline bool box_inside(const hs_shape *shape, const hs_part *part, const hs_part_cache *pc, hs_vec3 p, double grow) {
+	bool inside = hs_part_box_inside(pc, p, grow);
 	if (inside != scan_inside(shape, part, p, grow)) {
 		fprintf(stderr, "selfcheck: the box's inside test differs from the scan's\n");
 		abort();
 	}
 	return inside;
 }
-static inline bool box_apart(const hs_shape *shape, const hs_part *part, hs_vec3 a, hs_vec3 b, double grow) {
-	bool apart = hs_part_box_apart(part, a, b, grow, HS_CULL_SLACK);
+static inline bool box_apart(const hs_shape *shape, const hs_part *part, const hs_part_cache *pc, hs_vec3 a, hs_vec3 b,
+                             double grow) {
+	bool apart = hs_part_box_apart(pc, a, b, grow, HS_CULL_SLACK);
 	if (apart && hs_clip_segment(shape, part, a, b, grow).hit) {
 		fprintf(stderr, "selfcheck: a segment the box test put beyond a face meets the part\n");
 		abort();
 	}
 	return apart;
 }
-static inline int box_nearest(const hs_shape *shape, const hs_part *part, hs_vec3 p) {
-	int face = hs_part_box_nearest(part, p);
+static inline int box_nearest(const hs_shape *shape, const hs_part *part, const hs_part_cache *pc, hs_vec3 p) {
+	int face = hs_part_box_nearest(pc, p);
 	if (face != scan_nearest(shape, part, p)) {
 		fprintf(stderr, "selfcheck: the box's nearest face differs from the scan's\n");
 		abort();
@@ -141,17 +142,18 @@ static inline int box_nearest(const hs_shape *shape, const hs_part *part, hs_vec
 	return face;
 }
 #else
-static inline int box_nearest(const hs_shape *shape, const hs_part *part, hs_vec3 p) {
-	(void)shape;
-	return hs_part_box_nearest(part, p);
+static inline int box_nearest(const hs_shape *shape, const hs_part *part, const hs_part_cache *pc, hs_vec3 p) {
+	(void)shape, (void)part;
+	return hs_part_box_nearest(pc, p);
 }
-static inline bool box_inside(const hs_shape *shape, const hs_part *part, hs_vec3 p, double grow) {
-	(void)shape;
-	return hs_part_box_inside(part, p, grow);
+static inline bool box_inside(const hs_shape *shape, const hs_part *part, const hs_part_cache *pc, hs_vec3 p, double grow) {
+	(void)shape, (void)part;
+	return hs_part_box_inside(pc, p, grow);
 }
-static inline bool box_apart(const hs_shape *shape, const hs_part *part, hs_vec3 a, hs_vec3 b, double grow) {
-	(void)shape;
-	return hs_part_box_apart(part, a, b, grow, HS_CULL_SLACK);
+static inline bool box_apart(const hs_shape *shape, const hs_part *part, const hs_part_cache *pc, hs_vec3 a, hs_vec3 b,
+                             double grow) {
+	(void)shape, (void)part;
+	return hs_part_box_apart(pc, a, b, grow, HS_CULL_SLACK);
 }
 #endif
 
@@ -159,16 +161,18 @@ static inline bool box_apart(const hs_shape *shape, const hs_part *part, hs_vec3
 static inline bool inside_part(const hs_world *world, const hs_shape *shape, const hs_part *part, hs_vec3 p, double grow) {
 	if (part->face_count >= HS_FACE_TREE_MIN_FACES)
 		return hs_contact_inside_many(world, shape, part, p, grow);
-	if (hs_part_is_box(part) && hs_part_box_takes(p))
-		return box_inside(shape, part, p, grow);
+	const hs_part_cache *pc = hs_part_cache_of(world, shape, part);
+	if (hs_part_is_box(pc) && hs_part_box_takes(p))
+		return box_inside(shape, part, pc, p, grow);
 	return scan_inside(shape, part, p, grow);
 }
 
 static inline int nearest_face(const hs_world *world, const hs_shape *shape, const hs_part *part, hs_vec3 p) {
 	if (part->face_count >= HS_FACE_TREE_MIN_FACES)
 		return hs_contact_nearest_many(world, shape, part, p);
-	if (hs_part_is_box(part) && hs_part_box_takes(p))
-		return box_nearest(shape, part, p);
+	const hs_part_cache *pc = hs_part_cache_of(world, shape, part);
+	if (hs_part_is_box(pc) && hs_part_box_takes(p))
+		return box_nearest(shape, part, pc, p);
 	return scan_nearest(shape, part, p);
 }
 
@@ -181,7 +185,8 @@ static inline hs_clip clip_part(const hs_world *world, const hs_shape *shape, co
 		if (root >= 0)
 			return hs_face_tree_clip(tree, root, shape, a, b, grow);
 	}
-	if (hs_part_is_box(part) && hs_part_box_takes(a) && hs_part_box_takes(b) && box_apart(shape, part, a, b, grow)) {
+	const hs_part_cache *pc = hs_part_cache_of(world, shape, part);
+	if (hs_part_is_box(pc) && hs_part_box_takes(a) && hs_part_box_takes(b) && box_apart(shape, part, pc, a, b, grow)) {
 		hs_clip miss = {0.0, 1.0, -1, -1, false};
 		return miss;
 	}

@@ -61,16 +61,6 @@ typedef struct hs_part {
 	hs_vec3 center; ///< m, body frame: centre of the part's bounding sphere
 	double radius;  ///< m: bounding-sphere radius
 	hs_vec3 box_center, box_half; ///< m, body frame: the box of its vertices (centre, half extents)
-	/// Set by the shape builders, and again by hs_world_add_shape in the world's copy: a part of
-	/// six faces whose normals are exactly +x, -x, +y, -y, +z, -z (a box with axis-aligned faces)
-	/// has box_face[k] = the index of the face of normal k, in that order, and box_offset[k] its
-	/// offset; box_face[0] = -1 for any other part. The hand check tests it coordinate by coordinate.
-	int box_face[6];
-	double box_offset[6];
-	/// Set with box_face: the part with its faces moved out by g lies within radius + g ·
-	/// grow_reach of center (√3 for a box: its corners move out diagonally). The hand check's
-	/// bounding-volume tests grow by it.
-	double grow_reach;
 } hs_part;
 
 /// A planar convex face: vertex indices (counter-clockwise seen from outside) and its plane.

@@ -97,6 +97,7 @@ hs_world *hs_world_create(const hs_world_def *def, hs_status *status) {
 	world->face_edges = calloc((size_t)def->max_shapes, sizeof *world->face_edges);
 	world->face_trees = calloc((size_t)def->max_shapes, sizeof *world->face_trees);
 	world->shape_grow_reach = calloc((size_t)def->max_shapes, sizeof *world->shape_grow_reach);
+	world->part_cache = calloc((size_t)def->max_shapes, sizeof *world->part_cache);
 	size_t objects = def->max_objects > 0 ? (size_t)def->max_objects : 1;
 	world->bodies = calloc(objects, sizeof *world->bodies);
 	world->queue = calloc(objects, sizeof *world->queue);
@@ -123,7 +124,7 @@ hs_world *hs_world_create(const hs_world_def *def, hs_status *status) {
 	world->all_stale = true;
 	if (def->kind == HS_WORLD_SPRING) // its tracker starts at the world's time, 0
 		world->spring = hs_spring_system_create(&def->spring, def->max_objects, 0.0);
-	if ((def->kind == HS_WORLD_SPRING && !world->spring) || !world->shapes || !world->face_edges || !world->face_trees || !world->shape_grow_reach || !world->bodies || !world->queue || !world->moved_from || !world->hands || !world->contacts || !grid ||
+	if ((def->kind == HS_WORLD_SPRING && !world->spring) || !world->shapes || !world->face_edges || !world->face_trees || !world->shape_grow_reach || !world->part_cache || !world->bodies || !world->queue || !world->moved_from || !world->hands || !world->contacts || !grid ||
 	    !world->candidates || !world->every || !world->found || !world->awake || !world->awake_flag || !world->digest || !world->stale ||
 	    !world->stale_flag || !world->box_memo) {
 		hs_world_destroy(world);
@@ -149,12 +150,14 @@ void hs_world_destroy(hs_world *world) {
 	for (int i = 0; i < world->shape_count; ++i) {
 		free_shape_arrays(&world->shapes[i]);
 		hs_face_edges_free(&world->face_edges[i]);
+		free(world->part_cache[i]);
 		hs_face_tree_free(&world->face_trees[i]);
 	}
 	free(world->shapes);
 	free(world->face_edges);
 	free(world->face_trees);
 	free(world->shape_grow_reach);
+	free(world->part_cache);
 	free(world->bodies);
 	free(world->queue);
 	free(world->moved_from);
@@ -263,16 +266,19 @@ hs_shape_id hs_world_add_shape(hs_world *world, const hs_shape *shape, hs_status
 		hs_set_status(status, HS_ERR_NO_MEMORY);
 		return none;
 	}
+	hs_part_cache *pc = calloc(copy->part_count > 0 ? (size_t)copy->part_count : 1, sizeof *pc);
+	world->part_cache[world->shape_count] = pc;
 	world->shape_grow_reach[world->shape_count] = 1.0;
-	for (int p = 0; p < copy->part_count; ++p) {
-		hs_part_box_find(copy, &copy->parts[p]);
-		copy->parts[p].grow_reach = hs_part_grow_reach(copy, &copy->parts[p]);
-		world->shape_grow_reach[world->shape_count] =
-		    fmax(world->shape_grow_reach[world->shape_count], copy->parts[p].grow_reach);
+	for (int p = 0; p < copy->part_count && pc; ++p) {
+		hs_part_box_find(copy, &copy->parts[p], &pc[p]);
+		pc[p].grow_reach = hs_part_grow_reach(copy, &copy->parts[p]);
+		world->shape_grow_reach[world->shape_count] = fmax(world->shape_grow_reach[world->shape_count], pc[p].grow_reach);
 	}
-	if (!hs_face_edges_build(&world->face_edges[world->shape_count], copy) ||
+	if (!pc || !hs_face_edges_build(&world->face_edges[world->shape_count], copy) ||
 	    !hs_face_tree_build(&world->face_trees[world->shape_count], copy)) {
 		hs_face_edges_free(&world->face_edges[world->shape_count]);
+		free(pc);
+		world->part_cache[world->shape_count] = NULL;
 		free_shape_arrays(copy);
 		hs_set_status(status, HS_ERR_NO_MEMORY);
 		return none;

@@ -16,6 +16,7 @@
 #include "hgrid.h"
 #include "hull.h"
 #include "near_list.h"
+#include "part_cache.h"
 
 // Fields are MODEL (built by hs_world_create / add_*, read-only while stepping), STATE (saved,
 // loaded and hashed by state.c's world walk: frame, faults, bodies, hands, spring), CACHE (derived
@@ -29,6 +30,7 @@ struct hs_world {
 	int shape_count;    // MODEL
 	hs_shape *shapes;   // MODEL: deep copies, def.max_shapes of them
 	hs_face_edges *face_edges; // MODEL: each shape's edges by face (contact.c), built with its copy
+	hs_part_cache **part_cache; // MODEL: each shape's parts' box faces and grow reach (part_cache.h), built with its copy
 	double *shape_grow_reach; // MODEL: each shape's largest part grow_reach (part_reach.h)
 	hs_face_tree *face_trees;  // MODEL: each shape's many-faced parts as normal-cone trees (face_tree.h), built with its copy
 	int object_count;   // MODEL
@@ -95,6 +97,11 @@ struct hs_world {
 	hs_box_memo *box_memo;
 	char state_error[160]; // why the last hs_world_load_state refused ("" when it did not)
 };
+
+// What the world derived from `part`, a part of `shape`, the world's copy of one of its shapes.
+static inline const hs_part_cache *hs_part_cache_of(const hs_world *world, const hs_shape *shape, const hs_part *part) {
+	return &world->part_cache[shape - world->shapes][part - shape->parts];
+}
 
 // Every live handle has this generation: objects, shapes and hands are never removed, so no slot
 // is reused yet. A handle whose generation differs is refused, so a removal can bump it later.
