@@ -97,7 +97,7 @@ static void check_clear(const hs_world *world, const hs_shape *shape, const hs_p
 	if (clip_part(world, shape, part, p[0], p[1], 0.0).hit || clip_part(world, shape, part, q[0], q[1], 0.0).hit ||
 	    !hs_contact_sweep_beyond_a_face(world, shape, part, q, p)) {
 		fprintf(stderr, "handspring: a line's sweep passed over as clear of a face touches the part (frame %ld)\n",
-		        world->frame);
+		        world->state.frame);
 		abort();
 	}
 }
@@ -124,7 +124,7 @@ bool hs_contact_sweep_clear_of_a_face(const hs_world *world, const hs_shape *sha
 void hs_contact_check_segment_clear(const hs_world *world, int h, int a, const hs_frame *body, const hs_frame *before,
                                     const hs_shape *shape, const hs_part *part) {
 	int s = a - a / 4; // the segment of first check point a (hs_segment_first_point)
-	hs_hand *hand = (hs_hand *)&world->hands[h]; // placing lines changes no result (hand_internal.h)
+	hs_hand *hand = (hs_hand *)&world->state.hands[h]; // placing lines changes no result (hand_internal.h)
 	hs_hand_ready_segment(hand, s);
 	for (int j = 4 * s; j < 4 * s + 4; ++j) {
 		hs_vec3 p[2], q[2];
@@ -244,10 +244,10 @@ unsigned hs_contact_lines_near(const hs_hand *hand, int s, hs_vec3 c, double r_s
 // the body frame, lies beside a touching check point or misses the part.
 static void check_held_clear(hs_world *world, int h, int s, int a, const hs_frame *body, const hs_shape *shape,
                              const hs_part *part, uint32_t touching, double grow) {
-	hs_hand_ready_segment(&world->hands[h], s);
+	hs_hand_ready_segment(&world->state.hands[h], s);
 	for (int j = 4 * s; j < 4 * s + 4; ++j) {
 		hs_vec3 p[2];
-		line_to_body(body, world->hands[h].lines[j], p);
+		line_to_body(body, world->state.hands[h].lines[j], p);
 		if (!hs_contact_end_touches(world, touching, a, shape, part, p) && clip_part(world, shape, part, p[0], p[1], grow).hit) {
 			fprintf(stderr, "selfcheck: a held object's line passed over as clear touches the part\n");
 			abort();
@@ -371,7 +371,7 @@ HS_AVX static bool held_four_clear(const hs_part *part, const hs_part_cache *pc,
 static HS_FORCE_INLINE bool held_lines_clear_in(hs_world *world, int h, int s, int a, const hs_frame *body,
                                                 const hs_shape *shape, const hs_part *part, uint32_t touching, double grow,
                                                 hs_held_turn *turn, bool four) {
-	const hs_hand *hand = &world->hands[h];
+	const hs_hand *hand = &world->state.hands[h];
 	hs_vec3 e0 = to_body(body, hand->points[a]), e1 = to_body(body, hand->points[a + 1]);
 	if (!hs_part_box_takes(e0) || !hs_part_box_takes(e1))
 		return false;
@@ -389,7 +389,7 @@ static HS_FORCE_INLINE bool held_lines_clear_in(hs_world *world, int h, int s, i
 		return false;
 	const hs_part_cache *pc = hs_part_cache_of(world, shape, part);
 	held_ends ends = {e0, e1, y, z, touching >> a & 1u, touching >> (a + 1) & 1u,
-	                  world->def.grasp_release_mm * 1e-3 - HS_CULL_SLACK, grow, part->radius + pc->grow_reach * grow + HS_CULL_SLACK};
+	                  world->model.def.grasp_release_mm * 1e-3 - HS_CULL_SLACK, grow, part->radius + pc->grow_reach * grow + HS_CULL_SLACK};
 #if HS_LANES4
 	bool clear = four ? held_four_clear(part, pc, &ends) : held_each_clear(part, pc, &ends);
 #else

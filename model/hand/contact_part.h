@@ -75,7 +75,7 @@ static HS_FORCE_INLINE double segment_distance_sq(hs_vec3 c, hs_vec3 p0, hs_vec3
 // (face_tree.h: the faces near the point, with the scan's answers), out of line (contact_part.c);
 // the others are scanned inline.
 static inline const hs_face_tree *tree_of(const hs_world *world, const hs_shape *shape) {
-	return &world->face_trees[shape - world->shapes];
+	return &world->model.face_trees[shape - world->model.shapes];
 }
 
 // The rule ([H] §3.2 (A)): a point is in a convex part when it lies behind every face plane, here

@@ -18,7 +18,7 @@ typedef struct hs_spring_geom {
 	double radius;  // m, spheres only
 	bool sphere;
 	hs_spring_form form;
-	int shape;      // index into world->shapes
+	int shape;      // index into world->model.shapes
 	hs_quat rot;    // body → world
 	hs_vec3 half;   // m: half extents of a box in its body frame
 	double inner;   // m: the largest ball about G inside it (a sphere's radius, a box's smallest half

@@ -4,7 +4,7 @@
 #include "spring_impulse.h"
 
 double hs_spring_pair_restitution(const hs_world *world, const hs_spring_system *sys, int a, int b) {
-	double ea = world->bodies[a].restitution, eb = world->bodies[b].restitution;
+	double ea = world->state.bodies[a].restitution, eb = world->state.bodies[b].restitution;
 	ea = ea < 0.0 ? sys->def.restitution : ea;
 	eb = eb < 0.0 ? sys->def.restitution : eb;
 	return fmin(ea, eb);
@@ -12,7 +12,7 @@ double hs_spring_pair_restitution(const hs_world *world, const hs_spring_system 
 
 bool hs_spring_pair_impulse(hs_world *world, const hs_spring_system *sys, int i, int j, hs_vec3 n, double e,
                             bool resting) {
-	hs_body *a = &world->bodies[i], *b = &world->bodies[j];
+	hs_body *a = &world->state.bodies[i], *b = &world->state.bodies[j];
 	double vn = hs_dot(hs_sub(b->vel, a->vel), n);
 	if (!(vn < 0.0))
 		return false;
