@@ -14,6 +14,7 @@
 #include "part_reach.h"
 #include "spring_params.h"
 #include "spring_system.h"
+#include "world_scratch.h"
 #include "world_internal.h"
 
 // Tags of the worlds of this process, 1 to 65535 and round again (0 is the null handle's): a
@@ -100,20 +101,16 @@ hs_world *hs_world_create(const hs_world_def *def, hs_status *status) {
 	world->model.part_cache = calloc((size_t)def->max_shapes, sizeof *world->model.part_cache);
 	size_t objects = def->max_objects > 0 ? (size_t)def->max_objects : 1;
 	world->state.bodies = calloc(objects, sizeof *world->state.bodies);
-	world->scratch.queue = calloc(objects, sizeof *world->scratch.queue);
-	world->scratch.moved_from = calloc(objects, sizeof *world->scratch.moved_from);
 	world->state.hands = calloc(def->max_hands > 0 ? (size_t)def->max_hands : 1, sizeof *world->state.hands);
 	// every check point and line of every hand in up to 4 objects' parts at once
 	world->out.contact_capacity = (def->max_hands > 0 ? def->max_hands : 1) * (HS_HAND_POINTS + HS_HAND_LINES) * 4;
 	world->out.contacts = calloc((size_t)world->out.contact_capacity, sizeof *world->out.contacts);
 	bool grid = hs_hgrid_alloc(&world->cache.grid, (int)objects, 2);
-	world->scratch.candidates = calloc(objects, sizeof *world->scratch.candidates);
 	world->cache.every = malloc(objects * sizeof *world->cache.every);
-	world->scratch.found = calloc(objects, sizeof *world->scratch.found);
 	if (world->cache.every)
 		for (size_t i = 0; i < objects; ++i)
 			world->cache.every[i] = (int)i;
-	world->scratch.near = world->cache.every;
+	bool scratch = hs_world_scratch_reserve(world, 0, 0, 0); // the shapes' part grows with them
 	world->cache.near_lists.epoch = 1; // a neighbour list never made (epoch 0) never answers
 	world->cache.awake = calloc(objects, sizeof *world->cache.awake);
 	world->cache.awake_flag = calloc(objects, sizeof *world->cache.awake_flag);
@@ -124,8 +121,8 @@ hs_world *hs_world_create(const hs_world_def *def, hs_status *status) {
 	world->cache.all_stale = true;
 	if (def->kind == HS_WORLD_SPRING) // its tracker starts at the world's time, 0
 		world->state.spring = hs_spring_system_create(&def->spring, def->max_objects, 0.0);
-	if ((def->kind == HS_WORLD_SPRING && !world->state.spring) || !world->model.shapes || !world->model.face_edges || !world->model.face_trees || !world->model.shape_grow_reach || !world->model.part_cache || !world->state.bodies || !world->scratch.queue || !world->scratch.moved_from || !world->state.hands || !world->out.contacts || !grid ||
-	    !world->scratch.candidates || !world->cache.every || !world->scratch.found || !world->cache.awake || !world->cache.awake_flag || !world->cache.digest || !world->cache.stale ||
+	if ((def->kind == HS_WORLD_SPRING && !world->state.spring) || !world->model.shapes || !world->model.face_edges || !world->model.face_trees || !world->model.shape_grow_reach || !world->model.part_cache || !world->state.bodies || !world->state.hands || !world->out.contacts || !grid ||
+	    !scratch || !world->cache.every || !world->cache.awake || !world->cache.awake_flag || !world->cache.digest || !world->cache.stale ||
 	    !world->cache.stale_flag || !world->cache.box_memo) {
 		hs_world_destroy(world);
 		hs_set_status(status, HS_ERR_NO_MEMORY);
@@ -159,26 +156,17 @@ void hs_world_destroy(hs_world *world) {
 	free(world->model.shape_grow_reach);
 	free(world->model.part_cache);
 	free(world->state.bodies);
-	free(world->scratch.queue);
-	free(world->scratch.moved_from);
 	free(world->state.hands);
 	free(world->out.contacts);
 	hs_hgrid_free(&world->cache.grid);
-	free(world->scratch.candidates);
 	free(world->cache.every);
-	free(world->scratch.found);
 	free(world->cache.awake);
 	free(world->cache.awake_flag);
 	free(world->cache.digest);
 	free(world->cache.box_memo);
 	free(world->cache.stale);
 	free(world->cache.stale_flag);
-	free(world->scratch.posed);
-	free(world->scratch.points);
-	free(world->scratch.hull);
-	free(world->scratch.face_pick);
-	free(world->scratch.edge_pick);
-	free(world->scratch.edge_mark);
+	hs_world_scratch_free(world);
 	free(world);
 }
 
@@ -207,50 +195,6 @@ static bool copy_shape(hs_shape *dst, const hs_shape *src) {
 	return true;
 }
 
-// Scratch for the floor test sized for the largest shape (room for a closing hull point).
-static bool reserve_scratch(hs_world *world, int vertex_count) {
-	if (vertex_count <= world->scratch.vertex_room)
-		return true;
-	size_t n = (size_t)vertex_count + 1;
-	hs_vec3 *posed = realloc(world->scratch.posed, n * sizeof *posed);
-	if (posed)
-		world->scratch.posed = posed;
-	hs_vec2 *points = realloc(world->scratch.points, n * sizeof *points);
-	if (points)
-		world->scratch.points = points;
-	hs_vec2 *hull = realloc(world->scratch.hull, n * sizeof *hull);
-	if (hull)
-		world->scratch.hull = hull;
-	if (!posed || !points || !hull)
-		return false;
-	world->scratch.vertex_room = vertex_count;
-	return true;
-}
-
-// Scratch for a swept line's faces and edges (contact.c), sized for the shape with most of them.
-static bool reserve_picks(hs_world *world, const hs_shape *shape) {
-	if (shape->face_count > world->scratch.pick_faces) {
-		int *faces = realloc(world->scratch.face_pick, (size_t)shape->face_count * sizeof *faces);
-		if (!faces)
-			return false;
-		world->scratch.face_pick = faces;
-		world->scratch.pick_faces = shape->face_count;
-	}
-	if (shape->edge_count > world->scratch.pick_edges) {
-		int *edges = realloc(world->scratch.edge_pick, (size_t)shape->edge_count * sizeof *edges);
-		if (edges)
-			world->scratch.edge_pick = edges;
-		uint8_t *mark = realloc(world->scratch.edge_mark, (size_t)shape->edge_count * sizeof *mark);
-		if (mark)
-			world->scratch.edge_mark = mark;
-		if (!edges || !mark)
-			return false;
-		memset(world->scratch.edge_mark, 0, (size_t)shape->edge_count);
-		world->scratch.pick_edges = shape->edge_count;
-	}
-	return true;
-}
-
 hs_shape_id hs_world_add_shape(hs_world *world, const hs_shape *shape, hs_status *status) {
 	hs_shape_id none = {0};
 	if (!world || !shape || shape->vertex_count <= 0 || !shape->vertices || !(shape->volume > 0.0)) {
@@ -262,7 +206,8 @@ hs_shape_id hs_world_add_shape(hs_world *world, const hs_shape *shape, hs_status
 		return none;
 	}
 	hs_shape *copy = &world->model.shapes[world->model.shape_count];
-	if (!reserve_scratch(world, shape->vertex_count) || !reserve_picks(world, shape) || !copy_shape(copy, shape)) {
+	if (!hs_world_scratch_reserve(world, shape->vertex_count, shape->face_count, shape->edge_count) ||
+	    !copy_shape(copy, shape)) {
 		hs_set_status(status, HS_ERR_NO_MEMORY);
 		return none;
 	}
