@@ -56,7 +56,7 @@ static void detect_points(hs_world *world, int object, int h, const hs_part *par
 		if (!(near >> i & 1u) && !hs_contact_path_near(hand, i, steps, center, r_sq))
 			continue;
 		hs_vec3 b = to_body(body, hand->points[i]);
-		bool inside = inside_part(world, shape, part, b, grow);
+		bool inside = inside_part_with(world, shape, part, pc, b, grow);
 		if (paper) {
 			if (inside)
 				hs_contact_paper_point(world, object, h, i, part, body, to_body(before, hand->prev_points[i]), b, grow);
@@ -64,15 +64,15 @@ static void detect_points(hs_world *world, int object, int h, const hs_part *par
 		}
 		bool touched = swept && (hand->touch_points >> i & 1u);
 		if (swept && (hand->embed_points >> i & 1u)) { // started inside: touches nothing until clear
-			if (inside_part(world, shape, part, b, 2.0 * margin))
+			if (inside_part_with(world, shape, part, pc, b, 2.0 * margin))
 				world->state.hands[h].embed_points_next |= 1u << i;
 			continue;
 		}
-		if (!inside && touched && inside_part(world, shape, part, b, margin)) {
+		if (!inside && touched && inside_part_with(world, shape, part, pc, b, margin)) {
 			world->state.hands[h].near_points |= 1u << i; // off the surface, within the margin: still touching
 			if (moved)
 				continue;
-			const hs_face *f = &shape->faces[nearest_face(world, shape, part, b)];
+			const hs_face *f = &shape->faces[nearest_face_with(world, shape, part, pc, b)];
 			hs_vec3 on = hs_mul_add(b, f->offset - hs_dot(f->normal, b), f->normal);
 			// on an object that moved, only beside a part of its hand that pushes it (keep_hovering)
 			hs_contact_push(world, object, h, i, false, (int)(f - shape->faces), body, on, f->normal, on, still ? 0.0 : -1.0);
@@ -88,7 +88,7 @@ static void detect_points(hs_world *world, int object, int h, const hs_part *par
 		if (touched) {
 			// the entry is read only for a point that did not touch: not sought
 		} else if (grow > 0.0 || steps == 1) {
-			c = clip_part(world, shape, part, a, b, grow);
+			c = clip_part_with(world, shape, part, pc, a, b, grow);
 			from = a;
 			to = b;
 			entered = c.face_in >= 0 && c.hit && (inside || c.t_in < c.t_out);
@@ -99,16 +99,16 @@ static void detect_points(hs_world *world, int object, int h, const hs_part *par
 		if (entered && !touched) { // reached the surface this frame
 			hs_contact_push(world, object, h, i, false, c.face_in, body, hs_lerp(from, to, c.t_in),
 			                shape->faces[c.face_in].normal, b, when);
-		} else if (inside && !touched && !inside_part(world, shape, part, a, grow)) { // from on the surface (the clip's t = 0)
-			int face = nearest_face(world, shape, part, a);
+		} else if (inside && !touched && !inside_part_with(world, shape, part, pc, a, grow)) { // from on the surface (the clip's t = 0)
+			int face = nearest_face_with(world, shape, part, pc, a);
 			hs_contact_push(world, object, h, i, false, face, body, a, shape->faces[face].normal, b, 0.0);
 		} else if (inside && (grow > 0.0 || touched || hs_contact_came_onto(world, object, part, hand->prev_points[i], grow))) {
 			// sunk in (or back in, within the margin), or the object came onto it; or within the grown
 			// part (the margin counts every part)
-			int face = nearest_face(world, shape, part, a);
+			int face = nearest_face_with(world, shape, part, pc, a);
 			const hs_face *f = &shape->faces[face];
 			hs_vec3 point = hs_mul_add(a, f->offset - hs_dot(f->normal, a), f->normal);
-			hs_vec3 start = inside_part(world, shape, part, a, grow) ? a : point; // back in: from the surface
+			hs_vec3 start = inside_part_with(world, shape, part, pc, a, grow) ? a : point; // back in: from the surface
 			hs_contact_push(world, object, h, i, false, face, body, point, f->normal,
 			                hs_add(point, hs_sub(b, start)), 0.0);
 		} else if (inside && swept) { // in it since before it touched anything: started inside
@@ -125,8 +125,7 @@ static bool across(hs_clip c) {
 // since before it touched anything, as the check points in detect_points), or swept across it
 // during the frame. A line with an end inside is the check points' business.
 static void detect_lines(hs_world *world, int object, int h, const hs_part *part, const hs_part_cache *pc,
-                         const hs_frame *body, const hs_frame *before, bool moved, bool cull, double grow, uint32_t touching,
-                         unsigned far) {
+                         const hs_frame *body, const hs_frame *before, bool moved, bool cull, double grow, uint32_t touching, unsigned far) {
 	const hs_shape *shape = &world->model.shapes[world->state.bodies[object].shape];
 	const hs_hand *hand = &world->state.hands[h];
 	hs_vec3 center = to_world(body, part->center);
@@ -166,7 +165,7 @@ static void detect_lines(hs_world *world, int object, int h, const hs_part *part
 			bool miss_ends = (moved || !swept) && !embedded;
 			if (swept && hs_contact_end_touches(world, touching, a, shape, part, p))
 				continue; // beside a touching check point at the frame's end
-			hs_clip c = miss_ends ? clip_part(world, shape, part, p[0], p[1], grow) : (hs_clip){0.0, 1.0, -1, -1, false};
+			hs_clip c = miss_ends ? clip_part_with(world, shape, part, pc, p[0], p[1], grow) : (hs_clip){0.0, 1.0, -1, -1, false};
 			if (miss_ends && !c.hit)
 				continue;
 			hs_vec3 q[2]; // the line a frame ago
@@ -176,12 +175,12 @@ static void detect_lines(hs_world *world, int object, int h, const hs_part *part
 			if (swept && hs_contact_end_touches(world, hand->touch_points, a, shape, part, q))
 				continue; // or at its start
 			if (embedded) { // started inside: touches nothing until clear
-				if (clip_part(world, shape, part, p[0], p[1], 2.0 * world->model.def.grasp_release_mm * 1e-3).hit)
+				if (clip_part_with(world, shape, part, pc, p[0], p[1], 2.0 * world->model.def.grasp_release_mm * 1e-3).hit)
 					world->state.hands[h].embed_lines_next |= (uint64_t)1 << j;
 				continue;
 			}
 			if (!miss_ends)
-				c = clip_part(world, shape, part, p[0], p[1], grow);
+				c = clip_part_with(world, shape, part, pc, p[0], p[1], grow);
 			if (!c.hit) {
 				if (swept && !moved) // a held object moves with the hand: nothing passes through it unseen
 					hs_contact_swept_path(world, object, h, j, part, body, steps, q, p);
@@ -193,7 +192,7 @@ static void detect_lines(hs_world *world, int object, int h, const hs_part *part
 				hs_contact_line_across(world, object, h, j, part, body, p[0], p[1], c, NULL);
 				continue;
 			}
-			if (!clip_part(world, shape, part, q[0], q[1], grow).hit) { // reached it this frame
+			if (!clip_part_with(world, shape, part, pc, q[0], q[1], grow).hit) { // reached it this frame
 				hs_contact_line_across(world, object, h, j, part, body, p[0], p[1], c, NULL);
 			} else if (grow > 0.0 || (hand->touch_lines >> j & 1u) || hs_contact_line_came_onto(world, object, part, m, grow)) {
 				// in it a frame ago too: sunk in (touching), or the object came onto it

@@ -157,40 +157,51 @@ static inline bool box_apart(const hs_shape *shape, const hs_part *part, const h
 }
 #endif
 
-// Inside the part grown by `grow` (m; 0: the part itself).
-static inline bool inside_part(const hs_world *world, const hs_shape *shape, const hs_part *part, hs_vec3 p, double grow) {
+// Inside the part grown by `grow` (m; 0: the part itself); pc: the part's cache (part_cache.h).
+static inline bool inside_part_with(const hs_world *world, const hs_shape *shape, const hs_part *part,
+                                    const hs_part_cache *pc, hs_vec3 p, double grow) {
 	if (part->face_count >= HS_FACE_TREE_MIN_FACES)
 		return hs_contact_inside_many(world, shape, part, p, grow);
-	const hs_part_cache *pc = hs_part_cache_of(world, shape, part);
 	if (hs_part_is_box(pc) && hs_part_box_takes(p))
 		return box_inside(shape, part, pc, p, grow);
 	return scan_inside(shape, part, p, grow);
 }
 
-static inline int nearest_face(const hs_world *world, const hs_shape *shape, const hs_part *part, hs_vec3 p) {
+static inline int nearest_face_with(const hs_world *world, const hs_shape *shape, const hs_part *part,
+                                    const hs_part_cache *pc, hs_vec3 p) {
 	if (part->face_count >= HS_FACE_TREE_MIN_FACES)
 		return hs_contact_nearest_many(world, shape, part, p);
-	const hs_part_cache *pc = hs_part_cache_of(world, shape, part);
 	if (hs_part_is_box(pc) && hs_part_box_takes(p))
 		return box_nearest(shape, part, pc, p);
 	return scan_nearest(shape, part, p);
 }
 
 // hs_clip_segment, through the tree for a many-faced part: the same clip whenever it hits.
-static inline hs_clip clip_part(const hs_world *world, const hs_shape *shape, const hs_part *part, hs_vec3 a, hs_vec3 b,
-                         double grow) {
+static inline hs_clip clip_part_with(const hs_world *world, const hs_shape *shape, const hs_part *part,
+                                     const hs_part_cache *pc, hs_vec3 a, hs_vec3 b, double grow) {
 	if (part->face_count >= HS_FACE_TREE_MIN_FACES) {
 		const hs_face_tree *tree = tree_of(world, shape);
 		int root = hs_face_tree_root(tree, shape, part);
 		if (root >= 0)
 			return hs_face_tree_clip(tree, root, shape, a, b, grow);
 	}
-	const hs_part_cache *pc = hs_part_cache_of(world, shape, part);
 	if (hs_part_is_box(pc) && hs_part_box_takes(a) && hs_part_box_takes(b) && box_apart(shape, part, pc, a, b, grow)) {
 		hs_clip miss = {0.0, 1.0, -1, -1, false};
 		return miss;
 	}
 	return hs_clip_segment(shape, part, a, b, grow);
+}
+
+// The same three, the part's cache found from the world (where a caller does not hold it).
+static inline bool inside_part(const hs_world *world, const hs_shape *shape, const hs_part *part, hs_vec3 p, double grow) {
+	return inside_part_with(world, shape, part, hs_part_cache_of(world, shape, part), p, grow);
+}
+static inline int nearest_face(const hs_world *world, const hs_shape *shape, const hs_part *part, hs_vec3 p) {
+	return nearest_face_with(world, shape, part, hs_part_cache_of(world, shape, part), p);
+}
+static inline hs_clip clip_part(const hs_world *world, const hs_shape *shape, const hs_part *part, hs_vec3 a, hs_vec3 b,
+                                double grow) {
+	return clip_part_with(world, shape, part, hs_part_cache_of(world, shape, part), a, b, grow);
 }
 
 #endif
