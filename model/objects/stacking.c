@@ -32,8 +32,7 @@ static double exit_distance(const hs_shape *shape, const hs_part *part, hs_vec3 
 	return best;
 }
 
-double hs_stack_lift_out(const hs_world *world, const hs_body *a, const hs_body *b) {
-	const hs_shape *sa = &world->model.shapes[a->shape], *sb = &world->model.shapes[b->shape];
+double hs_stack_lift_out(const hs_shape *sa, const hs_body *a, const hs_shape *sb, const hs_body *b) {
 	double lift = 0.0, slop = 1e-12;
 	hs_vec3 up_in_b = hs_quat_inv_rotate(b->rot, hs_v3(0, 0, 1));
 	hs_vec3 down_in_a = hs_quat_inv_rotate(a->rot, hs_v3(0, 0, -1));
@@ -68,7 +67,7 @@ static bool penetrates(const hs_world *world, const hs_body *a, hs_vec3 pos, con
 // only touch (libccd GJK counts touching within ~1e-12 m as interference).
 static double lift_from(const hs_world *world, const hs_body *a, const hs_body *b) {
 	hs_body lifted = *a;
-	double lo = hs_stack_lift_out(world, a, b);
+	double lo = hs_stack_lift_out(&world->model.shapes[a->shape], a, &world->model.shapes[b->shape], b);
 	lifted.pos.z = a->pos.z + lo;
 	if (!penetrates(world, &lifted, lifted.pos, b))
 		return lo;

@@ -151,7 +151,8 @@ void hs_support_step(hs_world *world, int object) {
 		int j = world->scratch.near[k];
 		if (!is_support(world, object, j, tol))
 			continue; // a support is under the body's G
-		double t = hs_stack_lift_out(world, body, &world->state.bodies[j]);
+		double t = hs_stack_lift_out(&world->model.shapes[body->shape], body, &world->model.shapes[world->state.bodies[j].shape],
+		                             &world->state.bodies[j]);
 		lift = t > lift ? t : lift;
 		touching = true;
 	}

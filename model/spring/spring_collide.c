@@ -333,7 +333,7 @@ static bool answer(hs_world *world, hs_spring_system *sys, int i, int j, double 
 	}
 	// an impact slower than HS_REST_BOUNCE_SPEED is a resting push: no bounce (spring_rest.h)
 	bool push = resting || -hs_dot(hs_sub(b->vel, a->vel), n) <= HS_REST_BOUNCE_SPEED;
-	hs_spring_pair_impulse(world, sys, i, j, n, push ? 0.0 : hs_spring_pair_restitution(world, sys, i, j), push);
+	hs_spring_pair_impulse(world, sys, i, j, n, push ? 0.0 : hs_spring_pair_restitution(&sys->def, &world->state.bodies[i], &world->state.bodies[j]), push);
 	separate(world, sys, i, j, n, depth, push);
 	// the rest of the frame, from where they met; a push (no bounce) stops there: moved on by the
 	// frame start's load, an object that met a second support fell on into it and was separated

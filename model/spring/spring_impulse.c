@@ -3,10 +3,10 @@
 // still approaching and spring_collide.c's meetings both answer with it.
 #include "spring_impulse.h"
 
-double hs_spring_pair_restitution(const hs_world *world, const hs_spring_system *sys, int a, int b) {
-	double ea = world->state.bodies[a].restitution, eb = world->state.bodies[b].restitution;
-	ea = ea < 0.0 ? sys->def.restitution : ea;
-	eb = eb < 0.0 ? sys->def.restitution : eb;
+double hs_spring_pair_restitution(const hs_spring_def *def, const hs_body *a, const hs_body *b) {
+	double ea = a->restitution, eb = b->restitution;
+	ea = ea < 0.0 ? def->restitution : ea;
+	eb = eb < 0.0 ? def->restitution : eb;
 	return fmin(ea, eb);
 }
 

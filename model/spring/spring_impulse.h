@@ -24,7 +24,7 @@ bool hs_spring_pair_impulse(hs_world *world, const hs_spring_system *sys, int i,
                             bool resting);
 
 // The restitution of a pair of objects: the smaller of their own (hs_object_def.restitution; the
-// model's where unset).
-double hs_spring_pair_restitution(const hs_world *world, const hs_spring_system *sys, int a, int b);
+// model's, def->restitution, where unset).
+double hs_spring_pair_restitution(const hs_spring_def *def, const hs_body *a, const hs_body *b);
 
 #endif

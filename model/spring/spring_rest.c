@@ -249,7 +249,7 @@ void hs_spring_rest(hs_world *world, hs_spring_system *sys) {
 	}
 	for (int t = 0; t < sys->touch_count; ++t) {
 		hs_spring_touch *c = &sys->touch[t];
-		c->e = hs_spring_pair_restitution(world, sys, c->a, c->b);
+		c->e = hs_spring_pair_restitution(&sys->def, &world->state.bodies[c->a], &world->state.bodies[c->b]);
 		c->mass = 1.0 / (1.0 / world->state.bodies[c->a].mass + 1.0 / world->state.bodies[c->b].mass);
 	}
 	approach_impulses(world, sys);
