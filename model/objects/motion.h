@@ -11,7 +11,7 @@
 void hs_motion_step(hs_world *world, hs_body *body);
 // Poses the body's vertices into world->scratch.posed; returns the lowest z.
 double hs_motion_pose_vertices(hs_world *world, const hs_body *body);
-// Counts the posed vertices (scratch_world) within the floor tolerance and stores their (x, y)
+// Counts the posed vertices (scratch.posed) within the floor tolerance and stores their (x, y)
 // in world->scratch.points.
 int hs_motion_floor_points(hs_world *world, const hs_body *body);
 // §4.2 rectification alone: lifts the body out of the floor and counts its floor contacts.

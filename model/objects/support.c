@@ -57,7 +57,7 @@ static bool is_support(const hs_world *world, int object, int j, double tol) {
 	return j != object && near_spheres(world, object, j, tol) && world->state.bodies[j].pos.z <= world->state.bodies[object].pos.z;
 }
 
-// Contact points (scratch_points) of `object` on the supports among world->scratch.near[0 .. near_count).
+// Contact points (scratch.points) of `object` on the supports among world->scratch.near[0 .. near_count).
 static int contacts(hs_world *world, int object, int near_count, double *height_sum) {
 	double tol = world->model.def.floor_tolerance;
 	int n = 0;
