@@ -156,7 +156,7 @@ $(BUILD)/pic/%.map: Makefile
 	@{ echo '{ global:'; sed -n -e '/static inline/d' \
 		-e 's/^[A-Za-z_][A-Za-z0-9_ *]*[ *]\(hs_[A-Za-z0-9_]*\)(.*/  \1;/p' $(filter %.h,$^); \
 		echo '  local: *; };'; } > $@
-$(BUILD)/pic/handspring.map: model/include/handspring.h model/include/hs_math.h
+$(BUILD)/pic/handspring.map: model/include/handspring.h model/include/hs_math.h model/include/hs_bench.h
 $(BUILD)/pic/handspring-harness.map: harness/include/hs_harness.h
 
 # shared objects, their soname link (what programs load) and their development link (-l...)

@@ -11,6 +11,7 @@
 #include <stdint.h>
 #include <stdio.h>
 
+#include "hs_bench.h"
 #include "handspring.h"
 
 /// Run options from the command line.

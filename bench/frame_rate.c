@@ -277,7 +277,6 @@ static fr_scene *scene_create(fr_shape kind, int objects, int touched, bool skip
 	wd.dt = BENCH_DT;
 	wd.max_objects = objects;
 	wd.max_hands = FR_TWO_HANDS(touched) ? 2 : 1;
-	wd.skip_work = skip;
 	wd.paper_contacts = fr_paper_contacts;
 	bench_grasp_start(&wd);
 	if (fr_glove_deadband >= 0)
@@ -286,6 +285,7 @@ static fr_scene *scene_create(fr_shape kind, int objects, int touched, bool skip
 	sc->world = hs_world_create(&wd, &st);
 	if (!sc->world)
 		die_status("world", st);
+	hs_world_set_skip_work(sc->world, skip); // before any object
 	sc->deadband = wd.glove_deadband;
 	hs_shape *shape = make_shape(kind);
 	hs_object_def od = hs_default_object_def();

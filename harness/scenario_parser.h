@@ -26,6 +26,7 @@ typedef struct hs_scenario_parser {
 	const yaml_node_t *input_noise_key; // where model.input_noise was given (NULL: not given)
 	const hs_scenario_options *options; // what the caller overrides (NULL: nothing)
 	double stylus_scale;                // the stylus noise's scale (0: as it is)
+	bool skip_work_off;                 // model.skip_work: false (set on the world once made, hs_bench.h)
 } hs_scenario_parser;
 
 // scenario_world.c

@@ -6,6 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "hs_bench.h"
 #include "overlap.h"
 #include "scenario_internal.h"
 #include "scenario_parser.h"
@@ -361,8 +362,10 @@ bool hs_read_model(hs_scenario_parser *p, const yaml_node_t *node, hs_world_def 
 			return hs_yaml_fail(&p->y, f.value[2], "'floor_tolerance' must be within (0, 0.01] m, got %s",
 			                    hs_yaml_show(f.value[2]).text);
 	}
-	if (f.value[3] && !hs_yaml_bool(&p->y, f.value[3], names[3], &def->skip_work))
+	bool skip_work = !p->skip_work_off;
+	if (f.value[3] && !hs_yaml_bool(&p->y, f.value[3], names[3], &skip_work))
 		return false;
+	p->skip_work_off = !skip_work;
 	int64_t band = def->glove_deadband;
 	if (f.value[8] && !hs_yaml_integer(&p->y, f.value[8], names[8], 0, HS_MAX_GLOVE_DEADBAND, &band))
 		return false;
@@ -725,6 +728,8 @@ bool hs_read_objects(hs_scenario_parser *p, const yaml_node_t *node, hs_world_de
 	s->world = hs_world_create(&def, &status);
 	if (!s->world)
 		return hs_yaml_fail(&p->y, node, "cannot create the world: %s", hs_status_string(status));
+	if (p->skip_work_off) // a benchmark's knob (hs_bench.h), set before any object
+		hs_world_set_skip_work(s->world, false);
 	for (int i = 0; i < s->object_count; ++i)
 		if (!read_object(p, hs_yaml_item(&p->y, node, i), i))
 			return false;

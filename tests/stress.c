@@ -27,6 +27,7 @@
 #include <string.h>
 #include <time.h>
 
+#include "hs_bench.h"
 #include "manipulate.h"
 #include "world_internal.h"
 
@@ -403,7 +404,7 @@ static double spring_energy(const scene *sc, int i) {
 	hs_world_spring_state(sc->world, &ss);
 	hs_object_state o;
 	hs_world_object_state(sc->world, sc->id[i], &o);
-	hs_vec3 g = sc->world->def.gravity;
+	hs_vec3 g = sc->world->model.def.gravity;
 	double e = 0.5 * so.mass * hs_length_sq(so.velocity) - so.mass * hs_dot(g, o.position);
 	if (so.attached) {
 		double stretch = hs_distance(o.position, ss.stylus) - so.rest_length;
@@ -664,18 +665,18 @@ static void case_hand_inside(stats *st) {
 // tests/test_contact.c does, so no kinematics rounds them).
 static int exact_world(scene *sc, hs_quat q, hs_vec3 g, int kind, double threshold_deg) {
 	hs_world_def def = world_def(1.0 / 60, 1);
-	def.skip_work = false;
 	def.grasp_threshold_deg = threshold_deg;
 	// the threshold's comparison is what is tested: a grasp starts on the normals alone (the
 	// paper's letter), parts placed by hand close on nothing and adjoining faces are not opposed
 	def.grasp_opposed = false;
 	def.grasp_close_mm = 0.0;
 	scene_init(sc, &def);
+	hs_world_set_skip_work(sc->world, false);
 	hs_shape_id cube = scene_shape(sc, hs_shape_box(hs_v3(0.1, 0.1, 0.1), NULL));
 	int i = scene_add(sc, cube, g, q, ZERO, 500);
 	hs_hand_def hd = hs_default_hand_def();
 	need(hs_world_add_hand(sc->world, &hd, NULL).index1 == 1, "hand");
-	hs_hand *hand = &sc->world->hands[0];
+	hs_hand *hand = &sc->world->state.hands[0];
 	hs_vec3 far = hs_v3(100, 100, 100);
 	for (int p = 0; p < HS_HAND_POINTS; ++p)
 		hand->points[p] = hand->prev_points[p] = far;
@@ -737,7 +738,7 @@ static void case_exact_contacts(stats *st) {
 			CHECK(st, hs_vec3_is_finite(cs[c].point) && hs_vec3_is_finite(cs[c].normal) &&
 			              fabs(hs_length(cs[c].normal) - 1.0) < 1e-9,
 			      "trial %ld: contact %d not finite or not unit", k, c);
-		hs_contact_state state = (hs_contact_state)sc.world->bodies[i].contact;
+		hs_contact_state state = (hs_contact_state)sc.world->state.bodies[i].contact;
 		if (kind == 0) {
 			CHECK(st, n == 2 && state == HS_CONTACT_GRASP,
 			      "trial %ld: adjoining faces at exactly 90 deg: %d contacts, state %d (want 2 contacts, grasp)", k, n,

@@ -16,6 +16,7 @@
 
 #include <cmocka.h>
 
+#include "hs_bench.h"
 #include "hs_harness.h"
 #include "test_util.h"
 
@@ -97,6 +98,28 @@ static void assert_state_finite(const hs_world *w, hs_object_id id) {
 
 // ---------------------------------------------------------------------------------------------
 // status and shapes
+
+// hs_bench.h: work is skipped in a new world; the knob turns only before the first object.
+static void test_skip_work_knob(void **state) {
+	(void)state;
+	hs_world_def def = hs_default_world_def();
+	hs_world *w = hs_world_create(&def, NULL);
+	assert_non_null(w);
+	assert_true(hs_world_skip_work(w));
+	assert_int_equal(hs_world_set_skip_work(w, false), HS_OK);
+	assert_false(hs_world_skip_work(w));
+	hs_shape *box = hs_shape_box(hs_v3(0.1, 0.1, 0.1), NULL);
+	hs_object_def od = hs_default_object_def();
+	od.shape = hs_world_add_shape(w, box, NULL);
+	od.position = hs_v3(0, 0, 0.05);
+	hs_shape_destroy(box);
+	assert_int_equal(hs_world_add_object(w, &od, NULL).index1, 1);
+	assert_int_equal(hs_world_set_skip_work(w, true), HS_ERR_INVALID_ARGUMENT);
+	assert_false(hs_world_skip_work(w));
+	assert_int_equal(hs_world_set_skip_work(NULL, true), HS_ERR_INVALID_ARGUMENT);
+	assert_false(hs_world_skip_work(NULL));
+	hs_world_destroy(w);
+}
 
 static void test_status_string(void **state) {
 	(void)state;
@@ -1012,6 +1035,7 @@ static int remove_tmp_dir(void **state) {
 
 int main(void) {
 	const struct CMUnitTest tests[] = {
+	    cmocka_unit_test(test_skip_work_knob),
 	    cmocka_unit_test(test_status_string),     cmocka_unit_test(test_shape_builders),
 	    cmocka_unit_test(test_polyhedron),        cmocka_unit_test(test_shape_queries),
 	    cmocka_unit_test(test_world_create),      cmocka_unit_test(test_world_dt_extremes),

@@ -28,12 +28,12 @@ static hs_world *cube_world_dt(double dt) {
 static hs_world *cube_world(void) { return cube_world_dt(1.0 / 60); }
 
 static void move_point(hs_world *w, int i, hs_vec3 from, hs_vec3 to) {
-	w->hands[0].prev_points[i] = from;
-	w->hands[0].points[i] = to;
-	hs_hand_points_moved(&w->hands[0]);
+	w->state.hands[0].prev_points[i] = from;
+	w->state.hands[0].points[i] = to;
+	hs_hand_points_moved(&w->state.hands[0]);
 }
 
-static hs_contact contact(const hs_world *w, int k) { return w->contacts[k]; }
+static hs_contact contact(const hs_world *w, int k) { return w->out.contacts[k]; }
 
 // (A) a check point that entered through the top face touches it where it crossed.
 static void test_point_enters_face(void **state) {
@@ -57,12 +57,12 @@ static void test_point_inside_nearest_face(void **state) {
 	hs_world *w = cube_world();
 	move_point(w, 0, hs_v3(-0.45, 0, 2.1), hs_v3(-0.44, 0, 2.1));
 	assert_int_equal(hs_contact_detect(w, 0, NULL), 0);
-	w->hands[0].touch_points = 1u;
+	w->state.hands[0].touch_points = 1u;
 	assert_int_equal(hs_contact_detect(w, 0, NULL), 1);
 	assert_vec3_near(contact(w, 0).normal, hs_v3(-1, 0, 0), 1e-15);
 	assert_vec3_near(contact(w, 0).point, hs_v3(-0.5, 0, 2.1), 1e-15);
 	assert_vec3_near(contact(w, 0).finger, hs_v3(-0.49, 0, 2.1), 1e-15);
-	w->contact_count = 0;
+	w->out.contact_count = 0;
 	move_point(w, 0, hs_v3(-0.45, 0, 2.1), hs_v3(-0.46, 0.01, 2.1)); // coming out: it drives nothing
 	assert_int_equal(hs_contact_detect(w, 0, NULL), 1);
 	assert_vec3_near(contact(w, 0).finger, hs_v3(-0.5, 0, 2.1), 1e-15);
@@ -83,18 +83,18 @@ static void test_fingertip_friction_cone(void **state) {
 	assert_vec3_near(contact(w, 0).point, hs_v3(0.34, 0.2, 2.5), 1e-12);
 	assert_vec3_near(contact(w, 0).finger, hs_v3(0.39, 0.2, 2.45), 1e-12);
 	// sunk in the -x face (touching): in 0.01 and sideways 0.03 -> 0.01; sideways 0.005 stays whole
-	w->contact_count = 0;
-	w->hands[0].points[3] = w->hands[0].prev_points[3] = RIG_FAR;
-	w->hands[0].touch_points = 1u;
+	w->out.contact_count = 0;
+	w->state.hands[0].points[3] = w->state.hands[0].prev_points[3] = RIG_FAR;
+	w->state.hands[0].touch_points = 1u;
 	move_point(w, 0, hs_v3(-0.45, 0, 2.1), hs_v3(-0.44, 0.03, 2.1));
 	assert_int_equal(hs_contact_detect(w, 0, NULL), 1);
 	assert_vec3_near(contact(w, 0).point, hs_v3(-0.5, 0, 2.1), 1e-15);
 	assert_vec3_near(contact(w, 0).finger, hs_v3(-0.49, 0.01, 2.1), 1e-15);
-	w->contact_count = 0;
+	w->out.contact_count = 0;
 	move_point(w, 0, hs_v3(-0.45, 0, 2.1), hs_v3(-0.44, 0.005, 2.1));
 	assert_int_equal(hs_contact_detect(w, 0, NULL), 1);
 	assert_vec3_near(contact(w, 0).finger, hs_v3(-0.49, 0.005, 2.1), 1e-15);
-	w->contact_count = 0;
+	w->out.contact_count = 0;
 	move_point(w, 0, hs_v3(-0.45, 0, 2.1), hs_v3(-0.45, 0.02, 2.1)); // along the face only
 	assert_int_equal(hs_contact_detect(w, 0, NULL), 1);
 	assert_vec3_near(contact(w, 0).finger, hs_v3(-0.5, 0, 2.1), 1e-15);
@@ -108,32 +108,32 @@ static void test_fingertip_friction_cone(void **state) {
 static void test_touching_point_within_margin(void **state) {
 	(void)state;
 	hs_world *w = cube_world();
-	hs_body *b = &w->bodies[0];
+	hs_body *b = &w->state.bodies[0];
 	b->prev = b->pos;
 	b->rot_prev = b->rot;
-	w->hands[0].touch_points = 1u << 3;
+	w->state.hands[0].touch_points = 1u << 3;
 	move_point(w, 3, hs_v3(0.1, 0.2, 2.499), hs_v3(0.1, 0.2, 2.503));
 	assert_int_equal(hs_contact_detect(w, 0, NULL), 1);
 	assert_vec3_near(contact(w, 0).point, hs_v3(0.1, 0.2, 2.5), 1e-15);
 	assert_vec3_near(contact(w, 0).finger, contact(w, 0).point, 0.0);
-	assert_int_equal(w->hands[0].near_points, 1u << 3);
-	w->contact_count = 0;
-	w->hands[0].near_points = 0;
+	assert_int_equal(w->state.hands[0].near_points, 1u << 3);
+	w->out.contact_count = 0;
+	w->state.hands[0].near_points = 0;
 	b->prev.x -= 0.001; // moved last frame: no contact, still touching
 	assert_int_equal(hs_contact_detect(w, 0, NULL), 0);
-	assert_int_equal(w->hands[0].near_points, 1u << 3);
-	w->contact_count = 0; // ... unless another part of the hand pushes it this frame: 3
+	assert_int_equal(w->state.hands[0].near_points, 1u << 3);
+	w->out.contact_count = 0; // ... unless another part of the hand pushes it this frame: 3
 	move_point(w, 7, hs_v3(0.0, 0.2, 2.6), hs_v3(0.0, 0.2, 2.49));
 	assert_int_equal(hs_contact_detect(w, 0, NULL), 2);
-	assert_int_equal(hs_contact_classify(w->contacts, 2, w->grasp_limit, false), HS_CONTACT_PUSH_MANY);
-	assert_true(w->contacts[0].t == 0.0 || w->contacts[1].t == 0.0);
-	w->contact_count = 0;
-	w->hands[0].points[7] = w->hands[0].prev_points[7] = RIG_FAR;
+	assert_int_equal(hs_contact_classify(w->out.contacts, 2, w->model.grasp_limit, false), HS_CONTACT_PUSH_MANY);
+	assert_true(w->out.contacts[0].t == 0.0 || w->out.contacts[1].t == 0.0);
+	w->out.contact_count = 0;
+	w->state.hands[0].points[7] = w->state.hands[0].prev_points[7] = RIG_FAR;
 	b->prev = b->pos;
-	w->hands[0].near_points = 0;
+	w->state.hands[0].near_points = 0;
 	move_point(w, 3, hs_v3(0.1, 0.2, 2.499), hs_v3(0.1, 0.2, 2.506)); // beyond the margin: let go
 	assert_int_equal(hs_contact_detect(w, 0, NULL), 0);
-	assert_int_equal(w->hands[0].near_points, 0u);
+	assert_int_equal(w->state.hands[0].near_points, 0u);
 	hs_world_destroy(w);
 }
 
@@ -143,15 +143,15 @@ static void test_touching_point_within_margin(void **state) {
 static void test_trailing_part_set_aside(void **state) {
 	(void)state;
 	hs_world *w = cube_world();
-	w->hands[0].touch_points = 1u << 7;                           // finger 1's tip touched the -x face
+	w->state.hands[0].touch_points = 1u << 7;                           // finger 1's tip touched the -x face
 	move_point(w, 7, hs_v3(-0.45, 0, 2.1), hs_v3(-0.43, 0, 2.1)); // sunk: drives it in 0.02
 	move_point(w, 6, hs_v3(-0.6, 0, 2.2), hs_v3(-0.49, 0, 2.2));  // its DIP reaches it, 0.01 in
 	assert_int_equal(hs_contact_detect(w, 0, NULL), 1);
 	assert_int_equal(contact(w, 0).part, 7);
-	w->contact_count = 0;
+	w->out.contact_count = 0;
 	move_point(w, 6, hs_v3(-0.6, 0, 2.2), hs_v3(-0.47, 0, 2.2)); // 0.03 in: ahead of the tip
 	assert_int_equal(hs_contact_detect(w, 0, NULL), 2);
-	w->contact_count = 0;
+	w->out.contact_count = 0;
 	move_point(w, 6, hs_v3(-0.6, 0, 2.2), hs_v3(-0.49, 0, 2.2));
 	move_point(w, 11, hs_v3(-0.6, 0.2, 2.2), hs_v3(-0.49, 0.2, 2.2)); // another finger: touches
 	assert_int_equal(hs_contact_detect(w, 0, NULL), 2);
@@ -167,7 +167,7 @@ static void test_trailing_part_same_frame(void **state) {
 	move_point(w, 6, hs_v3(-0.62, 0, 2.2), hs_v3(-0.49, 0, 2.2)); // the DIP: in at t = 0.92, 0.01 deep
 	assert_int_equal(hs_contact_detect(w, 0, NULL), 1);
 	assert_int_equal(contact(w, 0).part, 7);
-	w->contact_count = 0;
+	w->out.contact_count = 0;
 	move_point(w, 6, hs_v3(-0.52, 0, 2.2), hs_v3(-0.49, 0, 2.2)); // the DIP first (t = 0.67): touches
 	assert_int_equal(hs_contact_detect(w, 0, NULL), 2);
 	hs_world_destroy(w);
@@ -179,17 +179,17 @@ static void test_trailing_part_same_frame(void **state) {
 static void test_line_beside_touching_point(void **state) {
 	(void)state;
 	hs_world *w = cube_world();
-	hs_hand *hand = &w->hands[0];
+	hs_hand *hand = &w->state.hands[0];
 	hand->lines[8][0] = hs_v3(0.3, 0, 2.7); // enters the top, leaves +x; its end 3 mm off the +x face
 	hand->lines[8][1] = hs_v3(0.503, 0, 2.45);
 	assert_int_equal(hs_contact_detect(w, 0, NULL), 1);
 	assert_true(contact(w, 0).edge);
-	w->contact_count = 0;
+	w->out.contact_count = 0;
 	hand->touch_points = 1u << 3;
 	assert_int_equal(hs_contact_detect(w, 0, NULL), 0);
 	hand->touch_points = 1u << 1; // another point of that finger: the line still touches
 	assert_int_equal(hs_contact_detect(w, 0, NULL), 1);
-	w->contact_count = 0;
+	w->out.contact_count = 0;
 	hand->touch_points = 0; // point 3 reaching the top this frame: the line is its business too
 	move_point(w, 3, hs_v3(0.45, 0, 2.6), hs_v3(0.45, 0, 2.49));
 	assert_int_equal(hs_contact_detect(w, 0, NULL), 1);
@@ -204,7 +204,7 @@ static void test_point_at_edge_and_surface(void **state) {
 	hs_world *w = cube_world();
 	move_point(w, 0, hs_v3(-0.6, 0, 2), hs_v3(-0.5, 0, 2)); // exactly on the face plane
 	assert_int_equal(hs_contact_detect(w, 0, NULL), 0);
-	w->contact_count = 0;
+	w->out.contact_count = 0;
 	move_point(w, 0, hs_v3(0.6, 0, 2.6), hs_v3(0.4, 0, 2.4)); // crosses the edge x = z - 2 = 0.5
 	assert_int_equal(hs_contact_detect(w, 0, NULL), 1);
 	hs_vec3 n = contact(w, 0).normal;
@@ -218,7 +218,7 @@ static void test_point_at_edge_and_surface(void **state) {
 static void test_line_crosses_edge(void **state) {
 	(void)state;
 	hs_world *w = cube_world();
-	hs_hand *hand = &w->hands[0];
+	hs_hand *hand = &w->state.hands[0];
 	hand->lines[7][0] = hs_v3(0.25, 0, 2.6); // enters the top at t = 0.25, leaves +x at t = 0.625
 	hand->lines[7][1] = hs_v3(0.65, 0, 2.2);
 	assert_int_equal(hs_contact_detect(w, 0, NULL), 1);
@@ -235,14 +235,14 @@ static void test_line_crosses_edge(void **state) {
 static void test_line_across_and_line_ending_inside(void **state) {
 	(void)state;
 	hs_world *w = cube_world();
-	hs_hand *hand = &w->hands[0];
+	hs_hand *hand = &w->state.hands[0];
 	hand->lines[0][0] = hs_v3(-1, 0, 2.45);
 	hand->lines[0][1] = hs_v3(1, 0, 2.45);
 	assert_int_equal(hs_contact_detect(w, 0, NULL), 1);
 	assert_false(contact(w, 0).edge);
 	assert_vec3_near(contact(w, 0).normal, hs_v3(0, 0, 1), 1e-15);
 	assert_vec3_near(contact(w, 0).point, hs_v3(0, 0, 2.5), 1e-15);
-	w->contact_count = 0;
+	w->out.contact_count = 0;
 	hand->lines[0][1] = hs_v3(0, 0, 2.45);
 	assert_int_equal(hs_contact_detect(w, 0, NULL), 0);
 	hs_world_destroy(w);
@@ -342,9 +342,9 @@ static void test_push_many_translates(void **state) {
 	move_point(w, 3, hs_v3(-0.6, 0.2, 2), hs_v3(-0.45, 0.2, 2));
 	move_point(w, 7, hs_v3(-0.6, -0.3, 2), hs_v3(-0.40, -0.3, 2));
 	hs_manipulate(w);
-	assert_int_equal(w->bodies[0].contact, HS_CONTACT_PUSH_MANY);
-	assert_vec3_near(w->bodies[0].pos, hs_v3(0.075, 0, 2), 1e-15);
-	assert_near(hs_quat_angle(w->bodies[0].rot), 0, 0);
+	assert_int_equal(w->state.bodies[0].contact, HS_CONTACT_PUSH_MANY);
+	assert_vec3_near(w->state.bodies[0].pos, hs_v3(0.075, 0, 2), 1e-15);
+	assert_near(hs_quat_angle(w->state.bodies[0].rot), 0, 0);
 	hs_world_destroy(w);
 }
 
@@ -352,12 +352,12 @@ static void test_push_many_translates(void **state) {
 static void test_grasp_follow_release(void **state) {
 	(void)state;
 	hs_world *w = cube_world();
-	hs_hand *hand = &w->hands[0];
+	hs_hand *hand = &w->state.hands[0];
 	move_point(w, 3, hs_v3(-0.6, 0, 2), hs_v3(-0.45, 0, 2)); // two opposite faces: 180 deg
 	move_point(w, 7, hs_v3(0.6, 0, 2), hs_v3(0.45, 0, 2));
 	hs_world_step(w);
-	assert_int_equal(w->bodies[0].contact, HS_CONTACT_GRASP);
-	assert_vec3_near(w->bodies[0].pos, hs_v3(0, 0, 2), 0); // held where it was grasped
+	assert_int_equal(w->state.bodies[0].contact, HS_CONTACT_GRASP);
+	assert_vec3_near(w->state.bodies[0].pos, hs_v3(0, 0, 2), 0); // held where it was grasped
 	for (int k = 1; k <= 3; ++k) { // the wrist and fingers rise 0.1 per frame and turn 10 deg about z
 		hs_vec3 lift = hs_v3(0, 0, 0.1 * k);
 		hand->wrist_pos = lift;
@@ -368,8 +368,8 @@ static void test_grasp_follow_release(void **state) {
 		hand->points[7] = hs_add(tip7, lift);
 		hs_hand_points_moved(hand);
 		hs_world_step(w);
-		assert_int_equal(w->bodies[0].contact, HS_CONTACT_GRASP);
-		assert_vec3_near(w->bodies[0].pos, hs_add(hs_quat_rotate(hand->wrist_rot, hs_v3(0, 0, 2)), lift), 1e-14);
+		assert_int_equal(w->state.bodies[0].contact, HS_CONTACT_GRASP);
+		assert_vec3_near(w->state.bodies[0].pos, hs_add(hs_quat_rotate(hand->wrist_rot, hs_v3(0, 0, 2)), lift), 1e-14);
 	}
 	hand->points[3] = hand->points[7] = FAR; // the hand opens while it goes on rising and turning
 	hs_hand_points_moved(hand);
@@ -377,14 +377,14 @@ static void test_grasp_follow_release(void **state) {
 	hand->wrist_rot = hs_quat_from_axis_angle(hs_v3(0, 0, 1), 40 * HS_PI / 180);
 	hs_vec3 carried = hs_add(hs_quat_rotate(hand->wrist_rot, hs_v3(0, 0, 2)), hand->wrist_pos);
 	hs_world_step(w);
-	assert_int_equal(w->bodies[0].contact, HS_CONTACT_NONE);
+	assert_int_equal(w->state.bodies[0].contact, HS_CONTACT_NONE);
 	// v = the hand's motion over the frame it let go in, (carried - last) / dt: let go in the
 	// middle of that frame, it leaves the frame where the hand carried it
-	assert_vec3_near(w->bodies[0].pos, carried, 1e-14);
-	hs_vec3 v_dt = hs_sub(carried, w->bodies[0].prev); // prev: where the last held frame left it
+	assert_vec3_near(w->state.bodies[0].pos, carried, 1e-14);
+	hs_vec3 v_dt = hs_sub(carried, w->state.bodies[0].prev); // prev: where the last held frame left it
 	hs_world_step(w); // on the parabola of v + g dt / 2 at that frame's end: + v dt + g dt²
-	assert_vec3_near(w->bodies[0].pos, hs_add(hs_add(carried, v_dt), hs_v3(0, 0, -9.81 / 3600)), 1e-14);
-	assert_near(hs_quat_angle(w->bodies[0].spin), 10 * HS_PI / 180, 1e-12); // keeps turning
+	assert_vec3_near(w->state.bodies[0].pos, hs_add(hs_add(carried, v_dt), hs_v3(0, 0, -9.81 / 3600)), 1e-14);
+	assert_near(hs_quat_angle(w->state.bodies[0].spin), 10 * HS_PI / 180, 1e-12); // keeps turning
 	hs_world_destroy(w);
 }
 
@@ -394,14 +394,14 @@ static void test_grasp_slips_on_floor(void **state) {
 	(void)state;
 	hs_world_def def = hs_default_world_def();
 	hs_world *w = rig_world(&def, hs_shape_box(hs_v3(1, 1, 1), NULL), hs_v3(0, 0, 0.5), hs_v3(0, 0, 0.5));
-	hs_hand *hand = &w->hands[0];
+	hs_hand *hand = &w->state.hands[0];
 	move_point(w, 3, hs_v3(-0.6, 0, 0.5), hs_v3(-0.45, 0, 0.5)); // two opposite faces: a grasp
 	move_point(w, 7, hs_v3(0.6, 0, 0.5), hs_v3(0.45, 0, 0.5));
 	hand->points[0] = hand->prev_points[0] = hs_v3(-0.45, 0, 5); // the fingers' bases, far above:
 	hand->points[4] = hand->prev_points[4] = hs_v3(0.45, 0, 5);  // moved with the tips, no reach out
 	hs_hand_points_moved(hand);
 	hs_world_step(w);
-	assert_int_equal(w->bodies[0].contact, HS_CONTACT_GRASP);
+	assert_int_equal(w->state.bodies[0].contact, HS_CONTACT_GRASP);
 	const double dz[2] = {-0.1, 0.3}; // the wrist and the tips press 0.1 down, then rise 0.3
 	const double held[2] = {0.5, 0.8}; // G: kept on the floor, then 0.3 above it
 	for (int k = 0; k < 2; ++k) {
@@ -411,8 +411,8 @@ static void test_grasp_slips_on_floor(void **state) {
 		move_point(w, 0, hand->points[0], hs_add(hand->points[0], hs_v3(0, 0, dz[k])));
 		move_point(w, 4, hand->points[4], hs_add(hand->points[4], hs_v3(0, 0, dz[k])));
 		hs_world_step(w);
-		assert_int_equal(w->bodies[0].contact, HS_CONTACT_GRASP);
-		assert_vec3_near(w->bodies[0].pos, hs_v3(0, 0, held[k]), 1e-15);
+		assert_int_equal(w->state.bodies[0].contact, HS_CONTACT_GRASP);
+		assert_vec3_near(w->state.bodies[0].pos, hs_v3(0, 0, held[k]), 1e-15);
 	}
 	hs_world_destroy(w);
 }
@@ -421,11 +421,11 @@ static void test_grasp_slips_on_floor(void **state) {
 // to u k + a k²/2 at frame k (u, a per frame), from frame 1 to `frames`, then the hand opens.
 // Returns the release frame's index.
 static int carry_path_and_release(hs_world *w, hs_vec3 u_dt, hs_vec3 a_dt2, int frames) {
-	hs_hand *hand = &w->hands[0];
+	hs_hand *hand = &w->state.hands[0];
 	move_point(w, 3, hs_v3(-0.6, 0, 2), hs_v3(-0.45, 0, 2));
 	move_point(w, 7, hs_v3(0.6, 0, 2), hs_v3(0.45, 0, 2));
 	hs_world_step(w);
-	assert_int_equal(w->bodies[0].contact, HS_CONTACT_GRASP);
+	assert_int_equal(w->state.bodies[0].contact, HS_CONTACT_GRASP);
 	for (int k = 1; k <= frames; ++k) {
 		hs_vec3 shift = hs_mul_add(hs_scale(u_dt, k), 0.5 * k * k, a_dt2);
 		hand->wrist_pos = shift;
@@ -434,7 +434,7 @@ static int carry_path_and_release(hs_world *w, hs_vec3 u_dt, hs_vec3 a_dt2, int 
 		hs_hand_points_moved(hand);
 		hand->center = hs_add(hs_v3(0, 0, 2), shift);
 		hs_world_step(w);
-		assert_int_equal(w->bodies[0].contact, HS_CONTACT_GRASP);
+		assert_int_equal(w->state.bodies[0].contact, HS_CONTACT_GRASP);
 	}
 	hand->points[3] = hand->points[7] = FAR; // the hand opens while it goes on moving
 	hs_hand_points_moved(hand);
@@ -462,17 +462,17 @@ static void test_release_on_exact_parabola(void **state) {
 		hs_world *w = cube_world_dt(dt);
 		hs_vec3 u = hs_v3(2, 0, 1);
 		carry_and_release(w, hs_scale(u, dt), 6);
-		hs_vec3 pn = w->bodies[0].pos; // the last held position: (0, 0, 2) + 6 u dt
+		hs_vec3 pn = w->state.bodies[0].pos; // the last held position: (0, 0, 2) + 6 u dt
 		assert_vec3_near(pn, hs_add(hs_v3(0, 0, 2), hs_scale(u, 6 * dt)), 1e-14);
 		double z[64];
 		int n = (int)(0.3 / dt) + 2;
 		for (int k = 1; k <= n; ++k) {
 			hs_world_step(w);
-			assert_int_equal(w->bodies[0].contact, HS_CONTACT_NONE);
+			assert_int_equal(w->state.bodies[0].contact, HS_CONTACT_NONE);
 			double t = k * dt;
 			hs_vec3 exact = hs_v3(pn.x + u.x * t, pn.y, pn.z + u.z * t - 0.5 * g * dt * dt * (k - 1) * k);
-			assert_vec3_near(w->bodies[0].pos, exact, 1e-13);
-			z[k] = w->bodies[0].pos.z;
+			assert_vec3_near(w->state.bodies[0].pos, exact, 1e-13);
+			z[k] = w->state.bodies[0].pos.z;
 		}
 		int top = 1;
 		for (int k = 2; k < n; ++k)
@@ -498,10 +498,10 @@ static hs_vec3 release_velocity(double dt, double window_s, hs_release_fit fit, 
 	def.release_fit = fit;
 	hs_world *w = rig_world(&def, hs_shape_box(hs_v3(1, 1, 1), NULL), hs_v3(0, 0, 2), hs_v3(0, 0, 2));
 	carry_path_and_release(w, hs_scale(u, dt), hs_scale(a, dt * dt), frames);
-	hs_vec3 before = w->bodies[0].pos;
+	hs_vec3 before = w->state.bodies[0].pos;
 	assert_int_equal(hs_world_step(w), HS_OK);
-	assert_int_equal(w->bodies[0].contact, HS_CONTACT_NONE);
-	hs_vec3 moved = hs_sub(w->bodies[0].pos, before);
+	assert_int_equal(w->state.bodies[0].contact, HS_CONTACT_NONE);
+	hs_vec3 moved = hs_sub(w->state.bodies[0].pos, before);
 	hs_world_destroy(w);
 	return hs_scale(moved, 1.0 / dt);
 }
@@ -606,13 +606,13 @@ static void pyramid_by_one_finger(bool any_contacts) {
 	move_point(w, 6, hs_mul_add(dip, 0.01, n), dip);
 	move_point(w, 7, hs_v3(0.03, 0, 1.97), hs_v3(0.03, 0, 1.985)); // up through the base, 5 mm in
 	hs_world_step(w);
-	assert_int_equal(w->contact_count, 2);
-	assert_near(hs_dot(w->contacts[0].normal, w->contacts[1].normal), -1.0 / sqrt(5.0), 1e-12);
-	assert_int_equal(w->bodies[0].contact, any_contacts ? HS_CONTACT_GRASP : HS_CONTACT_PUSH_MANY);
-	assert_int_equal(hs_contact_classify(w->contacts, 2, w->grasp_limit, any_contacts),
+	assert_int_equal(w->out.contact_count, 2);
+	assert_near(hs_dot(w->out.contacts[0].normal, w->out.contacts[1].normal), -1.0 / sqrt(5.0), 1e-12);
+	assert_int_equal(w->state.bodies[0].contact, any_contacts ? HS_CONTACT_GRASP : HS_CONTACT_PUSH_MANY);
+	assert_int_equal(hs_contact_classify(w->out.contacts, 2, w->model.grasp_limit, any_contacts),
 	                 any_contacts ? HS_CONTACT_GRASP : HS_CONTACT_PUSH_MANY);
-	hs_hand *hand = &w->hands[0];
-	hs_vec3 p0 = w->bodies[0].pos;
+	hs_hand *hand = &w->state.hands[0];
+	hs_vec3 p0 = w->state.bodies[0].pos;
 	for (int k = 1; k <= 2; ++k) { // the wrist and the finger rise 0.1 m a frame, out past the +x side
 		hs_vec3 lift = hs_v3(0.1 * k, 0, 0.1 * k);
 		hand->wrist_pos = lift;
@@ -621,12 +621,12 @@ static void pyramid_by_one_finger(bool any_contacts) {
 		hs_hand_points_moved(hand);
 		hs_world_step(w);
 		if (any_contacts) { // held: it follows the wrist
-			assert_int_equal(w->bodies[0].contact, HS_CONTACT_GRASP);
-			assert_near(w->bodies[0].pos.z - p0.z, 0.1 * k, 1e-12);
-			assert_near(w->bodies[0].pos.x - p0.x, 0.1 * k, 1e-12);
+			assert_int_equal(w->state.bodies[0].contact, HS_CONTACT_GRASP);
+			assert_near(w->state.bodies[0].pos.z - p0.z, 0.1 * k, 1e-12);
+			assert_near(w->state.bodies[0].pos.x - p0.x, 0.1 * k, 1e-12);
 		} else { // shoved a few mm by the push, then left behind by the rising finger
-			assert_int_not_equal(w->bodies[0].contact, HS_CONTACT_GRASP);
-			assert_true(w->bodies[0].pos.z - p0.z < 0.01);
+			assert_int_not_equal(w->state.bodies[0].contact, HS_CONTACT_GRASP);
+			assert_true(w->state.bodies[0].pos.z - p0.z < 0.01);
 		}
 	}
 	hs_world_destroy(w);
@@ -646,15 +646,15 @@ static void test_grasp_continues_on_two_fingers_only(void **state) {
 	move_point(w, 3, hs_v3(-0.6, 0, 2), hs_v3(-0.45, 0, 2)); // thumb tip in the -x face
 	move_point(w, 7, hs_v3(0.6, 0, 2), hs_v3(0.45, 0, 2));   // index tip in the +x face
 	hs_world_step(w);
-	assert_int_equal(w->bodies[0].contact, HS_CONTACT_GRASP);
-	w->hands[0].points[7] = FAR;
-	hs_hand_points_moved(&w->hands[0]);
-	w->hands[0].prev_points[2] = hs_v3(0.6, 0.1, 2); // the thumb's IP joint in the +x face
-	w->hands[0].points[2] = hs_v3(0.45, 0.1, 2);
-	hs_hand_points_moved(&w->hands[0]);
+	assert_int_equal(w->state.bodies[0].contact, HS_CONTACT_GRASP);
+	w->state.hands[0].points[7] = FAR;
+	hs_hand_points_moved(&w->state.hands[0]);
+	w->state.hands[0].prev_points[2] = hs_v3(0.6, 0.1, 2); // the thumb's IP joint in the +x face
+	w->state.hands[0].points[2] = hs_v3(0.45, 0.1, 2);
+	hs_hand_points_moved(&w->state.hands[0]);
 	hs_world_step(w);
-	assert_int_not_equal(w->bodies[0].contact, HS_CONTACT_GRASP);
-	assert_int_equal(w->bodies[0].grasped_by, 0);
+	assert_int_not_equal(w->state.bodies[0].contact, HS_CONTACT_GRASP);
+	assert_int_equal(w->state.bodies[0].grasped_by, 0);
 	hs_world_destroy(w);
 }
 
@@ -669,21 +669,21 @@ static void test_grasp_survives_a_contact_leaving(void **state) {
 	move_point(w, 3, hs_v3(-0.6, 0, 2), hs_v3(-0.499, 0, 2));
 	move_point(w, 7, hs_v3(0.6, 0, 2), hs_v3(0.499, 0, 2));
 	hs_world_step(w);
-	assert_int_equal(w->bodies[0].contact, HS_CONTACT_GRASP);
+	assert_int_equal(w->state.bodies[0].contact, HS_CONTACT_GRASP);
 	move_point(w, 7, hs_v3(0.499, 0, 2), hs_v3(0.503, 0, 2));
 	hs_world_step(w);
-	assert_int_equal(w->contact_count, 1); // the thumb's
-	assert_int_equal(w->bodies[0].contact, HS_CONTACT_GRASP);
-	assert_int_equal(w->bodies[0].grasped_by, 1);
+	assert_int_equal(w->out.contact_count, 1); // the thumb's
+	assert_int_equal(w->state.bodies[0].contact, HS_CONTACT_GRASP);
+	assert_int_equal(w->state.bodies[0].grasped_by, 1);
 	move_point(w, 7, hs_v3(0.503, 0, 2), hs_v3(0.510, 0, 2));
 	hs_world_step(w);
-	assert_int_equal(w->bodies[0].contact, HS_CONTACT_NONE);
-	assert_int_equal(w->bodies[0].grasped_by, 0);
-	assert_int_equal(w->bodies[0].released_by, 1);
+	assert_int_equal(w->state.bodies[0].contact, HS_CONTACT_NONE);
+	assert_int_equal(w->state.bodies[0].grasped_by, 0);
+	assert_int_equal(w->state.bodies[0].released_by, 1);
 	for (int k = 0; k < 3; ++k) { // the thumb stays in the face: set aside, nothing pushes
 		move_point(w, 7, hs_v3(0.510, 0, 2), hs_v3(0.510, 0, 2));
 		hs_world_step(w);
-		assert_int_equal(w->bodies[0].contact, HS_CONTACT_NONE);
+		assert_int_equal(w->state.bodies[0].contact, HS_CONTACT_NONE);
 	}
 	hs_world_destroy(w);
 }
@@ -693,12 +693,12 @@ static void test_grasp_survives_a_contact_leaving(void **state) {
 static void test_grasp_holds_fast_hand(void **state) {
 	(void)state;
 	hs_world *w = cube_world();
-	hs_hand *hand = &w->hands[0];
+	hs_hand *hand = &w->state.hands[0];
 	hand->wrist_pos = hs_v3(0, 0, 2);
 	move_point(w, 3, hs_v3(-0.6, 0, 2), hs_v3(-0.45, 0, 2));
 	move_point(w, 7, hs_v3(0.6, 0, 2), hs_v3(0.45, 0, 2));
 	hs_world_step(w);
-	assert_int_equal(w->bodies[0].contact, HS_CONTACT_GRASP);
+	assert_int_equal(w->state.bodies[0].contact, HS_CONTACT_GRASP);
 	for (int k = 1; k <= 5; ++k) {
 		hs_vec3 shift = hs_v3(2.0 * k, 0, 0);
 		hand->wrist_pos = hs_add(hs_v3(0, 0, 2), shift);
@@ -707,8 +707,8 @@ static void test_grasp_holds_fast_hand(void **state) {
 		hs_hand_points_moved(hand);
 		hand->center = hs_add(hs_v3(0, 0, 2), shift);
 		hs_world_step(w);
-		assert_int_equal(w->bodies[0].contact, HS_CONTACT_GRASP);
-		assert_vec3_near(w->bodies[0].pos, hs_add(hs_v3(0, 0, 2), shift), 1e-12);
+		assert_int_equal(w->state.bodies[0].contact, HS_CONTACT_GRASP);
+		assert_vec3_near(w->state.bodies[0].pos, hs_add(hs_v3(0, 0, 2), shift), 1e-12);
 	}
 	hs_world_destroy(w);
 }
@@ -718,14 +718,14 @@ static void test_paper_mode_carries_interfering(void **state) {
 	(void)state;
 	hs_world *w = cube_world();
 	hs_object_def od = hs_default_object_def();
-	od.shape = (hs_shape_id){1, w->tag, HS_GENERATION};
+	od.shape = (hs_shape_id){1, w->model.tag, HS_GENERATION};
 	od.position = hs_v3(0.95, 0, 2); // overlaps the first cube by 0.05
 	hs_world_add_object(w, &od, NULL);
 	move_point(w, 3, hs_v3(-0.6, 0, 2), hs_v3(-0.45, 0, 2)); // push the first cube by 0.05 along x
 	hs_world_step(w);
-	assert_vec3_near(w->bodies[0].pos, hs_v3(0.05, 0, 2), 1e-15);
-	assert_vec3_near(w->bodies[1].pos, hs_v3(1.0, 0, 2), 1e-15);
-	assert_true(w->bodies[1].carried);
+	assert_vec3_near(w->state.bodies[0].pos, hs_v3(0.05, 0, 2), 1e-15);
+	assert_vec3_near(w->state.bodies[1].pos, hs_v3(1.0, 0, 2), 1e-15);
+	assert_true(w->state.bodies[1].carried);
 	hs_world_destroy(w);
 }
 

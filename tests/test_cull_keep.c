@@ -13,6 +13,7 @@
 
 #include <math.h>
 
+#include "hs_bench.h"
 #include "handspring.h"
 #include "test_util.h"
 
@@ -20,9 +21,9 @@
 
 static hs_world *cube_world(bool skip_work) {
 	hs_world_def def = hs_default_world_def();
-	def.skip_work = skip_work;
 	hs_world *w = hs_world_create(&def, NULL);
 	assert_non_null(w);
+	hs_world_set_skip_work(w, skip_work);
 	hs_shape *shape = hs_shape_box(hs_v3(0.05, 0.05, 0.05), NULL);
 	hs_object_def od = hs_default_object_def();
 	od.shape = hs_world_add_shape(w, shape, NULL);

@@ -6,6 +6,7 @@
 
 #include <cmocka.h>
 
+#include "hs_bench.h"
 #include "motion.h"
 #include "world_internal.h"
 #include "test_util.h"
@@ -13,10 +14,10 @@
 static hs_world *make_world(double dt, bool skip) {
 	hs_world_def def = hs_default_world_def();
 	def.dt = dt;
-	def.skip_work = skip;
 	hs_status st;
 	hs_world *w = hs_world_create(&def, &st);
 	assert_non_null(w);
+	hs_world_set_skip_work(w, skip);
 	assert_int_equal(st, HS_OK);
 	return w;
 }
@@ -230,7 +231,7 @@ static hs_vec3 tip_on_corner(double speed) {
 	hs_quat rot = hs_quat_mul(hs_quat_from_axis_angle(hs_v3(1, 0, 0), 2 * HS_PI / 180),
 	                          hs_quat_from_axis_angle(hs_v3(0, 1, 0), 20 * HS_PI / 180));
 	hs_object_id id = add_object(w, add_box(w, 0.1, 0.1, 0.2), hs_v3(0, 0, 0.5), rot, hs_v3(0, 0, 0));
-	hs_body *b = &w->bodies[0];
+	hs_body *b = &w->state.bodies[0];
 	b->pos.z -= hs_motion_pose_vertices(w, b); // its lowest vertex on the floor
 	hs_motion_keep_above_floor(w, b);
 	assert_int_equal(b->floor_contacts, 1);

@@ -16,6 +16,7 @@
 #include <string.h>
 
 #include "broadphase.h"
+#include "hs_bench.h"
 #include "handspring.h"
 #include "test_util.h"
 #include "world_internal.h"
@@ -43,13 +44,13 @@ static int add_object(hs_world *w, hs_shape_id shape, hs_vec3 pos) {
 static void check_answer(hs_world *w, hs_vec3 c, double r, const char *what, int frame) {
 	int n = hs_grid_near(w, c, r);
 	for (int k = 1; k < n; ++k)
-		if (w->near[k - 1] >= w->near[k])
+		if (w->scratch.near[k - 1] >= w->scratch.near[k])
 			fail_msg("frame %d, %s: answer not ascending at %d", frame, what, k);
-	for (int j = 0, k = 0; j < w->object_count; ++j) {
-		while (k < n && w->near[k] < j)
+	for (int j = 0, k = 0; j < w->model.object_count; ++j) {
+		while (k < n && w->scratch.near[k] < j)
 			++k;
-		hs_vec3 p = w->bodies[j].pos;
-		if (hypot(p.x - c.x, p.y - c.y) <= r + w->shapes[w->bodies[j].shape].radius && (k == n || w->near[k] != j))
+		hs_vec3 p = w->state.bodies[j].pos;
+		if (hypot(p.x - c.x, p.y - c.y) <= r + w->model.shapes[w->state.bodies[j].shape].radius && (k == n || w->scratch.near[k] != j))
 			fail_msg("frame %d, %s at (%g, %g) r %g: object %d at (%g, %g) missing", frame, what, c.x, c.y, r, j, p.x,
 			         p.y);
 	}
@@ -72,7 +73,6 @@ static rig make(bool skip_work, hs_stacking stacking, double fps) {
 	hs_world_def def = hs_default_world_def();
 	def.dt = 1.0 / fps;
 	def.max_objects = 1 + 3 * ROW;
-	def.skip_work = skip_work;
 	def.stacking = stacking;
 	// the lists are what is tested, the hand only has to move objects: grasps start on the
 	// normals alone (the paper's letter), as the driven hand closes on them only once
@@ -80,6 +80,7 @@ static rig make(bool skip_work, hs_stacking stacking, double fps) {
 	def.grasp_close_mm = 0.0;
 	r.world = hs_world_create(&def, NULL);
 	assert_non_null(r.world);
+	hs_world_set_skip_work(r.world, skip_work);
 	hs_shape_id cube = add_cube(r.world);
 	add_object(r.world, cube, hs_v3(0, 0, 0.025));
 	for (int row = 0; row < 3; ++row)
@@ -135,31 +136,31 @@ static void lists_in_a_busy_world(hs_stacking stacking, double fps, bool noisy) 
 		assert_int_equal(hs_world_step(on.world), HS_OK);
 		assert_int_equal(hs_world_step(off.world), HS_OK);
 		if (hs_world_hash(on.world) != hs_world_hash(off.world)) {
-			for (int i = 0; i < on.world->object_count; ++i) {
-				const hs_body *a = &on.world->bodies[i], *b = &off.world->bodies[i];
+			for (int i = 0; i < on.world->model.object_count; ++i) {
+				const hs_body *a = &on.world->state.bodies[i], *b = &off.world->state.bodies[i];
 				if (memcmp(a, b, sizeof *a))
 					print_message("object %d: on (%.17g %.17g %.17g) asleep %d held %d carried %d | off (%.17g %.17g %.17g) asleep %d held %d carried %d\n", i, a->pos.x, a->pos.y, a->pos.z, a->asleep, a->held, a->carried, b->pos.x, b->pos.y, b->pos.z, b->asleep, b->held, b->carried);
 			}
 			fail_msg("stacking %d, %g frames/s, frame %d: skip_work on and off differ", (int)stacking, fps, f + 1);
 		}
 		hs_world *w = on.world;
-		const hs_hand *hand = &w->hands[0];
+		const hs_hand *hand = &w->state.hands[0];
 		check_answer(w, hand->sweep_center, hand->sweep_radius, "the hand", f + 1);
-		for (int k = 0; k < w->awake_count; ++k) { // the queries the step makes for moved objects
-			const hs_body *b = &w->bodies[w->awake[k]];
-			check_answer(w, b->pos, w->shapes[b->shape].radius, "an awake object", f + 1);
+		for (int k = 0; k < w->cache.awake_count; ++k) { // the queries the step makes for moved objects
+			const hs_body *b = &w->state.bodies[w->cache.awake[k]];
+			check_answer(w, b->pos, w->model.shapes[b->shape].radius, "an awake object", f + 1);
 		}
 		for (int k = 0; k < 4; ++k) // along the rows, where cubes are pushed and come to rest
 			check_answer(w, hs_v3(0.2 + 0.2 * k, 0.0, 0.0), 0.08, "the rows", f + 1);
 	}
-	for (int i = 1; i < on.world->object_count; ++i) {
-		hs_vec3 p = on.world->bodies[i].pos;
+	for (int i = 1; i < on.world->model.object_count; ++i) {
+		hs_vec3 p = on.world->state.bodies[i].pos;
 		int row = (i - 1) / ROW, col = (i - 1) % ROW;
 		moved += fabs(p.x - (0.12 + 0.07 * col)) + fabs(p.y - 0.065 * (row - 1)) > 1e-3;
 	}
 	assert_true(moved >= 1);                          // the hand did work among them
-	assert_true(on.world->near_hits > frames);        // most answers came from the lists
-	assert_true(on.world->awake_count < 3 * ROW / 2); // and most came to rest again
+	assert_true(on.world->cache.near_lists.hits > frames);        // most answers came from the lists
+	assert_true(on.world->cache.awake_count < 3 * ROW / 2); // and most came to rest again
 	hs_world_destroy(on.world);
 	hs_world_destroy(off.world);
 }
@@ -180,8 +181,7 @@ static void test_lists_in_a_busy_world_support(void **state) {
 static hs_world *drop_world(int *dropped) {
 	hs_world_def def = hs_default_world_def();
 	def.max_objects = 32;
-	def.skip_work = true;
-	hs_world *w = hs_world_create(&def, NULL);
+	hs_world *w = hs_world_create(&def, NULL); // skipping work: on in every new world
 	assert_non_null(w);
 	hs_shape_id cube = add_cube(w);
 	for (int i = 0; i < 25; ++i)
@@ -197,12 +197,12 @@ static hs_world *drop_world(int *dropped) {
 // objects after every step; returns the frames stepped.
 static int until_at_rest(hs_world *w, int dropped) {
 	int f = 0;
-	for (; f < 600 && (f < 2 || w->awake_flag[dropped]); ++f) {
+	for (; f < 600 && (f < 2 || w->cache.awake_flag[dropped]); ++f) {
 		assert_int_equal(hs_world_step(w), HS_OK);
 		check_answer(w, SLOT, 0.06, "the slot", f + 1);
 	}
 	assert_true(f < 600);                         // it came to rest
-	assert_true(w->bodies[dropped].pos.z < 0.03); // on the floor, in the slot
+	assert_true(w->state.bodies[dropped].pos.z < 0.03); // on the floor, in the slot
 	return f;
 }
 
@@ -213,7 +213,7 @@ static void test_object_coming_to_rest_is_found(void **state) {
 	int dropped;
 	hs_world *w = drop_world(&dropped);
 	int f = until_at_rest(w, dropped);
-	assert_true(w->near_hits > f / 2); // a list made while it fell answered most queries
+	assert_true(w->cache.near_lists.hits > f / 2); // a list made while it fell answered most queries
 	check_answer(w, SLOT, 0.06, "the slot at rest", f);
 	hs_world_destroy(w);
 }
@@ -233,10 +233,10 @@ static void test_object_loaded_at_rest_is_found(void **state) {
 		assert_int_equal(hs_world_step(falling), HS_OK);
 		check_answer(falling, SLOT, 0.06, "the slot, falling", f + 1);
 	}
-	assert_true(falling->awake_flag[dropped]);
+	assert_true(falling->cache.awake_flag[dropped]);
 	assert_int_equal(hs_world_load_state(falling, buffer, size), HS_OK);
 	assert_int_equal(hs_world_step(falling), HS_OK);
-	assert_int_equal(falling->awake_flag[dropped], 0);
+	assert_int_equal(falling->cache.awake_flag[dropped], 0);
 	check_answer(falling, SLOT, 0.06, "the slot, loaded", 0);
 	free(buffer);
 	hs_world_destroy(rested);

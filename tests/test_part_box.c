@@ -12,6 +12,8 @@
 
 #include "clip.h"
 #include "part_box.h"
+#include "part_reach.h"
+#include "world_internal.h"
 #include "test_scans.h"
 #include "test_util.h"
 
@@ -40,9 +42,16 @@ static double coordinate(uint64_t *rng, double lo, double hi) {
 	}
 }
 
+// What the world finds of a part of a shape (hs_world_add_shape does the same in its copy).
+static hs_part_cache cache_of(const hs_shape *shape, int p) {
+	hs_part_cache pc;
+	hs_part_box_find(shape, &shape->parts[p], &pc);
+	return pc;
+}
+
 // A point about the part's box grown by `grow`, its coordinates each of coordinate's kinds.
-static hs_vec3 sample(uint64_t *rng, const hs_part *part, double grow) {
-	const double *o = part->box_offset;
+static hs_vec3 sample(uint64_t *rng, const hs_part_cache *pc, double grow) {
+	const double *o = pc->box_offset;
 	return hs_v3(coordinate(rng, -(o[1] + grow), o[0] + grow), coordinate(rng, -(o[3] + grow), o[2] + grow),
 	             coordinate(rng, -(o[5] + grow), o[4] + grow));
 }
@@ -51,47 +60,49 @@ static void test_finds_boxes(void **state) {
 	(void)state;
 	hs_shape *box = hs_shape_box(hs_v3(0.3, 0.1, 0.2), NULL);
 	assert_non_null(box);
-	const hs_part *part = &box->parts[0];
-	assert_true(hs_part_is_box(part));
+	hs_part_cache pc = cache_of(box, 0);
+	assert_true(hs_part_is_box(&pc));
 	const hs_vec3 axis[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
 	const double half[3] = {0.15, 0.05, 0.1};
 	for (int k = 0; k < 6; ++k) {
-		const hs_face *f = &box->faces[part->box_face[k]];
+		const hs_face *f = &box->faces[pc.box_face[k]];
 		assert_vec3_near(f->normal, axis[k], 0.0);
-		assert_true(part->box_offset[k] == f->offset);
-		assert_near(part->box_offset[k], half[k / 2], 1e-15);
+		assert_true(pc.box_offset[k] == f->offset);
+		assert_near(pc.box_offset[k], half[k / 2], 1e-15);
 	}
 	hs_shape_destroy(box);
 
 	// both parts of the L-block, though one lies beside G (its near face's offset is negative)
 	hs_shape *l = hs_shape_l_block(hs_v3(3, 1, 2), 1, NULL);
 	assert_non_null(l);
-	assert_true(hs_part_is_box(&l->parts[0]));
-	assert_true(hs_part_is_box(&l->parts[1]));
+	hs_part_cache l0 = cache_of(l, 0), l1 = cache_of(l, 1);
+	assert_true(hs_part_is_box(&l0));
+	assert_true(hs_part_is_box(&l1));
 	bool negative = false;
 	for (int k = 0; k < 6; ++k)
-		negative |= l->parts[1].box_offset[k] < 0.0;
+		negative |= l1.box_offset[k] < 0.0;
 	assert_true(negative);
 
-	// the world finds them again in its copy, whatever the caller's shape says
-	double offset = l->parts[1].box_offset[0];
-	l->parts[1].box_offset[0] = 99.0;
-	l->parts[0].box_face[0] = -1;
+	// the world finds them in its copy, beside it (the caller's hs_part has no such field)
 	hs_world_def def = hs_default_world_def();
 	hs_world *w = hs_world_create(&def, NULL);
 	assert_non_null(w);
 	hs_shape_id id = hs_world_add_shape(w, l, NULL);
 	const hs_shape *copy = hs_world_shape(w, id);
 	assert_non_null(copy);
-	assert_true(hs_part_is_box(&copy->parts[0]));
-	assert_true(copy->parts[1].box_offset[0] == offset);
+	const hs_part_cache *kept = hs_part_cache_of(w, copy, &copy->parts[1]);
+	assert_true(hs_part_is_box(hs_part_cache_of(w, copy, &copy->parts[0])));
+	assert_true(kept->box_offset[0] == l1.box_offset[0]);
+	assert_true(kept->grow_reach == hs_part_grow_reach(l, &l->parts[1]));
+	assert_near(kept->grow_reach, sqrt(3.0), 1e-6);
 	hs_world_destroy(w);
 	hs_shape_destroy(l);
 
 	// a turned cube and a many-faced ellipsoid are not
 	hs_shape *e = hs_shape_ellipsoid(hs_v3(0.1, 0.1, 0.1), NULL);
 	assert_non_null(e);
-	assert_false(hs_part_is_box(&e->parts[0]));
+	hs_part_cache ec = cache_of(e, 0);
+	assert_false(hs_part_is_box(&ec));
 	hs_shape_destroy(e);
 	const double c = cos(0.3), s = sin(0.3);
 	hs_vec3 v[8];
@@ -105,23 +116,26 @@ static void test_finds_boxes(void **state) {
 	hs_shape *turned = hs_shape_polyhedron(v, 8, fv, fs, 6, why, sizeof why, NULL);
 	assert_non_null(turned);
 	assert_int_equal(turned->parts[0].face_count, 6);
-	assert_false(hs_part_is_box(&turned->parts[0]));
+	hs_part_cache tc = cache_of(turned, 0);
+	assert_false(hs_part_is_box(&tc));
 	hs_shape_destroy(turned);
 }
 
 // The inside test against the scan for points about the part, grown by 0, 1 and 2 mm.
-static void inside_as_the_scan(const hs_shape *shape, const hs_part *part, uint64_t seed) {
+static void inside_as_the_scan(const hs_shape *shape, int part_index, uint64_t seed) {
+	const hs_part *part = &shape->parts[part_index];
+	hs_part_cache pc = cache_of(shape, part_index);
 	const double grows[3] = {0.0, 1e-3, 2e-3};
 	uint64_t rng = seed;
 	int inside = 0, on_a_face = 0;
 	for (int k = 0; k < 100000; ++k) {
 		double grow = grows[k % 3];
-		hs_vec3 p = sample(&rng, part, grow);
+		hs_vec3 p = sample(&rng, &pc, grow);
 		assert_true(hs_part_box_takes(p));
 		bool want = scan_inside(shape, part, p, grow);
-		assert_int_equal(hs_part_box_inside(part, p, grow), want);
+		assert_int_equal(hs_part_box_inside(&pc, p, grow), want);
 		inside += want;
-		on_a_face += p.x == part->box_offset[0] + grow;
+		on_a_face += p.x == pc.box_offset[0] + grow;
 	}
 	assert_in_range(inside, 1000, 99000); // both answers are common
 	assert_true(on_a_face > 1000);
@@ -133,8 +147,8 @@ static void test_inside_matches_the_scan(void **state) {
 	hs_shape *l = hs_shape_l_block(hs_v3(3, 1, 2), 1, NULL);
 	assert_non_null(box);
 	assert_non_null(l);
-	inside_as_the_scan(box, &box->parts[0], 2026);
-	inside_as_the_scan(l, &l->parts[1], 11); // a box beside G
+	inside_as_the_scan(box, 0, 2026);
+	inside_as_the_scan(l, 1, 11); // a box beside G
 	// a coordinate that is not finite goes to the scan
 	assert_false(hs_part_box_takes(hs_v3(NAN, 0.0, 0.0)));
 	assert_false(hs_part_box_takes(hs_v3(0.0, INFINITY, 0.0)));
@@ -145,13 +159,15 @@ static void test_inside_matches_the_scan(void **state) {
 
 // The nearest face against the scan for points about the part (inside and out, on faces, at ±0);
 // returns how many had two faces or more at the least depth (ties, settled by the face index).
-static int nearest_as_the_scan(const hs_shape *shape, const hs_part *part, uint64_t seed) {
+static int nearest_as_the_scan(const hs_shape *shape, int part_index, uint64_t seed) {
+	const hs_part *part = &shape->parts[part_index];
+	hs_part_cache pc = cache_of(shape, part_index);
 	uint64_t rng = seed;
 	int ties = 0;
 	for (int k = 0; k < 100000; ++k) {
-		hs_vec3 p = sample(&rng, part, 0.0);
+		hs_vec3 p = sample(&rng, &pc, 0.0);
 		int want = scan_nearest(shape, part, p);
-		assert_int_equal(hs_part_box_nearest(part, p), want);
+		assert_int_equal(hs_part_box_nearest(&pc, p), want);
 		int least = 0;
 		for (int f = part->first_face; f < part->first_face + part->face_count; ++f)
 			least += shape->faces[f].offset - hs_dot(shape->faces[f].normal, p) ==
@@ -169,18 +185,19 @@ static void test_nearest_matches_the_scan(void **state) {
 	assert_non_null(box);
 	assert_non_null(cube);
 	assert_non_null(l);
-	assert_true(nearest_as_the_scan(box, &box->parts[0], 2027) > 100);
-	assert_true(nearest_as_the_scan(cube, &cube->parts[0], 5) > 100);
-	assert_true(nearest_as_the_scan(l, &l->parts[1], 12) > 100);
+	assert_true(nearest_as_the_scan(box, 0, 2027) > 100);
+	assert_true(nearest_as_the_scan(cube, 0, 5) > 100);
+	assert_true(nearest_as_the_scan(l, 1, 12) > 100);
 	// a cube's centre is as deep under all six faces: the first of them; off it along +x, the +x face
 	const hs_part *c = &cube->parts[0];
-	assert_int_equal(hs_part_box_nearest(c, hs_v3(0.0, 0.0, 0.0)), c->first_face);
-	assert_int_equal(hs_part_box_nearest(c, hs_v3(-0.0, -0.0, -0.0)), c->first_face);
-	assert_int_equal(hs_part_box_nearest(c, hs_v3(0.01, 0.0, 0.0)), c->box_face[0]);
-	assert_int_equal(hs_part_box_nearest(c, hs_v3(0.0, 0.0, -0.09)), c->box_face[5]);
+	hs_part_cache cc = cache_of(cube, 0);
+	assert_int_equal(hs_part_box_nearest(&cc, hs_v3(0.0, 0.0, 0.0)), c->first_face);
+	assert_int_equal(hs_part_box_nearest(&cc, hs_v3(-0.0, -0.0, -0.0)), c->first_face);
+	assert_int_equal(hs_part_box_nearest(&cc, hs_v3(0.01, 0.0, 0.0)), cc.box_face[0]);
+	assert_int_equal(hs_part_box_nearest(&cc, hs_v3(0.0, 0.0, -0.09)), cc.box_face[5]);
 	// on the +x/+y edge's diagonal: the lower of the two faces' indices
-	int xy = c->box_face[0] < c->box_face[2] ? c->box_face[0] : c->box_face[2];
-	assert_int_equal(hs_part_box_nearest(c, hs_v3(0.05, 0.05, 0.0)), xy);
+	int xy = cc.box_face[0] < cc.box_face[2] ? cc.box_face[0] : cc.box_face[2];
+	assert_int_equal(hs_part_box_nearest(&cc, hs_v3(0.05, 0.05, 0.0)), xy);
 	assert_int_equal(scan_nearest(cube, c, hs_v3(0.05, 0.05, 0.0)), xy);
 	hs_shape_destroy(box);
 	hs_shape_destroy(cube);
@@ -192,13 +209,14 @@ static void test_apart_means_the_clip_misses(void **state) {
 	hs_shape *box = hs_shape_box(hs_v3(0.3, 0.1, 0.2), NULL);
 	assert_non_null(box);
 	const hs_part *part = &box->parts[0];
+	hs_part_cache pc = cache_of(box, 0);
 	uint64_t rng = 77;
 	int apart = 0, hits = 0;
 	for (int k = 0; k < 200000; ++k) {
 		double grow = k % 2 ? 0.0 : 1e-3;
-		hs_vec3 a = sample(&rng, part, grow), b = sample(&rng, part, grow);
+		hs_vec3 a = sample(&rng, &pc, grow), b = sample(&rng, &pc, grow);
 		hs_clip c = hs_clip_segment(box, part, a, b, grow);
-		if (hs_part_box_apart(part, a, b, grow, SLACK)) {
+		if (hs_part_box_apart(&pc, a, b, grow, SLACK)) {
 			++apart;
 			assert_false(c.hit);
 		}
@@ -208,15 +226,15 @@ static void test_apart_means_the_clip_misses(void **state) {
 	assert_true(hits > 20000);
 	// beyond the +x face by 1 mm at both ends: apart; by less than the slack: not (the clip decides)
 	hs_vec3 a = hs_v3(0.151, -0.2, 0.0), b = hs_v3(0.151, 0.2, 0.0);
-	assert_true(hs_part_box_apart(part, a, b, 0.0, SLACK));
-	assert_false(hs_part_box_apart(part, a, b, 2e-3, SLACK)); // grown past them
+	assert_true(hs_part_box_apart(&pc, a, b, 0.0, SLACK));
+	assert_false(hs_part_box_apart(&pc, a, b, 2e-3, SLACK)); // grown past them
 	a.x = b.x = 0.15 + 0.5 * SLACK;
-	assert_false(hs_part_box_apart(part, a, b, 0.0, SLACK));
+	assert_false(hs_part_box_apart(&pc, a, b, 0.0, SLACK));
 	assert_false(hs_clip_segment(box, part, a, b, 0.0).hit);
 	// one end beyond -y, the other across: not apart, and it hits
 	a = hs_v3(0.0, -0.2, 0.0);
 	b = hs_v3(0.0, 0.2, 0.0);
-	assert_false(hs_part_box_apart(part, a, b, 0.0, SLACK));
+	assert_false(hs_part_box_apart(&pc, a, b, 0.0, SLACK));
 	assert_true(hs_clip_segment(box, part, a, b, 0.0).hit);
 	hs_shape_destroy(box);
 }

@@ -22,11 +22,11 @@ static hs_world *box_world(hs_vec3 size) {
 	hs_world_def def = hs_default_world_def();
 	def.dt = 1.0 / 60;
 	hs_world *w = rig_world(&def, hs_shape_box(size, NULL), hs_v3(0, 0, 0.5 * size.z), hs_v3(0, 0, 0));
-	hs_motion_keep_above_floor(w, &w->bodies[0]); // floor contacts of the initial pose
+	hs_motion_keep_above_floor(w, &w->state.bodies[0]); // floor contacts of the initial pose
 	return w;
 }
 
-static double lowest_z(hs_world *w) { return hs_motion_pose_vertices(w, &w->bodies[0]); }
+static double lowest_z(hs_world *w) { return hs_motion_pose_vertices(w, &w->state.bodies[0]); }
 
 // (a) A still fingertip 1 mm into the top of a 10 cm box on the floor (it came down onto it in the
 // first frame), at several offsets from the centre, for 30 frames through the whole hand pass (detection, classification, push, §4.2
@@ -37,12 +37,12 @@ static void test_press_down_leaves_box(void **state) {
 	const double offsets[][2] = {{0, 0}, {0.04, 0}, {0, -0.03}, {0.04, 0.03}, {-0.049, 0.02}};
 	for (size_t k = 0; k < sizeof offsets / sizeof offsets[0]; ++k) {
 		hs_world *w = box_world(hs_v3(0.1, 0.1, 0.1));
-		hs_body *b = &w->bodies[0];
+		hs_body *b = &w->state.bodies[0];
 		hs_vec3 tip = hs_v3(offsets[k][0], offsets[k][1], 0.099);
 		for (int frame = 0; frame < 30; ++frame) { // it came down onto the box in frame 0, then stays
-			w->hands[0].prev_points[7] = frame == 0 ? hs_add(tip, hs_v3(0, 0, 0.01)) : tip;
-			w->hands[0].points[7] = tip;
-			hs_hand_points_moved(&w->hands[0]);
+			w->state.hands[0].prev_points[7] = frame == 0 ? hs_add(tip, hs_v3(0, 0, 0.01)) : tip;
+			w->state.hands[0].points[7] = tip;
+			hs_hand_points_moved(&w->state.hands[0]);
 			hs_manipulate(w);
 			assert_int_equal(b->contact, HS_CONTACT_PUSH_ONE);
 			assert_vec3_near(b->pos, hs_v3(0, 0, 0.05), 1e-18); // off both axes: rounding of the yaw
@@ -57,10 +57,10 @@ static void test_press_down_leaves_box(void **state) {
 		hs_world_destroy(w);
 	}
 	hs_world *w = box_world(hs_v3(0.1, 0.1, 0.1)); // a fingertip that starts there touches nothing
-	w->hands[0].prev_points[7] = w->hands[0].points[7] = hs_v3(0.04, 0, 0.099);
-	hs_hand_points_moved(&w->hands[0]);
+	w->state.hands[0].prev_points[7] = w->state.hands[0].points[7] = hs_v3(0.04, 0, 0.099);
+	hs_hand_points_moved(&w->state.hands[0]);
 	hs_manipulate(w);
-	assert_int_equal(w->bodies[0].contact, HS_CONTACT_NONE);
+	assert_int_equal(w->state.bodies[0].contact, HS_CONTACT_NONE);
 	hs_world_destroy(w);
 	hs_body free_box = {.pos = hs_v3(0, 0, 0.05), .rot = hs_quat_identity()};
 	hs_push_at_one_point(&free_box, hs_v3(0.04, 0, 0.1), hs_v3(0.04, 0, 0.099));
@@ -75,7 +75,7 @@ static void test_push_low_slides(void **state) {
 	const double heights[] = {0.001, 0.01, 0.02, 0.035, 0.049};
 	for (size_t k = 0; k < sizeof heights / sizeof heights[0]; ++k) {
 		hs_world *w = box_world(hs_v3(0.1, 0.1, 0.1));
-		hs_body *b = &w->bodies[0];
+		hs_body *b = &w->state.bodies[0];
 		double d = 0.002;
 		for (int frame = 1; frame <= 10; ++frame) {
 			hs_vec3 c = hs_v3(b->pos.x - 0.05, 0, heights[k]);
@@ -97,7 +97,7 @@ static void test_push_low_slides(void **state) {
 static void test_push_high_tips(void **state) {
 	(void)state;
 	hs_world *w = box_world(hs_v3(0.1, 0.1, 0.3));
-	hs_body *b = &w->bodies[0];
+	hs_body *b = &w->state.bodies[0];
 	double d = 0.002;
 	hs_vec3 c = hs_v3(-0.05, 0, 0.25), cg = hs_v3(0.05, 0, -0.1);
 	hs_vec3 t = hs_scale(cg, d * 0.05 / 0.0125);
@@ -133,7 +133,7 @@ static void test_press_within_floor_cone_holds(void **state) {
 	(void)state;
 	assert_true(HS_PUSH_FRICTION == 1.0);
 	hs_world *w = box_world(hs_v3(0.1, 0.1, 0.1));
-	hs_body *b = &w->bodies[0];
+	hs_body *b = &w->state.bodies[0];
 	hs_vec3 c = hs_v3(0.04, 0.01, 0.1);
 	assert_true(hs_push_on_floor(w, b, c, hs_add(c, hs_v3(0.0012, -0.0009, -0.0015)))); // |h| = 0.0015
 	assert_true(b->pos.x == 0.0 && b->pos.y == 0.0 && b->pos.z == 0.05);
@@ -158,12 +158,12 @@ static void test_push_remembers_finger_speed(void **state) {
 	const double speedup[] = {2.0, 8.0, 10.0, 2.0}; // reached at t = 0.5, 0.875, 0.975 (capped), off centre
 	for (int k = 0; k < 4; ++k) {
 		hs_world *w = box_world(hs_v3(0.1, 0.1, 0.1));
-		hs_body *b = &w->bodies[0];
+		hs_body *b = &w->state.bodies[0];
 		b->prev = b->pos; // at rest
 		double y = k == 3 ? 0.03 : 0.0;
-		w->hands[0].prev_points[7] = hs_v3(from[k], y, 0.05); // at G's height: slides, no swing
-		w->hands[0].points[7] = hs_v3(from[k] + 0.02, y, 0.05);
-		hs_hand_points_moved(&w->hands[0]);
+		w->state.hands[0].prev_points[7] = hs_v3(from[k], y, 0.05); // at G's height: slides, no swing
+		w->state.hands[0].points[7] = hs_v3(from[k] + 0.02, y, 0.05);
+		hs_hand_points_moved(&w->state.hands[0]);
 		hs_manipulate(w);
 		assert_int_equal(b->contact, HS_CONTACT_PUSH_ONE);
 		hs_vec3 moved = hs_sub(b->pos, hs_v3(0, 0, 0.05));
@@ -175,11 +175,11 @@ static void test_push_remembers_finger_speed(void **state) {
 		hs_world_destroy(w);
 	}
 	hs_world *w = box_world(hs_v3(0.1, 0.1, 0.1)); // moving already: pos - prev is the push
-	hs_body *b = &w->bodies[0];
+	hs_body *b = &w->state.bodies[0];
 	b->prev = hs_v3(-0.001, 0, 0.05);
-	w->hands[0].prev_points[7] = hs_v3(-0.06, 0, 0.05);
-	w->hands[0].points[7] = hs_v3(-0.04, 0, 0.05);
-	hs_hand_points_moved(&w->hands[0]);
+	w->state.hands[0].prev_points[7] = hs_v3(-0.06, 0, 0.05);
+	w->state.hands[0].points[7] = hs_v3(-0.04, 0, 0.05);
+	hs_hand_points_moved(&w->state.hands[0]);
 	hs_manipulate(w);
 	assert_vec3_near(b->prev, hs_v3(0, 0, 0.05), 0.0);
 	hs_world_destroy(w);
@@ -190,7 +190,7 @@ static void test_push_remembers_finger_speed(void **state) {
 static void test_push_on_a_corner_keeps_floor(void **state) {
 	(void)state;
 	hs_world *w = box_world(hs_v3(0.1, 0.1, 0.1));
-	hs_body *b = &w->bodies[0];
+	hs_body *b = &w->state.bodies[0];
 	hs_quat tilt = hs_quat_mul(hs_quat_from_axis_angle(hs_v3(1, 0, 0), 0.1), hs_quat_from_axis_angle(hs_v3(0, 1, 0), 0.1));
 	b->rot = hs_quat_normalize(tilt);
 	b->pos = hs_v3(0, 0, 0.2);
@@ -210,7 +210,7 @@ static void test_push_on_a_corner_keeps_floor(void **state) {
 static void test_skewed_push_tips_about_floor_edge(void **state) {
 	(void)state;
 	hs_world *w = box_world(hs_v3(0.1, 0.1, 0.3));
-	hs_body *b = &w->bodies[0];
+	hs_body *b = &w->state.bodies[0];
 	for (int frame = 0; frame < 10; ++frame) {
 		hs_vec3 c = hs_add(b->pos, hs_quat_rotate(b->rot, hs_v3(-0.05, 0.03, 0.1)));
 		assert_true(hs_push_on_floor(w, b, c, hs_add(c, hs_v3(0.002, 0.0, 0.0))));
@@ -231,18 +231,18 @@ static void test_skewed_push_tips_about_floor_edge(void **state) {
 static void test_push_end_stops_on_floor(void **state) {
 	(void)state;
 	hs_world *w = box_world(hs_v3(0.1, 0.1, 0.1));
-	hs_body *b = &w->bodies[0];
+	hs_body *b = &w->state.bodies[0];
 	b->prev = hs_v3(-0.001, 0, 0.05); // moving already: no speed-up of the remembered motion
-	w->hands[0].prev_points[7] = hs_v3(-0.0505, 0, 0.05);
-	w->hands[0].points[7] = hs_v3(-0.049, 0, 0.05);
-	hs_hand_points_moved(&w->hands[0]);
+	w->state.hands[0].prev_points[7] = hs_v3(-0.0505, 0, 0.05);
+	w->state.hands[0].points[7] = hs_v3(-0.049, 0, 0.05);
+	hs_hand_points_moved(&w->state.hands[0]);
 	hs_manipulate(w);
 	assert_int_equal(b->contact, HS_CONTACT_PUSH_ONE);
 	assert_vec3_near(b->pos, hs_v3(0.001, 0, 0.05), 1e-15);
 	hs_vec3 at = b->pos;
-	w->hands[0].prev_points[7] = w->hands[0].points[7];
-	w->hands[0].points[7] = hs_v3(-0.08, 0, 0.05); // drawn back
-	hs_hand_points_moved(&w->hands[0]);
+	w->state.hands[0].prev_points[7] = w->state.hands[0].points[7];
+	w->state.hands[0].points[7] = hs_v3(-0.08, 0, 0.05); // drawn back
+	hs_hand_points_moved(&w->state.hands[0]);
 	hs_manipulate(w);
 	assert_int_equal(b->contact, HS_CONTACT_NONE);
 	assert_true(b->pos.x == at.x && b->pos.y == at.y && b->pos.z == at.z);
@@ -252,7 +252,7 @@ static void test_push_end_stops_on_floor(void **state) {
 	hs_world_destroy(w);
 
 	w = box_world(hs_v3(0.1, 0.1, 0.1)); // on its edge x = 0.05, G over x = 0.05 - 0.0707 sin(45 - 20 deg)
-	b = &w->bodies[0];
+	b = &w->state.bodies[0];
 	b->rot = hs_quat_from_axis_angle(hs_v3(0, 1, 0), -0.349);
 	b->pos = hs_v3(0, 0, 0.2);
 	b->pos.z -= hs_motion_pose_vertices(w, b);
@@ -270,7 +270,7 @@ static void test_push_end_stops_on_floor(void **state) {
 static void test_push_many_end_stays_on_floor(void **state) {
 	(void)state;
 	hs_world *w = box_world(hs_v3(0.1, 0.2, 0.06));
-	hs_body *b = &w->bodies[0];
+	hs_body *b = &w->state.bodies[0];
 	b->rot = hs_quat_from_axis_angle(hs_v3(0, 1, 0), -7e-5); // the -x edge a hair up: on its +x edge
 	b->pos = hs_v3(0, 0, 0.2);
 	b->pos.z -= hs_motion_pose_vertices(w, b);
@@ -297,13 +297,13 @@ static void test_leaving_part_keeps_motion(void **state) {
 	(void)state;
 	for (int moving = 0; moving < 2; ++moving) {
 		hs_world *w = box_world(hs_v3(0.1, 0.1, 0.1));
-		hs_body *b = &w->bodies[0];
+		hs_body *b = &w->state.bodies[0];
 		hs_vec3 prev = moving ? hs_v3(-0.001, 0, 0.05) : b->pos;
 		b->prev = prev;
-		w->hands[0].touch_points = 1u << 7;                 // touching last frame, 1 mm in
-		w->hands[0].prev_points[7] = hs_v3(-0.049, 0, 0.05);
-		w->hands[0].points[7] = hs_v3(-0.0495, 0, 0.05);    // drawn back, still inside
-		hs_hand_points_moved(&w->hands[0]);
+		w->state.hands[0].touch_points = 1u << 7;                 // touching last frame, 1 mm in
+		w->state.hands[0].prev_points[7] = hs_v3(-0.049, 0, 0.05);
+		w->state.hands[0].points[7] = hs_v3(-0.0495, 0, 0.05);    // drawn back, still inside
+		hs_hand_points_moved(&w->state.hands[0]);
 		hs_manipulate(w);
 		assert_int_equal(b->contact, HS_CONTACT_PUSH_ONE);
 		assert_true(b->pos.x == 0.0 && b->pos.y == 0.0 && b->pos.z == 0.05);
@@ -315,10 +315,10 @@ static void test_leaving_part_keeps_motion(void **state) {
 static void test_free_object_untouched(void **state) {
 	(void)state;
 	hs_world *w = box_world(hs_v3(0.1, 0.1, 0.1));
-	w->bodies[0].pos.z = 1.0;
-	hs_body before = w->bodies[0];
-	assert_false(hs_push_on_floor(w, &w->bodies[0], hs_v3(0.04, 0, 1.05), hs_v3(0.04, 0, 1.049)));
-	assert_memory_equal(&before, &w->bodies[0], sizeof before);
+	w->state.bodies[0].pos.z = 1.0;
+	hs_body before = w->state.bodies[0];
+	assert_false(hs_push_on_floor(w, &w->state.bodies[0], hs_v3(0.04, 0, 1.05), hs_v3(0.04, 0, 1.049)));
+	assert_memory_equal(&before, &w->state.bodies[0], sizeof before);
 	hs_world_destroy(w);
 }
 

@@ -26,7 +26,7 @@ static inline hs_world *rig_world(const hs_world_def *def, hs_shape *shape, hs_v
 	assert_int_equal(hs_world_add_object(w, &od, NULL).index1, 1);
 	hs_hand_def hd = hs_default_hand_def();
 	assert_int_equal(hs_world_add_hand(w, &hd, NULL).index1, 1);
-	hs_hand *hand = &w->hands[0];
+	hs_hand *hand = &w->state.hands[0];
 	for (int i = 0; i < HS_HAND_POINTS; ++i)
 		hand->points[i] = hand->prev_points[i] = RIG_FAR;
 	hs_hand_points_moved(hand);

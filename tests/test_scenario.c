@@ -7,6 +7,7 @@
 #include <setjmp.h>
 #include <cmocka.h>
 
+#include "hs_bench.h"
 #include "test_util.h"
 #include "noise.h"
 
@@ -198,6 +199,7 @@ static void test_orientation_and_model(void **state) {
 	assert_int_equal(hs_world_object_count(w), 5);
 	assert_int_equal(hs_world_shape(w, hs_world_shape_at(w, 3))->kind, HS_SHAPE_SPHERE);
 	assert_int_equal(hs_world_shape(w, hs_world_shape_at(w, 4))->kind, HS_SHAPE_L_BLOCK);
+	assert_false(hs_world_skip_work(w)); // model.skip_work reaches the world (hs_bench.h)
 	hs_scenario_destroy(s);
 }
 

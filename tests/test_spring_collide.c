@@ -38,8 +38,8 @@ static pair make_pair(hs_shape *a, hs_quat ra, hs_shape *b, hs_quat rb) {
 		hs_world_add_object(p.world, &od, &st);
 		assert_int_equal(st, HS_OK);
 	}
-	p.ga = hs_spring_geom_of(p.world, &p.world->bodies[0]);
-	p.gb = hs_spring_geom_of(p.world, &p.world->bodies[1]);
+	p.ga = hs_spring_geom_of(&p.world->model.shapes[p.world->state.bodies[0].shape], &p.world->state.bodies[0]);
+	p.gb = hs_spring_geom_of(&p.world->model.shapes[p.world->state.bodies[1].shape], &p.world->state.bodies[1]);
 	return p;
 }
 
@@ -244,7 +244,7 @@ static uint64_t box_of_balls(bool all_pairs, double spacing, long *steps) {
 	hs_status st;
 	hs_world *w = hs_world_create(&def, &st);
 	assert_non_null(w);
-	w->spring->all_pairs = all_pairs;
+	w->state.spring->all_pairs = all_pairs;
 	hs_shape *ball = hs_shape_sphere(0.05, &st);
 	hs_object_def od = hs_default_object_def();
 	od.shape = hs_world_add_shape(w, ball, &st);

@@ -68,11 +68,11 @@ static void assert_still(hs_world *w, long frames) {
 	assert_true(n <= 64);
 	hs_world_step(w);
 	for (int i = 0; i < n; ++i)
-		start[i] = w->bodies[i].pos;
+		start[i] = w->state.bodies[i].pos;
 	for (long f = 0; f < frames; ++f) {
 		hs_world_step(w);
 		for (int i = 0; i < n; ++i) {
-			hs_vec3 p = w->bodies[i].pos, v = w->bodies[i].vel;
+			hs_vec3 p = w->state.bodies[i].pos, v = w->state.bodies[i].vel;
 			if (memcmp(&p, &start[i], sizeof p) != 0 || v.x != 0.0 || v.y != 0.0 || v.z != 0.0)
 				fail_msg("object %d moved at frame %ld: (%.17g, %.17g, %.17g) from (%.17g, %.17g, %.17g), v.z %g", i,
 				         f, p.x, p.y, p.z, start[i].x, start[i].y, start[i].z, v.z);
@@ -108,8 +108,8 @@ static void test_floor_row_comes_apart(void **state) {
 		hs_world_step(s.world);
 		assert_still(s.world, (long)(2 * rates[r]));
 		for (int k = 0; k < 3; ++k) {
-			double gap = hs_length(hs_sub(s.world->bodies[k + 1].pos, s.world->bodies[k].pos)) - 0.1;
-			assert_true(gap > -(HS_REST_DRIFT + s.world->def.floor_tolerance));
+			double gap = hs_length(hs_sub(s.world->state.bodies[k + 1].pos, s.world->state.bodies[k].pos)) - 0.1;
+			assert_true(gap > -(HS_REST_DRIFT + s.world->model.def.floor_tolerance));
 		}
 		hs_world_destroy(s.world);
 	}
@@ -124,7 +124,7 @@ static void test_drift_within_the_gap_is_held(void **state) {
 	for (int r = 0; r < 3; ++r)
 		for (int k = 0; k < 3; ++k) {
 			scene s = make_scene(rates[r], 0.0, 0.5);
-			double depth = HS_REST_DRIFT + (0.2 + 0.3 * k) * s.world->def.floor_tolerance;
+			double depth = HS_REST_DRIFT + (0.2 + 0.3 * k) * s.world->model.def.floor_tolerance;
 			put(&s, s.sphere, hs_v3(0, 0, 0.05), 500);
 			put(&s, s.sphere, hs_v3(0.03, 0.0, 0.05 + sqrt((0.1 - depth) * (0.1 - depth) - 0.03 * 0.03)), 500);
 			assert_still(s.world, (long)(2 * rates[r]));
@@ -142,7 +142,7 @@ static void test_stack_of_boxes(void **state) {
 			put(&s, s.cube, hs_v3(0.01 * k, 0, 0.05 + 0.1 * k), 500);
 		assert_still(s.world, (long)(10 * rates[r]));
 		double weight = 0.5 * 9.81; // 10 cm at 500 kg/m³
-		const hs_spring_system *sys = s.world->spring;
+		const hs_spring_system *sys = s.world->state.spring;
 		assert_near(sys->load[0].z, -2.0 * weight, 1e-9 * weight);
 		assert_near(sys->load[1].z, weight, 1e-9 * weight); // 2 w from below, w from above
 		assert_near(sys->load[2].z, weight, 1e-9 * weight);
@@ -182,10 +182,10 @@ static void test_frictionless_pyramid_spreads(void **state) {
 	(void)state;
 	scene s = make_scene(60.0, 0.0, 0.0);
 	pyramid(&s);
-	hs_vec3 top = s.world->bodies[13].pos;
+	hs_vec3 top = s.world->state.bodies[13].pos;
 	for (int f = 0; f < 120; ++f)
 		hs_world_step(s.world);
-	assert_true(s.world->bodies[13].pos.z < top.z - 0.01);
+	assert_true(s.world->state.bodies[13].pos.z < top.z - 0.01);
 	hs_world_destroy(s.world);
 	s = make_scene(60.0, 0.15, 0.0);
 	pyramid(&s);
@@ -294,7 +294,7 @@ static void test_drag_into_heavy_block(void **state) {
 			double t = fmin((double)f / hz[r], 2.0);
 			hs_world_set_stylus(s.world, hs_add(pen, hs_v3(0.5 * t, 0.0, 0.0)), hs_quat_identity(), false);
 			assert_int_equal(hs_world_step(s.world), HS_OK);
-			const hs_body *a = &s.world->bodies[0], *b = &s.world->bodies[1];
+			const hs_body *a = &s.world->state.bodies[0], *b = &s.world->state.bodies[1];
 			if (hs_world_get_counters(s.world).numeric_faults != 0 || !hs_vec3_is_finite(b->pos) ||
 			    !hs_vec3_is_finite(b->vel))
 				fail_msg("at %g frames/s, frame %ld: a numeric fault (box at %g m, %g m/s)", hz[r], f, b->pos.x, b->vel.x);
@@ -357,9 +357,9 @@ static void test_restitution_per_pair(void **state) {
 // Σ ½ m |v|² + m g z of every object (J).
 static double energy(const hs_world *w) {
 	double e = 0.0;
-	for (int i = 0; i < w->object_count; ++i) {
-		const hs_body *b = &w->bodies[i];
-		e += 0.5 * b->mass * hs_length_sq(b->vel) - b->mass * hs_dot(w->def.gravity, b->pos);
+	for (int i = 0; i < w->model.object_count; ++i) {
+		const hs_body *b = &w->state.bodies[i];
+		e += 0.5 * b->mass * hs_length_sq(b->vel) - b->mass * hs_dot(w->model.def.gravity, b->pos);
 	}
 	return e;
 }
@@ -444,9 +444,9 @@ static void test_dense_drop_keeps_balls_apart(void **state) {
 			for (long f = 0; f < (long)(4.0 * hz[r]); ++f) {
 				hs_world_step(s.world);
 				for (int i = 0; i < 27; ++i) {
-					const hs_body *a = &s.world->bodies[i];
+					const hs_body *a = &s.world->state.bodies[i];
 					for (int j = i + 1; j < 27; ++j)
-						worst = fmax(worst, 0.1 - hs_length(hs_sub(a->pos, s.world->bodies[j].pos)));
+						worst = fmax(worst, 0.1 - hs_length(hs_sub(a->pos, s.world->state.bodies[j].pos)));
 				}
 			}
 			hs_world_destroy(s.world);
@@ -494,14 +494,14 @@ static void test_dense_drop_comes_to_rest(void **state) {
 			for (long f = 0; f < frames; ++f) {
 				hs_vec3 before[27];
 				for (int i = 0; i < 27; ++i)
-					before[i] = s.world->bodies[i].pos;
+					before[i] = s.world->state.bodies[i].pos;
 				hs_world_step(s.world);
 				for (int i = 0; i < 27; ++i) {
-					moved = memcmp(&before[i], &s.world->bodies[i].pos, sizeof before[i]) != 0 ? f + 1 : moved;
+					moved = memcmp(&before[i], &s.world->state.bodies[i].pos, sizeof before[i]) != 0 ? f + 1 : moved;
 					if (f < frames - (long)hz[r])
 						continue;
-					v = fmax(v, hs_length(s.world->bodies[i].vel));
-					step = fmax(step, hs_length(hs_sub(s.world->bodies[i].pos, before[i])));
+					v = fmax(v, hs_length(s.world->state.bodies[i].vel));
+					step = fmax(step, hs_length(hs_sub(s.world->state.bodies[i].pos, before[i])));
 				}
 			}
 			settled += step < 1e-6 && v < 1e-3;
@@ -539,7 +539,7 @@ static void test_second_support_met_at_its_surface(void **state) {
 			hs_world_step(s.world);
 			hs_world_step(s.world);
 			assert_still(s.world, (long)(2 * hz[r]));
-			const hs_body *b = s.world->bodies;
+			const hs_body *b = s.world->state.bodies;
 			for (int k = 0; k < 2; ++k)
 				worst = fmax(worst, fabs(hs_length(hs_sub(b[2].pos, b[k].pos)) - 0.1));
 			hs_world_destroy(s.world);

@@ -13,6 +13,7 @@
 
 #include <cmocka.h>
 
+#include "hs_bench.h"
 #include "handspring.h"
 #include "broadphase.h"
 #include "test_util.h"
@@ -63,13 +64,13 @@ static hand_rig hand_world(double cube_size, int extra_objects, bool skip_work) 
 	hs_world_def def = hs_default_world_def();
 	def.max_objects = 4 + extra_objects > 8 ? 4 + extra_objects : 8;
 	def.max_objects = rig_max_objects > def.max_objects ? rig_max_objects : def.max_objects;
-	def.skip_work = skip_work;
 	def.grasp_any_contacts = rig_any_contacts;
 	def.dt = 1.0 / rig_fps;
 	def.release_window_s = rig_release_window;
 	def.release_fit = rig_release_fit;
 	r.world = hs_world_create(&def, NULL);
 	assert_non_null(r.world);
+	hs_world_set_skip_work(r.world, skip_work);
 	hs_shape_id cube = add_shape(r.world, hs_shape_box(hs_v3(cube_size, cube_size, cube_size), NULL));
 	hs_shape_id block = add_shape(r.world, hs_shape_box(hs_v3(0.1, 0.06, 0.04), NULL));
 	r.target = add_object(r.world, cube, hs_v3(0, 0, 0.025), hs_v3(0, 0, 0));
@@ -150,17 +151,17 @@ static void test_hand_world_continues_identically(void **state) {
 	hs_vec3 points[HS_HAND_POINTS], reloaded[HS_HAND_POINTS];
 	drive_hand(&r, r.world, N_FRAMES); // the reading of the next frame is set: points and previous differ
 	assert_int_equal(hs_world_hand_points(r.world, r.hand, points), HS_OK);
-	hs_hand_ready_all(&r.world->hands[0]); // the lines are placed when read: all of them, to compare
-	hs_hand cached = r.world->hands[0];
+	hs_hand_ready_all(&r.world->state.hands[0]); // the lines are placed when read: all of them, to compare
+	hs_hand cached = r.world->state.hands[0];
 	unsigned char *set = save(r.world, &size);
 	assert_int_equal(hs_world_load_state(r.world, set, size), HS_OK);
 	assert_int_equal(hs_world_hand_points(r.world, r.hand, reloaded), HS_OK);
 	assert_memory_equal(points, reloaded, sizeof points); // the caches are rebuilt bit for bit
-	assert_memory_equal(cached.prev_points, r.world->hands[0].prev_points, sizeof cached.prev_points);
-	hs_hand_ready_all(&r.world->hands[0]);
-	assert_memory_equal(cached.lines, r.world->hands[0].lines, sizeof cached.lines);
-	assert_memory_equal(cached.prev_lines, r.world->hands[0].prev_lines, sizeof cached.prev_lines);
-	assert_true(cached.center.x == r.world->hands[0].center.x && cached.radius == r.world->hands[0].radius);
+	assert_memory_equal(cached.prev_points, r.world->state.hands[0].prev_points, sizeof cached.prev_points);
+	hs_hand_ready_all(&r.world->state.hands[0]);
+	assert_memory_equal(cached.lines, r.world->state.hands[0].lines, sizeof cached.lines);
+	assert_memory_equal(cached.prev_lines, r.world->state.hands[0].prev_lines, sizeof cached.prev_lines);
+	assert_true(cached.center.x == r.world->state.hands[0].center.x && cached.radius == r.world->state.hands[0].radius);
 	free(set);
 	assert_int_equal(hs_world_load_state(r.world, buffer, size), HS_OK);
 	uint64_t first[M_FRAMES], again[M_FRAMES], other[M_FRAMES];
@@ -205,7 +206,7 @@ static void test_grid_world_same_bits(void **state) {
 	for (int k = 0; k < N_FRAMES + M_FRAMES; ++k)
 		if (a[k] != b[k])
 			fail_msg("frame %d: skip_work on %016llx, off %016llx", k + 1, (unsigned long long)a[k], (unsigned long long)b[k]);
-	int n = on.world->object_count, *found = malloc((size_t)n * sizeof *found);
+	int n = on.world->model.object_count, *found = malloc((size_t)n * sizeof *found);
 	assert_non_null(found);
 	assert_int_equal(n, 24);
 	int near = hs_grid_query(on.world, hs_v3(-1.0, 0.0, 0.025), 0.05, found); // the first of the row
@@ -228,7 +229,7 @@ static void grown_past_the_scan(double fps) {
 	int before = (int)(N_FRAMES * fps / 60.0), after = (int)(M_FRAMES * fps / 60.0); // 1.67 s, then 2.67 s
 	step_hand(&on, on.world, 0, before, NULL);
 	step_hand(&off, off.world, 0, before, NULL);
-	assert_true(on.world->bodies[on.target.index1 - 1].grasped_by > 0); // held as the world grows
+	assert_true(on.world->state.bodies[on.target.index1 - 1].grasped_by > 0); // held as the world grows
 	hs_world *w[2] = {on.world, off.world};
 	for (int k = 0; k < 2; ++k) {
 		hs_shape_id cube = add_shape(w[k], hs_shape_box(hs_v3(0.05, 0.05, 0.05), NULL));
@@ -238,12 +239,12 @@ static void grown_past_the_scan(double fps) {
 	uint64_t a[M_FRAMES], b[M_FRAMES];
 	step_hand(&on, on.world, before, 1, a);
 	step_hand(&off, off.world, before, 1, b);
-	int n = on.world->object_count, *found = malloc((size_t)n * sizeof *found);
+	int n = on.world->model.object_count, *found = malloc((size_t)n * sizeof *found);
 	assert_non_null(found);
 	assert_int_equal(n, 24);
 	for (int i = 0; i < n; ++i) { // the held cube and the block included, where they are now
-		const hs_body *body = &on.world->bodies[i];
-		int near = hs_grid_query(on.world, body->pos, on.world->shapes[body->shape].radius, found), k = 0;
+		const hs_body *body = &on.world->state.bodies[i];
+		int near = hs_grid_query(on.world, body->pos, on.world->model.shapes[body->shape].radius, found), k = 0;
 		while (k < near && found[k] != i)
 			++k;
 		if (k == near)
@@ -282,9 +283,9 @@ static void test_load_unset_hand_then_set(void **state) {
 	assert_int_equal(hs_world_load_state(fresh.world, unset, size), HS_OK);
 	drive_hand(&r, r.world, 4);
 	drive_hand(&fresh, fresh.world, 4);
-	const hs_hand *a = &r.world->hands[0], *b = &fresh.world->hands[0];
-	hs_hand_ready_all(&r.world->hands[0]);
-	hs_hand_ready_all(&fresh.world->hands[0]);
+	const hs_hand *a = &r.world->state.hands[0], *b = &fresh.world->state.hands[0];
+	hs_hand_ready_all(&r.world->state.hands[0]);
+	hs_hand_ready_all(&fresh.world->state.hands[0]);
 	assert_memory_equal(a->points, b->points, sizeof a->points);
 	assert_memory_equal(a->lines, b->lines, sizeof a->lines);
 	assert_memory_equal(a->local.points, b->local.points, sizeof a->local.points);
@@ -545,7 +546,7 @@ static void test_hash_sees_every_field(void **state) {
 	hs_world *springs = spring_world(true, &ball);
 	uint64_t hashes[40];
 	step_spring(springs, 0, 40, hashes);
-	const hs_spring_system *sys = springs->spring;
+	const hs_spring_system *sys = springs->state.spring;
 	every_word_changes_the_hash(springs, (size_t)(sys->touch_capacity - sys->warm_count) * 6);
 	hs_world_destroy(r.world);
 	hs_world_destroy(springs);
@@ -571,13 +572,13 @@ static void test_long_release_window_continues_identically(void **state) {
 	hand_rig plain = long_window_world(HS_RELEASE_FIT_MEAN, 0.05, true);
 	hand_rig mean = long_window_world(HS_RELEASE_FIT_MEAN, 0.16, true);
 	hand_rig r = long_window_world(HS_RELEASE_FIT_QUADRATIC, 0.16, true);
-	assert_int_equal(r.world->hands[0].older_capacity, 18);
+	assert_int_equal(r.world->state.hands[0].older_capacity, 18);
 	assert_int_equal(hs_world_state_size(r.world) - hs_world_state_size(plain.world), WORD * 11 * 7);
 	step_hand(&r, r.world, 0, 2 * N_FRAMES, NULL); // t = 1.67 s: held and lifting, the history full
 	hs_object_state target;
 	assert_int_equal(hs_world_object_state(r.world, r.target, &target), HS_OK);
 	assert_int_equal(target.contact, HS_CONTACT_GRASP);
-	assert_int_equal(r.world->hands[0].older_count, 18);
+	assert_int_equal(r.world->state.hands[0].older_count, 18);
 	size_t size;
 	unsigned char *buffer = save(r.world, &size);
 	uint64_t first[2 * M_FRAMES], again[2 * M_FRAMES], other[2 * M_FRAMES];
@@ -618,28 +619,28 @@ static void test_hash_sees_what_the_old_one_missed(void **state) {
 	step_hand(&r, r.world, 0, N_FRAMES, NULL);
 	hs_world *w = r.world;
 	uint64_t h = hs_world_hash(w);
-	hs_body saved = w->bodies[1];
-	w->bodies[1].prev.x += 1e-9; // the velocity of a flying object
+	hs_body saved = w->state.bodies[1];
+	w->state.bodies[1].prev.x += 1e-9; // the velocity of a flying object
 	assert_true(rehash(w) != h);
-	w->bodies[1] = saved;
-	w->bodies[1].spin.x = -w->bodies[1].spin.x;
+	w->state.bodies[1] = saved;
+	w->state.bodies[1].spin.x = -w->state.bodies[1].spin.x;
 	assert_true(rehash(w) != h);
-	w->bodies[1] = saved;
-	w->bodies[1].asleep ^= 1;
+	w->state.bodies[1] = saved;
+	w->state.bodies[1].asleep ^= 1;
 	assert_true(rehash(w) != h);
-	w->bodies[1] = saved;
-	w->bodies[0].grip_pos.y += 1e-12;
+	w->state.bodies[1] = saved;
+	w->state.bodies[0].grip_pos.y += 1e-12;
 	assert_true(rehash(w) != h);
-	w->bodies[0].grip_pos.y -= 1e-12;
-	w->hands[0].sensors[3] ^= 1;
+	w->state.bodies[0].grip_pos.y -= 1e-12;
+	w->state.hands[0].sensors[3] ^= 1;
 	assert_true(rehash(w) != h);
-	w->hands[0].sensors[3] ^= 1;
-	w->hands[0].prev_wrist_pos.z += 1e-9; // where the previous check points were placed from
+	w->state.hands[0].sensors[3] ^= 1;
+	w->state.hands[0].prev_wrist_pos.z += 1e-9; // where the previous check points were placed from
 	assert_true(rehash(w) != h);
-	w->hands[0].prev_wrist_pos.z -= 1e-9;
-	w->hands[0].prev_sensors[7] ^= 1;
+	w->state.hands[0].prev_wrist_pos.z -= 1e-9;
+	w->state.hands[0].prev_sensors[7] ^= 1;
 	assert_true(rehash(w) != h);
-	w->hands[0].prev_sensors[7] ^= 1;
+	w->state.hands[0].prev_sensors[7] ^= 1;
 	assert_true(rehash(w) == h);
 	hs_world_destroy(w);
 }

@@ -262,7 +262,7 @@ static unsigned char *hand_state_with_prev_x(hs_scenario *s, long frames, double
 	hs_error err;
 	assert_int_equal(hs_scenario_save(s, f, &err), HS_OK);
 	fclose(f);
-	const hs_body *b = &hs_scenario_world(s)->bodies[0];
+	const hs_body *b = &hs_scenario_world(s)->state.bodies[0];
 	unsigned char want[3 * WORD];
 	memcpy(want, &b->prev, sizeof want); // little-endian words, as the state writes them
 	unsigned char *at = NULL;

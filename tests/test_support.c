@@ -8,6 +8,7 @@
 
 #include <cmocka.h>
 
+#include "hs_bench.h"
 #include "broadphase.h"
 #include "interfere.h"
 #include "manipulate.h"
@@ -154,7 +155,7 @@ static void test_paper_push_piles_onto_foot(void **state) {
 	double front = 0.08 - g;                                              // the foot's front face
 	hs_object_id cube = add_box(w, hs_v3(0.1, 0.1, 0.1), hs_v3(front - 0.003 + 0.05, 0, 0.05));
 	hs_object_id flat = add_box(w, hs_v3(0.1, 0.1, 0.04), hs_v3(front - 0.003 + 0.05, 0.2, 0.02));
-	hs_body *c = &w->bodies[cube.index1 - 1], *f = &w->bodies[flat.index1 - 1];
+	hs_body *c = &w->state.bodies[cube.index1 - 1], *f = &w->state.bodies[flat.index1 - 1];
 	double fall = c->pos.z - c->prev.z;
 	assert_true(hs_stack_pile_onto(w, (int)cube.index1 - 1, (int)lb.index1 - 1));
 	assert_near(c->pos.z, 0.075 - 0.5e-9, 1e-12);
@@ -356,7 +357,7 @@ static void test_support_carried_by_lifted_support(void **state) {
 	hs_object_state a, b;
 	run(w, cube, 2);
 	int li = (int)bar.index1 - 1;
-	hs_body *lower = &w->bodies[li], *upper = &w->bodies[(int)cube.index1 - 1];
+	hs_body *lower = &w->state.bodies[li], *upper = &w->state.bodies[(int)cube.index1 - 1];
 	hs_vec3 rel = hs_quat_inv_rotate(lower->rot, hs_sub(upper->pos, lower->pos));
 	hs_quat rel_rot = hs_quat_mul(hs_quat_conj(lower->rot), upper->rot);
 	uint32_t seed = 12345u;
@@ -374,7 +375,7 @@ static void test_support_carried_by_lifted_support(void **state) {
 		hs_world_object_state(w, cube, &b);
 		assert_vec3_near(hs_quat_inv_rotate(lower->rot, hs_sub(upper->pos, lower->pos)), rel, 1e-12);
 		assert_near(hs_quat_angle(hs_quat_mul(hs_quat_conj(rel_rot), hs_quat_mul(hs_quat_conj(lower->rot), upper->rot))), 0.0, 1e-9);
-		assert_true(penetration(&w->shapes[lower->shape], a, &w->shapes[upper->shape], b) <= 1e-9);
+		assert_true(penetration(&w->model.shapes[lower->shape], a, &w->model.shapes[upper->shape], b) <= 1e-9);
 		assert_true(b.resting);
 	}
 	lower->held = 0; // let go: it falls from rest (eq. 3), the cube with it
@@ -384,7 +385,7 @@ static void test_support_carried_by_lifted_support(void **state) {
 	assert_true(a.resting && b.resting);
 	assert_near(a.position.z, 0.025, 1e-9);
 	assert_near(b.position.z, 0.07, 1e-6);
-	assert_true(penetration(&w->shapes[lower->shape], a, &w->shapes[upper->shape], b) <= 1e-9);
+	assert_true(penetration(&w->model.shapes[lower->shape], a, &w->model.shapes[upper->shape], b) <= 1e-9);
 	hs_world_destroy(w);
 }
 
@@ -394,9 +395,9 @@ static void test_support_carried_by_lifted_support(void **state) {
 static uint64_t settle_hash(bool skip) {
 	hs_world_def def = hs_default_world_def();
 	def.stacking = HS_STACKING_SUPPORT;
-	def.skip_work = skip;
 	def.dt = 1.0 / 12;
 	hs_world *w = hs_world_create(&def, NULL);
+	hs_world_set_skip_work(w, skip);
 	add_box(w, hs_v3(0.1, 0.1, 0.1), hs_v3(0.3, 0, 0.05));
 	add_box(w, hs_v3(0.04, 0.04, 0.04), hs_v3(0.31, 0.005, 0.15));
 	run(w, add_box(w, hs_v3(0.04, 0.04, 0.04), hs_v3(0.6, 0, 0.5)), 60);
@@ -422,7 +423,7 @@ static void test_support_push_moves_what_is_beside(void **state) {
 	hs_object_id behind = add_box(w, hs_v3(0.05, 0.05, 0.05), hs_v3(-0.08, 0, 0.025));
 	run(w, box, 2);
 	int i = (int)box.index1 - 1;
-	hs_body *b = &w->bodies[i];
+	hs_body *b = &w->state.bodies[i];
 	b->prev = b->pos;
 	b->rot_prev = b->rot;
 	b->pos = hs_add(b->pos, hs_v3(0.01, 0, 0));
@@ -431,9 +432,9 @@ static void test_support_push_moves_what_is_beside(void **state) {
 	hs_wake(w, i);
 	hs_grid_update(w, i);
 	hs_support_wake_neighbours(w, i, b->prev);
-	assert_near(w->bodies[(int)first.index1 - 1].pos.x, 0.0855, 1e-15);  // 9.5 mm into it: moved 1 cm, the gap kept
-	assert_near(w->bodies[(int)second.index1 - 1].pos.x, 0.1405, 1e-15); // moved into by the first
-	assert_near(w->bodies[(int)behind.index1 - 1].pos.x, -0.08, 0);
+	assert_near(w->state.bodies[(int)first.index1 - 1].pos.x, 0.0855, 1e-15);  // 9.5 mm into it: moved 1 cm, the gap kept
+	assert_near(w->state.bodies[(int)second.index1 - 1].pos.x, 0.1405, 1e-15); // moved into by the first
+	assert_near(w->state.bodies[(int)behind.index1 - 1].pos.x, -0.08, 0);
 	assert_near(b->pos.x, 0.01, 1e-15);
 	hs_world_destroy(w);
 }
@@ -448,7 +449,7 @@ static void test_support_push_does_not_sink(void **state) {
 	hs_object_id id = add_box(w, hs_v3(0.04, 0.04, 0.04), hs_v3(0.3, 0, 0.12));
 	run(w, id, 2);
 	int i = (int)id.index1 - 1;
-	hs_body *b = &w->bodies[i];
+	hs_body *b = &w->state.bodies[i];
 	b->prev = b->pos;
 	b->rot_prev = b->rot;
 	b->pos = hs_add(b->pos, hs_v3(0.002, 0, -0.003));

@@ -14,16 +14,7 @@
 
 // Object i's world box at (pos, rot), from its memo when it was made at that pose's bits.
 static HS_FORCE_INLINE int memo_box(const hs_world *world, int i, hs_vec3 pos, hs_quat rot) {
-	hs_box_memo *m = &world->box_memo[i];
-	for (int k = 0; k < m->filled; ++k)
-		if (memcmp(&m->pos[k], &pos, sizeof pos) == 0 && memcmp(&m->rot[k], &rot, sizeof rot) == 0)
-			return k;
-	int k = m->filled < 2 ? m->filled++ : m->older;
-	m->older = (uint8_t)(1 - k);
-	m->pos[k] = pos;
-	m->rot[k] = rot;
-	hs_part_world_box(&world->shapes[world->bodies[i].shape], 0, pos, rot, &m->centre[k], &m->half[k]);
-	return k;
+	return hs_box_memo_find(&world->cache.box_memo[i], &world->model.shapes[world->state.bodies[i].shape], pos, rot);
 }
 
 // The bounding spheres (radii summing to r) of an object at pos and object b lie apart: no overlap.
@@ -35,14 +26,14 @@ static HS_FORCE_INLINE bool spheres_apart(double r, hs_vec3 pos, const hs_body *
 // objects (no exact spheres) whose world boxes lie apart are not handed to hs_shapes_overlap: it
 // would find them apart by the same boxes (hs_part_world_boxes_apart), after making them again.
 static HS_FORCE_INLINE bool overlap_at_pose(const hs_world *world, int i, hs_vec3 pos, hs_quat rot, int j) {
-	const hs_body *b = &world->bodies[j];
-	const hs_shape *sa = &world->shapes[world->bodies[i].shape], *sb = &world->shapes[b->shape];
+	const hs_body *b = &world->state.bodies[j];
+	const hs_shape *sa = &world->model.shapes[world->state.bodies[i].shape], *sb = &world->model.shapes[b->shape];
 	if (spheres_apart(sa->radius + sb->radius, pos, b))
 		return false; // no narrow test
-	if (world->def.skip_work && sa->part_count == 1 && sb->part_count == 1 && sa->kind != HS_SHAPE_SPHERE &&
+	if (world->model.skip_work && sa->part_count == 1 && sb->part_count == 1 && sa->kind != HS_SHAPE_SPHERE &&
 	    sb->kind != HS_SHAPE_SPHERE) {
 		int ka = memo_box(world, i, pos, rot), kb = memo_box(world, j, b->pos, b->rot);
-		const hs_box_memo *ma = &world->box_memo[i], *mb = &world->box_memo[j];
+		const hs_box_memo *ma = &world->cache.box_memo[i], *mb = &world->cache.box_memo[j];
 		if (hs_part_world_boxes_apart(sa, 0, ma->centre[ka], ma->half[ka], sb, 0, mb->centre[kb], mb->half[kb]))
 			return false;
 	}
@@ -50,7 +41,7 @@ static HS_FORCE_INLINE bool overlap_at_pose(const hs_world *world, int i, hs_vec
 }
 
 static HS_FORCE_INLINE bool bodies_overlap(const hs_world *world, int i, int j) {
-	return overlap_at_pose(world, i, world->bodies[i].pos, world->bodies[i].rot, j);
+	return overlap_at_pose(world, i, world->state.bodies[i].pos, world->state.bodies[i].rot, j);
 }
 
 // §4.3: true when an untouched free object interferes with another and so ignores gravity.

@@ -14,10 +14,10 @@ static int axis_of(hs_vec3 n) {
 	return -1;
 }
 
-void hs_part_box_find(const hs_shape *shape, hs_part *part) {
+void hs_part_box_find(const hs_shape *shape, const hs_part *part, hs_part_cache *pc) {
 	for (int k = 0; k < 6; ++k) {
-		part->box_face[k] = -1;
-		part->box_offset[k] = 0.0;
+		pc->box_face[k] = -1;
+		pc->box_offset[k] = 0.0;
 	}
 	if (part->face_count != 6 || part->first_face < 0 || part->first_face + 6 > shape->face_count)
 		return;
@@ -29,7 +29,7 @@ void hs_part_box_find(const hs_shape *shape, hs_part *part) {
 		face[k] = f;
 	}
 	for (int k = 0; k < 6; ++k) {
-		part->box_face[k] = face[k];
-		part->box_offset[k] = shape->faces[face[k]].offset;
+		pc->box_face[k] = face[k];
+		pc->box_offset[k] = shape->faces[face[k]].offset;
 	}
 }

@@ -1,5 +1,5 @@
 // part_box.h — the hand check's face loops for a part that is a box with axis-aligned faces
-// (hs_part.box_face), the commonest object (a cube): its inside test coordinate by coordinate
+// (hs_part_cache.box_face), the commonest object (a cube): its inside test coordinate by coordinate
 // instead of six dot products, and the misses of its Cyrus-Beck clip found by comparisons.
 //
 // For a face of normal +x, dot(normal, p) = 1 p.x + 0 p.y + 0 p.z is p.x exactly when p is finite
@@ -12,15 +12,16 @@
 #include <stdbool.h>
 
 #include "handspring.h"
+#include "part_cache.h"
 
 #if defined(__SSE2__)
 #include <emmintrin.h>
 #endif
 
-// Fills part->box_face and part->box_offset (box_face[0] = -1 when the part is no such box).
-void hs_part_box_find(const hs_shape *shape, hs_part *part);
+// Fills pc->box_face and pc->box_offset for the part (box_face[0] = -1 when it is no such box).
+void hs_part_box_find(const hs_shape *shape, const hs_part *part, hs_part_cache *pc);
 
-static inline bool hs_part_is_box(const hs_part *part) { return part->box_face[0] >= 0; }
+static inline bool hs_part_is_box(const hs_part_cache *pc) { return pc->box_face[0] >= 0; }
 
 // Whether p takes the box's path: its coordinates are finite and so is their sum.
 static inline bool hs_part_box_takes(hs_vec3 p) {
@@ -29,8 +30,8 @@ static inline bool hs_part_box_takes(hs_vec3 p) {
 }
 
 // scan_inside (contact_part.h): no face has dot(normal, p) >= offset + grow.
-static inline bool hs_part_box_inside(const hs_part *part, hs_vec3 p, double grow) {
-	const double *o = part->box_offset;
+static inline bool hs_part_box_inside(const hs_part_cache *pc, hs_vec3 p, double grow) {
+	const double *o = pc->box_offset;
 #if defined(__SSE2__)
 	// without a branch (the points are noisy input): each lane one face's comparison, the same
 	// operands (negation flips the sign bit alone, as unary minus does) and the same NaN answers
@@ -51,8 +52,8 @@ static inline bool hs_part_box_inside(const hs_part *part, hs_vec3 p, double gro
 // negation (up to the sign of a zero, which the subtraction from the offset does not keep), so each
 // depth is o[k] - p.c or o[k] - (-p.c), as there; the least found without a branch (the points
 // are noisy input), a tie settled by the face index.
-static inline int hs_part_box_nearest(const hs_part *part, hs_vec3 p) {
-	const double *o = part->box_offset;
+static inline int hs_part_box_nearest(const hs_part_cache *pc, hs_vec3 p) {
+	const double *o = pc->box_offset;
 	unsigned least = 0;
 #if defined(__SSE2__)
 	__m128d neg = _mm_set_pd(-0.0, 0.0);
@@ -73,7 +74,7 @@ static inline int hs_part_box_nearest(const hs_part *part, hs_vec3 p) {
 #endif
 	int best = -1;
 	for (; least; least &= least - 1u) {
-		int f = part->box_face[__builtin_ctz(least)];
+		int f = pc->box_face[__builtin_ctz(least)];
 		best = best < 0 || f < best ? f : best;
 	}
 	return best;
@@ -82,8 +83,8 @@ static inline int hs_part_box_nearest(const hs_part *part, hs_vec3 p) {
 // True when a and b both lie beyond one face of the box grown by `grow` by more than `slack`: then
 // hs_clip_segment misses (that face's t lies outside [0, 1] whatever the rounding, for a slack far
 // above it), found with 12 comparisons instead of its dots and divisions.
-static inline bool hs_part_box_apart(const hs_part *part, hs_vec3 a, hs_vec3 b, double grow, double slack) {
-	const double *o = part->box_offset;
+static inline bool hs_part_box_apart(const hs_part_cache *pc, hs_vec3 a, hs_vec3 b, double grow, double slack) {
+	const double *o = pc->box_offset;
 	double g = grow + slack;
 	return (a.x > o[0] + g && b.x > o[0] + g) || (-a.x > o[1] + g && -b.x > o[1] + g) ||
 	       (a.y > o[2] + g && b.y > o[2] + g) || (-a.y > o[3] + g && -b.y > o[3] + g) ||

@@ -9,8 +9,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "part_box.h"
-#include "part_reach.h"
 #include "shape_build.h"
 
 // Planarity and convexity are judged relative to the part's size (its bounding-box diagonal).
@@ -443,8 +441,6 @@ static void bound_parts(hs_shape *shape, double exact_sphere) {
 		}
 		part->box_center = hs_scale(hs_add(lo, hi), 0.5);
 		part->box_half = hs_scale(hs_sub(hi, lo), 0.5);
-		hs_part_box_find(shape, part);
-		part->grow_reach = hs_part_grow_reach(shape, part);
 	}
 	shape->radius = radius;
 	if (exact_sphere > 0.0) {

@@ -14,10 +14,10 @@
 // touching within the release margin, a check point or line that started inside stays so within
 // twice it; the bounding-volume tests reach that much further while the hand has such parts.
 static inline double hs_contact_keep(const hs_world *world, const hs_hand *hand) {
-	if (world->def.paper_contacts)
+	if (world->model.def.paper_contacts)
 		return 0.0;
 	bool embedded = hand->embed_points || hand->embed_lines;
-	return 1e-3 * world->def.grasp_release_mm * (embedded ? 2.0 : hand->touch_points ? 1.0 : 0.0);
+	return 1e-3 * world->model.def.grasp_release_mm * (embedded ? 2.0 : hand->touch_points ? 1.0 : 0.0);
 }
 
 // True when the hand's path through the frame may reach a part or body of bounding sphere (c, r)
@@ -41,10 +41,10 @@ static inline bool hs_contact_sphere_near(const hs_world *world, const hs_hand *
 }
 
 static inline bool hs_contact_hand_near(const hs_world *world, const hs_body *body, const hs_hand *hand, double grow) {
-	if (hand->lost_frames > world->hold_frames) // lost past the hold: it touches nothing (tracking.c)
+	if (hand->lost_frames > world->model.hold_frames) // lost past the hold: it touches nothing (tracking.c)
 		return false;
-	return !world->def.skip_work || hs_contact_sphere_near(world, hand, body->pos, world->shapes[body->shape].radius,
-	                                                       world->shape_grow_reach[body->shape], grow);
+	return !world->model.skip_work || hs_contact_sphere_near(world, hand, body->pos, world->model.shapes[body->shape].radius,
+	                                                       world->model.shape_grow_reach[body->shape], grow);
 }
 
 // Where an object's G is and how it is turned.
@@ -53,7 +53,7 @@ typedef struct hs_pose {
 	hs_quat rot;
 } hs_pose;
 
-// Appends the contacts of every hand with the object to world->contacts; returns how many.
+// Appends the contacts of every hand with the object to world->out.contacts; returns how many.
 // `before` is the object's pose one frame ago when it has moved since (NULL: it has not).
 int hs_contact_detect(hs_world *world, int object, const hs_pose *before);
 // The same against the object's parts grown by `grow` (m): a finger part within `grow` of the

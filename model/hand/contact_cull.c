@@ -97,7 +97,7 @@ static void check_clear(const hs_world *world, const hs_shape *shape, const hs_p
 	if (clip_part(world, shape, part, p[0], p[1], 0.0).hit || clip_part(world, shape, part, q[0], q[1], 0.0).hit ||
 	    !hs_contact_sweep_beyond_a_face(world, shape, part, q, p)) {
 		fprintf(stderr, "handspring: a line's sweep passed over as clear of a face touches the part (frame %ld)\n",
-		        world->frame);
+		        world->state.frame);
 		abort();
 	}
 }
@@ -124,7 +124,7 @@ bool hs_contact_sweep_clear_of_a_face(const hs_world *world, const hs_shape *sha
 void hs_contact_check_segment_clear(const hs_world *world, int h, int a, const hs_frame *body, const hs_frame *before,
                                     const hs_shape *shape, const hs_part *part) {
 	int s = a - a / 4; // the segment of first check point a (hs_segment_first_point)
-	hs_hand *hand = (hs_hand *)&world->hands[h]; // placing lines changes no result (hand_internal.h)
+	hs_hand *hand = (hs_hand *)&world->state.hands[h]; // placing lines changes no result (hand_internal.h)
 	hs_hand_ready_segment(hand, s);
 	for (int j = 4 * s; j < 4 * s + 4; ++j) {
 		hs_vec3 p[2], q[2];
@@ -244,10 +244,10 @@ unsigned hs_contact_lines_near(const hs_hand *hand, int s, hs_vec3 c, double r_s
 // the body frame, lies beside a touching check point or misses the part.
 static void check_held_clear(hs_world *world, int h, int s, int a, const hs_frame *body, const hs_shape *shape,
                              const hs_part *part, uint32_t touching, double grow) {
-	hs_hand_ready_segment(&world->hands[h], s);
+	hs_hand_ready_segment(&world->state.hands[h], s);
 	for (int j = 4 * s; j < 4 * s + 4; ++j) {
 		hs_vec3 p[2];
-		line_to_body(body, world->hands[h].lines[j], p);
+		line_to_body(body, world->state.hands[h].lines[j], p);
 		if (!hs_contact_end_touches(world, touching, a, shape, part, p) && clip_part(world, shape, part, p[0], p[1], grow).hit) {
 			fprintf(stderr, "selfcheck: a held object's line passed over as clear touches the part\n");
 			abort();
@@ -284,12 +284,12 @@ typedef struct held_ends {
 	double margin, grow, r;
 } held_ends;
 
-static inline bool held_each_clear(const hs_part *part, const held_ends *l) {
+static inline bool held_each_clear(const hs_part *part, const hs_part_cache *pc, const held_ends *l) {
 	const hs_vec3 off[4] = {l->y, hs_scale(l->y, -1.0), l->z, hs_scale(l->z, -1.0)};
 	for (int k = 0; k < 4; ++k) {
 		hs_vec3 p0 = hs_add(l->e0, off[k]), p1 = hs_add(l->e1, off[k]);
-		if ((l->touch0 && hs_part_box_inside(part, p0, l->margin)) || (l->touch1 && hs_part_box_inside(part, p1, l->margin)) ||
-		    hs_part_box_apart(part, p0, p1, l->grow, 2.0 * HS_CULL_SLACK) ||
+		if ((l->touch0 && hs_part_box_inside(pc, p0, l->margin)) || (l->touch1 && hs_part_box_inside(pc, p1, l->margin)) ||
+		    hs_part_box_apart(pc, p0, p1, l->grow, 2.0 * HS_CULL_SLACK) ||
 		    segment_distance_sq(part->center, p0, p1) > l->r * l->r)
 			continue;
 		return false;
@@ -331,7 +331,7 @@ HS_AVX static inline unsigned box_apart4(const double o[6], const __m256d a[6], 
 
 // held_each_clear's four lines in the four lanes (AVX), each comparison the scalar one's (the
 // same answers; the ends are finite, held_lines_clear): the touching ends first, as there.
-HS_AVX static bool held_four_clear(const hs_part *part, const held_ends *l) {
+HS_AVX static bool held_four_clear(const hs_part *part, const hs_part_cache *pc, const held_ends *l) {
 	const hs_vec3 y = l->y, z = l->z;
 	const __m256d ox = _mm256_set_pd(-z.x, z.x, -y.x, y.x), oy = _mm256_set_pd(-z.y, z.y, -y.y, y.y),
 	              oz = _mm256_set_pd(-z.z, z.z, -y.z, y.z);
@@ -342,7 +342,7 @@ HS_AVX static bool held_four_clear(const hs_part *part, const held_ends *l) {
 	__m256d v0[6], v1[6];
 	box_coords4(p0, v0);
 	box_coords4(p1, v1);
-	const double *o = part->box_offset;
+	const double *o = pc->box_offset;
 	unsigned clear = 0;
 	if (l->touch0)
 		clear |= ~box_outside4(o, v0, l->margin) & 0xFu;
@@ -371,7 +371,7 @@ HS_AVX static bool held_four_clear(const hs_part *part, const held_ends *l) {
 static HS_FORCE_INLINE bool held_lines_clear_in(hs_world *world, int h, int s, int a, const hs_frame *body,
                                                 const hs_shape *shape, const hs_part *part, uint32_t touching, double grow,
                                                 hs_held_turn *turn, bool four) {
-	const hs_hand *hand = &world->hands[h];
+	const hs_hand *hand = &world->state.hands[h];
 	hs_vec3 e0 = to_body(body, hand->points[a]), e1 = to_body(body, hand->points[a + 1]);
 	if (!hs_part_box_takes(e0) || !hs_part_box_takes(e1))
 		return false;
@@ -387,16 +387,17 @@ static HS_FORCE_INLINE bool held_lines_clear_in(hs_world *world, int h, int s, i
 	// the box's path whenever e0 and e1 do
 	if (!hs_part_box_takes(y) || !hs_part_box_takes(z))
 		return false;
+	const hs_part_cache *pc = hs_part_cache_of(world, shape, part);
 	held_ends ends = {e0, e1, y, z, touching >> a & 1u, touching >> (a + 1) & 1u,
-	                  world->def.grasp_release_mm * 1e-3 - HS_CULL_SLACK, grow, part->radius + part->grow_reach * grow + HS_CULL_SLACK};
+	                  world->model.def.grasp_release_mm * 1e-3 - HS_CULL_SLACK, grow, part->radius + pc->grow_reach * grow + HS_CULL_SLACK};
 #if HS_LANES4
-	bool clear = four ? held_four_clear(part, &ends) : held_each_clear(part, &ends);
+	bool clear = four ? held_four_clear(part, pc, &ends) : held_each_clear(part, pc, &ends);
 #else
 	(void)four;
-	bool clear = held_each_clear(part, &ends);
+	bool clear = held_each_clear(part, pc, &ends);
 #endif
 #if defined(HS_SELFCHECK)
-	if (clear != held_each_clear(part, &ends)) {
+	if (clear != held_each_clear(part, pc, &ends)) {
 		fprintf(stderr, "selfcheck: held_lines_clear's lanes differ from its loop\n");
 		abort();
 	}
@@ -452,10 +453,10 @@ static inline void check_far(const hs_hand *hand, unsigned far, hs_vec3 c, doubl
 // contact (end_touches, a test with a margin, only passes a line over). An embedded line answers
 // to the part grown by twice the margin, which reaches past the sphere at a box's corner (by
 // (sqrt 3 - 1) times the growth): a finger with one keeps its tests.
-unsigned hs_contact_far_fingers(const hs_hand *hand, const hs_part *part, hs_vec3 c, double reach, double hand_keep) {
+unsigned hs_contact_far_fingers(const hs_hand *hand, double grow_reach, hs_vec3 c, double reach, double hand_keep) {
 	unsigned far = 0;
 	uint32_t kept = hand->touch_points | hand->embed_points; // counted beyond the sphere (detect_points)
-	double keep = part->grow_reach * hand_keep;
+	double keep = grow_reach * hand_keep;
 	for (int f = 0; f < 5; ++f) {
 		double r = hand->finger_reach[f] + reach + (kept >> (4 * f) & 0xFu ? keep : 0.0);
 		if (!(hand->embed_lines >> (12 * f) & 0xFFFu) && hs_length_sq(hs_sub(hand->finger_center[f], c)) > r * r)

@@ -38,7 +38,7 @@ static inline bool hs_contact_path_near(const hs_hand *hand, int i, int steps, h
 // pushed the object sideways while the tip itself held still.
 static inline bool hs_contact_end_touches(const hs_world *world, uint32_t touching, int point, const hs_shape *shape,
                                           const hs_part *part, const hs_vec3 p[2]) { // the line runs beside point and point + 1
-	double margin = world->def.grasp_release_mm * 1e-3;
+	double margin = world->model.def.grasp_release_mm * 1e-3;
 	for (int k = 0; k < 2; ++k)
 		if ((touching >> (point + k) & 1u) && inside_part(world, shape, part, p[k], margin))
 			return true;
@@ -66,7 +66,7 @@ typedef struct hs_segment_bounds {
 static inline hs_segment_bounds hs_contact_segment_bounds(const hs_world *world, const hs_hand *hand, double r) {
 	double rf = hand->def.finger_radius;
 	hs_segment_bounds b = {r + rf + HS_CULL_SLACK, r + 3.0 * rf + HS_CULL_SLACK, r - rf - HS_CULL_SLACK,
-	                    world->def.grasp_release_mm * 1e-3 - rf - HS_CULL_SLACK};
+	                    world->model.def.grasp_release_mm * 1e-3 - rf - HS_CULL_SLACK};
 	return b;
 }
 
@@ -112,14 +112,15 @@ static inline bool hs_contact_held_lines_clear(hs_world *world, int h, int s, in
 	return hs_contact_held_lines_clear_plain(world, h, s, a, body, shape, part, touching, grow, turn);
 }
 // The fingers (bit f) far from a part's bounding sphere (centre c, radius `reach`) through the frame.
-unsigned hs_contact_far_fingers(const hs_hand *hand, const hs_part *part, hs_vec3 c, double reach, double hand_keep);
+// grow_reach: the part's (part_cache.h).
+unsigned hs_contact_far_fingers(const hs_hand *hand, double grow_reach, hs_vec3 c, double reach, double hand_keep);
 
 // The check points near the part now: within r, its sphere grown by `grow` (its corners reach
 // further: part_reach.h); and, in the swept test, a point that touched (or started inside) within
 // the sphere grown further by the release margin (or twice it), where it still counts.
-static inline uint32_t hs_contact_points_near_part(const hs_hand *hand, const hs_part *part, hs_vec3 center, double r, bool swept,
+static inline uint32_t hs_contact_points_near_part(const hs_hand *hand, double grow_reach, hs_vec3 center, double r, bool swept,
                                                    double hand_keep) {
-	double keep = r + part->grow_reach * hand_keep;
+	double keep = r + grow_reach * hand_keep;
 	uint32_t within = 0, near = hs_contact_points_near(hand, center, r * r, keep * keep, &within);
 	return swept ? near | (within & (hand->touch_points | hand->embed_points)) : near;
 }
@@ -212,7 +213,7 @@ static inline bool hs_contact_axis_path_near(const hs_hand *hand, int a, int ste
 static inline bool hs_contact_segment_clear_of_a_face(const hs_world *world, int h, int a, const hs_frame *body,
                                                       const hs_frame *before, const hs_shape *shape,
                                                       const hs_part *part) {
-	const hs_hand *hand = &world->hands[h];
+	const hs_hand *hand = &world->state.hands[h];
 	if (part->face_count >= HS_FACE_TREE_MIN_FACES)
 		return false;
 	const hs_vec3 e[4] = {to_body(body, hand->points[a]), to_body(body, hand->points[a + 1]),

@@ -9,9 +9,9 @@
 #define HS_GRASP_EPS 1e-9
 
 hs_vec3 hs_contact_rectify(const hs_world *world, hs_vec3 p) {
-	for (int i = 0; i < world->object_count; ++i) {
-		const hs_body *body = &world->bodies[i];
-		const hs_shape *shape = &world->shapes[body->shape];
+	for (int i = 0; i < world->model.object_count; ++i) {
+		const hs_body *body = &world->state.bodies[i];
+		const hs_shape *shape = &world->model.shapes[body->shape];
 		if (hs_length_sq(hs_sub(p, body->pos)) > shape->radius * shape->radius)
 			continue;
 		hs_frame f = frame_of(body);

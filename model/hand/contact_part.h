@@ -75,7 +75,7 @@ static HS_FORCE_INLINE double segment_distance_sq(hs_vec3 c, hs_vec3 p0, hs_vec3
 // (face_tree.h: the faces near the point, with the scan's answers), out of line (contact_part.c);
 // the others are scanned inline.
 static inline const hs_face_tree *tree_of(const hs_world *world, const hs_shape *shape) {
-	return &world->face_trees[shape - world->shapes];
+	return &world->model.face_trees[shape - world->model.shapes];
 }
 
 // The rule ([H] §3.2 (A)): a point is in a convex part when it lies behind every face plane, here
@@ -116,24 +116,25 @@ int hs_contact_nearest_many(const hs_world *world, const hs_shape *shape, const 
 
 #if defined(HS_SELFCHECK)
 // Sanitizer builds: a box part's queries return what the scan of its faces returns.
-static inline bool box_inside(const hs_shape *shape, const hs_part *part, hs_vec3 p, double grow) {
-	bool inside = hs_part_box_inside(part, p, grow);
+static inline bool box_inside(const hs_shape *shape, const hs_part *part, const hs_part_cache *pc, hs_vec3 p, double grow) {
+	bool inside = hs_part_box_inside(pc, p, grow);
 	if (inside != scan_inside(shape, part, p, grow)) {
 		fprintf(stderr, "selfcheck: the box's inside test differs from the scan's\n");
 		abort();
 	}
 	return inside;
 }
-static inline bool box_apart(const hs_shape *shape, const hs_part *part, hs_vec3 a, hs_vec3 b, double grow) {
-	bool apart = hs_part_box_apart(part, a, b, grow, HS_CULL_SLACK);
+static inline bool box_apart(const hs_shape *shape, const hs_part *part, const hs_part_cache *pc, hs_vec3 a, hs_vec3 b,
+                             double grow) {
+	bool apart = hs_part_box_apart(pc, a, b, grow, HS_CULL_SLACK);
 	if (apart && hs_clip_segment(shape, part, a, b, grow).hit) {
 		fprintf(stderr, "selfcheck: a segment the box test put beyond a face meets the part\n");
 		abort();
 	}
 	return apart;
 }
-static inline int box_nearest(const hs_shape *shape, const hs_part *part, hs_vec3 p) {
-	int face = hs_part_box_nearest(part, p);
+static inline int box_nearest(const hs_shape *shape, const hs_part *part, const hs_part_cache *pc, hs_vec3 p) {
+	int face = hs_part_box_nearest(pc, p);
 	if (face != scan_nearest(shape, part, p)) {
 		fprintf(stderr, "selfcheck: the box's nearest face differs from the scan's\n");
 		abort();
@@ -141,51 +142,66 @@ static inline int box_nearest(const hs_shape *shape, const hs_part *part, hs_vec
 	return face;
 }
 #else
-static inline int box_nearest(const hs_shape *shape, const hs_part *part, hs_vec3 p) {
-	(void)shape;
-	return hs_part_box_nearest(part, p);
+static inline int box_nearest(const hs_shape *shape, const hs_part *part, const hs_part_cache *pc, hs_vec3 p) {
+	(void)shape, (void)part;
+	return hs_part_box_nearest(pc, p);
 }
-static inline bool box_inside(const hs_shape *shape, const hs_part *part, hs_vec3 p, double grow) {
-	(void)shape;
-	return hs_part_box_inside(part, p, grow);
+static inline bool box_inside(const hs_shape *shape, const hs_part *part, const hs_part_cache *pc, hs_vec3 p, double grow) {
+	(void)shape, (void)part;
+	return hs_part_box_inside(pc, p, grow);
 }
-static inline bool box_apart(const hs_shape *shape, const hs_part *part, hs_vec3 a, hs_vec3 b, double grow) {
-	(void)shape;
-	return hs_part_box_apart(part, a, b, grow, HS_CULL_SLACK);
+static inline bool box_apart(const hs_shape *shape, const hs_part *part, const hs_part_cache *pc, hs_vec3 a, hs_vec3 b,
+                             double grow) {
+	(void)shape, (void)part;
+	return hs_part_box_apart(pc, a, b, grow, HS_CULL_SLACK);
 }
 #endif
 
-// Inside the part grown by `grow` (m; 0: the part itself).
-static inline bool inside_part(const hs_world *world, const hs_shape *shape, const hs_part *part, hs_vec3 p, double grow) {
+// Inside the part grown by `grow` (m; 0: the part itself); pc: the part's cache (part_cache.h).
+static inline bool inside_part_with(const hs_world *world, const hs_shape *shape, const hs_part *part,
+                                    const hs_part_cache *pc, hs_vec3 p, double grow) {
 	if (part->face_count >= HS_FACE_TREE_MIN_FACES)
 		return hs_contact_inside_many(world, shape, part, p, grow);
-	if (hs_part_is_box(part) && hs_part_box_takes(p))
-		return box_inside(shape, part, p, grow);
+	if (hs_part_is_box(pc) && hs_part_box_takes(p))
+		return box_inside(shape, part, pc, p, grow);
 	return scan_inside(shape, part, p, grow);
 }
 
-static inline int nearest_face(const hs_world *world, const hs_shape *shape, const hs_part *part, hs_vec3 p) {
+static inline int nearest_face_with(const hs_world *world, const hs_shape *shape, const hs_part *part,
+                                    const hs_part_cache *pc, hs_vec3 p) {
 	if (part->face_count >= HS_FACE_TREE_MIN_FACES)
 		return hs_contact_nearest_many(world, shape, part, p);
-	if (hs_part_is_box(part) && hs_part_box_takes(p))
-		return box_nearest(shape, part, p);
+	if (hs_part_is_box(pc) && hs_part_box_takes(p))
+		return box_nearest(shape, part, pc, p);
 	return scan_nearest(shape, part, p);
 }
 
 // hs_clip_segment, through the tree for a many-faced part: the same clip whenever it hits.
-static inline hs_clip clip_part(const hs_world *world, const hs_shape *shape, const hs_part *part, hs_vec3 a, hs_vec3 b,
-                         double grow) {
+static inline hs_clip clip_part_with(const hs_world *world, const hs_shape *shape, const hs_part *part,
+                                     const hs_part_cache *pc, hs_vec3 a, hs_vec3 b, double grow) {
 	if (part->face_count >= HS_FACE_TREE_MIN_FACES) {
 		const hs_face_tree *tree = tree_of(world, shape);
 		int root = hs_face_tree_root(tree, shape, part);
 		if (root >= 0)
 			return hs_face_tree_clip(tree, root, shape, a, b, grow);
 	}
-	if (hs_part_is_box(part) && hs_part_box_takes(a) && hs_part_box_takes(b) && box_apart(shape, part, a, b, grow)) {
+	if (hs_part_is_box(pc) && hs_part_box_takes(a) && hs_part_box_takes(b) && box_apart(shape, part, pc, a, b, grow)) {
 		hs_clip miss = {0.0, 1.0, -1, -1, false};
 		return miss;
 	}
 	return hs_clip_segment(shape, part, a, b, grow);
+}
+
+// The same three, the part's cache found from the world (where a caller does not hold it).
+static inline bool inside_part(const hs_world *world, const hs_shape *shape, const hs_part *part, hs_vec3 p, double grow) {
+	return inside_part_with(world, shape, part, hs_part_cache_of(world, shape, part), p, grow);
+}
+static inline int nearest_face(const hs_world *world, const hs_shape *shape, const hs_part *part, hs_vec3 p) {
+	return nearest_face_with(world, shape, part, hs_part_cache_of(world, shape, part), p);
+}
+static inline hs_clip clip_part(const hs_world *world, const hs_shape *shape, const hs_part *part, hs_vec3 a, hs_vec3 b,
+                                double grow) {
+	return clip_part_with(world, shape, part, hs_part_cache_of(world, shape, part), a, b, grow);
 }
 
 #endif

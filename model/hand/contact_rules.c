@@ -26,11 +26,11 @@ static hs_vec3 friction_finger(hs_vec3 c, hs_vec3 d, hs_vec3 n) {
 // drives it (eq. 1-2), `normal` the face normal or the edge's pseudo-normal.
 void hs_contact_push(hs_world *world, int object, int hand, int part, bool edge, int feature, const hs_frame *f,
                      hs_vec3 point, hs_vec3 normal, hs_vec3 finger, double t) {
-	if (world->contact_count >= world->contact_capacity) {
+	if (world->out.contact_count >= world->out.contact_capacity) {
 		world->counters.dropped_contacts++;
 		return;
 	}
-	hs_contact *c = &world->contacts[world->contact_count++];
+	hs_contact *c = &world->out.contacts[world->out.contact_count++];
 	c->object = hs_object_handle(world, object);
 	c->hand = hs_hand_handle(world, hand);
 	c->part = part;
@@ -38,7 +38,7 @@ void hs_contact_push(hs_world *world, int object, int hand, int part, bool edge,
 	c->feature = feature;
 	c->point = to_world(f, point);
 	c->normal = hs_mat3_mul(f->rot, normal);
-	if (!world->def.paper_contacts)
+	if (!world->model.def.paper_contacts)
 		finger = friction_finger(point, hs_sub(finger, point), normal);
 	c->finger = to_world(f, finger);
 	c->t = t;
@@ -55,8 +55,8 @@ hs_vec3 hs_contact_edge_normal(const hs_shape *shape, int e) {
 // The part's first edge (in index order) between faces f1 and f2, or -1: among f1's own edges
 // (hs_face_edges), a cost that does not grow with the part's face count.
 static int edge_between(const hs_world *world, int shape_index, const hs_part *part, int f1, int f2) {
-	const hs_shape *shape = &world->shapes[shape_index];
-	const hs_face_edges *index = &world->face_edges[shape_index];
+	const hs_shape *shape = &world->model.shapes[shape_index];
+	const hs_face_edges *index = &world->model.face_edges[shape_index];
 	for (int k = index->first[f1]; k < index->first[f1 + 1]; ++k) {
 		int e = index->edges[k];
 		const hs_edge *edge = &shape->edges[e];
@@ -83,8 +83,8 @@ static hs_vec3 closest_on_first(hs_vec3 a, hs_vec3 b, hs_vec3 c, hs_vec3 d) {
 // relative to the object since it touched last frame (sunk in).
 void hs_contact_line_across(hs_world *world, int object, int h, int j, const hs_part *part, const hs_frame *body,
                             hs_vec3 p0, hs_vec3 p1, hs_clip c, const hs_vec3 *d) {
-	const hs_shape *shape = &world->shapes[world->bodies[object].shape];
-	int feature = edge_between(world, world->bodies[object].shape, part, c.face_in, c.face_out);
+	const hs_shape *shape = &world->model.shapes[world->state.bodies[object].shape];
+	int feature = edge_between(world, world->state.bodies[object].shape, part, c.face_in, c.face_out);
 	bool edge = feature >= 0;
 	hs_vec3 point, normal;
 	if (edge) {
@@ -107,7 +107,7 @@ void hs_contact_line_across(hs_world *world, int object, int h, int j, const hs_
 // drives C to where it is.
 void hs_contact_paper_point(hs_world *world, int object, int h, int i, const hs_part *part, const hs_frame *body,
                             hs_vec3 a, hs_vec3 b, double grow) {
-	const hs_shape *shape = &world->shapes[world->bodies[object].shape];
+	const hs_shape *shape = &world->model.shapes[world->state.bodies[object].shape];
 	hs_clip c = hs_clip_segment_all(shape, part, a, b, grow); // face_in read on a miss too
 	if (c.face_in >= 0) {
 		hs_contact_push(world, object, h, i, false, c.face_in, body, hs_lerp(a, b, c.t_in), shape->faces[c.face_in].normal,
@@ -124,7 +124,7 @@ void hs_contact_paper_point(hs_world *world, int object, int h, int i, const hs_
 static double push_depth(const hs_contact *c) { return -hs_dot(hs_sub(c->finger, c->point), c->normal); }
 
 static bool touched_before(const hs_world *world, const hs_contact *c) {
-	const hs_hand *hand = &world->hands[c->hand.index1 - 1];
+	const hs_hand *hand = &world->state.hands[c->hand.index1 - 1];
 	return c->part < HS_HAND_POINTS ? (hand->touch_points >> c->part & 1u)
 	                                : (hand->touch_lines >> (c->part - HS_HAND_POINTS) & 1u);
 }
@@ -138,20 +138,20 @@ static bool touched_before(const hs_world *world, const hs_contact *c) {
 // already there and still touches.
 int hs_contact_drop_trailing(hs_world *world, int first) {
 	int kept = first;
-	for (int k = first; k < world->contact_count; ++k) {
-		const hs_contact *c = &world->contacts[k];
+	for (int k = first; k < world->out.contact_count; ++k) {
+		const hs_contact *c = &world->out.contacts[k];
 		bool trails = false;
-		for (int m = first; m < world->contact_count && !trails && !c->edge && !touched_before(world, c); ++m) {
-			const hs_contact *l = &world->contacts[m];
+		for (int m = first; m < world->out.contact_count && !trails && !c->edge && !touched_before(world, c); ++m) {
+			const hs_contact *l = &world->out.contacts[m];
 			trails = m != k && !l->edge && l->hand.index1 == c->hand.index1 &&
 			         hs_contact_finger_of(l->part) == hs_contact_finger_of(c->part) &&
 			         l->feature == c->feature && (touched_before(world, l) || (l->t >= 0.0 && l->t < c->t)) &&
 			         push_depth(l) > push_depth(c);
 		}
 		if (!trails && kept++ != k) // (kept in place: no copy)
-			world->contacts[kept - 1] = *c;
+			world->out.contacts[kept - 1] = *c;
 	}
-	world->contact_count = kept;
+	world->out.contact_count = kept;
 	return kept - first;
 }
 
@@ -163,19 +163,19 @@ int hs_contact_drop_trailing(hs_world *world, int first) {
 int hs_contact_keep_hovering(hs_world *world, int first, int n) {
 	int kept = first;
 	for (int k = first; k < first + n; ++k) {
-		const hs_contact *c = &world->contacts[k];
+		const hs_contact *c = &world->out.contacts[k];
 		bool keep = !(c->t < 0.0);
 		for (int m = first; m < first + n && !keep; ++m) {
-			const hs_contact *l = &world->contacts[m];
+			const hs_contact *l = &world->out.contacts[m];
 			keep = !(l->t < 0.0) && l->hand.index1 == c->hand.index1 && push_depth(l) > 0.0;
 		}
 		if (!keep)
 			continue;
-		hs_contact *to = &world->contacts[kept++]; // a copy only when it moves (the one left behind
+		hs_contact *to = &world->out.contacts[kept++]; // a copy only when it moves (the one left behind
 		if (to != c)                               // keeps its t for the later contacts' tests)
 			*to = *c;
 		to->t = to->t < 0.0 ? 0.0 : to->t;
 	}
-	world->contact_count = kept;
+	world->out.contact_count = kept;
 	return kept - first;
 }

@@ -29,20 +29,20 @@ void hs_contact_paper_point(hs_world *world, int object, int h, int i, const hs_
 // touches, drawn back to the surface like a finger that sank in. Else the part started inside
 // (a hand placed inside an object): it touches nothing until it has come out.
 static inline bool hs_contact_came_onto(const hs_world *world, int object, const hs_part *part, hs_vec3 prev_point, double grow) {
-	if (world->frame == 0)
+	if (world->state.frame == 0)
 		return false; // nothing has moved yet (an object's pose a frame ago is its initial parabola's)
-	const hs_body *body = &world->bodies[object];
+	const hs_body *body = &world->state.bodies[object];
 	hs_frame last = frame_before_last_step(body);
-	return !inside_part(world, &world->shapes[body->shape], part, to_body(&last, prev_point), grow);
+	return !inside_part(world, &world->model.shapes[body->shape], part, to_body(&last, prev_point), grow);
 }
 
 static inline bool hs_contact_line_came_onto(const hs_world *world, int object, const hs_part *part, const hs_vec3 prev[2],
                                              double grow) {
-	if (world->frame == 0)
+	if (world->state.frame == 0)
 		return false;
-	const hs_body *body = &world->bodies[object];
+	const hs_body *body = &world->state.bodies[object];
 	hs_frame last = frame_before_last_step(body);
-	return !clip_part(world, &world->shapes[body->shape], part, to_body(&last, prev[0]), to_body(&last, prev[1]), grow).hit;
+	return !clip_part(world, &world->model.shapes[body->shape], part, to_body(&last, prev[0]), to_body(&last, prev[1]), grow).hit;
 }
 
 // The contacts from `first` on, less the parts that trail another of their finger, then less the

@@ -115,22 +115,22 @@ static HS_NOINLINE int sweep_edges(hs_world *world, const hs_shape *shape, const
 	if (root < 0)
 		return -1;
 	const hs_vec3 ends[4] = {q[0], q[1], n[0], n[1]};
-	int faces = hs_face_tree_reached(tree, root, (int)(part - shape->parts), shape, ends, world->face_pick);
-	const hs_face_edges *index = &world->face_edges[shape - world->shapes];
+	int faces = hs_face_tree_reached(tree, root, (int)(part - shape->parts), shape, ends, world->scratch.face_pick);
+	const hs_face_edges *index = &world->model.face_edges[shape - world->model.shapes];
 	int count = 0;
 	for (int k = 0; k < faces; ++k)
-		for (int j = index->first[world->face_pick[k]]; j < index->first[world->face_pick[k] + 1]; ++j) {
+		for (int j = index->first[world->scratch.face_pick[k]]; j < index->first[world->scratch.face_pick[k] + 1]; ++j) {
 			int e = index->edges[j];
-			if (e >= part->first_edge && e < part->first_edge + part->edge_count && !world->edge_mark[e]) {
-				world->edge_mark[e] = 1;
-				world->edge_pick[count++] = e;
+			if (e >= part->first_edge && e < part->first_edge + part->edge_count && !world->scratch.edge_mark[e]) {
+				world->scratch.edge_mark[e] = 1;
+				world->scratch.edge_pick[count++] = e;
 			}
 		}
 	for (int k = 0; k < count; ++k)
-		world->edge_mark[world->edge_pick[k]] = 0;
-	hs_sort_indices(world->edge_pick, count);
+		world->scratch.edge_mark[world->scratch.edge_pick[k]] = 0;
+	hs_sort_indices(world->scratch.edge_pick, count);
 	for (int k = 0; k < count; ++k)
-		try_edge(shape, world->edge_pick[k], q, n, p, hit);
+		try_edge(shape, world->scratch.edge_pick[k], q, n, p, hit);
 	return count;
 }
 
@@ -141,7 +141,7 @@ static HS_NOINLINE int sweep_edges(hs_world *world, const hs_shape *shape, const
 // (p); the piece spans [t0, t0 + span] of the frame. False when it did not meet the part.
 static bool swept_line(hs_world *world, int object, int h, int j, const hs_part *part, const hs_frame *body,
                        const hs_vec3 q[2], const hs_vec3 n[2], const hs_vec3 p[2], double t0, double span) {
-	const hs_shape *shape = &world->shapes[world->bodies[object].shape];
+	const hs_shape *shape = &world->model.shapes[world->state.bodies[object].shape];
 	if (hs_contact_sweep_beyond_a_face(world, shape, part, q, n))
 		return false;
 	swept_hit hit = {INFINITY, -1, false, q[0], p[0]};
@@ -172,8 +172,8 @@ static bool swept_line(hs_world *world, int object, int h, int j, const hs_part 
 // object's pose before the step (transformed once, by detect_lines).
 void hs_contact_swept_path(hs_world *world, int object, int h, int j, const hs_part *part, const hs_frame *body,
                            int steps, const hs_vec3 start[2], const hs_vec3 p[2]) {
-	const hs_shape *shape = &world->shapes[world->bodies[object].shape];
-	const hs_hand *hand = &world->hands[h];
+	const hs_shape *shape = &world->model.shapes[world->state.bodies[object].shape];
+	const hs_hand *hand = &world->state.hands[h];
 	hs_vec3 q[2] = {start[0], start[1]};
 	for (int k = 1; k <= steps; ++k) {
 		if (clip_part(world, shape, part, q[0], q[1], 0.0).hit)

@@ -63,9 +63,9 @@ static int finger_pair(int a, int b) {
 }
 
 void hs_grasp_track_pairs(hs_world *world) {
-	double forget = HS_PAIR_FORGET * world->def.dt;
-	for (int h = 0; h < world->hand_count; ++h) {
-		hs_hand *hand = &world->hands[h];
+	double forget = HS_PAIR_FORGET * world->model.def.dt;
+	for (int h = 0; h < world->model.hand_count; ++h) {
+		hs_hand *hand = &world->state.hands[h];
 		for (int a = 0; a < 4; ++a)
 			for (int b = a + 1; b < 5; ++b) {
 				int k = finger_pair(a, b);
@@ -84,13 +84,13 @@ void hs_grasp_reset_pairs(hs_hand *hand) {
 
 // True when contacts a and b press toward each other across the object (docs/model.md §3 "Grasp
 // start"): each one's push into the object (−normal) lies within the opposition cone of the line
-// from it to the other, world->oppose_cos the cosine of that cone's half-angle.
+// from it to the other, world->model.oppose_cos the cosine of that cone's half-angle.
 static bool opposed(const hs_world *world, const hs_contact *a, const hs_contact *b) {
 	hs_vec3 d = hs_sub(b->point, a->point);
 	double len = hs_length(d);
 	if (!(len > 1e-9)) // one point: nothing to squeeze between
 		return false;
-	double limit = world->oppose_cos * len;
+	double limit = world->model.oppose_cos * len;
 	return -hs_dot(a->normal, d) >= limit && hs_dot(b->normal, d) >= limit;
 }
 
@@ -105,8 +105,8 @@ static bool opposed(const hs_world *world, const hs_contact *a, const hs_contact
 static bool pair_closing(const hs_world *world, const hs_hand *hand, int a, int b) {
 	double d = hs_length(hs_sub(hand->points[4 * a + 3], hand->points[4 * b + 3]));
 	double before = hs_length(hs_sub(hand->prev_points[4 * a + 3], hand->prev_points[4 * b + 3]));
-	return hand->pair_open[finger_pair(a, b)] - d >= world->def.grasp_close_mm * 1e-3 &&
-	       d <= before + HS_PAIR_STILL + HS_PAIR_DRIFT * world->def.dt;
+	return hand->pair_open[finger_pair(a, b)] - d >= world->model.def.grasp_close_mm * 1e-3 &&
+	       d <= before + HS_PAIR_STILL + HS_PAIR_DRIFT * world->model.def.dt;
 }
 
 // True when the fingers of contacts a and b (one hand, different fingers) have closed by
@@ -122,7 +122,7 @@ static bool closing(const hs_world *world, const hs_contact *a, const hs_contact
 		fa = fb;
 		fb = t;
 	}
-	return pair_closing(world, &world->hands[a->hand.index1 - 1], fa, fb);
+	return pair_closing(world, &world->state.hands[a->hand.index1 - 1], fa, fb);
 }
 
 // A new grasp (§3.2 (2) with the realistic start, docs/model.md §3): two contacts whose normals lie
@@ -131,14 +131,14 @@ static bool closing(const hs_world *world, const hs_contact *a, const hs_contact
 // unless the object is `taking_over` from a hand that let it go this frame: another hand already
 // squeezing it (a handover) holds it on without closing again.
 bool hs_grasp_starts(const hs_world *world, const hs_contact *cs, int n, bool taking_over) {
-	bool any = world->def.grasp_any_contacts, oppose = world->def.grasp_opposed;
-	bool close = world->def.grasp_close_mm > 0.0 && !taking_over;
+	bool any = world->model.def.grasp_any_contacts, oppose = world->model.def.grasp_opposed;
+	bool close = world->model.def.grasp_close_mm > 0.0 && !taking_over;
 	for (int i = 0; i < n; ++i)
 		for (int j = i + 1; j < n; ++j) {
 			const hs_contact *a = &cs[i], *b = &cs[j];
 			if (!(any || a->hand.index1 != b->hand.index1 || finger_of(a->part) != finger_of(b->part)))
 				continue;
-			if (hs_dot(a->normal, b->normal) > world->grasp_limit)
+			if (hs_dot(a->normal, b->normal) > world->model.grasp_limit)
 				continue;
 			if ((!oppose || opposed(world, a, b)) && (!close || closing(world, a, b)))
 				return true;
@@ -154,7 +154,7 @@ static double whole_hand_opening(const hs_hand *hand) {
 }
 
 void hs_grasp_begin(hs_world *world, hs_body *body, int h, const hs_contact *cs, int n) {
-	const hs_hand *hand = &world->hands[h];
+	const hs_hand *hand = &world->state.hands[h];
 	body->grasped_by = h + 1;
 	hs_grasp_slip(body, hand); // the pose it has now, in the wrist frame
 	body->grip_fingers = 0;
@@ -166,13 +166,13 @@ void hs_grasp_begin(hs_world *world, hs_body *body, int h, const hs_contact *cs,
 }
 
 void hs_grasp_let_go_in_place(hs_world *world, int h) {
-	for (int i = 0; i < world->object_count; ++i) {
-		hs_body *b = &world->bodies[i];
+	for (int i = 0; i < world->model.object_count; ++i) {
+		hs_body *b = &world->state.bodies[i];
 		if (b->grasped_by != h + 1)
 			continue;
 		b->grasped_by = 0;
 		b->released_by = h + 1; // its fingers, still around it, do not take it again at once
-		b->grip_spread = whole_hand_opening(&world->hands[h]);
+		b->grip_spread = whole_hand_opening(&world->state.hands[h]);
 		b->prev = b->pos; // no velocity: it drops from where it is
 		b->rot_prev = b->rot;
 		b->spin = hs_quat_identity();
@@ -185,7 +185,7 @@ void hs_grasp_let_go_in_place(hs_world *world, int h) {
 // by several fingers, else a grasping pair (§3.2 (2)).
 static bool holder_holds(const hs_world *world, const hs_contact *cs, int n, uint32_t holder, unsigned fingers) {
 	if ((fingers & (fingers - 1u)) == 0)
-		return hs_contact_grasps(cs, n, holder, world->grasp_limit, world->def.grasp_any_contacts);
+		return hs_contact_grasps(cs, n, holder, world->model.grasp_limit, world->model.def.grasp_any_contacts);
 	for (int k = 0; k < n; ++k)
 		if (cs[k].hand.index1 == holder)
 			return true;
@@ -198,20 +198,20 @@ static bool holder_holds(const hs_world *world, const hs_contact *cs, int n, uin
 // wrist frame, so fingers that do not open still clamp it, though one has come off the surface.
 // Held by one finger (grasp_rule: any), the holder's contacts with the object grown by
 // grasp_release_mm must still grasp (§3.2 (2) with the margin). On true, the frame's contacts
-// (ungrown) are in world->contacts from `first` and *n says how many. The ungrown contacts are a
+// (ungrown) are in world->out.contacts from `first` and *n says how many. The ungrown contacts are a
 // subset of the grown ones, so they are tried first: the grown test runs only when they do not
 // hold (a finger lifted off within the margin), which keeps a held object at one detection a frame.
 static bool grasp_continues(hs_world *world, int i, const hs_pose *before, int first, int *n) {
-	hs_body *body = &world->bodies[i];
-	if (world->def.paper_grasp_end) { // [H] §3.2: "successive instances in which grasping is recognized"
+	hs_body *body = &world->state.bodies[i];
+	if (world->model.def.paper_grasp_end) { // [H] §3.2: "successive instances in which grasping is recognized"
 		*n = hs_contact_detect(world, i, before);
-		return hs_contact_classify(&world->contacts[first], *n, world->grasp_limit, world->def.grasp_any_contacts) ==
+		return hs_contact_classify(&world->out.contacts[first], *n, world->model.grasp_limit, world->model.def.grasp_any_contacts) ==
 		       HS_CONTACT_GRASP;
 	}
 	uint32_t holder = (uint32_t)body->grasped_by;
-	const hs_hand *hand = &world->hands[holder - 1];
+	const hs_hand *hand = &world->state.hands[holder - 1];
 	unsigned fingers = body->grip_fingers;
-	double spread, reach, margin = world->def.grasp_open_mm * 1e-3;
+	double spread, reach, margin = world->model.def.grasp_open_mm * 1e-3;
 	hand_opening(hand, fingers, &spread, &reach);
 	// measured from the most closed grip since the grasp began: a hand that closes on after the
 	// grasp and then opens lets go once it opened by the margin, not only past where it began
@@ -220,12 +220,12 @@ static bool grasp_continues(hs_world *world, int i, const hs_pose *before, int f
 	if (spread - body->grip_spread > margin || reach - body->grip_reach > margin)
 		return false;
 	*n = hs_contact_detect(world, i, before);
-	if (holder_holds(world, &world->contacts[first], *n, holder, fingers))
+	if (holder_holds(world, &world->out.contacts[first], *n, holder, fingers))
 		return true;
-	world->contact_count = first;
-	int grown = hs_contact_detect_grown(world, i, before, world->def.grasp_release_mm * 1e-3);
-	bool holds = holder_holds(world, &world->contacts[first], grown, holder, fingers);
-	world->contact_count = first;
+	world->out.contact_count = first;
+	int grown = hs_contact_detect_grown(world, i, before, world->model.def.grasp_release_mm * 1e-3);
+	bool holds = holder_holds(world, &world->out.contacts[first], grown, holder, fingers);
+	world->out.contact_count = first;
 	if (holds)
 		*n = hs_contact_detect(world, i, before);
 	return holds;
@@ -242,8 +242,8 @@ static bool hand_within_margin(hs_world *world, int i, uint32_t r, int at) {
 	int n = hs_contact_detect_grown(world, i, NULL, HS_RELEASE_CLEAR);
 	bool near = false;
 	for (int k = 0; k < n && !near; ++k)
-		near = world->contacts[at + k].hand.index1 == r;
-	world->contact_count = at;
+		near = world->out.contacts[at + k].hand.index1 == r;
+	world->out.contact_count = at;
 	return near;
 }
 
@@ -251,7 +251,7 @@ static bool hand_within_margin(hs_world *world, int i, uint32_t r, int at) {
 static bool hand_closing(const hs_world *world, int h) {
 	for (int a = 0; a < 4; ++a)
 		for (int b = a + 1; b < 5; ++b)
-			if (pair_closing(world, &world->hands[h], a, b))
+			if (pair_closing(world, &world->state.hands[h], a, b))
 				return true;
 	return false;
 }
@@ -262,17 +262,17 @@ static bool hand_closing(const hs_world *world, int h) {
 // from the most open since the release (kept in grip_spread): it closes on the object again. Returns the
 // count of contacts left.
 static int set_aside_released(hs_world *world, int i, int first, int n) {
-	hs_body *body = &world->bodies[i];
+	hs_body *body = &world->state.bodies[i];
 	if (!body->released_by)
 		return n;
 	uint32_t r = (uint32_t)body->released_by;
-	const hs_hand *hand = &world->hands[r - 1];
+	const hs_hand *hand = &world->state.hands[r - 1];
 	double spread = whole_hand_opening(hand);
 	if (spread > body->grip_spread) { // the object may sleep meanwhile: its hash digest is stale
 		body->grip_spread = spread;
 		hs_digest_stale(world, i);
 	}
-	hs_contact *cs = &world->contacts[first];
+	hs_contact *cs = &world->out.contacts[first];
 	int kept = 0;
 	bool other_finger = false;
 	for (int k = 0; k < n; ++k) {
@@ -286,8 +286,8 @@ static int set_aside_released(hs_world *world, int i, int first, int n) {
 	// fingers brushing the object it just let go shoved it, and while a hand opens, some pairs of its
 	// tips come nearer as others part, so no pair's closing tells it
 	double closed = body->grip_spread - spread;
-	bool closes = (other_finger && (!(world->def.grasp_close_mm > 0.0) || closed >= HS_PAIR_STILL)) ||
-	              closed > world->def.grasp_open_mm * 1e-3;
+	bool closes = (other_finger && (!(world->model.def.grasp_close_mm > 0.0) || closed >= HS_PAIR_STILL)) ||
+	              closed > world->model.def.grasp_open_mm * 1e-3;
 	if (kept == n && !closes && hand_within_margin(world, i, r, first + n))
 		return n; // the object falls clear of a finger it rested on: still that hand's release
 	if (kept == n || closes) { // the rule lapses
@@ -295,7 +295,7 @@ static int set_aside_released(hs_world *world, int i, int first, int n) {
 		hs_digest_stale(world, i);
 		return n;
 	}
-	world->contact_count = first + kept;
+	world->out.contact_count = first + kept;
 	return kept;
 }
 
@@ -306,31 +306,31 @@ static int set_aside_released(hs_world *world, int i, int first, int n) {
 // others before they reach it).
 static hs_contact_state start_or_push(hs_world *world, int i, int first, int *n, hs_contact_state state) {
 	if (state == HS_CONTACT_GRASP)
-		return hs_grasp_starts(world, &world->contacts[first], *n, false) ? state : HS_CONTACT_PUSH_MANY;
-	if (state == HS_CONTACT_NONE || !(world->def.grasp_close_mm > 0.0) || world->bodies[i].released_by)
+		return hs_grasp_starts(world, &world->out.contacts[first], *n, false) ? state : HS_CONTACT_PUSH_MANY;
+	if (state == HS_CONTACT_NONE || !(world->model.def.grasp_close_mm > 0.0) || world->state.bodies[i].released_by)
 		return state;
 	bool closing_hand = false;
 	for (int k = 0; k < *n && !closing_hand; ++k)
-		closing_hand = hand_closing(world, (int)world->contacts[first + k].hand.index1 - 1);
+		closing_hand = hand_closing(world, (int)world->out.contacts[first + k].hand.index1 - 1);
 	if (!closing_hand)
 		return state;
-	world->contact_count = first;
-	int grown = hs_contact_detect_grown(world, i, NULL, world->def.grasp_release_mm * 1e-3);
-	if (hs_grasp_starts(world, &world->contacts[first], grown, false)) {
+	world->out.contact_count = first;
+	int grown = hs_contact_detect_grown(world, i, NULL, world->model.def.grasp_release_mm * 1e-3);
+	if (hs_grasp_starts(world, &world->out.contacts[first], grown, false)) {
 		*n = grown;
 		return HS_CONTACT_GRASP;
 	}
-	world->contact_count = first;
+	world->out.contact_count = first;
 	*n = hs_contact_detect(world, i, NULL);
 	return state;
 }
 
 hs_contact_state hs_grasp_detect(hs_world *world, int i, int first, int *n, bool *continues) {
-	hs_body *body = &world->bodies[i];
+	hs_body *body = &world->state.bodies[i];
 	*continues = false;
 	if (body->grasped_by > 0 && !body->released_by) {
 		hs_pose before = {body->pos, body->rot};
-		hs_grasp_follow_wrist(body, &world->hands[body->grasped_by - 1]);
+		hs_grasp_follow_wrist(body, &world->state.hands[body->grasped_by - 1]);
 		if (grasp_continues(world, i, &before, first, n)) {
 			*continues = true;
 			return HS_CONTACT_GRASP;
@@ -338,15 +338,15 @@ hs_contact_state hs_grasp_detect(hs_world *world, int i, int first, int *n, bool
 		// the holder let go: the release rule starts. The fingers are judged against the object
 		// where the hand carried it this frame (they open around it, in the hand's frame); left
 		// where it was, a hand that lets go while moving fast would sweep through it.
-		body->released_by = world->def.paper_grasp_end ? 0 : body->grasped_by; // the letter sets no hand aside
-		body->grip_spread = whole_hand_opening(&world->hands[body->grasped_by - 1]);
+		body->released_by = world->model.def.paper_grasp_end ? 0 : body->grasped_by; // the letter sets no hand aside
+		body->grip_spread = whole_hand_opening(&world->state.hands[body->grasped_by - 1]);
 		// a hand that let go must close anew to grasp again: its pairs' peaks start from here
-		hs_grasp_reset_pairs(&world->hands[body->grasped_by - 1]);
+		hs_grasp_reset_pairs(&world->state.hands[body->grasped_by - 1]);
 		*n = hs_contact_detect(world, i, &before);
 		*n = set_aside_released(world, i, first, *n);
 		hs_contact_state state =
-		    hs_contact_classify(&world->contacts[first], *n, world->grasp_limit, world->def.grasp_any_contacts);
-		if (state == HS_CONTACT_GRASP && !hs_grasp_starts(world, &world->contacts[first], *n, true))
+		    hs_contact_classify(&world->out.contacts[first], *n, world->model.grasp_limit, world->model.def.grasp_any_contacts);
+		if (state == HS_CONTACT_GRASP && !hs_grasp_starts(world, &world->out.contacts[first], *n, true))
 			state = HS_CONTACT_PUSH_MANY;
 		if (state == HS_CONTACT_NONE) { // it flies from its last held pose (manipulate.c, release)
 			body->pos = before.pos;
@@ -357,5 +357,5 @@ hs_contact_state hs_grasp_detect(hs_world *world, int i, int first, int *n, bool
 	*n = hs_contact_detect(world, i, NULL);
 	*n = set_aside_released(world, i, first, *n);
 	return start_or_push(world, i, first, n,
-	                     hs_contact_classify(&world->contacts[first], *n, world->grasp_limit, world->def.grasp_any_contacts));
+	                     hs_contact_classify(&world->out.contacts[first], *n, world->model.grasp_limit, world->model.def.grasp_any_contacts));
 }

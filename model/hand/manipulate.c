@@ -41,18 +41,18 @@ void hs_push_at_one_point(hs_body *body, hs_vec3 c, hs_vec3 b) {
 // grasp, else the first hand whose own contacts grasp, else the one with the most contacts (two
 // hands squeezing from either side; the lower index on a tie).
 static int grasping_hand(const hs_world *world, const hs_body *body, const hs_contact *cs, int n) {
-	double limit = world->grasp_limit;
-	bool any = world->def.grasp_any_contacts;
+	double limit = world->model.grasp_limit;
+	bool any = world->model.def.grasp_any_contacts;
 	if (body->grasped_by > 0 && hs_contact_grasps(cs, n, (uint32_t)body->grasped_by, limit, any))
 		return body->grasped_by - 1;
-	for (int h = 0; h < world->hand_count; ++h)
+	for (int h = 0; h < world->model.hand_count; ++h)
 		if (hs_contact_grasps(cs, n, (uint32_t)h + 1, limit, any))
 			return h;
 	int counts[64] = {0};
 	for (int k = 0; k < n; ++k)
 		counts[cs[k].hand.index1 - 1]++;
 	int best = 0;
-	for (int h = 1; h < world->hand_count; ++h)
+	for (int h = 1; h < world->model.hand_count; ++h)
 		if (counts[h] > counts[best])
 			best = h;
 	return best;
@@ -60,15 +60,15 @@ static int grasping_hand(const hs_world *world, const hs_body *body, const hs_co
 
 // Adds object j to the sorted candidates of this frame's hand pass, once.
 static HS_FORCE_INLINE void add_candidate(hs_world *world, int j) {
-	int k = world->candidate_count;
-	while (k > 0 && world->candidates[k - 1] > j)
+	int k = world->scratch.candidate_count;
+	while (k > 0 && world->scratch.candidates[k - 1] > j)
 		--k;
-	if (k > 0 && world->candidates[k - 1] == j)
+	if (k > 0 && world->scratch.candidates[k - 1] == j)
 		return;
-	for (int m = world->candidate_count; m > k; --m)
-		world->candidates[m] = world->candidates[m - 1];
-	world->candidates[k] = j;
-	++world->candidate_count;
+	for (int m = world->scratch.candidate_count; m > k; --m)
+		world->scratch.candidates[m] = world->scratch.candidates[m - 1];
+	world->scratch.candidates[k] = j;
+	++world->scratch.candidate_count;
 }
 
 // The rigid motion of a hand's frame on an object: from (pos0, rot0) to (pos, rot).
@@ -84,30 +84,30 @@ typedef struct rigid_move {
 // (3.4 cm at 12 frames/s) before the two met again.
 static void carry_along(hs_world *world, int moved, int current, rigid_move m) {
 	hs_vec3 d = hs_sub(m.to, m.from);
-	if (world->def.paper_carry) // [H] §4.3's letter: translated along with it
+	if (world->model.def.paper_carry) // [H] §4.3's letter: translated along with it
 		m.turn = hs_quat_identity();
 	bool turned = m.turn.x != 0.0 || m.turn.y != 0.0 || m.turn.z != 0.0;
-	if (world->def.stacking != HS_STACKING_PAPER || !(hs_length_sq(d) > 0.0 || turned))
+	if (world->model.def.stacking != HS_STACKING_PAPER || !(hs_length_sq(d) > 0.0 || turned))
 		return;
 	hs_quat back = hs_quat_conj(m.turn);
 	int head = 0, tail = 0;
-	world->queue[tail++] = moved;
+	world->scratch.queue[tail++] = moved;
 	while (head < tail) {
-		int i = world->queue[head++];
-		const hs_body *moved_body = &world->bodies[i];
+		int i = world->scratch.queue[head++];
+		const hs_body *moved_body = &world->state.bodies[i];
 		// where i was before this move (its inverse motion about the mover's G)
 		hs_vec3 was = hs_add(m.from, hs_quat_rotate(back, hs_sub(moved_body->pos, m.to)));
 		hs_quat was_rot = hs_quat_normalize(hs_quat_mul(back, moved_body->rot));
-		double ra = world->shapes[moved_body->shape].radius;
+		double ra = world->model.shapes[moved_body->shape].radius;
 		int n = hs_grid_near_either(world, moved_body->pos, was, ra); // both are tested below
 		for (int k = 0; k < n; ++k) {
-			int j = world->near[k];
-			hs_body *b = &world->bodies[j];
+			int j = world->scratch.near[k];
+			hs_body *b = &world->state.bodies[j];
 			if (j == moved || b->held || b->carried)
 				continue;
 			// the sphere tests the two overlap tests begin with, both at once (i does not move in this
 			// loop: j is never i, which is moved or carried)
-			double r = ra + world->shapes[b->shape].radius;
+			double r = ra + world->model.shapes[b->shape].radius;
 			if (spheres_apart(r, moved_body->pos, b) && spheres_apart(r, was, b))
 				continue;
 			// interfering where i is now, or where it was before this move (an object resting on a
@@ -131,7 +131,7 @@ static void carry_along(hs_world *world, int moved, int current, rigid_move m) {
 			hs_wake(world, j);
 			hs_motion_keep_above_floor(world, b);
 			hs_grid_update(world, j);
-			world->queue[tail++] = j;
+			world->scratch.queue[tail++] = j;
 			if (j > current) // it may have come within a hand's reach: look at it this frame
 				add_candidate(world, j);
 		}
@@ -144,7 +144,7 @@ static void carry_along(hs_world *world, int moved, int current, rigid_move m) {
 // place release the object at up to 0.2 m/s and 30 deg/s: a pair let go 0.1 m up landed 3 cm off
 // (docs/model.md §4 "Release").
 static int release_frames(const hs_world *world, const hs_hand *hand) {
-	int n = hs_release_window_frames(world->def.release_window_s, world->def.dt);
+	int n = hs_release_window_frames(world->model.def.release_window_s, world->model.def.dt);
 	int most = hand->older_count + 1;
 	return n > most ? most : n;
 }
@@ -208,7 +208,7 @@ static void carried_motion(const hs_body *body, const hs_hand *hand, int back, i
 static void release_motion(const hs_world *world, const hs_body *body, const hs_hand *hand, hs_vec3 *v_dt, hs_quat *turn) {
 	int frames = release_frames(world, hand);
 	carried_motion(body, hand, 0, frames, v_dt, turn);
-	if (world->def.release_fit == HS_RELEASE_FIT_QUADRATIC && frames >= 2) // as the bench's lsq
+	if (world->model.def.release_fit == HS_RELEASE_FIT_QUADRATIC && frames >= 2) // as the bench's lsq
 		*v_dt = quadratic_slope(body, hand, frames);
 	int held = frames < hand->older_count ? frames : hand->older_count; // past(1 + held) must exist
 	if (held < 1)
@@ -217,7 +217,7 @@ static void release_motion(const hs_world *world, const hs_body *body, const hs_
 	hs_quat h_turn;
 	carried_motion(body, hand, 1, held, &h_dt, &h_turn);
 	double held_len = hs_length(h_dt), open_len = hs_length(*v_dt);
-	bool moving = held_len >= HS_RELEASE_MOVING * world->def.dt;
+	bool moving = held_len >= HS_RELEASE_MOVING * world->model.def.dt;
 	double along = hs_dot(*v_dt, h_dt);
 	if (moving && along >= HS_RELEASE_CONTINUES * open_len * held_len)
 		return;
@@ -242,23 +242,23 @@ static void release_motion(const hs_world *world, const hs_body *body, const hs_
 // those frames. Any other release (a push ends, `last` its contact state) flies on with the motion
 // and turn of its last frame (§4.1), unless it is left on the floor (push.c).
 static void release(hs_world *world, hs_body *body, hs_contact_state last) {
-	if (body->grasped_by > 0 && world->def.release_fit == HS_RELEASE_FIT_OBJECT) {
+	if (body->grasped_by > 0 && world->model.def.release_fit == HS_RELEASE_FIT_OBJECT) {
 		// the letter: eq. 3 from its last two held positions (grasp.c left it at the last) and turn
 		body->spin = hs_quat_normalize(hs_quat_mul(body->rot, hs_quat_conj(body->rot_prev)));
 	} else if (body->grasped_by > 0) {
-		const hs_hand *hand = &world->hands[body->grasped_by - 1];
-		double dt = world->def.dt;
+		const hs_hand *hand = &world->state.hands[body->grasped_by - 1];
+		double dt = world->model.def.dt;
 		hs_vec3 v_dt;
 		hs_quat turn;
 		release_motion(world, body, hand, &v_dt, &turn);
 		// the fingers opened somewhere in this frame, which does not say where: taken as its middle,
 		// the object leaves this frame where the hand carried it (this frame's step adds v dt) with
 		// the velocity v + g dt / 2 it has half a frame after leaving the hand at v
-		body->prev = hs_add(hs_sub(body->pos, v_dt), hs_scale(world->def.gravity, dt * dt));
+		body->prev = hs_add(hs_sub(body->pos, v_dt), hs_scale(world->model.def.gravity, dt * dt));
 		body->spin = turn;
 	} else {
 		body->spin = hs_quat_normalize(hs_quat_mul(body->rot, hs_quat_conj(body->rot_prev)));
-		if (!world->def.paper_push_end && hs_push_release_on_floor(world, body, last == HS_CONTACT_PUSH_MANY)) { // it stays on the floor
+		if (!world->model.def.paper_push_end && hs_push_release_on_floor(world, body, last == HS_CONTACT_PUSH_MANY)) { // it stays on the floor
 			body->grasped_by = 0;
 			return;
 		}
@@ -278,23 +278,23 @@ static bool untouched(const hs_body *b) {
 // narrow tests start with), those held last frame (they may be let go) and those under a release
 // rule, in index order.
 static void collect_candidates(hs_world *world) {
-	bool skip = world->def.skip_work;
+	bool skip = world->model.skip_work;
 	// carried or held last frame means awake: only the awake list needs looking at
-	for (int k = 0, n = skip ? world->awake_count : world->object_count; k < n; ++k)
-		world->bodies[skip ? world->awake[k] : k].carried = 0;
-	world->candidate_count = 0;
-	for (int h = 0; h < world->hand_count; ++h) {
-		const hs_hand *hand = &world->hands[h];
+	for (int k = 0, n = skip ? world->cache.awake_count : world->model.object_count; k < n; ++k)
+		world->state.bodies[skip ? world->cache.awake[k] : k].carried = 0;
+	world->scratch.candidate_count = 0;
+	for (int h = 0; h < world->model.hand_count; ++h) {
+		const hs_hand *hand = &world->state.hands[h];
 		int n = hs_grid_near(world, hand->sweep_center, hand->sweep_radius);
 		for (int k = 0; k < n; ++k) {
-			const hs_body *b = &world->bodies[world->near[k]];
+			const hs_body *b = &world->state.bodies[world->scratch.near[k]];
 			if (!untouched(b) || hs_contact_hand_near(world, b, hand, 0.0))
-				add_candidate(world, world->near[k]);
+				add_candidate(world, world->scratch.near[k]);
 		}
 	}
-	for (int k = 0; k < world->awake_count; ++k) // a release rule lapses once its hand is clear (grasp.c)
-		if (world->bodies[world->awake[k]].held || world->bodies[world->awake[k]].released_by)
-			add_candidate(world, world->awake[k]);
+	for (int k = 0; k < world->cache.awake_count; ++k) // a release rule lapses once its hand is clear (grasp.c)
+		if (world->state.bodies[world->cache.awake[k]].held || world->state.bodies[world->cache.awake[k]].released_by)
+			add_candidate(world, world->cache.awake[k]);
 }
 
 static bool pose_changed(const hs_body *body, hs_pose was) {
@@ -314,10 +314,10 @@ static void move_by_contacts(hs_world *world, hs_body *body, hs_contact_state st
 			return;
 		int h = grasping_hand(world, body, cs, n);
 		hs_grasp_begin(world, body, h, cs, n); // fix the pose in the wrist frame (§3.2 (2))
-		hs_grasp_follow_wrist(body, &world->hands[h]);
+		hs_grasp_follow_wrist(body, &world->state.hands[h]);
 	} else if (state == HS_CONTACT_PUSH_ONE) {
 		body->grasped_by = 0;
-		if (world->def.paper_floor_push || !hs_push_on_floor(world, body, cs[0].point, cs[0].finger)) // on the floor: model.md §4
+		if (world->model.def.paper_floor_push || !hs_push_on_floor(world, body, cs[0].point, cs[0].finger)) // on the floor: model.md §4
 			hs_push_at_one_point(body, cs[0].point, cs[0].finger);
 	} else {
 		body->grasped_by = 0;
@@ -404,15 +404,15 @@ static bool outruns(const hs_body *body, const hs_contact *c) {
 // inside an object it did not reach then is in contact only if it touches now (contact.c). A check
 // point that touched and has come off by less than grasp_release_mm still touches (near_points).
 static void note_touching(hs_world *world) {
-	for (int h = 0; h < world->hand_count; ++h) {
-		world->hands[h].touch_points = world->hands[h].near_points;
-		world->hands[h].touch_lines = 0;
-		world->hands[h].embed_points = world->hands[h].embed_points_next;
-		world->hands[h].embed_lines = world->hands[h].embed_lines_next;
+	for (int h = 0; h < world->model.hand_count; ++h) {
+		world->state.hands[h].touch_points = world->state.hands[h].near_points;
+		world->state.hands[h].touch_lines = 0;
+		world->state.hands[h].embed_points = world->state.hands[h].embed_points_next;
+		world->state.hands[h].embed_lines = world->state.hands[h].embed_lines_next;
 	}
-	for (int k = 0; k < world->contact_count; ++k) {
-		const hs_contact *c = &world->contacts[k];
-		hs_hand *hand = &world->hands[c->hand.index1 - 1];
+	for (int k = 0; k < world->out.contact_count; ++k) {
+		const hs_contact *c = &world->out.contacts[k];
+		hs_hand *hand = &world->state.hands[c->hand.index1 - 1];
 		if (c->part < HS_HAND_POINTS)
 			hand->touch_points |= 1u << c->part;
 		else
@@ -421,27 +421,27 @@ static void note_touching(hs_world *world) {
 }
 
 void hs_manipulate(hs_world *world) {
-	world->contact_count = 0;
-	for (int h = 0; h < world->hand_count; ++h) { // the parts' paths through the frame (swept detection)
-		hs_hand_sweep(&world->hands[h], world->def.paper_contacts);
-		world->hands[h].near_points = world->hands[h].embed_points_next = 0;
-		world->hands[h].embed_lines_next = 0;
+	world->out.contact_count = 0;
+	for (int h = 0; h < world->model.hand_count; ++h) { // the parts' paths through the frame (swept detection)
+		hs_hand_sweep(&world->state.hands[h], world->model.def.paper_contacts);
+		world->state.hands[h].near_points = world->state.hands[h].embed_points_next = 0;
+		world->state.hands[h].embed_lines_next = 0;
 	}
 	collect_candidates(world);
 	// candidate_count may grow in the loop: carry_along adds objects it moved within reach
-	for (int c = 0; c < world->candidate_count; ++c) {
-		int i = world->candidates[c];
-		hs_body *body = &world->bodies[i];
-		int first = world->contact_count, n = 0;
+	for (int c = 0; c < world->scratch.candidate_count; ++c) {
+		int i = world->scratch.candidates[c];
+		hs_body *body = &world->state.bodies[i];
+		int first = world->out.contact_count, n = 0;
 		hs_vec3 old_pos = body->pos;
 		hs_quat old_rot = body->rot;
 		bool continues = false;
 		bool at_rest = body->prev.x == old_pos.x && body->prev.y == old_pos.y && body->prev.z == old_pos.z;
 		hs_contact_state state = hs_grasp_detect(world, i, first, &n, &continues);
-		if (state == HS_CONTACT_PUSH_ONE && !at_rest && !body->grasped_by && !world->def.paper_push_end &&
-		    outruns(body, &world->contacts[first])) {
+		if (state == HS_CONTACT_PUSH_ONE && !at_rest && !body->grasped_by && !world->model.def.paper_push_end &&
+		    outruns(body, &world->out.contacts[first])) {
 			state = HS_CONTACT_NONE; // it turns on by its own motion (eq. 3), the finger left behind
-			world->contact_count = first;
+			world->out.contact_count = first;
 		}
 		bool was_held = body->held != 0;
 		hs_contact_state last = (hs_contact_state)body->contact;
@@ -454,20 +454,20 @@ void hs_manipulate(hs_world *world) {
 				release(world, body, last);
 			continue;
 		}
-		move_by_contacts(world, body, state, &world->contacts[first], n, continues);
+		move_by_contacts(world, body, state, &world->out.contacts[first], n, continues);
 		hs_pose carried_to = {body->pos, body->rot};
 		hs_motion_keep_above_floor(world, body); // §4.2 for a pushed object; the trajectory shows its floor contacts
 		if (state == HS_CONTACT_GRASP && pose_changed(body, carried_to)) // pressed into the floor: it slid in the grip
-			hs_grasp_slip(body, &world->hands[body->grasped_by - 1]);
-		bool letter = world->def.paper_push_end; // eq. 3 from its last two positions, as they fall
-		double after = state == HS_CONTACT_PUSH_ONE && at_rest && !letter ? 1.0 - world->contacts[first].t : 1.0;
-		if (letter || !push_drives_nothing(state, &world->contacts[first], n, at_rest)) // else its motion is kept
+			hs_grasp_slip(body, &world->state.hands[body->grasped_by - 1]);
+		bool letter = world->model.def.paper_push_end; // eq. 3 from its last two positions, as they fall
+		double after = state == HS_CONTACT_PUSH_ONE && at_rest && !letter ? 1.0 - world->out.contacts[first].t : 1.0;
+		if (letter || !push_drives_nothing(state, &world->out.contacts[first], n, at_rest)) // else its motion is kept
 			remember_motion(body, old_pos, old_rot, after);
 		body->held = 1;
 		hs_wake(world, i);
 		body->grounded = 0;
 		hs_grid_update(world, i);
-		if (world->def.stacking == HS_STACKING_SUPPORT)
+		if (world->model.def.stacking == HS_STACKING_SUPPORT)
 			hs_support_wake_neighbours(world, i, body->prev); // what rested on it or against it looks again
 		else
 			carry_along(world, i, i,

@@ -41,7 +41,7 @@ static bool held_by_floor(hs_vec3 d) {
 
 // The floor point furthest along the horizontal u: the side a turn along u sinks into the floor.
 static hs_vec3 floor_point_along(const hs_world *world, int count, hs_vec3 u) {
-	const hs_vec2 *p = world->scratch_points;
+	const hs_vec2 *p = world->scratch.points;
 	int best = 0;
 	for (int i = 1; i < count; ++i)
 		if (p[i].x * u.x + p[i].y * u.y > p[best].x * u.x + p[best].y * u.y)
@@ -55,7 +55,7 @@ static hs_vec3 floor_point_along(const hs_world *world, int count, hs_vec3 u) {
 // yawed by the tracker's noise stood on one corner and rocked back (docs/model.md §4).
 #define HS_PUSH_EDGE_DEG 20.0
 static hs_vec3 floor_edge_along(const hs_world *world, int count, hs_vec3 p, hs_vec3 a) {
-	const hs_vec2 *f = world->scratch_points;
+	const hs_vec2 *f = world->scratch.points;
 	double best = hs_cos(HS_PUSH_EDGE_DEG * (HS_PI / 180.0)); // the own cos: libm's may differ by a bit
 	hs_vec3 axis = a;
 	for (int i = 0; i < count; ++i) {
@@ -145,7 +145,7 @@ bool hs_push_on_floor(hs_world *world, hs_body *body, hs_vec3 c, hs_vec3 b) {
 
 void hs_push_many(hs_world *world, hs_body *body, hs_vec3 d) {
 	int count = 0;
-	if (!world->def.paper_floor_push && lies_on_floor(world, body, &count)) {
+	if (!world->model.def.paper_floor_push && lies_on_floor(world, body, &count)) {
 		if (held_by_floor(d))
 			return;
 		d.z = 0.0;
@@ -166,8 +166,8 @@ bool hs_push_release_on_floor(hs_world *world, hs_body *body, bool many) {
 	int count = 0;
 	if (!lies_on_floor(world, body, &count))
 		return false;
-	double dt = world->def.dt;
-	hs_vec3 gm = hs_add(hs_sub(body->pos, body->prev), hs_scale(world->def.gravity, dt * dt));
+	double dt = world->model.def.dt;
+	hs_vec3 gm = hs_add(hs_sub(body->pos, body->prev), hs_scale(world->model.def.gravity, dt * dt));
 	bool stable = hs_motion_settle(world, body, count, 0.0, gm, many, NULL);
 	if (!stable && !many)
 		return false;

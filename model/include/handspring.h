@@ -61,16 +61,6 @@ typedef struct hs_part {
 	hs_vec3 center; ///< m, body frame: centre of the part's bounding sphere
 	double radius;  ///< m: bounding-sphere radius
 	hs_vec3 box_center, box_half; ///< m, body frame: the box of its vertices (centre, half extents)
-	/// Set by the shape builders, and again by hs_world_add_shape in the world's copy: a part of
-	/// six faces whose normals are exactly +x, -x, +y, -y, +z, -z (a box with axis-aligned faces)
-	/// has box_face[k] = the index of the face of normal k, in that order, and box_offset[k] its
-	/// offset; box_face[0] = -1 for any other part. The hand check tests it coordinate by coordinate.
-	int box_face[6];
-	double box_offset[6];
-	/// Set with box_face: the part with its faces moved out by g lies within radius + g ·
-	/// grow_reach of center (√3 for a box: its corners move out diagonally). The hand check's
-	/// bounding-volume tests grow by it.
-	double grow_reach;
 } hs_part;
 
 /// A planar convex face: vertex indices (counter-clockwise seen from outside) and its plane.
@@ -257,7 +247,6 @@ typedef struct hs_world_def {
 	bool paper_contacts;        ///< false (default): swept detection, rectification and contact hysteresis (docs/model.md §3); true: the 1999 paper's letter (parts tested where they end the frame; a part inside drives C to where it is)
 	double grasp_release_mm;    ///< mm: a held object stays grasped while its holder's fingers grasp it grown by this much (default 5; docs/model.md §3)
 	double grasp_open_mm;       ///< mm: the grasp ends when the holding fingertips spread or reach out this much more than when it began (default 8)
-	bool skip_work;             ///< bounding-volume rejection and sleeping on (default true); off only to measure what they save
 	int glove_deadband;         ///< sensor units, 0..HS_MAX_GLOVE_DEADBAND: a glove sensor moves the hand only once its reading leaves ±this around the value last used, which then follows it at this distance (default 3; 0: every raw reading, the 1999 paper's letter; docs/model.md §1)
 	double release_window_s;    ///< s, 0..HS_MAX_RELEASE_WINDOW: a released grasp flies with the hand's velocity over its last round(this / dt) frames, at least 1, at most HS_MAX_RELEASE_FRAMES (default 0.05: 1 frame at 12 frames/s, 3 at 60, 6 at 120; docs/model.md §4 "Release")
 	hs_release_fit release_fit; ///< how that velocity is taken from those frames (default HS_RELEASE_FIT_MEAN); the spin is the wrist's mean turn over them either way
@@ -381,7 +370,7 @@ uint64_t hs_world_hash(const hs_world *world);
 // kind (0 hand world, 1 spring world), object count, hand count, shape count, contact capacity,
 // and a checksum of the definitions (dt, gravity, floor tolerance, stacking, grasp threshold and rule,
 // every shape's counts, vertices and volume, every object's shape and mass, every hand
-// definition; not max_objects, max_shapes or skip_work, which change no result). Then the
+// definition; not max_objects, max_shapes or the skipping of work (hs_bench.h), which change no result). Then the
 // world: frame, numeric faults, first fault frame and object; per object 39 words (pose, previous
 // pose, rot_prev, spin, velocity, contact state, floor contacts, grounded / asleep / held /
 // carried, grasped_by, grip pose, grip spread and reach, grip fingers, released_by); per hand 67 words and 7 a kept older wrist pose (wrist pose and 18 sensors as last set and as

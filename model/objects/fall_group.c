@@ -19,8 +19,8 @@
 static bool supports(hs_world *world, int j, int i) {
 	if (!hs_objects_interfere(world, i, j))
 		return false;
-	double low_i = hs_motion_pose_vertices(world, &world->bodies[i]);
-	return low_i >= hs_motion_pose_vertices(world, &world->bodies[j]) + HS_HELD_UP_STEP;
+	double low_i = hs_motion_pose_vertices(world, &world->state.bodies[i]);
+	return low_i >= hs_motion_pose_vertices(world, &world->state.bodies[j]) + HS_HELD_UP_STEP;
 }
 
 static bool listed(const int *list, int n, int j) {
@@ -37,12 +37,12 @@ static int walk(hs_world *world, int *out, int cap, bool down) {
 	int head = 0, n = 1;
 	while (head < n) {
 		int m = out[head++];
-		const hs_body *b = &world->bodies[m];
+		const hs_body *b = &world->state.bodies[m];
 		if (down && (b->held || b->carried || b->floor_contacts > 0))
 			return 0;
-		int near = hs_grid_near(world, b->pos, world->shapes[b->shape].radius);
+		int near = hs_grid_near(world, b->pos, world->model.shapes[b->shape].radius);
 		for (int k = 0; k < near; ++k) {
-			int j = world->near[k];
+			int j = world->scratch.near[k];
 			if (j == m || listed(out, n, j) || !(down ? supports(world, j, m) : supports(world, m, j)))
 				continue;
 			if (n == cap)
@@ -59,17 +59,17 @@ int hs_fall_group(hs_world *world, int object, int *out, int cap) {
 		return 0; // held up
 	out[0] = object; // nothing holds it up: it falls with what it holds up
 	int n = walk(world, out, cap, false);
-	double dt = world->def.dt, mass = 0.0;
+	double dt = world->model.def.dt, mass = 0.0;
 	hs_vec3 momentum = hs_v3(0, 0, 0); // per frame: the group moves at its members' mean velocity
 	for (int k = 0; k < n; ++k) {
-		const hs_body *b = &world->bodies[out[k]];
+		const hs_body *b = &world->state.bodies[out[k]];
 		momentum = hs_add(momentum, hs_scale(hs_sub(b->pos, b->prev), b->mass));
 		mass += b->mass;
 	}
-	hs_vec3 gm = hs_add(hs_scale(momentum, 1.0 / mass), hs_scale(world->def.gravity, dt * dt));
+	hs_vec3 gm = hs_add(hs_scale(momentum, 1.0 / mass), hs_scale(world->model.def.gravity, dt * dt));
 	double low = INFINITY;
 	for (int k = 0; k < n; ++k) { // eq. 3 for the group: no turn (§4.1: interfering, no inertia of rotation)
-		hs_body *b = &world->bodies[out[k]];
+		hs_body *b = &world->state.bodies[out[k]];
 		b->prev = b->pos;
 		b->pos = hs_add(b->pos, gm);
 		b->rot_prev = b->rot;
@@ -79,17 +79,17 @@ int hs_fall_group(hs_world *world, int object, int *out, int cap) {
 		double z = hs_motion_pose_vertices(world, b);
 		low = z < low ? z : low;
 	}
-	bool landed = low <= world->def.floor_tolerance;
+	bool landed = low <= world->model.def.floor_tolerance;
 	for (int k = 0; k < n; ++k) // §4.2 for the group: lifted as one
 		if (low < 0.0)
-			world->bodies[out[k]].pos.z -= low;
+			world->state.bodies[out[k]].pos.z -= low;
 	for (int k = 0; k < n; ++k) { // out of what it fell into (Fig. 11), and it stops there (§4.1)
-		hs_body *b = &world->bodies[out[k]];
+		hs_body *b = &world->state.bodies[out[k]];
 		landed = hs_stack_rectify(world, out[k]) || landed;
 		hs_motion_keep_above_floor(world, b);
 	}
 	for (int k = 0; k < n; ++k) {
-		hs_body *b = &world->bodies[out[k]];
+		hs_body *b = &world->state.bodies[out[k]];
 		if (landed) {
 			b->prev = b->pos;
 			b->grounded = b->floor_contacts > 0;

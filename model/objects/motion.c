@@ -18,23 +18,23 @@
 #define HS_LEAN_REST 1e-6
 
 double hs_motion_pose_vertices(hs_world *world, const hs_body *body) {
-	const hs_shape *shape = &world->shapes[body->shape];
+	const hs_shape *shape = &world->model.shapes[body->shape];
 	double zmin = INFINITY;
 	for (int i = 0; i < shape->vertex_count; ++i) {
 		hs_vec3 p = hs_add(body->pos, hs_quat_rotate(body->rot, shape->vertices[i]));
-		world->scratch_world[i] = p;
+		world->scratch.posed[i] = p;
 		zmin = p.z < zmin ? p.z : zmin;
 	}
 	return zmin;
 }
 
 int hs_motion_floor_points(hs_world *world, const hs_body *body) {
-	const hs_shape *shape = &world->shapes[body->shape];
+	const hs_shape *shape = &world->model.shapes[body->shape];
 	int n = 0;
 	for (int i = 0; i < shape->vertex_count; ++i) {
-		hs_vec3 p = world->scratch_world[i];
-		if (p.z <= world->def.floor_tolerance)
-			world->scratch_points[n++] = (hs_vec2){p.x, p.y};
+		hs_vec3 p = world->scratch.posed[i];
+		if (p.z <= world->model.def.floor_tolerance)
+			world->scratch.points[n++] = (hs_vec2){p.x, p.y};
 	}
 	return n;
 }
@@ -44,17 +44,17 @@ static void rectify(hs_world *world, hs_body *body, double zmin) {
 	if (zmin >= -HS_RECTIFY_SLOP)
 		return;
 	body->pos.z -= zmin;
-	const hs_shape *shape = &world->shapes[body->shape];
+	const hs_shape *shape = &world->model.shapes[body->shape];
 	for (int i = 0; i < shape->vertex_count; ++i)
-		world->scratch_world[i].z -= zmin;
+		world->scratch.posed[i].z -= zmin;
 }
 
 void hs_motion_keep_above_floor(hs_world *world, hs_body *body) {
 	// Its bounding sphere clear of the floor's tolerance (with a slack far above the rounding of a
 	// posed vertex): no vertex lies below it, so there is nothing to rectify and no floor contact,
 	// the answer of posing every vertex (O(V) a frame for a held many-faced object) without it.
-	double clear = fmax(world->def.floor_tolerance, 0.0);
-	if (body->pos.z - world->shapes[body->shape].radius * (1.0 + 1e-9) - 1e-12 > clear) {
+	double clear = fmax(world->model.def.floor_tolerance, 0.0);
+	if (body->pos.z - world->model.shapes[body->shape].radius * (1.0 + 1e-9) - 1e-12 > clear) {
 		body->floor_contacts = 0;
 		return;
 	}
@@ -84,13 +84,13 @@ static hs_vec2 project_g(hs_vec3 g, hs_vec3 gm, double height) {
 // support; a vertex only lands where it is over a support, not past its edge).
 static double first_touch(hs_world *world, const hs_body *body, hs_vec3 c, hs_vec3 axis,
                           double limit, const hs_settle_supports *sup) {
-	const hs_shape *shape = &world->shapes[body->shape];
+	const hs_shape *shape = &world->model.shapes[body->shape];
 	hs_vec3 n = sup ? sup->normal : hs_v3(0, 0, 1);
 	double off = sup ? sup->offset : 0.0;
 	double best = limit;
 	for (int i = 0; i < shape->vertex_count; ++i) {
-		hs_vec3 p = world->scratch_world[i];
-		if (hs_dot(n, p) <= off + world->def.floor_tolerance)
+		hs_vec3 p = world->scratch.posed[i];
+		if (hs_dot(n, p) <= off + world->model.def.floor_tolerance)
 			continue; // pivot vertices stay, other contact vertices lift (rule (3))
 		// height over the plane h(θ) = h0 + A cos θ + B sin θ = h0 + M cos(θ - φ)
 		hs_vec3 r = hs_sub(p, c);
@@ -127,7 +127,7 @@ static double first_touch(hs_world *world, const hs_body *body, hs_vec3 c, hs_ve
 static void keep_turning_about_edge(hs_world *world, hs_body *body, hs_vec3 motion) {
 	if (hs_motion_floor_points(world, body) != 2)
 		return;
-	const hs_vec2 *f = world->scratch_points;
+	const hs_vec2 *f = world->scratch.points;
 	hs_vec3 e = hs_v3(f[1].x - f[0].x, f[1].y - f[0].y, 0.0);
 	double len = hs_length(e);
 	if (!(len > 0.0))
@@ -143,12 +143,12 @@ static void keep_turning_about_edge(hs_world *world, hs_body *body, hs_vec3 moti
 // (eq. 7's first touch), instead of turning into the cube and being lifted out of it, off the
 // floor, frame after frame.
 static double first_touch_neighbour(hs_world *world, const hs_body *body, hs_vec3 c, hs_vec3 axis, double limit) {
-	const hs_shape *shape = &world->shapes[body->shape];
+	const hs_shape *shape = &world->model.shapes[body->shape];
 	double reach = shape->radius + hs_length(hs_sub(body->pos, c)) * limit;
 	double best = limit;
-	for (int j = 0; j < world->object_count; ++j) {
-		const hs_body *b = &world->bodies[j];
-		const hs_shape *sb = &world->shapes[b->shape];
+	for (int j = 0; j < world->model.object_count; ++j) {
+		const hs_body *b = &world->state.bodies[j];
+		const hs_shape *sb = &world->model.shapes[b->shape];
 		double r = reach + sb->radius;
 		if (b == body || hs_length_sq(hs_sub(b->pos, body->pos)) > r * r)
 			continue;
@@ -234,23 +234,23 @@ static void tip(hs_world *world, hs_body *body, const hs_vec2 *hull, int hull_co
 	rectify(world, body, hs_motion_pose_vertices(world, body));
 	// on the floor alone, in paper mode: support mode's step of an object on the floor and a
 	// support read the kept motion as a turn over both and sank a cube 5 µm into the floor
-	if (landed && hull_count == 1 && !sup && height == 0.0 && world->def.stacking == HS_STACKING_PAPER &&
-	    !world->def.paper_tipping)
+	if (landed && hull_count == 1 && !sup && height == 0.0 && world->model.def.stacking == HS_STACKING_PAPER &&
+	    !world->model.def.paper_tipping)
 		keep_turning_about_edge(world, body, motion);
 	world->counters.object_steps++;
 }
 
 bool hs_motion_settle(hs_world *world, hs_body *body, int count, double height, hs_vec3 gm, bool may_tip,
                       const hs_settle_supports *sup) {
-	int hull_count = hs_hull_build(world->scratch_points, count, world->scratch_hull);
+	int hull_count = hs_hull_build(world->scratch.points, count, world->scratch.hull);
 	hs_vec2 g_proj = project_g(body->pos, gm, height);
-	if (hs_hull_contains(world->scratch_hull, hull_count, g_proj, HS_RECTIFY_SLOP)) {
+	if (hs_hull_contains(world->scratch.hull, hull_count, g_proj, HS_RECTIFY_SLOP)) {
 		stop(body);
 		return true;
 	}
 	body->asleep = 0;
 	if (may_tip)
-		tip(world, body, world->scratch_hull, hull_count, height, g_proj, gm, sup);
+		tip(world, body, world->scratch.hull, hull_count, height, g_proj, gm, sup);
 	return false;
 }
 
@@ -265,11 +265,11 @@ static void settle_or_tip(hs_world *world, hs_body *body, hs_vec3 gm, bool may_t
 // True when another object's bounding sphere comes within `reach` of this one's centre (a landing
 // is rare: a pass over the objects costs nothing a frame).
 static bool near_another(const hs_world *world, const hs_body *body, double reach) {
-	for (int j = 0; j < world->object_count; ++j) {
-		const hs_body *b = &world->bodies[j];
+	for (int j = 0; j < world->model.object_count; ++j) {
+		const hs_body *b = &world->state.bodies[j];
 		if (b == body)
 			continue;
-		double r = reach + world->shapes[b->shape].radius;
+		double r = reach + world->model.shapes[b->shape].radius;
 		hs_vec3 d = hs_sub(b->pos, body->pos);
 		if (hs_dot(d, d) < r * r)
 			return true;
@@ -283,10 +283,10 @@ static bool near_another(const hs_world *world, const hs_body *body, double reac
 // floor as before. Lifted straight up from the frame's end instead, a throw at 12 frames/s landed
 // up to v_x dt = 0.2 m further on, and where depended on where the frames fell on its flight.
 static void back_to_floor(hs_world *world, hs_body *body, hs_vec3 gm, double zmin) {
-	const hs_shape *shape = &world->shapes[body->shape];
+	const hs_shape *shape = &world->model.shapes[body->shape];
 	int low = 0;
 	for (int i = 1; i < shape->vertex_count; ++i)
-		low = world->scratch_world[i].z < world->scratch_world[low].z ? i : low;
+		low = world->scratch.posed[i].z < world->scratch.posed[low].z ? i : low;
 	double was = body->prev.z + hs_quat_rotate(body->rot_prev, shape->vertices[low]).z;
 	if (!(was > 0.0) || !(was > zmin)) // touching already, or not falling onto the floor
 		return;
@@ -297,32 +297,32 @@ static void back_to_floor(hs_world *world, hs_body *body, hs_vec3 gm, double zmi
 	body->pos.x += dx;
 	body->pos.y += dy;
 	for (int i = 0; i < shape->vertex_count; ++i) {
-		world->scratch_world[i].x += dx;
-		world->scratch_world[i].y += dy;
+		world->scratch.posed[i].x += dx;
+		world->scratch.posed[i].y += dy;
 	}
 }
 
 static void fly(hs_world *world, hs_body *body) {
-	double dt = world->def.dt;
+	double dt = world->model.def.dt;
 	bool touching = body->floor_contacts > 0; // when the frame began
-	hs_vec3 gm = hs_add(hs_sub(body->pos, body->prev), hs_scale(world->def.gravity, dt * dt));
+	hs_vec3 gm = hs_add(hs_sub(body->pos, body->prev), hs_scale(world->model.def.gravity, dt * dt));
 	body->prev = body->pos;
 	body->pos = hs_add(body->pos, gm);
 	body->rot = hs_quat_normalize(hs_quat_mul(body->spin, body->rot));
 	world->counters.object_steps++;
 
-	const hs_shape *shape = &world->shapes[body->shape];
-	if (world->def.skip_work && body->pos.z - shape->radius > world->def.floor_tolerance) {
+	const hs_shape *shape = &world->model.shapes[body->shape];
+	if (world->model.skip_work && body->pos.z - shape->radius > world->model.def.floor_tolerance) {
 		body->floor_contacts = 0; // the bounding sphere is clear of the floor
 		return;
 	}
 	world->counters.floor_checks++;
 	double zmin = hs_motion_pose_vertices(world, body);
-	if (zmin > world->def.floor_tolerance) {
+	if (zmin > world->model.def.floor_tolerance) {
 		body->floor_contacts = 0;
 		return;
 	}
-	if (!world->def.paper_landing && !touching && zmin < 0.0)
+	if (!world->model.def.paper_landing && !touching && zmin < 0.0)
 		back_to_floor(world, body, gm, zmin);
 	rectify(world, body, zmin);
 	body->spin = hs_quat_identity(); // §4.1: rotation inertia ends at the floor
@@ -332,11 +332,11 @@ static void fly(hs_world *world, hs_body *body) {
 
 // In floor contact: no translation; stable → rest, otherwise rules (1)-(3).
 static void on_floor(hs_world *world, hs_body *body) {
-	double dt = world->def.dt;
-	hs_vec3 gm = hs_add(hs_sub(body->pos, body->prev), hs_scale(world->def.gravity, dt * dt));
+	double dt = world->model.def.dt;
+	hs_vec3 gm = hs_add(hs_sub(body->pos, body->prev), hs_scale(world->model.def.gravity, dt * dt));
 	world->counters.floor_checks++;
 	double zmin = hs_motion_pose_vertices(world, body);
-	if (zmin > world->def.floor_tolerance) { // lifted off (moved by a hand): fly again
+	if (zmin > world->model.def.floor_tolerance) { // lifted off (moved by a hand): fly again
 		body->grounded = 0;
 		fly(world, body);
 		return;

@@ -9,14 +9,14 @@
 
 // Advances one unheld object by one frame: free flight or, in floor contact, stability and tipping.
 void hs_motion_step(hs_world *world, hs_body *body);
-// Poses the body's vertices into world->scratch_world; returns the lowest z.
+// Poses the body's vertices into world->scratch.posed; returns the lowest z.
 double hs_motion_pose_vertices(hs_world *world, const hs_body *body);
-// Counts the posed vertices (scratch_world) within the floor tolerance and stores their (x, y)
-// in world->scratch_points.
+// Counts the posed vertices (scratch.posed) within the floor tolerance and stores their (x, y)
+// in world->scratch.points.
 int hs_motion_floor_points(hs_world *world, const hs_body *body);
 // §4.2 rectification alone: lifts the body out of the floor and counts its floor contacts.
 void hs_motion_keep_above_floor(hs_world *world, hs_body *body);
-// The supports an object settles on (support mode): world->near[0 .. near_count) filtered as
+// The supports an object settles on (support mode): world->scratch.near[0 .. near_count) filtered as
 // support.c does, and the plane normal . x = offset of the face it rests on; a tipping turn stops
 // where a vertex reaches that face over one of them.
 typedef struct hs_settle_supports {
@@ -28,7 +28,7 @@ typedef struct hs_settle_supports {
 	bool (*over)(const hs_world *world, const struct hs_settle_supports *sup, hs_vec3 p);
 } hs_settle_supports;
 
-// Eq. 4-5 with the `count` contact points in world->scratch_points on the plane z = height:
+// Eq. 4-5 with the `count` contact points in world->scratch.points on the plane z = height:
 // stable → the body stops (true); otherwise it tips by rules (1)-(3) when `may_tip`, its turn
 // bounded by the floor (sup NULL) or by the supports' face.
 bool hs_motion_settle(hs_world *world, hs_body *body, int count, double height, hs_vec3 gm, bool may_tip,

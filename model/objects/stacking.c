@@ -32,8 +32,7 @@ static double exit_distance(const hs_shape *shape, const hs_part *part, hs_vec3 
 	return best;
 }
 
-double hs_stack_lift_out(const hs_world *world, const hs_body *a, const hs_body *b) {
-	const hs_shape *sa = &world->shapes[a->shape], *sb = &world->shapes[b->shape];
+double hs_stack_lift_out(const hs_shape *sa, const hs_body *a, const hs_shape *sb, const hs_body *b) {
 	double lift = 0.0, slop = 1e-12;
 	hs_vec3 up_in_b = hs_quat_inv_rotate(b->rot, hs_v3(0, 0, 1));
 	hs_vec3 down_in_a = hs_quat_inv_rotate(a->rot, hs_v3(0, 0, -1));
@@ -54,7 +53,7 @@ double hs_stack_lift_out(const hs_world *world, const hs_body *a, const hs_body 
 
 // a, posed at `pos`, sinks into b deeper than touching.
 static bool penetrates(const hs_world *world, const hs_body *a, hs_vec3 pos, const hs_body *b) {
-	const hs_shape *sa = &world->shapes[a->shape], *sb = &world->shapes[b->shape];
+	const hs_shape *sa = &world->model.shapes[a->shape], *sb = &world->model.shapes[b->shape];
 	double r = sa->radius + sb->radius;
 	if (hs_length_sq(hs_sub(pos, b->pos)) > r * r)
 		return false;
@@ -68,11 +67,11 @@ static bool penetrates(const hs_world *world, const hs_body *a, hs_vec3 pos, con
 // only touch (libccd GJK counts touching within ~1e-12 m as interference).
 static double lift_from(const hs_world *world, const hs_body *a, const hs_body *b) {
 	hs_body lifted = *a;
-	double lo = hs_stack_lift_out(world, a, b);
+	double lo = hs_stack_lift_out(&world->model.shapes[a->shape], a, &world->model.shapes[b->shape], b);
 	lifted.pos.z = a->pos.z + lo;
 	if (!penetrates(world, &lifted, lifted.pos, b))
 		return lo;
-	const hs_shape *sa = &world->shapes[a->shape], *sb = &world->shapes[b->shape];
+	const hs_shape *sa = &world->model.shapes[a->shape], *sb = &world->model.shapes[b->shape];
 	double hi = lo + 2.0 * (sa->radius + sb->radius); // clear of b for certain
 	for (int k = 0; k < 64 && hi - lo > 1e-13; ++k) {
 		double mid = 0.5 * (lo + hi);
@@ -86,14 +85,14 @@ static double lift_from(const hs_world *world, const hs_body *a, const hs_body *
 }
 
 bool hs_stack_pile_onto(hs_world *world, int object, int mover) {
-	hs_body *b = &world->bodies[object];
-	const hs_shape *shape = &world->shapes[b->shape];
+	hs_body *b = &world->state.bodies[object];
+	const hs_shape *shape = &world->model.shapes[b->shape];
 	double low = INFINITY;
 	for (int i = 0; i < shape->vertex_count; ++i) {
 		double z = b->pos.z + hs_quat_rotate(b->rot, shape->vertices[i]).z;
 		low = z < low ? z : low;
 	}
-	double lift = lift_from(world, b, &world->bodies[mover]);
+	double lift = lift_from(world, b, &world->state.bodies[mover]);
 	if (!(lift <= b->pos.z - low))
 		return false;
 	// it stays sunk in by half the slop: interfering, so the next frames carry it along (§4.3),
@@ -105,7 +104,7 @@ bool hs_stack_pile_onto(hs_world *world, int object, int mover) {
 }
 
 static bool is_under(const hs_world *world, int object, int j, double z) {
-	return j != object && world->bodies[j].pos.z <= z;
+	return j != object && world->state.bodies[j].pos.z <= z;
 }
 
 // Out of one object under it: vertically (§4.2) when that lift is at most twice the least
@@ -113,7 +112,7 @@ static bool is_under(const hs_world *world, int object, int j, double z) {
 // vertical lift grows as 1 / cos of the slope, up to the object's height) along libccd's
 // direction of least penetration.
 static bool rectify_against(hs_world *world, hs_body *body, const hs_body *under) {
-	const hs_shape *sa = &world->shapes[body->shape], *sb = &world->shapes[under->shape];
+	const hs_shape *sa = &world->model.shapes[body->shape], *sb = &world->model.shapes[under->shape];
 	double r = sa->radius + sb->radius, depth = 0.0;
 	hs_vec3 dir;
 	if (hs_length_sq(hs_sub(body->pos, under->pos)) > r * r ||
@@ -129,14 +128,14 @@ static bool rectify_against(hs_world *world, hs_body *body, const hs_body *under
 }
 
 bool hs_stack_rectify(hs_world *world, int object) {
-	hs_body *body = &world->bodies[object];
+	hs_body *body = &world->state.bodies[object];
 	bool inside = false;
 	for (int pass = 0; pass < 4; ++pass) { // leaving one may not leave another: look again
 		bool moved = false;
-		int n = hs_grid_near(world, body->pos, world->shapes[body->shape].radius);
+		int n = hs_grid_near(world, body->pos, world->model.shapes[body->shape].radius);
 		for (int k = 0; k < n; ++k)
-			if (is_under(world, object, world->near[k], body->pos.z))
-				moved = rectify_against(world, body, &world->bodies[world->near[k]]) || moved;
+			if (is_under(world, object, world->scratch.near[k], body->pos.z))
+				moved = rectify_against(world, body, &world->state.bodies[world->scratch.near[k]]) || moved;
 		if (!moved)
 			break;
 		inside = true;
@@ -147,14 +146,14 @@ bool hs_stack_rectify(hs_world *world, int object) {
 // The first sub-pose (fraction of the frame's motion) at which the body sinks into an object
 // under it; -1 when none does.
 static double first_contact(hs_world *world, int object, hs_vec3 from, hs_vec3 d) {
-	const hs_body *body = &world->bodies[object];
-	double r = world->shapes[body->shape].radius, len = hs_length(d);
+	const hs_body *body = &world->state.bodies[object];
+	double r = world->model.shapes[body->shape].radius, len = hs_length(d);
 	hs_vec3 mid = hs_mul_add(from, 0.5, d);
 	int n = hs_grid_near(world, mid, r + 0.5 * len);
 	double step = INFINITY;
 	for (int k = 0; k < n; ++k) {
-		int j = world->near[k];
-		double rj = world->shapes[world->bodies[j].shape].radius;
+		int j = world->scratch.near[k];
+		double rj = world->model.shapes[world->state.bodies[j].shape].radius;
 		if (is_under(world, object, j, from.z))
 			step = 0.125 * (r < rj ? r : rj) < step ? 0.125 * (r < rj ? r : rj) : step;
 	}
@@ -166,15 +165,15 @@ static double first_contact(hs_world *world, int object, hs_vec3 from, hs_vec3 d
 		double t = (double)s / count;
 		hs_vec3 p = hs_mul_add(from, t, d);
 		for (int k = 0; k < n; ++k)
-			if (is_under(world, object, world->near[k], from.z) &&
-			    penetrates(world, body, p, &world->bodies[world->near[k]]))
+			if (is_under(world, object, world->scratch.near[k], from.z) &&
+			    penetrates(world, body, p, &world->state.bodies[world->scratch.near[k]]))
 				return t;
 	}
 	return -1.0;
 }
 
 bool hs_stack_sweep(hs_world *world, int object, hs_vec3 from) {
-	hs_body *body = &world->bodies[object];
+	hs_body *body = &world->state.bodies[object];
 	hs_vec3 d = hs_sub(body->pos, from);
 	double t = first_contact(world, object, from, d);
 	if (t < 0.0)

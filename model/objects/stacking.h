@@ -8,9 +8,9 @@
 
 #include "world_internal.h"
 
-// How far body a must rise (+z) for none of its vertices to lie inside b and none of b's inside
-// a: exact for vertex-face interpenetration of convex parts.
-double hs_stack_lift_out(const hs_world *world, const hs_body *a, const hs_body *b);
+// How far body a (of shape sa) must rise (+z) for none of its vertices to lie inside b (of shape
+// sb) and none of b's inside a: exact for vertex-face interpenetration of convex parts.
+double hs_stack_lift_out(const hs_shape *sa, const hs_body *a, const hs_shape *sb, const hs_body *b);
 // §4.2 against objects (Fig. 11): lifts `object` along +z out of every object whose G is not above
 // its own, so its lowest point rests on their surface. True when it was inside one.
 bool hs_stack_rectify(hs_world *world, int object);

@@ -14,15 +14,15 @@
 static hs_vec3 to_local(const hs_body *b, hs_vec3 p) { return hs_quat_inv_rotate(b->rot, hs_sub(p, b->pos)); }
 
 static bool near_spheres(const hs_world *world, int i, int j, double margin) {
-	const hs_body *a = &world->bodies[i], *b = &world->bodies[j];
-	double r = world->shapes[a->shape].radius + world->shapes[b->shape].radius + margin;
+	const hs_body *a = &world->state.bodies[i], *b = &world->state.bodies[j];
+	double r = world->model.shapes[a->shape].radius + world->model.shapes[b->shape].radius + margin;
 	return hs_length_sq(hs_sub(a->pos, b->pos)) <= r * r;
 }
 
 static int add_point(hs_world *world, int n, hs_vec3 p, double *height_sum) {
-	if (n >= world->scratch_capacity)
+	if (n >= world->scratch.vertex_room)
 		return n; // more contacts than vertices: the hull is already well defined
-	world->scratch_points[n] = (hs_vec2){p.x, p.y};
+	world->scratch.points[n] = (hs_vec2){p.x, p.y};
 	*height_sum += p.z;
 	return n + 1;
 }
@@ -30,8 +30,8 @@ static int add_point(hs_world *world, int n, hs_vec3 p, double *height_sum) {
 // Contact points of a resting on b: every edge of each clipped to the other. The clipped ends are
 // the corners of the region where their faces meet: vertices inside and edge-edge crossings.
 static int clip_edges(hs_world *world, const hs_body *a, const hs_body *b, int n, double *height_sum) {
-	const hs_shape *sa = &world->shapes[a->shape], *sb = &world->shapes[b->shape];
-	double tol = world->def.floor_tolerance;
+	const hs_shape *sa = &world->model.shapes[a->shape], *sb = &world->model.shapes[b->shape];
+	double tol = world->model.def.floor_tolerance;
 	for (int e = 0; e < sa->edge_count; ++e) {
 		hs_vec3 p0 = hs_add(a->pos, hs_quat_rotate(a->rot, sa->vertices[sa->edges[e].a]));
 		hs_vec3 p1 = hs_add(a->pos, hs_quat_rotate(a->rot, sa->vertices[sa->edges[e].b]));
@@ -54,16 +54,16 @@ static int support_points(hs_world *world, const hs_body *a, const hs_body *b, i
 
 // j can hold `object` up: near it, not itself, its G not above the object's.
 static bool is_support(const hs_world *world, int object, int j, double tol) {
-	return j != object && near_spheres(world, object, j, tol) && world->bodies[j].pos.z <= world->bodies[object].pos.z;
+	return j != object && near_spheres(world, object, j, tol) && world->state.bodies[j].pos.z <= world->state.bodies[object].pos.z;
 }
 
-// Contact points (scratch_points) of `object` on the supports among world->near[0 .. near_count).
+// Contact points (scratch.points) of `object` on the supports among world->scratch.near[0 .. near_count).
 static int contacts(hs_world *world, int object, int near_count, double *height_sum) {
-	double tol = world->def.floor_tolerance;
+	double tol = world->model.def.floor_tolerance;
 	int n = 0;
 	for (int k = 0; k < near_count; ++k)
-		if (is_support(world, object, world->near[k], tol))
-			n = support_points(world, &world->bodies[object], &world->bodies[world->near[k]], n, height_sum);
+		if (is_support(world, object, world->scratch.near[k], tol))
+			n = support_points(world, &world->state.bodies[object], &world->state.bodies[world->scratch.near[k]], n, height_sum);
 	return n;
 }
 
@@ -82,11 +82,11 @@ static bool inside_part(const hs_shape *shape, const hs_part *part, hs_vec3 q) {
 static bool over_support(const hs_world *world, const hs_settle_supports *sup, hs_vec3 p) {
 	hs_vec3 below = hs_v3(p.x, p.y, p.z - HS_SUPPORT_PROBE);
 	for (int k = 0; k < sup->near_count; ++k) {
-		int j = world->near[k];
-		if (!is_support(world, sup->object, j, world->def.floor_tolerance))
+		int j = world->scratch.near[k];
+		if (!is_support(world, sup->object, j, world->model.def.floor_tolerance))
 			continue;
-		const hs_body *b = &world->bodies[j];
-		const hs_shape *sb = &world->shapes[b->shape];
+		const hs_body *b = &world->state.bodies[j];
+		const hs_shape *sb = &world->model.shapes[b->shape];
 		for (int part = 0; part < sb->part_count; ++part)
 			if (inside_part(sb, &sb->parts[part], to_local(b, below)))
 				return true;
@@ -110,11 +110,11 @@ static void support_plane(const hs_world *world, hs_settle_supports *sup, hs_vec
 	sup->normal = hs_v3(0, 0, 1);
 	sup->offset = p.z;
 	for (int k = 0; k < sup->near_count; ++k) {
-		int j = world->near[k];
-		if (!is_support(world, sup->object, j, world->def.floor_tolerance))
+		int j = world->scratch.near[k];
+		if (!is_support(world, sup->object, j, world->model.def.floor_tolerance))
 			continue;
-		const hs_body *b = &world->bodies[j];
-		const hs_shape *sb = &world->shapes[b->shape];
+		const hs_body *b = &world->state.bodies[j];
+		const hs_shape *sb = &world->model.shapes[b->shape];
 		for (int f = 0; f < sb->face_count; ++f) {
 			hs_vec3 n = hs_quat_rotate(b->rot, sb->faces[f].normal);
 			double off = sb->faces[f].offset + hs_dot(n, b->pos);
@@ -130,28 +130,29 @@ static void support_plane(const hs_world *world, hs_settle_supports *sup, hs_vec
 
 // Vertices of the body on the floor, added to the support contacts (resting on both at once).
 static int floor_points(hs_world *world, const hs_body *body, int n, double *height_sum) {
-	const hs_shape *shape = &world->shapes[body->shape];
-	double tol = world->def.floor_tolerance;
+	const hs_shape *shape = &world->model.shapes[body->shape];
+	double tol = world->model.def.floor_tolerance;
 	int floor_n = 0;
 	if (body->pos.z - shape->radius > tol)
 		return 0;
 	for (int i = 0; i < shape->vertex_count; ++i)
-		if (world->scratch_world[i].z <= tol)
-			floor_n = add_point(world, n + floor_n, world->scratch_world[i], height_sum) - n;
+		if (world->scratch.posed[i].z <= tol)
+			floor_n = add_point(world, n + floor_n, world->scratch.posed[i], height_sum) - n;
 	return floor_n;
 }
 
 void hs_support_step(hs_world *world, int object) {
-	hs_body *body = &world->bodies[object];
-	double tol = world->def.floor_tolerance;
+	hs_body *body = &world->state.bodies[object];
+	double tol = world->model.def.floor_tolerance;
 	double lift = 0.0;
 	bool touching = false;
-	int near_count = hs_grid_near(world, body->pos, world->shapes[body->shape].radius + tol);
+	int near_count = hs_grid_near(world, body->pos, world->model.shapes[body->shape].radius + tol);
 	for (int k = 0; k < near_count; ++k) {
-		int j = world->near[k];
+		int j = world->scratch.near[k];
 		if (!is_support(world, object, j, tol))
 			continue; // a support is under the body's G
-		double t = hs_stack_lift_out(world, body, &world->bodies[j]);
+		double t = hs_stack_lift_out(&world->model.shapes[body->shape], body, &world->model.shapes[world->state.bodies[j].shape],
+		                             &world->state.bodies[j]);
 		lift = t > lift ? t : lift;
 		touching = true;
 	}
@@ -170,7 +171,7 @@ void hs_support_step(hs_world *world, int object) {
 	// where a vertex reaches a support's face (eq. 7), or the floor when it touches the floor too
 	hs_settle_supports sup = {object, near_count, hs_v3(0, 0, 1), 0.0, over_support};
 	if (!floor_n)
-		support_plane(world, &sup, centre(world->scratch_points, n, height_sum / n));
+		support_plane(world, &sup, centre(world->scratch.points, n, height_sum / n));
 	hs_motion_settle(world, body, n + floor_n, height_sum / (n + floor_n), gm, true, floor_n ? NULL : &sup);
 	body->grounded = 0; // the floor rules do not apply on a support; the next frame looks again
 }
@@ -178,7 +179,7 @@ void hs_support_step(hs_world *world, int object) {
 // j rests on `support` posed as `old`: they touch, the contact is above the support's G and is
 // j's lowest point (on top of it, not beside it).
 static bool rests_on(hs_world *world, int j, const hs_body *old) {
-	const hs_body *b = &world->bodies[j];
+	const hs_body *b = &world->state.bodies[j];
 	if (b->held || b->pos.z <= old->pos.z)
 		return false;
 	double height_sum = 0.0;
@@ -192,7 +193,7 @@ static bool rests_on(hs_world *world, int j, const hs_body *old) {
 // A hand moved the support (held, from prev / rot_prev to pos / rot): what rests on top of it is
 // carried by the same rigid motion, its contact kept (not rectified out of it a frame later).
 static void carry(hs_world *world, int j, const hs_body *support) {
-	hs_body *b = &world->bodies[j];
+	hs_body *b = &world->state.bodies[j];
 	hs_quat q = hs_quat_normalize(hs_quat_mul(support->rot, hs_quat_conj(support->rot_prev)));
 	hs_vec3 v = hs_sub(b->pos, b->prev);
 	b->pos = hs_add(support->pos, hs_quat_rotate(q, hs_sub(b->pos, support->prev)));
@@ -204,7 +205,7 @@ static void carry(hs_world *world, int j, const hs_body *support) {
 // A push does not sink the object into a support (§4.2 rectification, as on the floor); the lift
 // is not motion: a push that ends does not launch it by it (its release keeps the frame's motion).
 static void rectify_pushed(hs_world *world, int object) {
-	hs_body *body = &world->bodies[object];
+	hs_body *body = &world->state.bodies[object];
 	hs_vec3 before = body->pos;
 	if (!hs_stack_rectify(world, object))
 		return;
@@ -215,8 +216,8 @@ static void rectify_pushed(hs_world *world, int object) {
 // Where the held body's rigid motion this frame took carried object j from: its pose at the frame's
 // start (the held body's own: prev and rot_prev).
 static hs_body pose_before(const hs_world *world, int j, const hs_body *held) {
-	hs_body old = world->bodies[j];
-	if (&world->bodies[j] == held) {
+	hs_body old = world->state.bodies[j];
+	if (&world->state.bodies[j] == held) {
 		old.pos = held->prev;
 		old.rot = held->rot_prev;
 		return old;
@@ -229,7 +230,7 @@ static hs_body pose_before(const hs_world *world, int j, const hs_body *held) {
 
 static bool queued(const hs_world *world, int tail, int j) {
 	for (int k = 0; k < tail; ++k)
-		if (world->queue[k] == j)
+		if (world->scratch.queue[k] == j)
 			return true;
 	return false;
 }
@@ -239,23 +240,23 @@ static bool queued(const hs_world *world, int tail, int j) {
 // Only for a held object, moved in the hand pass: the world step's own use of world->queue (the
 // objects free motion moved) never reaches here.
 static void carry_stack(hs_world *world, int object) {
-	const hs_body *held = &world->bodies[object];
-	double tol = world->def.floor_tolerance + hs_length(hs_sub(held->pos, held->prev));
+	const hs_body *held = &world->state.bodies[object];
+	double tol = world->model.def.floor_tolerance + hs_length(hs_sub(held->pos, held->prev));
 	int head = 0, tail = 0;
-	world->queue[tail++] = object;
+	world->scratch.queue[tail++] = object;
 	while (head < tail) {
-		int s = world->queue[head++];
+		int s = world->scratch.queue[head++];
 		hs_body old = pose_before(world, s, held);
-		int n = hs_grid_near(world, world->bodies[s].pos, world->shapes[old.shape].radius + tol);
+		int n = hs_grid_near(world, world->state.bodies[s].pos, world->model.shapes[old.shape].radius + tol);
 		for (int k = 0; k < n; ++k) {
-			int j = world->near[k];
+			int j = world->scratch.near[k];
 			if (j == s || queued(world, tail, j) || !near_spheres(world, s, j, tol))
 				continue;
 			if (rests_on(world, j, &old)) {
 				carry(world, j, held);
-				world->queue[tail++] = j;
+				world->scratch.queue[tail++] = j;
 			}
-			if (world->bodies[j].asleep)
+			if (world->state.bodies[j].asleep)
 				hs_wake(world, j);
 		}
 	}
@@ -265,8 +266,8 @@ static void carry_stack(hs_world *world, int object) {
 static void z_range(hs_world *world, const hs_body *b, double *lo, double *hi) {
 	*lo = hs_motion_pose_vertices(world, b);
 	*hi = -INFINITY;
-	for (int i = 0; i < world->shapes[b->shape].vertex_count; ++i)
-		*hi = world->scratch_world[i].z > *hi ? world->scratch_world[i].z : *hi;
+	for (int i = 0; i < world->model.shapes[b->shape].vertex_count; ++i)
+		*hi = world->scratch.posed[i].z > *hi ? world->scratch.posed[i].z : *hi;
 }
 
 // Objects beside what a hand pushes (docs/model.md §6): an object the pushed one moved into, not
@@ -277,33 +278,33 @@ static void push_aside(hs_world *world, int object, hs_vec3 d) {
 	if (!(d.x * d.x + d.y * d.y > 0.0))
 		return;
 	int head = 0, tail = 0;
-	world->queue[tail++] = object;
+	world->scratch.queue[tail++] = object;
 	while (head < tail) {
-		int s = world->queue[head++];
+		int s = world->scratch.queue[head++];
 		double slo, shi;
-		z_range(world, &world->bodies[s], &slo, &shi);
-		int n = hs_grid_near(world, world->bodies[s].pos, world->shapes[world->bodies[s].shape].radius);
+		z_range(world, &world->state.bodies[s], &slo, &shi);
+		int n = hs_grid_near(world, world->state.bodies[s].pos, world->model.shapes[world->state.bodies[s].shape].radius);
 		for (int k = 0; k < n; ++k) {
-			int j = world->near[k];
-			hs_body *b = &world->bodies[j];
+			int j = world->scratch.near[k];
+			hs_body *b = &world->state.bodies[j];
 			if (b->held || queued(world, tail, j) || !hs_objects_interfere(world, s, j))
 				continue;
-			double jlo, jhi, sz = world->bodies[s].pos.z;
+			double jlo, jhi, sz = world->state.bodies[s].pos.z;
 			z_range(world, b, &jlo, &jhi);
 			bool beside = (b->pos.z > slo && b->pos.z < shi) || (sz > jlo && sz < jhi); // not on it nor under it
-			if (!beside || d.x * (b->pos.x - world->bodies[s].pos.x) + d.y * (b->pos.y - world->bodies[s].pos.y) <= 0.0)
+			if (!beside || d.x * (b->pos.x - world->state.bodies[s].pos.x) + d.y * (b->pos.y - world->state.bodies[s].pos.y) <= 0.0)
 				continue; // on it, under it, or behind the push
 			b->pos = hs_add(b->pos, d);
 			b->prev = hs_add(b->prev, d); // pushed, not thrown: no inertia gained
 			hs_grid_update(world, j);
 			hs_wake(world, j);
-			world->queue[tail++] = j;
+			world->scratch.queue[tail++] = j;
 		}
 	}
 }
 
 void hs_support_wake_neighbours(hs_world *world, int object, hs_vec3 from) {
-	const hs_body *body = &world->bodies[object];
+	const hs_body *body = &world->state.bodies[object];
 	if (body->held && body->contact != HS_CONTACT_GRASP) {
 		push_aside(world, object, hs_v3(body->pos.x - body->prev.x, body->pos.y - body->prev.y, 0.0));
 		rectify_pushed(world, object);
@@ -314,11 +315,11 @@ void hs_support_wake_neighbours(hs_world *world, int object, hs_vec3 from) {
 	}
 	// what rested on it where it was at the frame's start: its motion this frame is the margin (from
 	// the frame's start: a landing sets prev to where it landed)
-	double tol = world->def.floor_tolerance + hs_length(hs_sub(body->pos, from));
-	int n = hs_grid_near(world, body->pos, world->shapes[body->shape].radius + tol);
+	double tol = world->model.def.floor_tolerance + hs_length(hs_sub(body->pos, from));
+	int n = hs_grid_near(world, body->pos, world->model.shapes[body->shape].radius + tol);
 	for (int k = 0; k < n; ++k) {
-		int j = world->near[k];
-		if (j != object && near_spheres(world, object, j, tol) && world->bodies[j].asleep)
+		int j = world->scratch.near[k];
+		if (j != object && near_spheres(world, object, j, tol) && world->state.bodies[j].asleep)
 			hs_wake(world, j);
 	}
 }

@@ -7,22 +7,22 @@
 
 #include "spring_body.h"
 #include "spring_contact.h"
-#include "spring_technique.h"
-#include "world_internal.h"
 
 typedef struct frame_ctx {
-	hs_world *world;
+	hs_body *body;
+	hs_world_counters *counters;
 	hs_spring_system *sys;
 	double dt;
+	double tol; // m: the world's floor tolerance
 	hs_vec3 gravity;
 } frame_ctx;
 
 // Object i's spring parameters, from the cache while its mass is the one they were found for.
 static hs_spring_params params_of(const frame_ctx *fx, int i) {
 	hs_spring_system *sys = fx->sys;
-	double mass = fx->world->bodies[i].mass;
+	double mass = fx->body->mass;
 	if (memcmp(&sys->params_mass[i], &mass, sizeof mass) != 0) {
-		sys->params[i] = hs_spring_params_of(&sys->def, fx->world, mass);
+		sys->params[i] = hs_spring_params_of(&sys->def, fx->gravity, mass);
 		sys->params_mass[i] = mass;
 	}
 	return sys->params[i];
@@ -34,7 +34,7 @@ static hs_spring_support support_of(const frame_ctx *fx, int i, const hs_spring_
 	hs_spring_support su;
 	su.integrator = sys->def.integrator;
 	su.dt = fx->dt;
-	su.tol = fx->world->def.floor_tolerance;
+	su.tol = fx->tol;
 	su.gravity = fx->gravity;
 	su.def = &sys->def;
 	su.sp = sp;
@@ -62,7 +62,7 @@ static void fly_along_walls(const frame_ctx *fx, hs_spring_segment *sg, const hs
                             hs_vec3 *p, hs_vec3 *v) {
 	hs_spring_system *sys = fx->sys;
 	const hs_spring_geom *g = &sys->geom[i];
-	unsigned touching = sg->spring ? walls_touched(&sys->def.walls, g, *p, fx->world->def.floor_tolerance) : 0u;
+	unsigned touching = sg->spring ? walls_touched(&sys->def.walls, g, *p, fx->tol) : 0u;
 	hs_spring_segment start = *sg;
 	hs_vec3 axis0 = sys->axis, p1 = *p, v1 = *v;
 	hs_spring_fly(sys->def.integrator, sg, sp, fx->dt, &sys->axis, &p1, &v1);
@@ -86,11 +86,7 @@ static void fly_along_walls(const frame_ctx *fx, hs_spring_segment *sg, const hs
 // One object through one frame: on the floor (friction) or in the air, then the walls.
 static void step_body(const frame_ctx *fx, int i) {
 	hs_spring_system *sys = fx->sys;
-	if (hs_spring_technique_moves(fx->world, sys, i)) { // no spring, no weight: spring_technique.c
-		hs_spring_technique_advance(fx->world, sys, i, fx->dt);
-		return;
-	}
-	hs_body *body = &fx->world->bodies[i];
+	hs_body *body = fx->body;
 	const hs_spring_geom *g = &sys->geom[i];
 	bool attached = i == sys->attached;
 	hs_spring_params sp = params_of(fx, i);
@@ -108,7 +104,7 @@ static void step_body(const frame_ctx *fx, int i) {
 	bool sliding = false;
 	bool on_floor = hs_spring_floor_step(&su, &sg, &p, &v, &sliding);
 	if (on_floor) {
-		fx->world->counters.floor_checks++;
+		fx->counters->floor_checks++;
 	} else { // in the air: gravity and the spring
 		sg.accel = su.load ? hs_mul_add(fx->gravity, 1.0 / body->mass, *su.load) : fx->gravity;
 		fly_along_walls(fx, &sg, &sp, i, &p, &v);
@@ -119,10 +115,11 @@ static void step_body(const frame_ctx *fx, int i) {
 	body->vel = v;
 	sys->on_floor[i] = on_floor;
 	sys->sliding[i] = sliding;
-	fx->world->counters.object_steps++;
+	fx->counters->object_steps++;
 }
 
-void hs_spring_advance(hs_world *world, hs_spring_system *sys, int i, double dt) {
-	frame_ctx fx = {world, sys, dt, world->def.gravity};
+void hs_spring_advance(hs_spring_system *sys, int i, hs_body *body, const hs_world_def *def, double dt,
+                       hs_world_counters *counters) {
+	frame_ctx fx = {body, counters, sys, dt, def->floor_tolerance, def->gravity};
 	step_body(&fx, i);
 }

@@ -40,14 +40,14 @@
 
 // Object i lies where the frame began, without velocity along the floor.
 static bool still(const hs_world *world, const hs_spring_system *sys, int i) {
-	const hs_body *b = &world->bodies[i];
+	const hs_body *b = &world->state.bodies[i];
 	hs_vec3 p = b->pos, s = sys->saved_pos[i];
 	return p.x == s.x && p.y == s.y && b->vel.x == 0.0 && b->vel.y == 0.0;
 }
 
 // Object i lies on the floor (within the floor's tolerance).
 static bool lies_on_floor(const hs_world *world, const hs_spring_system *sys, int i) {
-	return world->bodies[i].pos.z + sys->geom[i].lo.z <= world->def.floor_tolerance;
+	return world->state.bodies[i].pos.z + sys->geom[i].lo.z <= world->model.def.floor_tolerance;
 }
 
 // The direction d (unit) object i can be moved along to separate it: without the components
@@ -55,9 +55,9 @@ static bool lies_on_floor(const hs_world *world, const hs_spring_system *sys, in
 // floor and has not moved this frame (static friction holds it: the overlap is the other's doing).
 static hs_vec3 free_part(const hs_world *world, const hs_spring_system *sys, int i, hs_vec3 d, bool holds) {
 	const hs_spring_geom *g = &sys->geom[i];
-	const hs_body *b = &world->bodies[i];
+	const hs_body *b = &world->state.bodies[i];
 	hs_vec3 p = b->pos;
-	double tol = world->def.floor_tolerance;
+	double tol = world->model.def.floor_tolerance;
 	const hs_spring_walls *wl = &sys->def.walls;
 	bool on_floor = lies_on_floor(world, sys, i);
 	if (holds && on_floor && d.z <= 0.0 && still(world, sys, i))
@@ -87,9 +87,9 @@ static hs_vec3 free_part(const hs_world *world, const hs_spring_system *sys, int
 // wall, into the room): zero when there is none.
 static hs_vec3 off_shared_walls(const hs_world *world, const hs_spring_system *sys, int i, int j, hs_vec3 n) {
 	const hs_spring_walls *wl = &sys->def.walls;
-	double tol = world->def.floor_tolerance;
-	unsigned both = hs_spring_walls_near(wl, &sys->geom[i], world->bodies[i].pos, tol) &
-	                hs_spring_walls_near(wl, &sys->geom[j], world->bodies[j].pos, tol);
+	double tol = world->model.def.floor_tolerance;
+	unsigned both = hs_spring_walls_near(wl, &sys->geom[i], world->state.bodies[i].pos, tol) &
+	                hs_spring_walls_near(wl, &sys->geom[j], world->state.bodies[j].pos, tol);
 	hs_vec3 off = hs_v3(0.0, 0.0, 0.0);
 	for (int q = 0; q < 4; ++q)
 		if ((both >> q & 1u) && fabs(hs_dot(n, hs_spring_wall_normal(q))) < 1e-9)
@@ -107,7 +107,7 @@ static void separate(hs_world *world, const hs_spring_system *sys, int i, int j,
                      bool resting) {
 	if (!(depth > 0.0))
 		return;
-	hs_body *a = &world->bodies[i], *b = &world->bodies[j];
+	hs_body *a = &world->state.bodies[i], *b = &world->state.bodies[j];
 	// a resting pair where one has not moved: the other's doing (both still: shared)
 	bool hold_a = resting && !still(world, sys, j), hold_b = resting && !still(world, sys, i);
 	hs_vec3 ua = free_part(world, sys, i, hs_neg(n), hold_a), ub = free_part(world, sys, j, n, hold_b);
@@ -117,7 +117,7 @@ static void separate(hs_world *world, const hs_spring_system *sys, int i, int j,
 	if (hs_dot(ub, ub) > 0.0)
 		ub = hs_add(ub, off_shared_walls(world, sys, i, j, n));
 	if (sys->shock) { // shock propagation (end passes, bottom up): the lower one is not pushed down
-		hs_vec3 *down = world->bodies[i].pos.z <= world->bodies[j].pos.z ? &ua : &ub;
+		hs_vec3 *down = world->state.bodies[i].pos.z <= world->state.bodies[j].pos.z ? &ua : &ub;
 		if (down->z < 0.0)
 			down->z = 0.0;
 	}
@@ -140,7 +140,7 @@ static void separate(hs_world *world, const hs_spring_system *sys, int i, int j,
 		da = within_reach(da, HS_SEPARATE_REACH * depth);
 		db = within_reach(db, HS_SEPARATE_REACH * depth);
 	}
-	hs_vec3 g = world->def.gravity;
+	hs_vec3 g = world->model.def.gravity;
 	double lift = -a->mass * hs_dot(g, da) - b->mass * hs_dot(g, db); // J of potential energy
 	if (lift > 0.0) {
 		double kinetic = 0.5 * a->mass * hs_length_sq(a->vel) + 0.5 * b->mass * hs_length_sq(b->vel);
@@ -166,12 +166,12 @@ static void separate(hs_world *world, const hs_spring_system *sys, int i, int j,
 // end (the step was such); else the straight path. A path starts at the frame start, or where the
 // object was last answered this frame (sys->path_*); before that the object is where the path starts.
 static hs_vec3 path_at(const hs_world *world, const hs_spring_system *sys, int i, double tau) {
-	const hs_body *b = &world->bodies[i];
+	const hs_body *b = &world->state.bodies[i];
 	double t0 = sys->path_t0[i];
 	hs_vec3 v0 = sys->path_vel[i], dv = hs_sub(b->vel, v0), p0 = sys->path_pos[i];
 	if (!(tau > t0))
 		return p0;
-	double dt = (1.0 - t0) * world->def.dt, s = (tau - t0) / (1.0 - t0);
+	double dt = (1.0 - t0) * world->model.def.dt, s = (tau - t0) / (1.0 - t0);
 	hs_vec3 end = hs_add(p0, hs_scale(hs_mul_add(v0, 0.5, dv), dt));
 	if (hs_length_sq(hs_sub(end, b->pos)) <= 1e-24)
 		return hs_add(p0, hs_scale(hs_mul_add(hs_scale(v0, s), 0.5 * s * s, dv), dt));
@@ -181,7 +181,7 @@ static hs_vec3 path_at(const hs_world *world, const hs_spring_system *sys, int i
 // Object i put back to the fraction tau of the frame: on its path, the velocity between the path
 // start's and the frame end's.
 static void state_at(hs_world *world, const hs_spring_system *sys, int i, double tau) {
-	hs_body *b = &world->bodies[i];
+	hs_body *b = &world->state.bodies[i];
 	hs_vec3 p = path_at(world, sys, i, tau);
 	double t0 = sys->path_t0[i], s = tau > t0 ? (tau - t0) / (1.0 - t0) : 0.0;
 	b->vel = hs_mul_add(sys->path_vel[i], s, hs_sub(b->vel, sys->path_vel[i]));
@@ -248,8 +248,8 @@ static double sphere_root(const hs_world *world, const hs_spring_system *sys, in
 static double first_meeting(const hs_world *world, const hs_spring_system *sys, int i, int j, bool end_meets) {
 	const hs_spring_geom *ga = &sys->geom[i], *gb = &sys->geom[j];
 	double t0 = fmax(sys->path_t0[i], sys->path_t0[j]); // the later of their paths' starts
-	hs_vec3 rel = hs_sub(hs_sub(world->bodies[j].pos, path_at(world, sys, j, t0)),
-	                     hs_sub(world->bodies[i].pos, path_at(world, sys, i, t0)));
+	hs_vec3 rel = hs_sub(hs_sub(world->state.bodies[j].pos, path_at(world, sys, j, t0)),
+	                     hs_sub(world->state.bodies[i].pos, path_at(world, sys, i, t0)));
 	double step = ga->inner + gb->inner, len = hs_length(rel);
 	if (!(step > 0.0) || !(len > 0.0) || (!end_meets && !(len > step)))
 		return -1.0; // no relative motion, or slower: a pass through the inner balls shows at an end
@@ -310,7 +310,7 @@ static void note_layer(hs_spring_system *sys, const hs_world *world, int i, int 
 // the frame from there on a new path (on the spring, or a push: the rest is lost). False when
 // they were a resting pair still within the touch gap: nothing to answer.
 static bool answer(hs_world *world, hs_spring_system *sys, int i, int j, double tau, bool resting) {
-	hs_body *a = &world->bodies[i], *b = &world->bodies[j];
+	hs_body *a = &world->state.bodies[i], *b = &world->state.bodies[j];
 	const hs_spring_geom *ga = &sys->geom[i], *gb = &sys->geom[j];
 	hs_vec3 n;
 	double depth;
@@ -325,7 +325,7 @@ static bool answer(hs_world *world, hs_spring_system *sys, int i, int j, double 
 		return false;
 	}
 	if (resting) { // an overlap up to twice the touch gap stays (it is a touch: the next frame holds it)
-		double gap = world->def.floor_tolerance;
+		double gap = world->model.def.floor_tolerance;
 		depth = depth > 2.0 * gap ? depth - gap : 0.0;
 		note_layer(sys, world, i, j, depth);
 		if (!(depth > 0.0) && !(hs_dot(hs_sub(b->vel, a->vel), n) < 0.0))
@@ -334,7 +334,7 @@ static bool answer(hs_world *world, hs_spring_system *sys, int i, int j, double 
 	// an impact slower than HS_REST_BOUNCE_SPEED is a resting push: no bounce (spring_rest.h)
 	double bounce = sys->def.paper_collisions ? 0.0 : HS_REST_BOUNCE_SPEED; // the letter: every impact bounces
 	bool push = resting || -hs_dot(hs_sub(b->vel, a->vel), n) <= bounce;
-	hs_spring_pair_impulse(world, sys, i, j, n, push ? 0.0 : hs_spring_pair_restitution(world, sys, i, j), push);
+	hs_spring_pair_impulse(world, sys, i, j, n, push ? 0.0 : hs_spring_pair_restitution(&sys->def, &world->state.bodies[i], &world->state.bodies[j]), push);
 	separate(world, sys, i, j, n, depth, push);
 	// the rest of the frame, from where they met; a push (no bounce) stops there: moved on by the
 	// frame start's load, an object that met a second support fell on into it and was separated
@@ -342,11 +342,12 @@ static bool answer(hs_world *world, hs_spring_system *sys, int i, int j, double 
 	if (tau > 0.0 && tau < 1.0) {
 		int ends[2] = {i, j};
 		for (int q = 0; q < 2; ++q) { // their paths start again here
-			sys->path_pos[ends[q]] = world->bodies[ends[q]].pos;
-			sys->path_vel[ends[q]] = world->bodies[ends[q]].vel;
+			sys->path_pos[ends[q]] = world->state.bodies[ends[q]].pos;
+			sys->path_vel[ends[q]] = world->state.bodies[ends[q]].vel;
 			sys->path_t0[ends[q]] = tau;
 			if (ends[q] != sys->attached && !push)
-				hs_spring_advance(world, sys, ends[q], (1.0 - tau) * world->def.dt);
+				hs_spring_advance(sys, ends[q], &world->state.bodies[ends[q]], &world->model.def, (1.0 - tau) * world->model.def.dt,
+				                  &world->counters);
 		}
 	}
 	sys->separated[i] = sys->separated[j] = 1;
@@ -361,7 +362,7 @@ static double meeting_of(hs_world *world, const hs_spring_system *sys, int i, in
 	if ((sys->held[i] && sys->held[j]) || hs_spring_touching(sys, i, j))
 		return -1.0;
 	const hs_spring_geom *ga = &sys->geom[i], *gb = &sys->geom[j];
-	hs_vec3 pa = world->bodies[i].pos, pb = world->bodies[j].pos, n;
+	hs_vec3 pa = world->state.bodies[i].pos, pb = world->state.bodies[j].pos, n;
 	double depth;
 	bool end_meets = hs_spring_boxes_meet(ga, pa, gb, pb, hs_spring_margin(ga, pa) + hs_spring_margin(gb, pb)) &&
 	                 hs_spring_contact(world, ga, pa, gb, pb, &n, &depth);
@@ -459,7 +460,7 @@ static bool earliest(hs_spring_system *sys, hs_spring_event *out) {
 
 // Object i held still by its contacts this frame and not moved since (by a separation).
 static bool unmoved(const hs_world *world, const hs_spring_system *sys, int i) {
-	return sys->held[i] && memcmp(&world->bodies[i].pos, &sys->saved_pos[i], sizeof(hs_vec3)) == 0;
+	return sys->held[i] && memcmp(&world->state.bodies[i].pos, &sys->saved_pos[i], sizeof(hs_vec3)) == 0;
 }
 
 // Sorts by event_order in place: the meetings' min-heap (sift_down) taken apart from the back
@@ -498,7 +499,7 @@ static bool end_pass(hs_world *world, hs_spring_system *sys, bool first) {
 	const hs_spring_geom *geom = sys->geom;
 	uint8_t *mv = sys->moved;
 	sys->event_count = 0;
-	for (int q = 0; q < world->object_count; ++q) {
+	for (int q = 0; q < world->model.object_count; ++q) {
 		if (!first && !(mv[q] & 1u))
 			continue;
 		const int *near;
@@ -506,14 +507,14 @@ static bool end_pass(hs_world *world, hs_spring_system *sys, bool first) {
 		for (int k = 0; k < count; ++k) {
 			int r = near[k], i = q < r ? q : r, j = q < r ? r : q;
 			if (r == q || (first && r < q) || (!first && r < q && (mv[r] & 1u)) || (unmoved(world, sys, i) && unmoved(world, sys, j)) ||
-			    !hs_spring_boxes_meet(&geom[i], world->bodies[i].pos, &geom[j], world->bodies[j].pos,
-			                hs_spring_margin(&geom[i], world->bodies[i].pos) + hs_spring_margin(&geom[j], world->bodies[j].pos)))
+			    !hs_spring_boxes_meet(&geom[i], world->state.bodies[i].pos, &geom[j], world->state.bodies[j].pos,
+			                hs_spring_margin(&geom[i], world->state.bodies[i].pos) + hs_spring_margin(&geom[j], world->state.bodies[j].pos)))
 				continue; // (a pair of two movers is met from the lower index)
 			if (sys->event_count == sys->event_capacity) {
 				world->counters.dropped_contacts++;
 				continue;
 			}
-			double low = fmin(world->bodies[i].pos.z, world->bodies[j].pos.z);
+			double low = fmin(world->state.bodies[i].pos.z, world->state.bodies[j].pos.z);
 			sys->events[sys->event_count++] = (hs_spring_event){i, j, low, 0u, 0u};
 		}
 	}
@@ -523,18 +524,18 @@ static bool end_pass(hs_world *world, hs_spring_system *sys, bool first) {
 	sys->shock = true;
 	for (int e = 0; e < sys->event_count; ++e) {
 		int i = sys->events[e].i, j = sys->events[e].j;
-		hs_vec3 pa = world->bodies[i].pos, pb = world->bodies[j].pos;
+		hs_vec3 pa = world->state.bodies[i].pos, pb = world->state.bodies[j].pos;
 		if (!answer(world, sys, i, j, -1.0, hs_spring_touching(sys, i, j)))
 			continue;
-		if (memcmp(&pa, &world->bodies[i].pos, sizeof pa) != 0)
+		if (memcmp(&pa, &world->state.bodies[i].pos, sizeof pa) != 0)
 			mv[i] |= 2u;
-		if (memcmp(&pb, &world->bodies[j].pos, sizeof pb) != 0)
+		if (memcmp(&pb, &world->state.bodies[j].pos, sizeof pb) != 0)
 			mv[j] |= 2u;
 		moved = moved || (mv[i] & 2u) || (mv[j] & 2u);
 	}
 	sys->shock = false;
 	sys->event_count = 0;
-	for (int q = 0; q < world->object_count; ++q)
+	for (int q = 0; q < world->model.object_count; ++q)
 		mv[q] = (uint8_t)(mv[q] >> 1);
 	return moved;
 }
@@ -549,7 +550,7 @@ static bool end_pass(hs_world *world, hs_spring_system *sys, bool first) {
 // inverse-mass shares and kept within the walls; an object pushed joins the sweeps; until no pair
 // is deeper than the drift. Along the floor this costs and adds no energy (velocities untouched).
 static void project_floor_layer(hs_world *world, hs_spring_system *sys) {
-	double gap = world->def.floor_tolerance;
+	double gap = world->model.def.floor_tolerance;
 	for (int sweep = 0; sweep < HS_LAYER_SWEEPS; ++sweep) {
 		double worst = 0.0;
 		for (int k = 0; k < sys->layer_count; ++k) { // (the list grows as the sweep pushes)
@@ -560,7 +561,7 @@ static void project_floor_layer(hs_world *world, hs_spring_system *sys) {
 				int r = near[m];
 				if (r == q || !both_on_floor(world, sys, q, r) || (sys->in_layer[r] && r < q))
 					continue; // (a pair of two in the layer is met from the lower index)
-				hs_body *a = &world->bodies[q], *b = &world->bodies[r];
+				hs_body *a = &world->state.bodies[q], *b = &world->state.bodies[r];
 				hs_vec3 n;
 				double depth;
 				if (!hs_spring_contact(world, &sys->geom[q], a->pos, &sys->geom[r], b->pos, &n, &depth))
@@ -594,15 +595,15 @@ static void project_floor_layer(hs_world *world, hs_spring_system *sys) {
 void hs_spring_collide(hs_world *world, hs_spring_system *sys) {
 	const hs_spring_geom *geom = sys->geom;
 	double reach = 0.0, inner = INFINITY;
-	for (int i = 0; i < world->object_count; ++i) { // the farthest any object moved this frame
-		reach = fmax(reach, hs_length(hs_sub(world->bodies[i].pos, sys->saved_pos[i])));
+	for (int i = 0; i < world->model.object_count; ++i) { // the farthest any object moved this frame
+		reach = fmax(reach, hs_length(hs_sub(world->state.bodies[i].pos, sys->saved_pos[i])));
 		inner = fmin(inner, geom[i].inner);
 	}
 	// no two objects moved apart by more than the sum of any two inner radii: a pass through shows
 	// at the frame's end (first_meeting), so the queries need not cover the paths
 	if (2.0 * reach <= 2.0 * inner)
 		reach = 0.0;
-	for (int i = 0; i < world->object_count; ++i) { // every path starts at the frame start
+	for (int i = 0; i < world->model.object_count; ++i) { // every path starts at the frame start
 		sys->path_pos[i] = sys->saved_pos[i];
 		sys->path_vel[i] = sys->saved_vel[i];
 		sys->path_t0[i] = 0.0;
@@ -612,10 +613,10 @@ void hs_spring_collide(hs_world *world, hs_spring_system *sys) {
 	// meetings of its two objects are found again from their new paths; at most 8 per object and
 	// frame (a pile in a wedge could bounce on), the rest are answered where the frame leaves them.
 	sys->event_count = 0;
-	for (int i = 0; i < world->object_count; ++i)
+	for (int i = 0; i < world->model.object_count; ++i)
 		list_meetings(world, sys, i, i, -1, reach);
 	hs_spring_event ev;
-	for (long budget = 8L * world->object_count; budget > 0 && earliest(sys, &ev); --budget) {
+	for (long budget = 8L * world->model.object_count; budget > 0 && earliest(sys, &ev); --budget) {
 		answer(world, sys, ev.i, ev.j, ev.tau, false);
 		sys->version[ev.i]++; // their listed meetings are stale: found again from the new paths
 		sys->version[ev.j]++;
@@ -625,8 +626,8 @@ void hs_spring_collide(hs_world *world, hs_spring_system *sys) {
 	// where the frame leaves them: resting pairs, overlaps begun before a path restarted, the rest;
 	// a separation may push an object into a third one, so the pass goes again (at most
 	// HS_SEPARATION_PASSES times) while one moved anything
-	if (world->object_count > 0)
-		memset(sys->moved, 0, (size_t)world->object_count);
+	if (world->model.object_count > 0)
+		memset(sys->moved, 0, (size_t)world->model.object_count);
 	for (int pass = 0; pass < HS_SEPARATION_PASSES && end_pass(world, sys, pass == 0); ++pass)
 		;
 	if (sys->layer_count > 0)

@@ -3,6 +3,7 @@
 #define HS_SPRING_COLLIDE_H
 
 #include "spring_system.h"
+#include "world_internal.h"
 
 // Every overlapping pair of the world's objects (array order, shapes in sys->geom, found through
 // the broad phase sys->grid) exchanges an impulse of restitution sys->def.restitution along the

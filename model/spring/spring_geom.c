@@ -19,8 +19,7 @@ static bool axis_aligned(const hs_shape *shape, hs_quat rot, hs_vec3 lo, hs_vec3
 	return true;
 }
 
-hs_spring_geom hs_spring_geom_of(const hs_world *world, const hs_body *body) {
-	const hs_shape *shape = &world->shapes[body->shape];
+hs_spring_geom hs_spring_geom_of(const hs_shape *shape, const hs_body *body) {
 	hs_spring_geom g;
 	memset(&g, 0, sizeof g);
 	g.shape = body->shape;

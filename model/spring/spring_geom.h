@@ -2,7 +2,9 @@
 #ifndef HS_SPRING_GEOM_H
 #define HS_SPRING_GEOM_H
 
-#include "world_internal.h"
+#include <stdbool.h>
+
+#include "body.h"
 
 // How object–object collisions see a shape (spring_collide.c): exact sphere, a box whose faces
 // lie on its world-axis bounding box, a turned (oriented) box, or any other convex part set (libccd).
@@ -16,15 +18,15 @@ typedef struct hs_spring_geom {
 	double radius;  // m, spheres only
 	bool sphere;
 	hs_spring_form form;
-	int shape;      // index into world->shapes
+	int shape;      // index into world->model.shapes
 	hs_quat rot;    // body → world
 	hs_vec3 half;   // m: half extents of a box in its body frame
 	double inner;   // m: the largest ball about G inside it (a sphere's radius, a box's smallest half
 	                // extent; other shapes an eighth of the bounding box's): the swept collisions' step
 } hs_spring_geom;
 
-// The reach of `body` in its present orientation.
-hs_spring_geom hs_spring_geom_of(const hs_world *world, const hs_body *body);
+// The reach of `body`, made of `shape`, in its present orientation.
+hs_spring_geom hs_spring_geom_of(const hs_shape *shape, const hs_body *body);
 // True when the point s lies in the object whose G is at p.
 bool hs_spring_geom_inside(const hs_spring_geom *g, hs_vec3 p, hs_vec3 s);
 // m from s to the surface of the object whose G is at p (≤ 0 inside).

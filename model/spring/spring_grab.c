@@ -31,10 +31,10 @@
 static int direct_pick(const hs_world *world, const hs_spring_system *sys, hs_vec3 s) {
 	int best = -1;
 	double best_d2 = INFINITY;
-	for (int i = 0; i < world->object_count; ++i) {
-		if (i == sys->attached || !hs_spring_geom_inside(&sys->geom[i], world->bodies[i].pos, s))
+	for (int i = 0; i < world->model.object_count; ++i) {
+		if (i == sys->attached || !hs_spring_geom_inside(&sys->geom[i], world->state.bodies[i].pos, s))
 			continue;
-		double d2 = hs_length_sq(hs_sub(world->bodies[i].pos, s));
+		double d2 = hs_length_sq(hs_sub(world->state.bodies[i].pos, s));
 		if (d2 < best_d2) {
 			best_d2 = d2;
 			best = i;
@@ -47,10 +47,10 @@ static int direct_pick(const hs_world *world, const hs_spring_system *sys, hs_ve
 static int ray_pick(const hs_world *world, const hs_spring_system *sys, hs_vec3 o, hs_vec3 dir) {
 	int best = -1;
 	double best_t = INFINITY;
-	for (int i = 0; i < world->object_count; ++i) {
+	for (int i = 0; i < world->model.object_count; ++i) {
 		if (i == sys->attached)
 			continue;
-		double t = hs_spring_geom_ray(&sys->geom[i], world->bodies[i].pos, o, dir, sys->def.select_range);
+		double t = hs_spring_geom_ray(&sys->geom[i], world->state.bodies[i].pos, o, dir, sys->def.select_range);
 		if (t >= 0.0 && t < best_t) {
 			best_t = t;
 			best = i;
@@ -63,10 +63,10 @@ static int ray_pick(const hs_world *world, const hs_spring_system *sys, hs_vec3 
 static int catch_pick(const hs_world *world, const hs_spring_system *sys, hs_vec3 s) {
 	int best = -1;
 	double best_d = INFINITY;
-	for (int i = 0; i < world->object_count; ++i) {
-		if (sys->on_floor[i] || world->bodies[i].mass == 0.0) // (a massless object never flies)
+	for (int i = 0; i < world->model.object_count; ++i) {
+		if (sys->on_floor[i] || world->state.bodies[i].mass == 0.0) // (a massless object never flies)
 			continue;
-		double d = hs_spring_geom_distance(&sys->geom[i], world->bodies[i].pos, s);
+		double d = hs_spring_geom_distance(&sys->geom[i], world->state.bodies[i].pos, s);
 		if (d <= sys->def.catch_radius && d < best_d) {
 			best_d = d;
 			best = i;
@@ -87,13 +87,13 @@ static double path_speed(const hs_spring_system *sys) {
 
 // A clear change of direction: the candidate lies more than 60 deg off the heading.
 static bool turned_away(const hs_world *world, const hs_spring_system *sys, hs_vec3 heading) {
-	hs_vec3 to = hs_sub(world->bodies[sys->candidate].pos, sys->stylus);
+	hs_vec3 to = hs_sub(world->state.bodies[sys->candidate].pos, sys->stylus);
 	return hs_dot(heading, to) < 0.5 * hs_length(to);
 }
 
 // Object i (-1: none) lies within grab_range of the stylus.
 static bool within_grab(const hs_world *world, const hs_spring_system *sys, int i) {
-	return i >= 0 && hs_spring_geom_distance(&sys->geom[i], world->bodies[i].pos, sys->stylus) <= sys->def.grab_range;
+	return i >= 0 && hs_spring_geom_distance(&sys->geom[i], world->state.bodies[i].pos, sys->stylus) <= sys->def.grab_range;
 }
 
 void hs_spring_update_candidate(const hs_world *world, hs_spring_system *sys) {
@@ -130,12 +130,12 @@ void hs_spring_update_candidate(const hs_world *world, hs_spring_system *sys) {
 void hs_spring_attach(hs_world *world, hs_spring_system *sys, int i, hs_attach_kind kind) {
 	sys->attached = i;
 	sys->attach_kind = kind;
-	const hs_body *body = &world->bodies[i];
-	hs_spring_params sp = hs_spring_params_of(&sys->def, world, body->mass);
-	hs_spring_geom g = i < sys->geom_count ? sys->geom[i] : hs_spring_geom_of(world, body);
+	const hs_body *body = &world->state.bodies[i];
+	hs_spring_params sp = hs_spring_params_of(&sys->def, world->model.def.gravity, body->mass);
+	hs_spring_geom g = i < sys->geom_count ? sys->geom[i] : hs_spring_geom_of(&world->model.shapes[body->shape], body);
 	hs_vec3 d = hs_sub(body->pos, sys->stylus);
 	double len = hs_length(d);
-	hs_vec3 down = hs_normalize(world->def.gravity);
+	hs_vec3 down = hs_normalize(world->model.def.gravity);
 	if (hs_length(down) == 0.0)
 		down = hs_v3(0.0, 0.0, -1.0);
 	bool inside = hs_spring_geom_inside(&g, body->pos, sys->stylus);
@@ -159,7 +159,7 @@ void hs_spring_press(hs_world *world, hs_spring_system *sys) {
 	hs_vec3 s = sys->stylus;
 	int pick = direct_pick(world, sys, s);
 	if (pick >= 0) { // inside a flying object is catching it too
-		bool flying = !sys->on_floor[pick] && world->bodies[pick].mass > 0.0;
+		bool flying = !sys->on_floor[pick] && world->state.bodies[pick].mass > 0.0;
 		hs_spring_attach(world, sys, pick, flying ? HS_ATTACH_CATCH : HS_ATTACH_PICK);
 		return;
 	}
@@ -171,7 +171,7 @@ void hs_spring_press(hs_world *world, hs_spring_system *sys) {
 	int c = sys->candidate;
 	if (c < 0)
 		return;
-	double d = hs_spring_geom_distance(&sys->geom[c], world->bodies[c].pos, s);
+	double d = hs_spring_geom_distance(&sys->geom[c], world->state.bodies[c].pos, s);
 	if (d <= sys->def.grab_range)
 		hs_spring_attach(world, sys, c, HS_ATTACH_SELECT);
 	else if (d <= sys->def.select_range) // too far to reach: the fishing rod
@@ -186,7 +186,7 @@ void hs_spring_hold(hs_world *world, hs_spring_system *sys) {
 
 void hs_spring_detach(hs_world *world, hs_spring_system *sys, bool classify, double time) {
 	int i = sys->attached;
-	hs_body *body = &world->bodies[i];
+	hs_body *body = &world->state.bodies[i];
 	hs_release *r = &sys->release;
 	r->object = hs_object_handle(world, i);
 	r->time = time;

@@ -4,6 +4,7 @@
 #define HS_SPRING_GRAB_H
 
 #include "spring_system.h"
+#include "world_internal.h"
 
 // The selection candidate after the frame's tracker samples.
 void hs_spring_update_candidate(const hs_world *world, hs_spring_system *sys);

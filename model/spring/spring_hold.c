@@ -15,7 +15,7 @@
 #include "spring_technique.h"
 #include "world_internal.h"
 
-bool hs_spring_massless_allowed(const hs_world *world) { return world->spring && world->spring->def.techniques; }
+bool hs_spring_massless_allowed(const hs_world *world) { return world->state.spring && world->state.spring->def.techniques; }
 
 // The pointing ray's point on the plane z = h (any distance), or h's point below the stylus.
 static hs_vec3 plane_point(const hs_spring_system *sys, double h) {
@@ -26,7 +26,7 @@ static hs_vec3 plane_point(const hs_spring_system *sys, double h) {
 
 void hs_spring_technique_grab(hs_world *world, hs_spring_system *sys, int i, hs_attach_kind kind) {
 	hs_spring_technique *t = &sys->tech;
-	const hs_body *body = &world->bodies[i];
+	const hs_body *body = &world->state.bodies[i];
 	t->hold = HS_TECHNIQUE_SPRING;
 	if (!sys->def.techniques)
 		return;
@@ -46,7 +46,7 @@ void hs_spring_technique_grab(hs_world *world, hs_spring_system *sys, int i, hs_
 
 void hs_spring_technique_release(hs_world *world, hs_spring_system *sys, int i, bool button) {
 	hs_spring_technique *t = &sys->tech;
-	hs_body *body = &world->bodies[i];
+	hs_body *body = &world->state.bodies[i];
 	t->hold = HS_TECHNIQUE_SPRING;
 	if (!sys->def.techniques)
 		return;
@@ -55,7 +55,7 @@ void hs_spring_technique_release(hs_world *world, hs_spring_system *sys, int i, 
 		body->vel = hs_v3(0.0, 0.0, 0.0);
 		if (memcmp(&body->rot, &t->home_rot, sizeof body->rot) != 0) {
 			body->rot = t->home_rot;
-			sys->geom[i] = hs_spring_geom_of(world, body);
+			sys->geom[i] = hs_spring_geom_of(&world->model.shapes[body->shape], body);
 			sys->grid_count = -1;
 		}
 		sys->release.kind = HS_RELEASE_RETURN;

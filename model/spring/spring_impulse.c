@@ -3,16 +3,16 @@
 // still approaching and spring_collide.c's meetings both answer with it.
 #include "spring_impulse.h"
 
-double hs_spring_pair_restitution(const hs_world *world, const hs_spring_system *sys, int a, int b) {
-	double ea = world->bodies[a].restitution, eb = world->bodies[b].restitution;
-	ea = ea < 0.0 ? sys->def.restitution : ea;
-	eb = eb < 0.0 ? sys->def.restitution : eb;
+double hs_spring_pair_restitution(const hs_spring_def *def, const hs_body *a, const hs_body *b) {
+	double ea = a->restitution, eb = b->restitution;
+	ea = ea < 0.0 ? def->restitution : ea;
+	eb = eb < 0.0 ? def->restitution : eb;
 	return fmin(ea, eb);
 }
 
 bool hs_spring_pair_impulse(hs_world *world, const hs_spring_system *sys, int i, int j, hs_vec3 n, double e,
                             bool resting) {
-	hs_body *a = &world->bodies[i], *b = &world->bodies[j];
+	hs_body *a = &world->state.bodies[i], *b = &world->state.bodies[j];
 	double vn = hs_dot(hs_sub(b->vel, a->vel), n);
 	if (!(vn < 0.0))
 		return false;

@@ -11,10 +11,10 @@
 // frame: i lies on the floor and does not slide, the push goes along or into the floor, and its
 // horizontal part is at most μ m g dt.
 static inline bool hs_spring_floor_takes(const hs_world *world, const hs_spring_system *sys, int i, hs_vec3 push) {
-	const hs_body *b = &world->bodies[i];
-	double tol = world->def.floor_tolerance, grip = sys->def.friction_static * b->mass * hs_length(world->def.gravity);
+	const hs_body *b = &world->state.bodies[i];
+	double tol = world->model.def.floor_tolerance, grip = sys->def.friction_static * b->mass * hs_length(world->model.def.gravity);
 	return b->pos.z + sys->geom[i].lo.z <= tol && hs_length(hs_v3(b->vel.x, b->vel.y, 0.0)) <= HS_REST_STICK_SPEED &&
-	       push.z <= 0.0 && hs_length(hs_v3(push.x, push.y, 0.0)) <= grip * world->def.dt;
+	       push.z <= 0.0 && hs_length(hs_v3(push.x, push.y, 0.0)) <= grip * world->model.def.dt;
 }
 
 // The impulse of restitution e along n (unit, from i to j) when i and j approach (true then).
@@ -24,7 +24,7 @@ bool hs_spring_pair_impulse(hs_world *world, const hs_spring_system *sys, int i,
                             bool resting);
 
 // The restitution of a pair of objects: the smaller of their own (hs_object_def.restitution; the
-// model's where unset).
-double hs_spring_pair_restitution(const hs_world *world, const hs_spring_system *sys, int a, int b);
+// model's, def->restitution, where unset).
+double hs_spring_pair_restitution(const hs_spring_def *def, const hs_body *a, const hs_body *b);
 
 #endif

@@ -32,7 +32,7 @@ void hs_spring_magnet(hs_world *world, hs_spring_system *sys, double t1) {
 	t->magnet_object = -1;
 	if (t1 - t->magnet_seen > t->set.magnet_within)
 		return; // too slow: no gesture
-	hs_body *body = &world->bodies[i];
+	hs_body *body = &world->state.bodies[i];
 	t->home_pos = body->pos;
 	t->home_rot = body->rot;
 	body->pos = sys->stylus; // brought to the pen, at rest

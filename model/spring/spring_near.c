@@ -31,7 +31,7 @@ static bool within(hs_vec3 a, hs_vec3 b, double d) {
 // Files object i where it is now (grid and bounding box); false when the lists are good but it
 // moved beyond their skin.
 static bool file_one(const hs_world *world, hs_spring_system *sys, int i) {
-	hs_vec3 p = world->bodies[i].pos;
+	hs_vec3 p = world->state.bodies[i].pos;
 	hs_hgrid_file(&sys->grid, i, box_centre(&sys->geom[i], p));
 	sys->box_lo[i] = hs_add(p, sys->geom[i].lo);
 	sys->box_hi[i] = hs_add(p, sys->geom[i].hi);
@@ -39,7 +39,7 @@ static bool file_one(const hs_world *world, hs_spring_system *sys, int i) {
 }
 
 void hs_spring_file_all(hs_world *world, hs_spring_system *sys) {
-	int n = world->object_count;
+	int n = world->model.object_count;
 	if (sys->grid_count != n) {
 		for (int i = 0; i < n; ++i) {
 			hs_vec3 w = hs_sub(sys->geom[i].hi, sys->geom[i].lo);
@@ -68,7 +68,7 @@ void hs_spring_refile(hs_world *world, hs_spring_system *sys, int i) {
 static void query_box(const hs_world *world, const hs_spring_system *sys, int i, double reach, hs_vec3 *lo,
                       hs_vec3 *hi) {
 	const hs_spring_geom *g = &sys->geom[i];
-	hs_vec3 p = world->bodies[i].pos, s = sys->path_pos[i];
+	hs_vec3 p = world->state.bodies[i].pos, s = sys->path_pos[i];
 	double m = hs_spring_margin(g, p);
 	*lo = hs_add(p, hs_sub(g->lo, hs_v3(m, m, m)));
 	*hi = hs_add(p, hs_add(g->hi, hs_v3(m, m, m)));
@@ -82,10 +82,10 @@ static void query_box(const hs_world *world, const hs_spring_system *sys, int i,
 
 // Every object's list from where the objects are now; false (no lists) when they do not fit.
 static bool build_lists(const hs_world *world, hs_spring_system *sys) {
-	int n = world->object_count, used = 0;
+	int n = world->model.object_count, used = 0;
 	double margin = 0.0;
 	for (int i = 0; i < n; ++i) // the largest margin any object may have within a skin of here
-		margin = fmax(margin, hs_spring_margin(&sys->geom[i], world->bodies[i].pos));
+		margin = fmax(margin, hs_spring_margin(&sys->geom[i], world->state.bodies[i].pos));
 	sys->nb_margin = margin;
 	double pad = 2.0 * sys->nb_skin + 2.0 * margin + 1e-6;
 	for (int q = 0; q < n; ++q) {
@@ -94,7 +94,7 @@ static bool build_lists(const hs_world *world, hs_spring_system *sys) {
 		sys->nb_start[q] = used;
 		sys->nb_lo[q] = lo;
 		sys->nb_hi[q] = hi;
-		sys->nb_pos[q] = world->bodies[q].pos;
+		sys->nb_pos[q] = world->state.bodies[q].pos;
 		int count = hs_hgrid_query(&sys->grid, hs_sub(lo, hs_v3(pad, pad, pad)), hs_add(hi, hs_v3(pad, pad, pad)),
 		                           sys->near);
 		if (count > sys->nb_capacity - used)
@@ -141,9 +141,9 @@ static int filter_list(hs_spring_system *sys, const int *list, int n, hs_vec3 lo
 static int near_box_all(const hs_world *world, hs_spring_system *sys, int i, hs_vec3 lo, hs_vec3 hi, const int **out) {
 	*out = sys->near;
 	if (sys->all_pairs) {
-		for (int j = 0; j < world->object_count; ++j)
+		for (int j = 0; j < world->model.object_count; ++j)
 			sys->near[j] = j;
-		return world->object_count;
+		return world->model.object_count;
 	}
 	if (sys->nb_state == HS_NEAR_STALE)
 		sys->nb_state = sys->nb_skin > 0.0 && build_lists(world, sys) ? HS_NEAR_LISTS : HS_NEAR_GRID;

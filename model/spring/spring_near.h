@@ -4,6 +4,7 @@
 #define HS_SPRING_NEAR_H
 
 #include "spring_system.h"
+#include "world_internal.h"
 
 // m added around each bounding box at G = p in the box tests: far above rounding and libccd's
 // touch margins, so it only ever lets through pairs the exact test then rejects.

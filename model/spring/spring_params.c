@@ -81,19 +81,19 @@ bool hs_spring_def_valid(const hs_spring_def *d) {
 	return true;
 }
 
-static double gravity_magnitude(const hs_world *world) {
-	double g = hs_length(world->def.gravity);
+static double gravity_magnitude(hs_vec3 gravity) {
+	double g = hs_length(gravity);
 	return g > 0.0 ? g : HS_STANDARD_GRAVITY;
 }
 
-hs_spring_params hs_spring_params_of(const hs_spring_def *def, const hs_world *world, double mass) {
+hs_spring_params hs_spring_params_of(const hs_spring_def *def, hs_vec3 gravity, double mass) {
 	hs_spring_params sp;
 	sp.mass = mass;
 	double x0 = def->rest_length_ref * hs_pow(mass / def->rest_mass_ref, def->rest_exponent);
 	x0 = x0 < def->rest_length_min ? def->rest_length_min : x0;
 	x0 = x0 > def->rest_length_max ? def->rest_length_max : x0;
 	sp.x0 = x0;
-	sp.k = mass * gravity_magnitude(world) / (HS_HANG_EXTENSION * x0); // §4.2
+	sp.k = mass * gravity_magnitude(gravity) / (HS_HANG_EXTENSION * x0); // §4.2
 	sp.omega = mass > 0.0 ? sqrt(sp.k / mass) : 0.0; // massless (k = 0): no spring to speak of
 	sp.c = 2.0 * sqrt(sp.k * mass); // §4.3: critical damping
 	return sp;

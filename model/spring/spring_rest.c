@@ -48,26 +48,26 @@
 // the resting contact holds it, instead of lagging behind the contact force and opening the
 // contact every frame).
 static hs_vec3 free_force(const hs_world *world, const hs_spring_system *sys, int i, double dt) {
-	const hs_body *b = &world->bodies[i];
-	hs_vec3 f = hs_scale(world->def.gravity, b->mass);
+	const hs_body *b = &world->state.bodies[i];
+	hs_vec3 f = hs_scale(world->model.def.gravity, b->mass);
 	if (i != sys->attached)
 		return f;
-	hs_spring_params sp = hs_spring_params_of(&sys->def, world, b->mass);
+	hs_spring_params sp = hs_spring_params_of(&sys->def, world->model.def.gravity, b->mass);
 	return hs_add(f, hs_spring_force(&sp, sys->axis, b->pos, hs_v3(0.0, 0.0, 0.0), hs_spring_anchor_prev(sys),
 	                                 hs_spring_anchor_velocity(sys, dt)));
 }
 
 // Object i lies on the floor and does not leave it.
 static bool on_floor(const hs_world *world, const hs_spring_system *sys, int i) {
-	const hs_body *b = &world->bodies[i];
-	return b->pos.z <= -sys->geom[i].lo.z + world->def.floor_tolerance && b->vel.z <= 0.0;
+	const hs_body *b = &world->state.bodies[i];
+	return b->pos.z <= -sys->geom[i].lo.z + world->model.def.floor_tolerance && b->vel.z <= 0.0;
 }
 
 // The pair's free relative acceleration along n (gravity and the spring; what the floor holds up
 // does not fall).
 static double free_approach(const hs_world *world, const hs_spring_system *sys, const hs_spring_touch *c, double dt) {
-	hs_vec3 fa = hs_scale(free_force(world, sys, c->a, dt), 1.0 / world->bodies[c->a].mass);
-	hs_vec3 fb = hs_scale(free_force(world, sys, c->b, dt), 1.0 / world->bodies[c->b].mass);
+	hs_vec3 fa = hs_scale(free_force(world, sys, c->a, dt), 1.0 / world->state.bodies[c->a].mass);
+	hs_vec3 fb = hs_scale(free_force(world, sys, c->b, dt), 1.0 / world->state.bodies[c->b].mass);
 	if (fa.z < 0.0 && on_floor(world, sys, c->a))
 		fa.z = 0.0;
 	if (fb.z < 0.0 && on_floor(world, sys, c->b))
@@ -85,7 +85,7 @@ static void keep_meeting_ahead(hs_world *world, hs_spring_system *sys, double dt
 		hs_spring_touch *c = &sys->touch[t];
 		if (c->ahead) {
 			double gap = -c->depth, an = free_approach(world, sys, c, dt);
-			double vn = hs_dot(hs_sub(world->bodies[c->b].vel, world->bodies[c->a].vel), c->n);
+			double vn = hs_dot(hs_sub(world->state.bodies[c->b].vel, world->state.bodies[c->a].vel), c->n);
 			// the least gap over the frame of the free motion gap + vn t + an t² / 2
 			double t_min = an > 0.0 && vn < 0.0 ? fmin(dt, -vn / an) : dt;
 			double least = vn * t_min + 0.5 * an * t_min * t_min < 0.0 ? gap + vn * t_min + 0.5 * an * t_min * t_min : gap;
@@ -105,7 +105,7 @@ static void collect_active(hs_world *world, hs_spring_system *sys) {
 	sys->active_count = 0;
 	for (int t = 0; t < sys->touch_count; ++t)
 		sys->rest_index[sys->touch[t].a] = sys->rest_index[sys->touch[t].b] = 0;
-	for (int i = 0; i < world->object_count; ++i)
+	for (int i = 0; i < world->model.object_count; ++i)
 		if (sys->rest_index[i] == 0) {
 			sys->rest_index[i] = sys->active_count;
 			sys->active[sys->active_count++] = i;
@@ -117,12 +117,12 @@ static void collect_active(hs_world *world, hs_spring_system *sys) {
 // a slow one (a contact that persists) is a resting push: against an object the floor's static
 // friction holds, it stops.
 static void approach_impulses(hs_world *world, hs_spring_system *sys) {
-	double tol = world->def.floor_tolerance;
+	double tol = world->model.def.floor_tolerance;
 	for (int pass = 0; pass < HS_REST_MAX_PASSES; ++pass) {
 		bool any = false;
 		for (int k = 0; k < sys->active_count; ++k) {
 			int i = sys->active[k];
-			hs_body *b = &world->bodies[i];
+			hs_body *b = &world->state.bodies[i];
 			if (on_floor(world, sys, i) && b->vel.z < 0.0) {
 				b->vel.z = 0.0; // the floor absorbs (§4.4 drop)
 				any = true;
@@ -138,7 +138,7 @@ static void approach_impulses(hs_world *world, hs_spring_system *sys) {
 		}
 		for (int t = 0; t < sys->touch_count; ++t) {
 			hs_spring_touch *c = &sys->touch[t];
-			hs_body *a = &world->bodies[c->a], *b = &world->bodies[c->b];
+			hs_body *a = &world->state.bodies[c->a], *b = &world->state.bodies[c->b];
 			double vn = hs_dot(hs_sub(b->vel, a->vel), c->n);
 			if (c->ahead || !(vn < -HS_REST_APPROACH))
 				continue;
@@ -157,7 +157,7 @@ static void approach_impulses(hs_world *world, hs_spring_system *sys) {
 // (both objects' velocities along n made equal, momentum kept, energy lost), so that the
 // contact's force holds it instead of the object falling a whole frame back into the other.
 static bool closes(hs_world *world, hs_spring_system *sys, const hs_spring_touch *c, double dt) {
-	hs_body *a = &world->bodies[c->a], *b = &world->bodies[c->b];
+	hs_body *a = &world->state.bodies[c->a], *b = &world->state.bodies[c->b];
 	double an = free_approach(world, sys, c, dt), vn = hs_dot(hs_sub(b->vel, a->vel), c->n);
 	if (!(an < 0.0 && vn < -0.5 * an * dt))
 		return false;
@@ -175,10 +175,10 @@ static bool closes(hs_world *world, hs_spring_system *sys, const hs_spring_touch
 // What each touch and each active object brings to the solve: sliding, the forces of
 // gravity and the spring with every object held where it is.
 static void prepare(hs_world *world, hs_spring_system *sys, double dt) {
-	double tol = world->def.floor_tolerance;
+	double tol = world->model.def.floor_tolerance;
 	for (int k = 0; k < sys->active_count; ++k) {
 		int i = sys->active[k];
-		const hs_body *b = &world->bodies[i];
+		const hs_body *b = &world->state.bodies[i];
 		hs_spring_rest_body *r = &sys->rest[k];
 		memset(r, 0, sizeof *r);
 		r->force = free_force(world, sys, i, dt);
@@ -193,7 +193,7 @@ static void prepare(hs_world *world, hs_spring_system *sys, double dt) {
 	}
 	for (int t = 0; t < sys->touch_count; ++t) {
 		hs_spring_touch *c = &sys->touch[t];
-		const hs_body *a = &world->bodies[c->a], *b = &world->bodies[c->b];
+		const hs_body *a = &world->state.bodies[c->a], *b = &world->state.bodies[c->b];
 		hs_vec3 v = hs_sub(b->vel, a->vel);
 		double vn = hs_dot(v, c->n);
 		if (c->ahead) { // its force may only close the gap by the frame's end (keep_meeting_ahead)
@@ -213,7 +213,7 @@ static void prepare(hs_world *world, hs_spring_system *sys, double dt) {
 	// floor holds ends at exactly 0): what no longer moves does not slide, and the floor's sliding
 	// friction, which acts against the direction of the sliding, must never divide by zero speed
 	for (int k = 0; k < sys->active_count; ++k) {
-		const hs_body *b = &world->bodies[sys->active[k]];
+		const hs_body *b = &world->state.bodies[sys->active[k]];
 		sys->rest[k].sliding = sys->rest[k].sliding && hs_length(hs_v3(b->vel.x, b->vel.y, 0.0)) > HS_REST_STICK_SPEED;
 	}
 }
@@ -221,25 +221,25 @@ static void prepare(hs_world *world, hs_spring_system *sys, double dt) {
 // Held still: slow, sticking at every contact, and the forces leave (almost) nothing.
 static bool holds(const hs_world *world, const hs_spring_system *sys, int k) {
 	int i = sys->active[k];
-	const hs_body *b = &world->bodies[i];
+	const hs_body *b = &world->state.bodies[i];
 	const hs_spring_rest_body *r = &sys->rest[k];
 	if (hs_length(b->vel) > HS_REST_STICK_SPEED || r->sliding)
 		return false;
 	double left = hs_length(r->acc) * b->mass;
 	double allowed = HS_REST_TOLERANCE * (hs_length(r->force) + r->floor_normal);
 	if (i == sys->attached)
-		allowed += hs_spring_params_of(&sys->def, world, b->mass).k * HS_REST_HOLD_TRAVEL;
+		allowed += hs_spring_params_of(&sys->def, world->model.def.gravity, b->mass).k * HS_REST_HOLD_TRAVEL;
 	return left <= allowed;
 }
 
 void hs_spring_rest(hs_world *world, hs_spring_system *sys) {
-	int n = world->object_count;
-	double dt = world->def.dt;
+	int n = world->model.object_count;
+	double dt = world->model.def.dt;
 	if (n > 0) { // (never negative; the test keeps gcc's size analysis quiet)
 		memset(sys->load, 0, (size_t)n * sizeof *sys->load);
 		memset(sys->held, 0, (size_t)n);
 	}
-	double tol = world->def.floor_tolerance;
+	double tol = world->model.def.floor_tolerance;
 	hs_spring_find_touches(world, sys, tol, fmax(tol, HS_REST_AHEAD * dt));
 	keep_meeting_ahead(world, sys, dt);
 	collect_active(world, sys);
@@ -249,8 +249,8 @@ void hs_spring_rest(hs_world *world, hs_spring_system *sys) {
 	}
 	for (int t = 0; t < sys->touch_count; ++t) {
 		hs_spring_touch *c = &sys->touch[t];
-		c->e = hs_spring_pair_restitution(world, sys, c->a, c->b);
-		c->mass = 1.0 / (1.0 / world->bodies[c->a].mass + 1.0 / world->bodies[c->b].mass);
+		c->e = hs_spring_pair_restitution(&sys->def, &world->state.bodies[c->a], &world->state.bodies[c->b]);
+		c->mass = 1.0 / (1.0 / world->state.bodies[c->a].mass + 1.0 / world->state.bodies[c->b].mass);
 	}
 	approach_impulses(world, sys);
 	prepare(world, sys, dt);

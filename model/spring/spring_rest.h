@@ -5,6 +5,7 @@
 #define HS_SPRING_REST_H
 
 #include "spring_system.h"
+#include "world_internal.h"
 
 // For the frame about to run: the touches (sys->touch), their impulses (touching objects still
 // approaching), the force each object gets from the objects it touches (sys->load) and the

@@ -79,7 +79,7 @@ static double sweep_bodies(hs_world *world, hs_spring_system *sys, double dt, bo
 	double change = 0.0;
 	for (int k = 0; k < sys->active_count; ++k) {
 		hs_spring_rest_body *r = &sys->rest[k];
-		const hs_body *b = &world->bodies[sys->active[k]];
+		const hs_body *b = &world->state.bodies[sys->active[k]];
 		double m = b->mass;
 		if (r->floor && cone && !r->sliding) {
 			change = fmax(change, floor_in_cone(r, m, d->friction_static));
@@ -140,7 +140,7 @@ static double sweep_touches(hs_world *world, hs_spring_system *sys, double dt, b
 		if (c->open)
 			continue;
 		hs_spring_rest_body *ra = &sys->rest[sys->rest_index[c->a]], *rb = &sys->rest[sys->rest_index[c->b]];
-		double wa = 1.0 / world->bodies[c->a].mass, wb = 1.0 / world->bodies[c->b].mass;
+		double wa = 1.0 / world->state.bodies[c->a].mass, wb = 1.0 / world->state.bodies[c->b].mass;
 		if (cone && !(hs_length_sq(c->slide) > 0.0)) {
 			change = fmax(change, touch_in_cone(c, ra, rb, wa, wb, d->friction_static));
 			continue;
@@ -155,7 +155,7 @@ static double sweep_touches(hs_world *world, hs_spring_system *sys, double dt, b
 		if (hs_length_sq(c->slide) > 0.0) {
 			// sliding: against it, no more than stops it this frame with every other force acting
 			// (one contact's own stop let three boxes sliding on a fourth throw it back each frame)
-			hs_vec3 v = hs_sub(world->bodies[c->b].vel, world->bodies[c->a].vel);
+			hs_vec3 v = hs_sub(world->state.bodies[c->b].vel, world->state.bodies[c->a].vel);
 			double held = -hs_dot(c->friction, c->slide);
 			double stop = held + c->mass * (hs_dot(hs_sub(rb->acc, ra->acc), c->slide) + hs_dot(v, c->slide) / dt);
 			f = hs_scale(c->slide, -fmin(d->friction_sliding * n, fmax(0.0, stop)));
@@ -192,7 +192,7 @@ static bool cone_lifts(const hs_world *world, const hs_spring_system *sys, doubl
 	for (int k = 0; k < sys->active_count; ++k) {
 		const hs_spring_rest_body *r = &sys->rest[k];
 		if (r->floor && !r->sliding && r->floor_normal > 0.0 && hs_length(r->floor_friction) >= mu * r->floor_normal &&
-		    r->acc.z * world->bodies[sys->active[k]].mass > allowed)
+		    r->acc.z * world->state.bodies[sys->active[k]].mass > allowed)
 			return true;
 	}
 	for (int t = 0; t < sys->touch_count; ++t) {
@@ -210,7 +210,7 @@ static bool cone_lifts(const hs_world *world, const hs_spring_system *sys, doubl
 static void restart(hs_world *world, hs_spring_system *sys) {
 	for (int k = 0; k < sys->active_count; ++k) {
 		hs_spring_rest_body *r = &sys->rest[k];
-		r->acc = hs_scale(r->force, 1.0 / world->bodies[sys->active[k]].mass);
+		r->acc = hs_scale(r->force, 1.0 / world->state.bodies[sys->active[k]].mass);
 		r->floor_normal = 0.0;
 		r->floor_friction = hs_v3(0.0, 0.0, 0.0);
 		memset(r->wall, 0, sizeof r->wall);
@@ -242,8 +242,8 @@ static void warm_start(hs_world *world, hs_spring_system *sys) {
 		c->friction = f;
 		hs_vec3 on_b = hs_mul_add(f, n, c->n);
 		hs_spring_rest_body *ra = &sys->rest[sys->rest_index[c->a]], *rb = &sys->rest[sys->rest_index[c->b]];
-		ra->acc = hs_mul_add(ra->acc, -1.0 / world->bodies[c->a].mass, on_b);
-		rb->acc = hs_mul_add(rb->acc, 1.0 / world->bodies[c->b].mass, on_b);
+		ra->acc = hs_mul_add(ra->acc, -1.0 / world->state.bodies[c->a].mass, on_b);
+		rb->acc = hs_mul_add(rb->acc, 1.0 / world->state.bodies[c->b].mass, on_b);
 	}
 }
 

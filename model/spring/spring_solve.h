@@ -3,6 +3,7 @@
 #define HS_SPRING_SOLVE_H
 
 #include "spring_system.h"
+#include "world_internal.h"
 
 // The forces of the touches sys->touch and of the floor and walls on the objects sys->active
 // (sys->rest), as spring_rest.c's prepare left them set up (forces zero, each object's

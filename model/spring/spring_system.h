@@ -5,6 +5,7 @@
 #ifndef HS_SPRING_SYSTEM_H
 #define HS_SPRING_SYSTEM_H
 
+#include "hgrid.h"
 #include "spring_geom.h"
 #include "spring_params.h"
 #include "spring_technique_state.h"

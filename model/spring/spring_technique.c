@@ -21,10 +21,11 @@
 #include <string.h>
 
 #include "spring_technique.h"
+#include "world_internal.h"
 #include "spring_contact.h"
 #include "spring_system.h"
 
-static bool massless(const hs_world *world, int i) { return world->bodies[i].mass == 0.0; }
+static bool massless(const hs_world *world, int i) { return world->state.bodies[i].mass == 0.0; }
 
 bool hs_spring_technique_moves(const hs_world *world, const hs_spring_system *sys, int i) {
 	return massless(world, i) || (i == sys->attached && sys->tech.hold != HS_TECHNIQUE_SPRING);
@@ -49,10 +50,10 @@ static bool ray_plane(const hs_spring_system *sys, double h, hs_vec3 *p) {
 static bool ray_surface(const hs_world *world, const hs_spring_system *sys, int i, hs_vec3 *p) {
 	hs_vec3 s = sys->stylus, d = ray_dir(sys);
 	double best = d.z < 0.0 ? -s.z / d.z : INFINITY; // the floor
-	for (int j = 0; j < world->object_count; ++j) {
+	for (int j = 0; j < world->model.object_count; ++j) {
 		if (j == i)
 			continue;
-		double t = hs_spring_geom_ray(&sys->geom[j], world->bodies[j].pos, s, d, sys->def.select_range);
+		double t = hs_spring_geom_ray(&sys->geom[j], world->state.bodies[j].pos, s, d, sys->def.select_range);
 		if (t >= 0.0 && t < best)
 			best = t;
 	}
@@ -66,7 +67,7 @@ static bool ray_surface(const hs_world *world, const hs_spring_system *sys, int 
 static bool target_pose(const hs_world *world, const hs_spring_system *sys, int i, hs_vec3 *p, hs_quat *q) {
 	const hs_spring_technique *t = &sys->tech;
 	hs_quat turn = hs_quat_mul(sys->rot, hs_quat_conj(t->grab_rot)); // ΔR = R R0⁻¹
-	*q = world->bodies[i].rot;
+	*q = world->state.bodies[i].rot;
 	switch (t->hold) {
 	case HS_TECHNIQUE_SLAVE:
 		*p = hs_add(t->grab_pos, hs_sub(sys->stylus, t->grab_stylus));
@@ -92,7 +93,7 @@ static bool target_pose(const hs_world *world, const hs_spring_system *sys, int 
 }
 
 void hs_spring_technique_advance(hs_world *world, hs_spring_system *sys, int i, double t) {
-	hs_body *body = &world->bodies[i];
+	hs_body *body = &world->state.bodies[i];
 	hs_vec3 p = body->pos;
 	hs_quat q = body->rot;
 	if (i == sys->attached && !target_pose(world, sys, i, &p, &q)) {
@@ -101,7 +102,7 @@ void hs_spring_technique_advance(hs_world *world, hs_spring_system *sys, int i, 
 	}
 	if (memcmp(&q, &body->rot, sizeof q) != 0) { // turned: its reach changes with it
 		body->rot = q;
-		sys->geom[i] = hs_spring_geom_of(world, body);
+		sys->geom[i] = hs_spring_geom_of(&world->model.shapes[body->shape], body);
 		sys->grid_count = -1;
 		sys->nb_state = HS_NEAR_STALE;
 	}
@@ -111,7 +112,7 @@ void hs_spring_technique_advance(hs_world *world, hs_spring_system *sys, int i, 
 	hs_spring_wall_project(&sys->def.walls, g, &p, NULL);
 	body->vel = t > 0.0 && !massless(world, i) ? hs_scale(hs_sub(p, body->pos), 1.0 / t) : hs_v3(0.0, 0.0, 0.0);
 	body->pos = p;
-	sys->on_floor[i] = p.z + g->lo.z <= world->def.floor_tolerance;
+	sys->on_floor[i] = p.z + g->lo.z <= world->model.def.floor_tolerance;
 	sys->sliding[i] = 0;
 	world->counters.object_steps++;
 }
@@ -120,7 +121,7 @@ void hs_spring_technique_prepare(const hs_world *world, hs_spring_system *sys) {
 	sys->tech.filter = false;
 	if (!sys->def.techniques)
 		return;
-	for (int i = 0; i < world->object_count && !sys->tech.filter; ++i)
+	for (int i = 0; i < world->model.object_count && !sys->tech.filter; ++i)
 		sys->tech.filter = hs_spring_technique_moves(world, sys, i);
 }
 

@@ -29,16 +29,16 @@ static bool technique_valid(const hs_technique_def *d) {
 }
 
 hs_status hs_world_spring_set_technique(hs_world *world, const hs_technique_def *def) {
-	if (!world || !world->spring || !world->spring->def.techniques || !technique_valid(def))
+	if (!world || !world->state.spring || !world->state.spring->def.techniques || !technique_valid(def))
 		return HS_ERR_INVALID_ARGUMENT;
-	world->spring->tech.set = *def;
-	world->spring->tech.set.magnet = def->magnet; // (a bool: 0 or 1 whatever the caller's byte)
+	world->state.spring->tech.set = *def;
+	world->state.spring->tech.set.magnet = def->magnet; // (a bool: 0 or 1 whatever the caller's byte)
 	return HS_OK;
 }
 
 hs_status hs_world_spring_technique(const hs_world *world, hs_technique_def *out) {
-	if (!world || !world->spring || !out)
+	if (!world || !world->state.spring || !out)
 		return HS_ERR_INVALID_ARGUMENT;
-	*out = world->spring->tech.set;
+	*out = world->state.spring->tech.set;
 	return HS_OK;
 }

@@ -114,7 +114,7 @@ static bool obox_obox(const hs_spring_geom *ga, hs_vec3 pa, const hs_spring_geom
 // Any pair with a shape that is neither a sphere nor a box: libccd on the convex parts.
 static bool convex_pair(const hs_world *world, const hs_spring_geom *ga, hs_vec3 pa, const hs_spring_geom *gb,
                         hs_vec3 pb, double gap, hs_vec3 *n, double *depth) {
-	return hs_shapes_within(&world->shapes[ga->shape], pa, ga->rot, &world->shapes[gb->shape], pb, gb->rot, gap,
+	return hs_shapes_within(&world->model.shapes[ga->shape], pa, ga->rot, &world->model.shapes[gb->shape], pb, gb->rot, gap,
 	                        depth, n);
 }
 
@@ -162,13 +162,13 @@ void hs_spring_find_touches(hs_world *world, hs_spring_system *sys, double gap, 
 	hs_spring_file_all(world, sys);
 	sys->touch_count = 0;
 	const hs_spring_geom *geom = sys->geom;
-	for (int i = 0; i < world->object_count; ++i) {
-		hs_vec3 pa = world->bodies[i].pos;
+	for (int i = 0; i < world->model.object_count; ++i) {
+		hs_vec3 pa = world->state.bodies[i].pos;
 		const int *near;
 		int count = hs_spring_near_grown(world, sys, i, reach, &near);
 		for (int k = 0; k < count; ++k) {
 			int j = near[k];
-			hs_vec3 pb = world->bodies[j].pos, n;
+			hs_vec3 pb = world->state.bodies[j].pos, n;
 			double depth;
 			if (j <= i || !hs_spring_boxes_meet(&geom[i], pa, &geom[j], pb, reach + hs_spring_margin(&geom[i], pa) + hs_spring_margin(&geom[j], pb)) ||
 			    !hs_spring_contact_within(world, &geom[i], pa, &geom[j], pb, reach, &n, &depth))

@@ -3,6 +3,7 @@
 #define HS_SPRING_TOUCH_H
 
 #include "spring_system.h"
+#include "world_internal.h"
 
 // Contact of object a (geometry ga, G at pa) with object b: the unit normal from a to b and the
 // depth (m) of the true shapes' overlap; false when they do not meet.

@@ -8,20 +8,20 @@
 #include "spring_params.h"
 #include "spring_technique.h"
 
-bool hs_world_springs_enabled(const hs_world *world) { return world && world->spring; }
+bool hs_world_springs_enabled(const hs_world *world) { return world && world->state.spring; }
 
 hs_status hs_world_spring_def(const hs_world *world, hs_spring_def *out) {
-	if (!world || !world->spring || !out)
+	if (!world || !world->state.spring || !out)
 		return HS_ERR_INVALID_ARGUMENT;
-	*out = world->spring->def;
+	*out = world->state.spring->def;
 	return HS_OK;
 }
 
 hs_status hs_world_set_stylus(hs_world *world, hs_vec3 position, hs_quat orientation, bool button) {
-	if (!world || !world->spring || !hs_vec3_is_finite(position) || !hs_quat_is_finite(orientation) ||
+	if (!world || !world->state.spring || !hs_vec3_is_finite(position) || !hs_quat_is_finite(orientation) ||
 	    fabs(sqrt(hs_quat_dot(orientation, orientation)) - 1.0) > 1e-6)
 		return HS_ERR_INVALID_ARGUMENT;
-	hs_spring_system *sys = world->spring;
+	hs_spring_system *sys = world->state.spring;
 	sys->stylus = position;
 	sys->rot = hs_quat_normalize(orientation);
 	sys->button = button;
@@ -36,9 +36,9 @@ hs_status hs_world_set_stylus(hs_world *world, hs_vec3 position, hs_quat orienta
 
 hs_status hs_world_spring_attach(hs_world *world, hs_object_id id) {
 	int i = hs_object_index(world, id);
-	if (i < 0 || !world->spring || !world->spring->has_stylus)
+	if (i < 0 || !world->state.spring || !world->state.spring->has_stylus)
 		return HS_ERR_INVALID_ARGUMENT;
-	hs_spring_system *sys = world->spring;
+	hs_spring_system *sys = world->state.spring;
 	if (sys->attached >= 0 && sys->attached != i)
 		hs_spring_detach(world, sys, false, hs_world_time(world));
 	hs_spring_attach(world, sys, i, HS_ATTACH_API);
@@ -47,19 +47,19 @@ hs_status hs_world_spring_attach(hs_world *world, hs_object_id id) {
 }
 
 hs_status hs_world_spring_detach(hs_world *world) {
-	if (!world || !world->spring)
+	if (!world || !world->state.spring)
 		return HS_ERR_INVALID_ARGUMENT;
-	if (world->spring->attached >= 0)
-		hs_spring_detach(world, world->spring, false, hs_world_time(world));
+	if (world->state.spring->attached >= 0)
+		hs_spring_detach(world, world->state.spring, false, hs_world_time(world));
 	hs_digest_all_stale(world);
 	return HS_OK;
 }
 
 
 hs_status hs_world_spring_state(const hs_world *world, hs_spring_state *out) {
-	if (!world || !world->spring || !out)
+	if (!world || !world->state.spring || !out)
 		return HS_ERR_INVALID_ARGUMENT;
-	const hs_spring_system *sys = world->spring;
+	const hs_spring_system *sys = world->state.spring;
 	memset(out, 0, sizeof *out);
 	out->attached = hs_object_handle(world, sys->attached);
 	out->attach_kind = sys->attach_kind;
@@ -72,24 +72,24 @@ hs_status hs_world_spring_state(const hs_world *world, hs_spring_state *out) {
 	if (sys->attached >= 0 && sys->tech.hold != HS_TECHNIQUE_SPRING) {
 		out->anchor = sys->stylus; // no spring: nothing stretches
 	} else if (sys->attached >= 0) {
-		const hs_body *body = &world->bodies[sys->attached];
-		hs_spring_params sp = hs_spring_params_of(&sys->def, world, body->mass);
+		const hs_body *body = &world->state.bodies[sys->attached];
+		hs_spring_params sp = hs_spring_params_of(&sys->def, world->model.def.gravity, body->mass);
 		out->anchor = hs_spring_anchor(sys);
 		out->length = hs_distance(body->pos, out->anchor);
 		out->extension = out->length - sp.x0;
 		out->force = hs_spring_force(&sp, sys->axis, body->pos, body->vel, out->anchor,
-		                             hs_spring_anchor_velocity(sys, world->def.dt));
+		                             hs_spring_anchor_velocity(sys, world->model.def.dt));
 	}
 	return HS_OK;
 }
 
 hs_status hs_world_spring_object(const hs_world *world, hs_object_id id, hs_spring_object *out) {
 	int i = hs_object_index(world, id);
-	if (i < 0 || !world->spring || !out)
+	if (i < 0 || !world->state.spring || !out)
 		return HS_ERR_INVALID_ARGUMENT;
-	const hs_spring_system *sys = world->spring;
-	const hs_body *body = &world->bodies[i];
-	hs_spring_params sp = hs_spring_params_of(&sys->def, world, body->mass);
+	const hs_spring_system *sys = world->state.spring;
+	const hs_body *body = &world->state.bodies[i];
+	hs_spring_params sp = hs_spring_params_of(&sys->def, world->model.def.gravity, body->mass);
 	memset(out, 0, sizeof *out);
 	out->mass = sp.mass;
 	out->rest_length = sp.x0;
@@ -104,9 +104,9 @@ hs_status hs_world_spring_object(const hs_world *world, hs_object_id id, hs_spri
 }
 
 hs_status hs_world_tracker_state(const hs_world *world, hs_tracker_state *out) {
-	if (!world || !world->spring || !out)
+	if (!world || !world->state.spring || !out)
 		return HS_ERR_INVALID_ARGUMENT;
-	const hs_tracker *tr = &world->spring->tracker;
+	const hs_tracker *tr = &world->state.spring->tracker;
 	memset(out, 0, sizeof *out);
 	out->sample_count = tr->count;
 	if (!hs_tracker_sample_at(tr, 0, &out->newest))
@@ -124,15 +124,15 @@ hs_status hs_world_tracker_state(const hs_world *world, hs_tracker_state *out) {
 }
 
 hs_status hs_world_tracker_sample(const hs_world *world, int age, hs_tracker_sample *out) {
-	if (!world || !world->spring || !out || !hs_tracker_sample_at(&world->spring->tracker, age, out))
+	if (!world || !world->state.spring || !out || !hs_tracker_sample_at(&world->state.spring->tracker, age, out))
 		return HS_ERR_INVALID_ARGUMENT;
 	return HS_OK;
 }
 
 hs_status hs_world_spring_last_release(const hs_world *world, hs_release *out) {
-	if (!world || !world->spring || !out)
+	if (!world || !world->state.spring || !out)
 		return HS_ERR_INVALID_ARGUMENT;
-	*out = world->spring->release;
+	*out = world->state.spring->release;
 	out->object = hs_object_handle(world, (int)out->object.index1 - 1); // the state keeps the index only
 	return HS_OK;
 }

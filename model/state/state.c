@@ -65,7 +65,7 @@ static uint64_t hand_def_checksum(uint64_t h, const hs_hand_def *d) {
 // skip_work (it changes no result, broadphase.c), so a state moves between such worlds.
 // max_hands sizes the contact list: the header carries the contact capacity.
 static uint64_t definition_checksum(const hs_world *w) {
-	const hs_world_def *d = &w->def;
+	const hs_world_def *d = &w->model.def;
 	uint64_t h = hs_state_mix_f64(HS_HASH_SEED, d->dt);
 	h = mix_vec3(h, d->gravity);
 	h = hs_state_mix_f64(h, d->floor_tolerance);
@@ -92,16 +92,16 @@ static uint64_t definition_checksum(const hs_world *w) {
 		                 (d->paper_tipping ? 8u : 0u) | (d->paper_carry ? 16u : 0u);
 		h = hs_state_mix(h, 0x6c6574746572u ^ rules); // "letter"
 	}
-	for (int i = 0; i < w->shape_count; ++i)
-		h = shape_checksum(h, &w->shapes[i]);
-	for (int i = 0; i < w->object_count; ++i) {
-		h = hs_state_mix(h, (uint64_t)w->bodies[i].shape);
-		h = hs_state_mix_f64(h, w->bodies[i].mass);
-		if (w->bodies[i].restitution >= 0.0) // set: a definition of its own (unset keeps older checksums)
-			h = hs_state_mix_f64(h, w->bodies[i].restitution);
+	for (int i = 0; i < w->model.shape_count; ++i)
+		h = shape_checksum(h, &w->model.shapes[i]);
+	for (int i = 0; i < w->model.object_count; ++i) {
+		h = hs_state_mix(h, (uint64_t)w->state.bodies[i].shape);
+		h = hs_state_mix_f64(h, w->state.bodies[i].mass);
+		if (w->state.bodies[i].restitution >= 0.0) // set: a definition of its own (unset keeps older checksums)
+			h = hs_state_mix_f64(h, w->state.bodies[i].restitution);
 	}
-	for (int i = 0; i < w->hand_count; ++i)
-		h = hand_def_checksum(h, &w->hands[i].def);
+	for (int i = 0; i < w->model.hand_count; ++i)
+		h = hand_def_checksum(h, &w->state.hands[i].def);
 	return h;
 }
 
@@ -109,8 +109,8 @@ static uint64_t definition_checksum(const hs_world *w) {
 static int header_of(const hs_world *w, uint64_t out[HS_STATE_HEADER_WORDS], const char *why[HS_STATE_HEADER_WORDS]) {
 	const uint64_t words[HS_STATE_HEADER_WORDS] = {
 	    HS_STATE_MAGIC,          HS_STATE_FORMAT,        library_word(),
-	    w->spring ? 1u : 0u,     (uint64_t)w->object_count, (uint64_t)w->hand_count,
-	    (uint64_t)w->shape_count, (uint64_t)w->contact_capacity, definition_checksum(w)};
+	    w->state.spring ? 1u : 0u,     (uint64_t)w->model.object_count, (uint64_t)w->model.hand_count,
+	    (uint64_t)w->model.shape_count, (uint64_t)w->out.contact_capacity, definition_checksum(w)};
 	static const char *const reasons[HS_STATE_HEADER_WORDS] = {
 	    "not a handspring state (wrong magic)",
 	    "another state format version",
@@ -193,15 +193,15 @@ static const hs_field hand_fields[] = {
 
 // The world's own words, before its objects, hands and spring system.
 static const hs_field world_fields[] = {
-    {HS_ONE(hs_world, frame, LONG), .lo = 0, .hi = LONG_MAX},
+    {HS_ONE(hs_world, state.frame, LONG), .lo = 0, .hi = LONG_MAX},
     {HS_ONE(hs_world, counters.numeric_faults, LONG), .lo = 0, .hi = LONG_MAX},
-    {HS_ONE(hs_world, first_fault_frame, LONG), .lo = -1, .hi = LONG_MAX},
-    {HS_ONE(hs_world, first_fault_object, INT), .lo = -1, .hi = -1, HS_HI_PLUS(hs_world, object_count)},
+    {HS_ONE(hs_world, state.first_fault_frame, LONG), .lo = -1, .hi = LONG_MAX},
+    {HS_ONE(hs_world, state.first_fault_object, INT), .lo = -1, .hi = -1, HS_HI_PLUS(hs_world, model.object_count)},
 };
 
 // A body's walk, in any mode: inlined where the mode is a constant (the digests, every frame).
 static HS_FORCE_INLINE void body_walk(hs_state_io *io, const hs_world *w, hs_body *b, bool inline_walk) {
-	const int64_t ctx[BODY_CONTEXT] = {[BODY_VERTICES] = w->shapes[b->shape].vertex_count, [BODY_HANDS] = w->hand_count};
+	const int64_t ctx[BODY_CONTEXT] = {[BODY_VERTICES] = w->model.shapes[b->shape].vertex_count, [BODY_HANDS] = w->model.hand_count};
 	if (inline_walk)
 		hs_fields_walk(io, body_fields, HS_FIELDS_COUNT(body_fields), b, ctx);
 	else
@@ -245,7 +245,7 @@ static uint64_t body_digest(const hs_world *w, int i) {
 	hs_state_io io = {.mode = HS_STATE_HASH, .lane = HS_HASH_LANES};
 	uint64_t index = (uint64_t)i;
 	hs_state_u64(&io, &index);
-	body_walk(&io, w, &w->bodies[i], true); // HASH mode only reads the fields
+	body_walk(&io, w, &w->state.bodies[i], true); // HASH mode only reads the fields
 	return hs_state_hash_of(&io);
 }
 
@@ -254,16 +254,16 @@ static uint64_t body_digest(const hs_world *w, int i) {
 // change the stale list missed fails the first test that hashes after it.
 static void check_digests(const hs_world *w) {
 	uint64_t sum = 0;
-	for (int i = 0; i < w->object_count; ++i) {
+	for (int i = 0; i < w->model.object_count; ++i) {
 		uint64_t d = body_digest(w, i);
-		if (d != w->digest[i]) {
-			fprintf(stderr, "handspring: object %d changed at frame %ld but was not marked stale\n", i, w->frame);
+		if (d != w->cache.digest[i]) {
+			fprintf(stderr, "handspring: object %d changed at frame %ld but was not marked stale\n", i, w->state.frame);
 			abort();
 		}
 		sum += d;
 	}
-	if (sum != w->digest_sum) {
-		fprintf(stderr, "handspring: digest sum wrong at frame %ld\n", w->frame);
+	if (sum != w->cache.digest_sum) {
+		fprintf(stderr, "handspring: digest sum wrong at frame %ld\n", w->state.frame);
 		abort();
 	}
 }
@@ -272,34 +272,34 @@ static void check_digests(const hs_world *w) {
 // The sum of every object's digest, after digesting again those that may have changed. The
 // digests are a cache of the hash (not state): refreshing them changes no result.
 static uint64_t objects_digest(hs_world *w) {
-	if (w->all_stale) {
-		w->digest_sum = 0;
-		for (int i = 0; i < w->object_count; ++i) {
-			w->digest[i] = body_digest(w, i);
-			w->digest_sum += w->digest[i];
+	if (w->cache.all_stale) {
+		w->cache.digest_sum = 0;
+		for (int i = 0; i < w->model.object_count; ++i) {
+			w->cache.digest[i] = body_digest(w, i);
+			w->cache.digest_sum += w->cache.digest[i];
 		}
-		memset(w->stale_flag, 0, (size_t)w->object_count);
-		w->stale_count = 0;
-		w->all_stale = false;
+		memset(w->cache.stale_flag, 0, (size_t)w->model.object_count);
+		w->cache.stale_count = 0;
+		w->cache.all_stale = false;
 	}
-	for (int k = 0; k < w->stale_count; ++k) {
-		int i = w->stale[k];
+	for (int k = 0; k < w->cache.stale_count; ++k) {
+		int i = w->cache.stale[k];
 		uint64_t d = body_digest(w, i);
-		w->digest_sum += d - w->digest[i]; // unsigned: wraps, as the sum does
-		w->digest[i] = d;
-		w->stale_flag[i] = 0;
+		w->cache.digest_sum += d - w->cache.digest[i]; // unsigned: wraps, as the sum does
+		w->cache.digest[i] = d;
+		w->cache.stale_flag[i] = 0;
 	}
-	w->stale_count = 0;
+	w->cache.stale_count = 0;
 #if defined(HS_HASH_SELFCHECK)
 	check_digests(w);
 #endif
-	return w->digest_sum;
+	return w->cache.digest_sum;
 }
 
 // The whole state after the header: the single list of what a step reads from the last one. The
 // hash takes the objects as the sum of their digests (above); the other modes walk them in order.
 static HS_FORCE_INLINE void world_io(hs_state_io *io, hs_world *w) {
-	io->objects = w->object_count;
+	io->objects = w->model.object_count;
 	if (io->mode == HS_STATE_HASH)
 		hs_fields_walk(io, world_fields, HS_FIELDS_COUNT(world_fields), w, NULL);
 	else
@@ -308,16 +308,16 @@ static HS_FORCE_INLINE void world_io(hs_state_io *io, hs_world *w) {
 		uint64_t objects = objects_digest(w);
 		hs_state_u64(io, &objects);
 	} else {
-		for (int i = 0; i < w->object_count; ++i)
-			body_walk(io, w, &w->bodies[i], false);
+		for (int i = 0; i < w->model.object_count; ++i)
+			body_walk(io, w, &w->state.bodies[i], false);
 	}
-	for (int h = 0; h < w->hand_count; ++h)
+	for (int h = 0; h < w->model.hand_count; ++h)
 		if (io->mode == HS_STATE_HASH)
-			hand_hash(io, &w->hands[h]);
+			hand_hash(io, &w->state.hands[h]);
 		else
-			hand_walk(io, &w->hands[h]);
-	if (w->spring)
-		hs_spring_state_io(w->spring, io);
+			hand_walk(io, &w->state.hands[h]);
+	if (w->state.spring)
+		hs_spring_state_io(w->state.spring, io);
 }
 
 static size_t state_words(const hs_world *w) {
@@ -356,7 +356,7 @@ __attribute__((format(printf, 2, 3)))
 static hs_status refuse(hs_world *w, const char *format, ...) {
 	va_list args;
 	va_start(args, format);
-	vsnprintf(w->state_error, sizeof w->state_error, format, args);
+	vsnprintf(w->out.state_error, sizeof w->out.state_error, format, args);
 	va_end(args);
 	return HS_ERR_STATE_MISMATCH;
 }
@@ -384,7 +384,7 @@ static hs_status check_header(hs_world *w, const void *buffer, size_t size) {
 hs_status hs_world_load_state(hs_world *world, const void *buffer, size_t size) {
 	if (!world || !buffer)
 		return HS_ERR_INVALID_ARGUMENT;
-	world->state_error[0] = '\0';
+	world->out.state_error[0] = '\0';
 	hs_status status = check_header(world, buffer, size);
 	if (status != HS_OK)
 		return status;
@@ -399,11 +399,11 @@ hs_status hs_world_load_state(hs_world *world, const void *buffer, size_t size) 
 	// second pass: the same walk, now writing; then the caches follow the state
 	io = (hs_state_io){.mode = HS_STATE_LOAD, .in = buffer, .limit = words, .words = HS_STATE_HEADER_WORDS};
 	world_io(&io, world);
-	for (int h = 0; h < world->hand_count; ++h)
-		hs_hand_refresh(&world->hands[h]);
+	for (int h = 0; h < world->model.hand_count; ++h)
+		hs_hand_refresh(&world->state.hands[h]);
 	hs_broadphase_reset(world);
-	world->contact_count = 0; // the last step's contacts are output, not state
+	world->out.contact_count = 0; // the last step's contacts are output, not state
 	return HS_OK;
 }
 
-const char *hs_world_state_error(const hs_world *world) { return world ? world->state_error : "no world"; }
+const char *hs_world_state_error(const hs_world *world) { return world ? world->out.state_error : "no world"; }

@@ -28,10 +28,10 @@ static bool in_list(const int *list, int n, int i) {
 }
 
 // Paper mode, an awake object that interferes with others: if nothing holds it up, it falls with
-// what rests on it (fall_group.c), whose indices go to world->queue from *fallen (support mode's
+// what rests on it (fall_group.c), whose indices go to world->scratch.queue from *fallen (support mode's
 // list there is never used in paper mode).
 static bool paper_group_falls(hs_world *world, int i, int *fallen) {
-	int n = hs_fall_group(world, i, world->queue + *fallen, world->object_count - *fallen);
+	int n = hs_fall_group(world, i, world->scratch.queue + *fallen, world->model.object_count - *fallen);
 	*fallen += n;
 	return n > 0;
 }
@@ -40,7 +40,7 @@ static bool paper_group_falls(hs_world *world, int i, int *fallen) {
 // inertia, but rectified out of the objects under it as out of the floor, Fig. 11), else eq. 3 and
 // the floor (§4.2), the fall swept over the objects under it, and in support mode its supports.
 static void step_object(hs_world *world, int i, bool interferes) {
-	hs_body *body = &world->bodies[i];
+	hs_body *body = &world->state.bodies[i];
 	hs_vec3 from = body->pos;
 	if (interferes) {
 		hs_stack_rectify(world, i);
@@ -56,55 +56,55 @@ static void step_object(hs_world *world, int i, bool interferes) {
 	if (hs_stack_sweep(world, i, from)) {
 		hs_motion_keep_above_floor(world, body); // its floor contacts where it landed
 		// Gm of eq. 4-5 as on the floor (motion.c): the rectified motion and this frame's gravity
-		double dt = world->def.dt;
-		body->prev = hs_mul_add(from, -dt * dt, world->def.gravity);
-		if (world->def.stacking == HS_STACKING_PAPER) { // §4.1: stops at the interference, no rebound
+		double dt = world->model.def.dt;
+		body->prev = hs_mul_add(from, -dt * dt, world->model.def.gravity);
+		if (world->model.def.stacking == HS_STACKING_PAPER) { // §4.1: stops at the interference, no rebound
 			body->prev = body->pos;
 			body->asleep = 1;
 		}
 	}
-	if (world->def.stacking == HS_STACKING_SUPPORT && !body->asleep) {
+	if (world->model.def.stacking == HS_STACKING_SUPPORT && !body->asleep) {
 		hs_support_step(world, i);
 		hs_stack_rectify(world, i); // a turn about a support's edge stops at the floor only (eq. 7)
 	}
 }
 
 // Experiment 3 (the broad phase): objects added, or a state loaded, since the grid was built are
-// filed again. In: the bodies. Out: world->grid.
+// filed again. In: the bodies. Out: world->cache.grid.
 static HS_FORCE_INLINE void file_objects(hs_world *world) {
-	if (world->grid_dirty || !world->grid_built) {
+	if (world->cache.grid_dirty || !world->cache.grid_built) {
 		hs_grid_build(world);
-		world->grid_dirty = false;
+		world->cache.grid_dirty = false;
 	}
 }
 
 // docs/model.md §3 "Tracking loss": hands lost past tracking_hold_s let their grasps go. In: the
 // hands' tracked flags. Out: their lost-frame counts, grasps and placements.
 static HS_FORCE_INLINE void track_hands(hs_world *world) {
-	if (world->hand_count > 0) // a scene without hands never runs the hand subsystem
+	if (world->model.hand_count > 0) // a scene without hands never runs the hand subsystem
 		hs_tracking_update(world);
 }
 
 // §3.2 (Fig. 2-3, eq. 1-2): the hands' contacts, grasps and pushes move what they touch, and
 // (§4.3) what interferes with it. In: hands, bodies. Out: bodies moved, held or carried, contacts.
 static HS_FORCE_INLINE void hands_move_objects(hs_world *world) {
-	if (world->hand_count > 0)
+	if (world->model.hand_count > 0)
 		hs_manipulate(world);
 }
 
 // §4.2-§4.3 (docs/model.md §5-§6): every awake object the hands leave free, through its own frame
-// (step_object). In: the awake list. Out: bodies; support mode's moved objects in world->queue and
+// (step_object). In: the awake list. Out: bodies; support mode's moved objects in world->scratch.queue and
 // moved_from (the count returned); paper mode's fallen groups in world->queue (*fallen).
 static HS_FORCE_INLINE int move_free_objects(hs_world *world, int *fallen) {
-	bool skip = world->def.skip_work;
-	int visits = skip ? world->awake_count : world->object_count;
+	bool skip = world->model.skip_work;
+	int visits = skip ? world->cache.awake_count : world->model.object_count;
 	if (skip) // the sleeping objects cost nothing (the awake list holds the others, in index order)
-		world->counters.sleeping_skips += world->object_count - world->awake_count;
+		world->counters.sleeping_skips += world->model.object_count - world->cache.awake_count;
 	int moved = 0; // support mode: objects that moved, to wake what rested on them (after the loop)
 	for (int k = 0; k < visits; ++k) {
-		int i = skip ? world->awake[k] : k;
-		hs_body *body = &world->bodies[i];
-		if (body->held || body->carried || in_list(world->queue, *fallen, i))
+		int i = skip ? world->cache.awake[k] : k;
+		hs_body *body = &world->state.bodies[i];
+		if (body->held || body->carried || in_list(world->scratch.queue, *fallen, i))
 			continue;
 		// asleep: stays as it is until woken — on the floor, on a support (support mode), where it
 		// stopped at an interference (paper mode, §4.3) — with skip_work off too (the same bits:
@@ -112,7 +112,7 @@ static HS_FORCE_INLINE int move_free_objects(hs_world *world, int *fallen) {
 		// awake list below
 		if (body->asleep)
 			continue;
-		bool interferes = world->def.stacking == HS_STACKING_PAPER && hs_object_interferes(world, i);
+		bool interferes = world->model.def.stacking == HS_STACKING_PAPER && hs_object_interferes(world, i);
 		if (interferes && paper_group_falls(world, i, fallen))
 			continue;
 		hs_body saved = *body;
@@ -123,9 +123,9 @@ static HS_FORCE_INLINE int move_free_objects(hs_world *world, int *fallen) {
 		}
 		// support mode: what moved by more than the floor's tolerance wakes what rests on it (a
 		// settling stack's rounding-size moves woke each other for good)
-		if (world->def.stacking == HS_STACKING_SUPPORT && hs_length(hs_sub(body->pos, saved.pos)) > world->def.floor_tolerance) {
-			world->moved_from[moved] = saved.pos;
-			world->queue[moved++] = i;
+		if (world->model.def.stacking == HS_STACKING_SUPPORT && hs_length(hs_sub(body->pos, saved.pos)) > world->model.def.floor_tolerance) {
+			world->scratch.moved_from[moved] = saved.pos;
+			world->scratch.queue[moved++] = i;
 		}
 		hs_grid_update(world, i);
 	}
@@ -137,20 +137,20 @@ static HS_FORCE_INLINE int move_free_objects(hs_world *world, int *fallen) {
 // awake list, the stale digests.
 static HS_FORCE_INLINE void wake_neighbours(hs_world *world, int moved, int fallen) {
 	for (int k = 0; k < moved; ++k) // the awake list may grow only once the loop is over
-		hs_support_wake_neighbours(world, world->queue[k], world->moved_from[k]);
+		hs_support_wake_neighbours(world, world->scratch.queue[k], world->scratch.moved_from[k]);
 	for (int k = 0; k < fallen; ++k)
-		hs_wake(world, world->queue[k]);
+		hs_wake(world, world->scratch.queue[k]);
 	hs_awake_compact(world);
-	if (!world->def.skip_work) // every object was looked at (the awake list does not bound what may have changed)
+	if (!world->model.skip_work) // every object was looked at (the awake list does not bound what may have changed)
 		hs_digest_all_stale(world);
 }
 
 // docs/model.md §4 "Release": each hand's wrist history ages by a frame and its points become the
 // previous ones; a hand not set again stays where it is. In and out: the hands.
 static HS_FORCE_INLINE void age_hands(hs_world *world) {
-	for (int h = 0; h < world->hand_count; ++h) {
-		hs_hand_age_wrist(&world->hands[h]);
-		hs_hand_keep_previous(&world->hands[h]);
+	for (int h = 0; h < world->model.hand_count; ++h) {
+		hs_hand_age_wrist(&world->state.hands[h]);
+		hs_hand_keep_previous(&world->state.hands[h]);
 	}
 }
 
@@ -162,5 +162,5 @@ void hs_step_hand(hs_world *world) {
 	int moved = move_free_objects(world, &fallen); // §4.2-§4.3: free motion, floor, stacking
 	wake_neighbours(world, moved, fallen);         // §4.3: what rested on a moved object looks again
 	age_hands(world);                              // docs/model.md §4: the hands' history
-	world->frame++;
+	world->state.frame++;
 }

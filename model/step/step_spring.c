@@ -25,7 +25,7 @@
 static void check_params_cache(const hs_world *world, hs_spring_system *sys) {
 	const hs_spring_def *d = &sys->def;
 	double key[8] = {d->rest_length_ref, d->rest_mass_ref, d->rest_exponent, d->rest_length_min,
-	                 d->rest_length_max, world->def.gravity.x, world->def.gravity.y, world->def.gravity.z};
+	                 d->rest_length_max, world->model.def.gravity.x, world->model.def.gravity.y, world->model.def.gravity.z};
 	if (memcmp(key, sys->params_key, sizeof key) == 0)
 		return;
 	memcpy(sys->params_key, key, sizeof key);
@@ -36,7 +36,7 @@ static void check_params_cache(const hs_world *world, hs_spring_system *sys) {
 static int floor_contacts(hs_world *world, const hs_spring_system *sys, int i) {
 	if (sys->geom[i].sphere)
 		return 1;
-	hs_body *body = &world->bodies[i];
+	hs_body *body = &world->state.bodies[i];
 	hs_motion_pose_vertices(world, body);
 	return hs_motion_floor_points(world, body);
 }
@@ -45,8 +45,8 @@ static int floor_contacts(hs_world *world, const hs_spring_system *sys, int i) {
 // (floor contacts, resting, the spring's object grasped). In: bodies, the frame-start state.
 // Out: the bodies' flags.
 static void finish_bodies(hs_world *world, hs_spring_system *sys) {
-	for (int i = 0; i < world->object_count; ++i) {
-		hs_body *body = &world->bodies[i];
+	for (int i = 0; i < world->model.object_count; ++i) {
+		hs_body *body = &world->state.bodies[i];
 		if (!hs_vec3_is_finite(body->pos) || !hs_vec3_is_finite(body->vel)) {
 			body->pos = sys->saved_pos[i]; // an explicit integrator blew up: freeze, count, go on
 			body->vel = sys->saved_vel[i];
@@ -65,32 +65,35 @@ static void finish_bodies(hs_world *world, hs_spring_system *sys) {
 // parameters' cache, the stylus's velocity over the frame. In: bodies, stylus. Out: sys->geom,
 // the parameters' cache, sys->stylus_velocity.
 static void prepare_frame(hs_world *world, hs_spring_system *sys) {
-	int n = world->object_count;
+	int n = world->model.object_count;
 	if (sys->geom_count < n) // the broad phase's levels follow the geometry
 		sys->grid_count = -1;
 	for (int i = sys->geom_count; i < n; ++i) // objects added since the last frame
-		sys->geom[i] = hs_spring_geom_of(world, &world->bodies[i]);
+		sys->geom[i] = hs_spring_geom_of(&world->model.shapes[world->state.bodies[i].shape], &world->state.bodies[i]);
 	sys->geom_count = n;
 	check_params_cache(world, sys);
 	hs_spring_technique_prepare(world, sys); // massless objects and kinematic holds meet no one
-	sys->stylus_velocity = hs_scale(hs_sub(sys->stylus, sys->stylus_prev), 1.0 / world->def.dt);
+	sys->stylus_velocity = hs_scale(hs_sub(sys->stylus, sys->stylus_prev), 1.0 / world->model.def.dt);
 }
 
 // §4.2-§4.5: each object alone through the frame, on the floor or in the air (spring_body.c);
 // those the resting contacts hold stay still. In: bodies, the rest solve's loads and holds. Out:
 // bodies, sys->on_floor and sliding, the frame-start state (saved_pos, saved_vel).
 static void move_objects(hs_world *world, hs_spring_system *sys) {
-	int n = world->object_count;
+	int n = world->model.object_count;
 	for (int i = 0; i < n; ++i) {
-		sys->saved_pos[i] = world->bodies[i].pos;
-		sys->saved_vel[i] = world->bodies[i].vel;
+		sys->saved_pos[i] = world->state.bodies[i].pos;
+		sys->saved_vel[i] = world->state.bodies[i].vel;
 	}
 	for (int i = 0; i < n; ++i) {
 		if (!sys->held[i]) {
-			hs_spring_advance(world, sys, i, world->def.dt);
+			if (hs_spring_technique_moves(world, sys, i)) // no spring, no weight: spring_technique.c
+				hs_spring_technique_advance(world, sys, i, world->model.def.dt);
+			else
+				hs_spring_advance(sys, i, &world->state.bodies[i], &world->model.def, world->model.def.dt, &world->counters);
 			continue;
 		}
-		world->bodies[i].vel = hs_v3(0.0, 0.0, 0.0); // held still by its contacts: not stepped
+		world->state.bodies[i].vel = hs_v3(0.0, 0.0, 0.0); // held still by its contacts: not stepped
 		sys->on_floor[i] = sys->rest[sys->rest_index[i]].floor;
 		sys->sliding[i] = false;
 	}
@@ -100,12 +103,12 @@ static void move_objects(hs_world *world, hs_spring_system *sys) {
 // above the floor and inside the walls. In: bodies after their own frames. Out: bodies,
 // sys->separated.
 static void collide_objects(hs_world *world, hs_spring_system *sys) {
-	int n = world->object_count;
+	int n = world->model.object_count;
 	if (n > 0) // (n is never negative; the test keeps gcc's size analysis quiet)
 		memset(sys->separated, 0, (size_t)n);
 	hs_spring_collide(world, sys);
 	for (int i = 0; i < n; ++i) { // separation may have pushed an object through the floor or a wall
-		hs_body *body = &world->bodies[i];
+		hs_body *body = &world->state.bodies[i];
 		if (body->pos.z < -sys->geom[i].lo.z)
 			body->pos.z = -sys->geom[i].lo.z;
 		hs_spring_wall_project(&sys->def.walls, &sys->geom[i], &body->pos, NULL);
@@ -115,7 +118,7 @@ static void collide_objects(hs_world *world, hs_spring_system *sys) {
 // §5.1: the tracker daemon's samples of the frame, from the stylus's poses at its start and end.
 // In: the stylus. Out: sys->tracker.
 static void sample_tracker(hs_world *world, hs_spring_system *sys) {
-	double t0 = (double)world->frame * world->def.dt, t1 = (double)(world->frame + 1) * world->def.dt;
+	double t0 = (double)world->state.frame * world->model.def.dt, t1 = (double)(world->state.frame + 1) * world->model.def.dt;
 	if (sys->has_stylus)
 		hs_tracker_advance(&sys->tracker, t0, t1, sys->stylus_prev, sys->rot_prev, sys->stylus, sys->rot,
 		                   sys->button);
@@ -127,7 +130,7 @@ static void sample_tracker(hs_world *world, hs_spring_system *sys) {
 // catches, a release drops or throws (spring_grab.c). In: the tracker, the button, bodies. Out:
 // sys->candidate, the spring (attached, anchor), the last release.
 static void press_and_release(hs_world *world, hs_spring_system *sys) {
-	double t1 = (double)(world->frame + 1) * world->def.dt;
+	double t1 = (double)(world->state.frame + 1) * world->model.def.dt;
 	hs_spring_update_candidate(world, sys);
 	hs_spring_magnet(world, sys, t1); // §3: the magnet gesture (spring_hold.c)
 	if (sys->button && !sys->button_prev)
@@ -146,13 +149,13 @@ static void end_frame(hs_world *world, hs_spring_system *sys, long faults) {
 	sys->rot_prev = sys->rot;
 	sys->button_prev = sys->button;
 	hs_digest_all_stale(world);
-	if (world->counters.numeric_faults > faults && world->first_fault_frame < 0)
-		world->first_fault_frame = world->frame;
-	world->frame++;
+	if (world->counters.numeric_faults > faults && world->state.first_fault_frame < 0)
+		world->state.first_fault_frame = world->state.frame;
+	world->state.frame++;
 }
 
 void hs_step_spring(hs_world *world) {
-	hs_spring_system *sys = world->spring;
+	hs_spring_system *sys = world->state.spring;
 	long faults = world->counters.numeric_faults;
 	prepare_frame(world, sys);     // §4.2: new objects' geometry, the stylus's velocity
 	if (!sys->def.paper_collisions)

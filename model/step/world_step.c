@@ -5,7 +5,7 @@
 hs_status hs_world_step(hs_world *world) {
 	if (!world)
 		return HS_ERR_INVALID_ARGUMENT;
-	if (world->def.kind == HS_WORLD_SPRING)
+	if (world->model.def.kind == HS_WORLD_SPRING)
 		hs_step_spring(world);
 	else
 		hs_step_hand(world);

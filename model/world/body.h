@@ -15,7 +15,7 @@ typedef struct hs_body {
 	hs_vec3 prev; // P(t - dt), m (§4.1: Verlet needs it)
 	hs_quat rot;  // orientation, body → world
 	hs_quat spin; // relative rotation per frame, carried over after release (§4.1)
-	int shape;    // MODEL: index into hs_world.shapes
+	int shape;    // MODEL: index into the world's model.shapes
 	int floor_contacts;
 	uint8_t contact;  // hs_contact_state
 	uint8_t grounded; // touched the floor at the end of the last frame: §4.2 tipping, not free flight

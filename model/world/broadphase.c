@@ -24,49 +24,49 @@
 // grows past the limit files every object at its next step (grid_dirty). skip_work is fixed
 // when the world is made.
 static bool grid_read(const hs_world *world) {
-	return world->def.skip_work && world->object_count > HS_GRID_SCAN_MAX;
+	return world->model.skip_work && world->model.object_count > HS_GRID_SCAN_MAX;
 }
 
 void hs_grid_update(hs_world *world, int i) {
-	if (!world->grid_built || !grid_read(world))
+	if (!world->cache.grid_built || !grid_read(world))
 		return; // not built yet (the first step builds it), or not read (nor its lists)
-	if (!world->awake_flag[i]) // a resting object filed anew (a load, objects added, or carried):
-		world->near_epoch++;   // the neighbour lists may miss it
-	hs_hgrid_file(&world->grid, i, world->bodies[i].pos);
+	if (!world->cache.awake_flag[i]) // a resting object filed anew (a load, objects added, or carried):
+		world->cache.near_lists.epoch++;   // the neighbour lists may miss it
+	hs_hgrid_file(&world->cache.grid, i, world->state.bodies[i].pos);
 }
 
 void hs_grid_build(hs_world *world) {
 	// each object at the level of its bounding radius (hgrid.c): one huge object no longer makes
 	// the cell of all (the cell was twice the largest radius)
-	for (int i = 0; i < world->object_count; ++i)
-		world->grid.half[i] = world->shapes[world->bodies[i].shape].radius;
-	hs_hgrid_build(&world->grid, world->object_count);
-	world->grid_built = true;
-	for (int i = 0; i < world->object_count; ++i)
+	for (int i = 0; i < world->model.object_count; ++i)
+		world->cache.grid.half[i] = world->model.shapes[world->state.bodies[i].shape].radius;
+	hs_hgrid_build(&world->cache.grid, world->model.object_count);
+	world->cache.grid_built = true;
+	for (int i = 0; i < world->model.object_count; ++i)
 		hs_grid_update(world, i);
-	hs_hgrid_pack(&world->grid); // the cells the objects occupy, read without hashing
+	hs_hgrid_pack(&world->cache.grid); // the cells the objects occupy, read without hashing
 }
 
 // A query answers by a full scan, in index order (the grid not read, or not built yet).
-static bool scanned(const hs_world *world) { return !world->grid_built || !grid_read(world); }
+static bool scanned(const hs_world *world) { return !world->cache.grid_built || !grid_read(world); }
 
 static int grid_answer(const hs_world *world, hs_vec3 center, double radius, int *out) {
 	hs_vec3 r = hs_v3(radius, radius, radius); // objects are filed by their centres (x, y)
-	return hs_hgrid_query(&world->grid, hs_sub(center, r), hs_add(center, r), out);
+	return hs_hgrid_query(&world->cache.grid, hs_sub(center, r), hs_add(center, r), out);
 }
 
 int hs_grid_query(const hs_world *world, hs_vec3 center, double radius, int *out) {
 	if (!scanned(world))
 		return grid_answer(world, center, radius, out);
-	memcpy(out, world->every, (size_t)world->object_count * sizeof *out);
-	return world->object_count;
+	memcpy(out, world->cache.every, (size_t)world->model.object_count * sizeof *out);
+	return world->model.object_count;
 }
 
 // The neighbour lists: a query whose box (x, y: center ± radius) lies inside a list's box is
 // answered from that list's resting objects and the awake list, each object's centre tested
 // against the query's box grown by its own half-extent (the grid's contract, not its cells). A
 // resting object moves only through hs_grid_update, and one that comes to rest leaves the awake
-// list (hs_awake_compact): either makes every list stale (near_epoch). A list's box is its first
+// list (hs_awake_compact): either makes every list stale (near_lists.epoch). A list's box is its first
 // query's grown by a skin of a typical object's width (the grid's level-0 cell), so a hand that
 // moves a few mm a frame reuses it for many frames. Every answer holds all the objects the
 // callers' own tests can pass, in index order: no result depends on the lists.
@@ -75,8 +75,8 @@ int hs_grid_query(const hs_world *world, hs_vec3 center, double radius, int *out
 static double slack(hs_vec3 c, double reach) { return 1e-9 * (1.0 + fabs(c.x) + fabs(c.y) + reach); }
 
 static bool centre_near(const hs_world *world, int i, hs_vec3 c, double r, double allow) {
-	hs_vec3 p = world->bodies[i].pos;
-	double reach = r + world->grid.half[i];
+	hs_vec3 p = world->state.bodies[i].pos;
+	double reach = r + world->cache.grid.half[i];
 	reach += allow * slack(c, reach);
 	return fabs(p.x - c.x) <= reach && fabs(p.y - c.y) <= reach;
 }
@@ -84,8 +84,8 @@ static bool centre_near(const hs_world *world, int i, hs_vec3 c, double r, doubl
 // Merges a list's objects with the awake list (both ascending; an object on both once), keeping
 // those near the query.
 static int list_answer(hs_world *world, const hs_near_list *l, hs_vec3 c, double r) {
-	const int *awake = world->awake;
-	int n = 0, a = 0, b = 0, na = world->awake_count;
+	const int *awake = world->cache.awake;
+	int n = 0, a = 0, b = 0, na = world->cache.awake_count;
 	while (a < l->count || b < na) {
 		int i;
 		if (b == na || (a < l->count && l->index[a] < awake[b]))
@@ -95,15 +95,15 @@ static int list_answer(hs_world *world, const hs_near_list *l, hs_vec3 c, double
 			a += a < l->count && l->index[a] == i;
 		}
 		if (centre_near(world, i, c, r, 1.0))
-			world->found[n++] = i;
+			world->scratch.found[n++] = i;
 	}
 #if defined(HS_SELFCHECK)
 	// sanitizer builds: every object the contract asks for is in the answer (a stale list is not)
-	for (int j = 0, k = 0; j < world->object_count; ++j) {
-		while (k < n && world->found[k] < j)
+	for (int j = 0, k = 0; j < world->model.object_count; ++j) {
+		while (k < n && world->scratch.found[k] < j)
 			++k;
-		hs_vec3 p = world->bodies[j].pos;
-		if (hypot(p.x - c.x, p.y - c.y) <= r + world->grid.half[j] && (k == n || world->found[k] != j)) {
+		hs_vec3 p = world->state.bodies[j].pos;
+		if (hypot(p.x - c.x, p.y - c.y) <= r + world->cache.grid.half[j] && (k == n || world->scratch.found[k] != j)) {
 			fprintf(stderr, "selfcheck: object %d missing from a neighbour list's answer\n", j);
 			abort();
 		}
@@ -114,8 +114,8 @@ static int list_answer(hs_world *world, const hs_near_list *l, hs_vec3 c, double
 
 static hs_near_list *list_holding(hs_world *world, hs_vec3 c, double r) {
 	for (int k = 0; k < HS_NEAR_BOXES; ++k) {
-		hs_near_list *l = &world->near_lists[k];
-		if (l->epoch == world->near_epoch && c.x - r >= l->lo[0] && c.x + r <= l->hi[0] && c.y - r >= l->lo[1] &&
+		hs_near_list *l = &world->cache.near_lists.list[k];
+		if (l->epoch == world->cache.near_lists.epoch && c.x - r >= l->lo[0] && c.x + r <= l->hi[0] && c.y - r >= l->lo[1] &&
 		    c.y + r <= l->hi[1])
 			return l;
 	}
@@ -125,22 +125,22 @@ static hs_near_list *list_holding(hs_world *world, hs_vec3 c, double r) {
 // Lists the resting objects near the query's box grown by the skin, in place of the least recently
 // used list; or, when more than a list holds, answers from the grid's answer alone (found).
 static int list_and_answer(hs_world *world, hs_vec3 c, double r) {
-	double grown = r + world->grid.cell0;
-	int n = grid_answer(world, c, grown, world->found);
-	hs_near_list *l = &world->near_lists[0];
+	double grown = r + world->cache.grid.cell0;
+	int n = grid_answer(world, c, grown, world->scratch.found);
+	hs_near_list *l = &world->cache.near_lists.list[0];
 	for (int k = 1; k < HS_NEAR_BOXES; ++k)
-		l = world->near_lists[k].used < l->used ? &world->near_lists[k] : l;
+		l = world->cache.near_lists.list[k].used < l->used ? &world->cache.near_lists.list[k] : l;
 	l->epoch = 0;
 	l->count = 0;
 	for (int k = 0; k < n; ++k) {
-		int i = world->found[k];
-		if (world->awake_flag[i] || !centre_near(world, i, c, grown, 4.0))
+		int i = world->scratch.found[k];
+		if (world->cache.awake_flag[i] || !centre_near(world, i, c, grown, 4.0))
 			continue;
 		if (l->count == HS_NEAR_LISTED) { // a crowd: the grid's answer, kept where near the query
 			int kept = 0;
 			for (int j = 0; j < n; ++j)
-				if (centre_near(world, world->found[j], c, r, 1.0))
-					world->found[kept++] = world->found[j];
+				if (centre_near(world, world->scratch.found[j], c, r, 1.0))
+					world->scratch.found[kept++] = world->scratch.found[j];
 			return kept;
 		}
 		l->index[l->count++] = i;
@@ -149,28 +149,28 @@ static int list_and_answer(hs_world *world, hs_vec3 c, double r) {
 	l->hi[0] = c.x + grown;
 	l->lo[1] = c.y - grown;
 	l->hi[1] = c.y + grown;
-	l->epoch = world->near_epoch;
-	l->used = ++world->near_clock;
+	l->epoch = world->cache.near_lists.epoch;
+	l->used = ++world->cache.near_lists.clock;
 	return list_answer(world, l, c, r);
 }
 
 // (not inlined: a world scanned whole pays no more than its test)
 static HS_NOINLINE int grid_near(hs_world *world, hs_vec3 center, double radius) {
-	world->near = world->found;
-	if (world->awake_count > HS_NEAR_AWAKE_MAX) // many in motion: the lists would hold few
-		return grid_answer(world, center, radius, world->found);
+	world->scratch.near = world->scratch.found;
+	if (world->cache.awake_count > HS_NEAR_AWAKE_MAX) // many in motion: the lists would hold few
+		return grid_answer(world, center, radius, world->scratch.found);
 	hs_near_list *l = list_holding(world, center, radius);
 	if (!l)
 		return list_and_answer(world, center, radius);
-	l->used = ++world->near_clock;
-	world->near_hits++;
+	l->used = ++world->cache.near_lists.clock;
+	world->cache.near_lists.hits++;
 	return list_answer(world, l, center, radius);
 }
 
 // A world scanned whole answers with every index, listed when the world was made: nothing written.
 static int every_index(hs_world *world) {
-	world->near = world->every;
-	return world->object_count;
+	world->scratch.near = world->cache.every;
+	return world->model.object_count;
 }
 
 int hs_grid_near(hs_world *world, hs_vec3 center, double radius) {
@@ -194,40 +194,40 @@ static void insert_sorted(int *list, int *count, int value) {
 }
 
 void hs_wake(hs_world *world, int i) {
-	world->bodies[i].asleep = 0;
-	if (!world->awake_flag[i]) {
-		world->awake_flag[i] = 1;
-		insert_sorted(world->awake, &world->awake_count, i);
+	world->state.bodies[i].asleep = 0;
+	if (!world->cache.awake_flag[i]) {
+		world->cache.awake_flag[i] = 1;
+		insert_sorted(world->cache.awake, &world->cache.awake_count, i);
 	}
 }
 
 void hs_awake_compact(hs_world *world) {
 	int kept = 0;
-	for (int k = 0; k < world->awake_count; ++k) {
-		int i = world->awake[k];
-		const hs_body *b = &world->bodies[i];
+	for (int k = 0; k < world->cache.awake_count; ++k) {
+		int i = world->cache.awake[k];
+		const hs_body *b = &world->state.bodies[i];
 		hs_digest_stale(world, i); // the step changes no other object (skip_work changes no result)
 		if (b->asleep && !b->held && !b->carried) {
-			world->awake_flag[i] = 0;
-			world->near_epoch++; // at rest where no neighbour list looked for it
+			world->cache.awake_flag[i] = 0;
+			world->cache.near_lists.epoch++; // at rest where no neighbour list looked for it
 		}
 		else
-			world->awake[kept++] = i;
+			world->cache.awake[kept++] = i;
 	}
-	world->awake_count = kept;
+	world->cache.awake_count = kept;
 }
 
 void hs_broadphase_reset(hs_world *world) {
 	// between steps the awake list holds exactly the objects not asleep, held or carried
 	// (hs_awake_compact ends every step; hs_wake keeps it for objects added since), in index order
-	world->awake_count = 0;
-	for (int i = 0; i < world->object_count; ++i) {
-		const hs_body *b = &world->bodies[i];
+	world->cache.awake_count = 0;
+	for (int i = 0; i < world->model.object_count; ++i) {
+		const hs_body *b = &world->state.bodies[i];
 		bool awake = !b->asleep || b->held || b->carried;
-		world->awake_flag[i] = (uint8_t)awake;
+		world->cache.awake_flag[i] = (uint8_t)awake;
 		if (awake)
-			world->awake[world->awake_count++] = i;
+			world->cache.awake[world->cache.awake_count++] = i;
 	}
-	world->grid_dirty = true; // filed again at the next step (the neighbour lists made stale)
+	world->cache.grid_dirty = true; // filed again at the next step (the neighbour lists made stale)
 	hs_digest_all_stale(world);
 }

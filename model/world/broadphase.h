@@ -13,7 +13,7 @@ void hs_grid_update(hs_world *world, int i);
 // Objects whose centre may lie within radius + their own bounding radius of center (in x, y), in
 // index order (every object when skip_work is off). Returns how many were written to out.
 int hs_grid_query(const hs_world *world, hs_vec3 center, double radius, int *out);
-// hs_grid_query's answer in world->near: a world scanned whole points it at the list of every
+// hs_grid_query's answer in world->scratch.near: a world scanned whole points it at the list of every
 // index made with the world (nothing written per query), the grid's answer is written to `found`.
 int hs_grid_near(hs_world *world, hs_vec3 center, double radius);
 // hs_grid_near of the objects near either of two points (within radius plus their own).

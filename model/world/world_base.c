@@ -3,17 +3,18 @@
 // pipelines (step_hand.c, step_spring.c) never call up into them.
 #include <string.h>
 
+#include "hs_bench.h"
 #include "world_internal.h"
 
-long hs_world_frame(const hs_world *world) { return world ? world->frame : 0; }
-double hs_world_time(const hs_world *world) { return world ? (double)world->frame * world->def.dt : 0.0; }
-double hs_world_dt(const hs_world *world) { return world ? world->def.dt : 0.0; }
+long hs_world_frame(const hs_world *world) { return world ? world->state.frame : 0; }
+double hs_world_time(const hs_world *world) { return world ? (double)world->state.frame * world->model.def.dt : 0.0; }
+double hs_world_dt(const hs_world *world) { return world ? world->model.def.dt : 0.0; }
 
 void hs_world_note_fault(hs_world *world, int object) {
 	world->counters.numeric_faults++;
-	if (world->first_fault_frame < 0) {
-		world->first_fault_frame = world->frame;
-		world->first_fault_object = object;
+	if (world->state.first_fault_frame < 0) {
+		world->state.first_fault_frame = world->state.frame;
+		world->state.first_fault_object = object;
 	}
 }
 
@@ -21,9 +22,9 @@ hs_status hs_world_first_fault(const hs_world *world, long *frame, hs_object_id 
 	if (!world)
 		return HS_ERR_INVALID_ARGUMENT;
 	if (frame)
-		*frame = world->first_fault_frame;
+		*frame = world->state.first_fault_frame;
 	if (object)
-		*object = hs_object_handle(world, world->first_fault_object);
+		*object = hs_object_handle(world, world->state.first_fault_object);
 	return HS_OK;
 }
 
@@ -32,3 +33,12 @@ hs_world_counters hs_world_get_counters(const hs_world *world) {
 	memset(&none, 0, sizeof none);
 	return world ? world->counters : none;
 }
+
+hs_status hs_world_set_skip_work(hs_world *world, bool on) {
+	if (!world || world->model.object_count > 0) // the grid and the awake list are set up as objects come
+		return HS_ERR_INVALID_ARGUMENT;
+	world->model.skip_work = on;
+	return HS_OK;
+}
+
+bool hs_world_skip_work(const hs_world *world) { return world && world->model.skip_work; }

@@ -15,6 +15,7 @@
 #include "spring_params.h"
 #include "spring_technique.h"
 #include "spring_system.h"
+#include "world_scratch.h"
 #include "world_internal.h"
 
 // Tags of the worlds of this process, 1 to 65535 and round again (0 is the null handle's): a
@@ -38,7 +39,6 @@ hs_world_def hs_default_world_def(void) {
 	def.grasp_threshold_deg = 90.0;
 	def.grasp_release_mm = 5.0;
 	def.grasp_open_mm = 8.0;
-	def.skip_work = true;
 	def.glove_deadband = 3;
 	def.release_window_s = 0.05;
 	def.release_fit = HS_RELEASE_FIT_MEAN;
@@ -88,46 +88,44 @@ hs_world *hs_world_create(const hs_world_def *def, hs_status *status) {
 		hs_set_status(status, HS_ERR_NO_MEMORY);
 		return NULL;
 	}
-	world->def = *def;
-	world->tag = next_world_tag();
-	world->first_fault_frame = -1;
-	world->first_fault_object = -1;
-	world->grasp_limit = hs_grasp_limit(def->grasp_threshold_deg);
-	world->oppose_cos = hs_cos((100.0 - 0.5 * def->grasp_threshold_deg) * (HS_PI / 180.0));
-	world->hold_frames = (int)floor(def->tracking_hold_s / def->dt + 0.5);
-	world->shapes = calloc((size_t)def->max_shapes, sizeof *world->shapes);
-	world->face_edges = calloc((size_t)def->max_shapes, sizeof *world->face_edges);
-	world->face_trees = calloc((size_t)def->max_shapes, sizeof *world->face_trees);
-	world->shape_grow_reach = calloc((size_t)def->max_shapes, sizeof *world->shape_grow_reach);
+	world->model.def = *def;
+	world->model.tag = next_world_tag();
+	world->model.skip_work = true;
+	world->state.first_fault_frame = -1;
+	world->state.first_fault_object = -1;
+	world->model.grasp_limit = hs_grasp_limit(def->grasp_threshold_deg);
+	world->model.oppose_cos = hs_cos((100.0 - 0.5 * def->grasp_threshold_deg) * (HS_PI / 180.0));
+	world->model.hold_frames = (int)floor(def->tracking_hold_s / def->dt + 0.5);
+	world->model.shapes = calloc((size_t)def->max_shapes, sizeof *world->model.shapes);
+	world->model.face_edges = calloc((size_t)def->max_shapes, sizeof *world->model.face_edges);
+	world->model.face_trees = calloc((size_t)def->max_shapes, sizeof *world->model.face_trees);
+	world->model.shape_grow_reach = calloc((size_t)def->max_shapes, sizeof *world->model.shape_grow_reach);
+	world->model.part_cache = calloc((size_t)def->max_shapes, sizeof *world->model.part_cache);
 	size_t objects = def->max_objects > 0 ? (size_t)def->max_objects : 1;
-	world->bodies = calloc(objects, sizeof *world->bodies);
-	world->queue = calloc(objects, sizeof *world->queue);
-	world->moved_from = calloc(objects, sizeof *world->moved_from);
-	world->hands = calloc(def->max_hands > 0 ? (size_t)def->max_hands : 1, sizeof *world->hands);
+	world->state.bodies = calloc(objects, sizeof *world->state.bodies);
+	world->state.hands = calloc(def->max_hands > 0 ? (size_t)def->max_hands : 1, sizeof *world->state.hands);
 	// every check point and line of every hand in up to 4 objects' parts at once
-	world->contact_capacity = (def->max_hands > 0 ? def->max_hands : 1) * (HS_HAND_POINTS + HS_HAND_LINES) * 4;
-	world->contacts = calloc((size_t)world->contact_capacity, sizeof *world->contacts);
-	bool grid = hs_hgrid_alloc(&world->grid, (int)objects, 2);
-	world->candidates = calloc(objects, sizeof *world->candidates);
-	world->every = malloc(objects * sizeof *world->every);
-	world->found = calloc(objects, sizeof *world->found);
-	if (world->every)
+	world->out.contact_capacity = (def->max_hands > 0 ? def->max_hands : 1) * (HS_HAND_POINTS + HS_HAND_LINES) * 4;
+	world->out.contacts = calloc((size_t)world->out.contact_capacity, sizeof *world->out.contacts);
+	bool grid = hs_hgrid_alloc(&world->cache.grid, (int)objects, 2);
+	world->cache.every = malloc(objects * sizeof *world->cache.every);
+	if (world->cache.every)
 		for (size_t i = 0; i < objects; ++i)
-			world->every[i] = (int)i;
-	world->near = world->every;
-	world->near_epoch = 1; // a neighbour list never made (epoch 0) never answers
-	world->awake = calloc(objects, sizeof *world->awake);
-	world->awake_flag = calloc(objects, sizeof *world->awake_flag);
-	world->digest = calloc(objects, sizeof *world->digest);
-	world->stale = calloc(objects, sizeof *world->stale);
-	world->stale_flag = calloc(objects, sizeof *world->stale_flag);
-	world->box_memo = calloc(objects, sizeof *world->box_memo);
-	world->all_stale = true;
+			world->cache.every[i] = (int)i;
+	bool scratch = hs_world_scratch_reserve(world, 0, 0, 0); // the shapes' part grows with them
+	world->cache.near_lists.epoch = 1; // a neighbour list never made (epoch 0) never answers
+	world->cache.awake = calloc(objects, sizeof *world->cache.awake);
+	world->cache.awake_flag = calloc(objects, sizeof *world->cache.awake_flag);
+	world->cache.digest = calloc(objects, sizeof *world->cache.digest);
+	world->cache.stale = calloc(objects, sizeof *world->cache.stale);
+	world->cache.stale_flag = calloc(objects, sizeof *world->cache.stale_flag);
+	world->cache.box_memo = calloc(objects, sizeof *world->cache.box_memo);
+	world->cache.all_stale = true;
 	if (def->kind == HS_WORLD_SPRING) // its tracker starts at the world's time, 0
-		world->spring = hs_spring_system_create(&def->spring, def->max_objects, 0.0);
-	if ((def->kind == HS_WORLD_SPRING && !world->spring) || !world->shapes || !world->face_edges || !world->face_trees || !world->shape_grow_reach || !world->bodies || !world->queue || !world->moved_from || !world->hands || !world->contacts || !grid ||
-	    !world->candidates || !world->every || !world->found || !world->awake || !world->awake_flag || !world->digest || !world->stale ||
-	    !world->stale_flag || !world->box_memo) {
+		world->state.spring = hs_spring_system_create(&def->spring, def->max_objects, 0.0);
+	if ((def->kind == HS_WORLD_SPRING && !world->state.spring) || !world->model.shapes || !world->model.face_edges || !world->model.face_trees || !world->model.shape_grow_reach || !world->model.part_cache || !world->state.bodies || !world->state.hands || !world->out.contacts || !grid ||
+	    !scratch || !world->cache.every || !world->cache.awake || !world->cache.awake_flag || !world->cache.digest || !world->cache.stale ||
+	    !world->cache.stale_flag || !world->cache.box_memo) {
 		hs_world_destroy(world);
 		hs_set_status(status, HS_ERR_NO_MEMORY);
 		return NULL;
@@ -147,38 +145,30 @@ static void free_shape_arrays(hs_shape *shape) {
 void hs_world_destroy(hs_world *world) {
 	if (!world)
 		return;
-	hs_spring_system_destroy(world->spring);
-	for (int i = 0; i < world->shape_count; ++i) {
-		free_shape_arrays(&world->shapes[i]);
-		free(world->face_edges[i].first);
-		free(world->face_edges[i].edges);
-		hs_face_tree_free(&world->face_trees[i]);
+	hs_spring_system_destroy(world->state.spring);
+	for (int i = 0; i < world->model.shape_count; ++i) {
+		free_shape_arrays(&world->model.shapes[i]);
+		hs_face_edges_free(&world->model.face_edges[i]);
+		free(world->model.part_cache[i]);
+		hs_face_tree_free(&world->model.face_trees[i]);
 	}
-	free(world->shapes);
-	free(world->face_edges);
-	free(world->face_trees);
-	free(world->shape_grow_reach);
-	free(world->bodies);
-	free(world->queue);
-	free(world->moved_from);
-	free(world->hands);
-	free(world->contacts);
-	hs_hgrid_free(&world->grid);
-	free(world->candidates);
-	free(world->every);
-	free(world->found);
-	free(world->awake);
-	free(world->awake_flag);
-	free(world->digest);
-	free(world->box_memo);
-	free(world->stale);
-	free(world->stale_flag);
-	free(world->scratch_world);
-	free(world->scratch_points);
-	free(world->scratch_hull);
-	free(world->face_pick);
-	free(world->edge_pick);
-	free(world->edge_mark);
+	free(world->model.shapes);
+	free(world->model.face_edges);
+	free(world->model.face_trees);
+	free(world->model.shape_grow_reach);
+	free(world->model.part_cache);
+	free(world->state.bodies);
+	free(world->state.hands);
+	free(world->out.contacts);
+	hs_hgrid_free(&world->cache.grid);
+	free(world->cache.every);
+	free(world->cache.awake);
+	free(world->cache.awake_flag);
+	free(world->cache.digest);
+	free(world->cache.box_memo);
+	free(world->cache.stale);
+	free(world->cache.stale_flag);
+	hs_world_scratch_free(world);
 	free(world);
 }
 
@@ -207,124 +197,53 @@ static bool copy_shape(hs_shape *dst, const hs_shape *src) {
 	return true;
 }
 
-static bool face_in_range(const hs_shape *shape, int f) { return f >= 0 && f < shape->face_count; }
-
-// The shape's edges listed by face (hs_face_edges): counted, then filled in edge order.
-static bool index_face_edges(const hs_shape *shape, hs_face_edges *out) {
-	out->first = calloc((size_t)shape->face_count + 1, sizeof *out->first);
-	out->edges = malloc((size_t)(2 * shape->edge_count > 0 ? 2 * shape->edge_count : 1) * sizeof *out->edges);
-	if (!out->first || !out->edges) {
-		free(out->first);
-		free(out->edges);
-		out->first = out->edges = NULL;
-		return false;
-	}
-	for (int e = 0; e < shape->edge_count; ++e)
-		for (int k = 0; k < 2; ++k)
-			if (face_in_range(shape, shape->edges[e].faces[k]))
-				out->first[shape->edges[e].faces[k] + 1]++;
-	for (int f = 0; f < shape->face_count; ++f)
-		out->first[f + 1] += out->first[f];
-	int *fill = out->first; // advanced per face while filling, then moved back
-	for (int e = 0; e < shape->edge_count; ++e)
-		for (int k = 0; k < 2; ++k)
-			if (face_in_range(shape, shape->edges[e].faces[k]))
-				out->edges[fill[shape->edges[e].faces[k]]++] = e;
-	for (int f = shape->face_count; f > 0; --f)
-		fill[f] = fill[f - 1];
-	fill[0] = 0;
-	return true;
-}
-
-// Scratch for the floor test sized for the largest shape (room for a closing hull point).
-static bool reserve_scratch(hs_world *world, int vertex_count) {
-	if (vertex_count <= world->scratch_capacity)
-		return true;
-	size_t n = (size_t)vertex_count + 1;
-	hs_vec3 *posed = realloc(world->scratch_world, n * sizeof *posed);
-	if (posed)
-		world->scratch_world = posed;
-	hs_vec2 *points = realloc(world->scratch_points, n * sizeof *points);
-	if (points)
-		world->scratch_points = points;
-	hs_vec2 *hull = realloc(world->scratch_hull, n * sizeof *hull);
-	if (hull)
-		world->scratch_hull = hull;
-	if (!posed || !points || !hull)
-		return false;
-	world->scratch_capacity = vertex_count;
-	return true;
-}
-
-// Scratch for a swept line's faces and edges (contact.c), sized for the shape with most of them.
-static bool reserve_picks(hs_world *world, const hs_shape *shape) {
-	if (shape->face_count > world->pick_faces) {
-		int *faces = realloc(world->face_pick, (size_t)shape->face_count * sizeof *faces);
-		if (!faces)
-			return false;
-		world->face_pick = faces;
-		world->pick_faces = shape->face_count;
-	}
-	if (shape->edge_count > world->pick_edges) {
-		int *edges = realloc(world->edge_pick, (size_t)shape->edge_count * sizeof *edges);
-		if (edges)
-			world->edge_pick = edges;
-		uint8_t *mark = realloc(world->edge_mark, (size_t)shape->edge_count * sizeof *mark);
-		if (mark)
-			world->edge_mark = mark;
-		if (!edges || !mark)
-			return false;
-		memset(world->edge_mark, 0, (size_t)shape->edge_count);
-		world->pick_edges = shape->edge_count;
-	}
-	return true;
-}
-
 hs_shape_id hs_world_add_shape(hs_world *world, const hs_shape *shape, hs_status *status) {
 	hs_shape_id none = {0};
 	if (!world || !shape || shape->vertex_count <= 0 || !shape->vertices || !(shape->volume > 0.0)) {
 		hs_set_status(status, HS_ERR_INVALID_ARGUMENT);
 		return none;
 	}
-	if (world->shape_count >= world->def.max_shapes) {
+	if (world->model.shape_count >= world->model.def.max_shapes) {
 		hs_set_status(status, HS_ERR_CAPACITY);
 		return none;
 	}
-	hs_shape *copy = &world->shapes[world->shape_count];
-	if (!reserve_scratch(world, shape->vertex_count) || !reserve_picks(world, shape) || !copy_shape(copy, shape)) {
+	hs_shape *copy = &world->model.shapes[world->model.shape_count];
+	if (!hs_world_scratch_reserve(world, shape->vertex_count, shape->face_count, shape->edge_count) ||
+	    !copy_shape(copy, shape)) {
 		hs_set_status(status, HS_ERR_NO_MEMORY);
 		return none;
 	}
-	world->shape_grow_reach[world->shape_count] = 1.0;
-	for (int p = 0; p < copy->part_count; ++p) {
-		hs_part_box_find(copy, &copy->parts[p]);
-		copy->parts[p].grow_reach = hs_part_grow_reach(copy, &copy->parts[p]);
-		world->shape_grow_reach[world->shape_count] =
-		    fmax(world->shape_grow_reach[world->shape_count], copy->parts[p].grow_reach);
+	hs_part_cache *pc = calloc(copy->part_count > 0 ? (size_t)copy->part_count : 1, sizeof *pc);
+	world->model.part_cache[world->model.shape_count] = pc;
+	world->model.shape_grow_reach[world->model.shape_count] = 1.0;
+	for (int p = 0; p < copy->part_count && pc; ++p) {
+		hs_part_box_find(copy, &copy->parts[p], &pc[p]);
+		pc[p].grow_reach = hs_part_grow_reach(copy, &copy->parts[p]);
+		world->model.shape_grow_reach[world->model.shape_count] = fmax(world->model.shape_grow_reach[world->model.shape_count], pc[p].grow_reach);
 	}
-	if (!index_face_edges(copy, &world->face_edges[world->shape_count]) ||
-	    !hs_face_tree_build(&world->face_trees[world->shape_count], copy)) {
-		free(world->face_edges[world->shape_count].first);
-		free(world->face_edges[world->shape_count].edges);
-		world->face_edges[world->shape_count] = (hs_face_edges){0};
+	if (!pc || !hs_face_edges_build(&world->model.face_edges[world->model.shape_count], copy) ||
+	    !hs_face_tree_build(&world->model.face_trees[world->model.shape_count], copy)) {
+		hs_face_edges_free(&world->model.face_edges[world->model.shape_count]);
+		free(pc);
+		world->model.part_cache[world->model.shape_count] = NULL;
 		free_shape_arrays(copy);
 		hs_set_status(status, HS_ERR_NO_MEMORY);
 		return none;
 	}
 	hs_set_status(status, HS_OK);
-	hs_shape_id id = {(uint32_t)++world->shape_count, world->tag, HS_GENERATION};
+	hs_shape_id id = {(uint32_t)++world->model.shape_count, world->model.tag, HS_GENERATION};
 	return id;
 }
 
 const hs_shape *hs_world_shape(const hs_world *world, hs_shape_id id) {
 	int i = hs_shape_index(world, id);
-	return i >= 0 ? &world->shapes[i] : NULL;
+	return i >= 0 ? &world->model.shapes[i] : NULL;
 }
 
 hs_shape_id hs_world_shape_at(const hs_world *world, int i) {
 	hs_shape_id id = {0, 0, 0};
-	if (world && i >= 0 && i < world->shape_count)
-		id = (hs_shape_id){(uint32_t)i + 1, world->tag, HS_GENERATION};
+	if (world && i >= 0 && i < world->model.shape_count)
+		id = (hs_shape_id){(uint32_t)i + 1, world->model.tag, HS_GENERATION};
 	return id;
 }
 
@@ -338,12 +257,12 @@ hs_object_id hs_world_add_object(hs_world *world, const hs_object_def *def, hs_s
 		hs_set_status(status, HS_ERR_INVALID_ARGUMENT);
 		return none;
 	}
-	if (world->object_count >= world->def.max_objects) {
+	if (world->model.object_count >= world->model.def.max_objects) {
 		hs_set_status(status, HS_ERR_CAPACITY);
 		return none;
 	}
-	double dt = world->def.dt;
-	hs_body *body = &world->bodies[world->object_count];
+	double dt = world->model.def.dt;
+	hs_body *body = &world->state.bodies[world->model.object_count];
 	memset(body, 0, sizeof *body);
 	body->shape = hs_shape_index(world, def->shape);
 	body->pos = def->position;
@@ -351,28 +270,28 @@ hs_object_id hs_world_add_object(hs_world *world, const hs_object_def *def, hs_s
 	body->rot_prev = body->rot;
 	// P(-dt) on the exact parabola, so eq. 3 reproduces P0 + v t + g t²/2 at every frame
 	body->prev = hs_add(hs_sub(def->position, hs_scale(def->velocity, dt)),
-	                    hs_scale(world->def.gravity, 0.5 * dt * dt));
+	                    hs_scale(world->model.def.gravity, 0.5 * dt * dt));
 	double w = hs_length(def->angular_velocity);
 	body->spin = w > 0.0 ? hs_quat_from_axis_angle(hs_scale(def->angular_velocity, 1.0 / w), w * dt)
 	                     : hs_quat_identity();
-	body->mass = def->density * world->shapes[body->shape].volume;
+	body->mass = def->density * world->model.shapes[body->shape].volume;
 	body->restitution = def->restitution < 0.0 ? -1.0 : def->restitution;
 	body->vel = def->velocity;
-	if (hs_motion_pose_vertices(world, body) <= world->def.floor_tolerance) {
+	if (hs_motion_pose_vertices(world, body) <= world->model.def.floor_tolerance) {
 		body->grounded = 1;
 		body->floor_contacts = hs_motion_floor_points(world, body);
 	}
 	hs_set_status(status, HS_OK);
-	int index = world->object_count++;
+	int index = world->model.object_count++;
 	hs_wake(world, index); // new objects look at the world once
 	hs_digest_stale(world, index);
-	world->grid_dirty = true;
+	world->cache.grid_dirty = true;
 	return hs_object_handle(world, index);
 }
 
 static const hs_body *body_of(const hs_world *world, hs_object_id id) {
 	int i = hs_object_index(world, id);
-	return i >= 0 ? &world->bodies[i] : NULL;
+	return i >= 0 ? &world->state.bodies[i] : NULL;
 }
 
 hs_status hs_world_object_state(const hs_world *world, hs_object_id id, hs_object_state *out) {
@@ -381,14 +300,14 @@ hs_status hs_world_object_state(const hs_world *world, hs_object_id id, hs_objec
 		return HS_ERR_INVALID_ARGUMENT;
 	out->position = body->pos;
 	out->orientation = body->rot;
-	out->velocity = hs_scale(hs_sub(body->pos, body->prev), 1.0 / world->def.dt);
+	out->velocity = hs_scale(hs_sub(body->pos, body->prev), 1.0 / world->model.def.dt);
 	out->contact = (hs_contact_state)body->contact;
 	out->floor_contacts = body->floor_contacts;
 	out->resting = body->asleep != 0;
 	return HS_OK;
 }
 
-int hs_world_object_count(const hs_world *world) { return world ? world->object_count : 0; }
+int hs_world_object_count(const hs_world *world) { return world ? world->model.object_count : 0; }
 
 hs_object_id hs_world_object_at(const hs_world *world, int i) {
 	hs_object_id none = {0, 0, 0};
@@ -397,5 +316,5 @@ hs_object_id hs_world_object_at(const hs_world *world, int i) {
 
 hs_shape_id hs_world_object_shape(const hs_world *world, hs_object_id id) {
 	int i = world ? hs_object_index(world, id) : -1;
-	return i < 0 ? (hs_shape_id){0, 0, 0} : hs_world_shape_at(world, world->bodies[i].shape);
+	return i < 0 ? (hs_shape_id){0, 0, 0} : hs_world_shape_at(world, world->state.bodies[i].shape);
 }

@@ -25,22 +25,22 @@ hs_hand_id hs_world_add_hand(hs_world *world, const hs_hand_def *def, hs_status 
 				return none;
 			}
 	}
-	if (world->hand_count >= world->def.max_hands) {
+	if (world->model.hand_count >= world->model.def.max_hands) {
 		hs_set_status(status, HS_ERR_CAPACITY);
 		return none;
 	}
-	hs_hand *hand = &world->hands[world->hand_count];
+	hs_hand *hand = &world->state.hands[world->model.hand_count];
 	memset(hand, 0, sizeof *hand);
 	hand->def = *def;
 	hs_glove_table_build(&hand->def, &hand->glove);
 	hand->wrist_rot = hand->prev_wrist_rot = hs_quat_identity();
-	hand->older_capacity = hs_hand_older_capacity(world->def.release_window_s, world->def.dt);
+	hand->older_capacity = hs_hand_older_capacity(world->model.def.release_window_s, world->model.def.dt);
 	for (int k = 0; k < HS_HAND_OLDER_MAX; ++k) // not yet reached: a unit rotation, as a state file must hold
 		hand->older_rot[k] = hs_quat_identity();
 	hand->lines_ready = hand->prev_lines_ready = hand->local_ready = HS_HAND_ALL_SEGMENTS; // all zero until set
 	hs_hand_update_bounds(hand); // touches nothing until it is set
 	hs_set_status(status, HS_OK);
-	int index = world->hand_count++;
+	int index = world->model.hand_count++;
 	return hs_hand_handle(world, index);
 }
 
@@ -51,7 +51,7 @@ hs_hand_id hs_world_hand_at(const hs_world *world, int i) {
 
 static hs_hand *hand_of(const hs_world *world, hs_hand_id id) {
 	int h = hs_hand_index(world, id);
-	return h >= 0 ? &world->hands[h] : NULL;
+	return h >= 0 ? &world->state.hands[h] : NULL;
 }
 
 // The hand placed from its new reading (its shape made): the first placement moves nothing.
@@ -81,7 +81,7 @@ hs_status hs_world_set_hand(hs_world *world, hs_hand_id id, hs_vec3 wrist_positi
 	// two-fingertip push drifted 2 cm sideways). A still reading keeps the hand's bits; a moving one
 	// lags by the band. The first reading is used as it is.
 	uint8_t sensors[HS_GLOVE_SENSORS];
-	hs_glove_deadband(hand->placed ? hand->sensors : reading, world->def.glove_deadband, reading, sensors);
+	hs_glove_deadband(hand->placed ? hand->sensors : reading, world->model.def.glove_deadband, reading, sensors);
 	if (!hand->placed || memcmp(hand->sensors, sensors, sizeof hand->sensors) != 0) {
 		memcpy(hand->sensors, sensors, sizeof hand->sensors); // the glove moved: a new hand shape
 		hs_hand_update_shape(hand);
@@ -138,8 +138,8 @@ hs_status hs_world_hand_rectified_points(const hs_world *world, hs_hand_id id, h
 int hs_world_contacts(const hs_world *world, hs_contact *out, int max) {
 	if (!world)
 		return 0;
-	int n = world->contact_count;
+	int n = world->out.contact_count;
 	for (int i = 0; i < n && i < max && out; ++i)
-		out[i] = world->contacts[i];
+		out[i] = world->out.contacts[i];
 	return n;
 }

@@ -8,119 +8,125 @@
 #include <stdint.h>
 
 #include "body.h"
+#include "box_memo.h"
 #include "hand_internal.h"
+#include "face_edges.h"
 #include "face_tree.h"
 #include "handspring.h"
 #include "hgrid.h"
 #include "hull.h"
+#include "near_list.h"
+#include "part_cache.h"
 
-// Fields are MODEL (built by hs_world_create / add_*, read-only while stepping), STATE (saved,
-// loaded and hashed by state.c's world walk: frame, faults, bodies, hands, spring), CACHE (derived
-// from model and state; invalidated or rebuilt after a load) or SCRATCH (per call, never read
-// before it is written in the same step). Work counters other than numeric_faults are outside
-// the state: they count what was done, not what will happen.
-// A shape's edges by face: face f's are edges[first[f] .. first[f + 1]), in index order, so the
-// edge between two faces is found among one face's few edges, not by a scan of every edge.
-typedef struct hs_face_edges {
-	int *first; // face_count + 1
-	int *edges; // 2 x edge_count
-} hs_face_edges;
+// The world's fields in four roles, each a sub-struct, plus the last step's output and the work
+// counters. What each holds, and which header owns each type: docs/architecture.md, "The world's
+// data".
 
-// An object's world box (hs_part_world_box) at two poses, the older replaced first.
-typedef struct hs_box_memo {
-	hs_vec3 pos[2], centre[2], half[2];
-	hs_quat rot[2];
-	uint8_t filled, older; // entries made (0..2), and the one to replace next
-} hs_box_memo;
+// MODEL: what the scenario describes, built by hs_world_create and hs_world_add_* and read-only
+// while stepping; enters the saved state only as a checksum (state.c).
+typedef struct hs_world_model {
+	hs_world_def def;
+	uint16_t tag;         // this world's tag in its handles (never 0)
+	bool skip_work;       // culls, the grid and sleeping on (hs_bench.h; true unless a benchmark or test says)
+	int shape_count;
+	hs_shape *shapes;     // deep copies, def.max_shapes of them
+	hs_part_cache **part_cache; // each shape's parts' box faces and grow reach (part_cache.h), made with its copy
+	double *shape_grow_reach;   // each shape's largest part grow_reach (part_reach.h)
+	hs_face_edges *face_edges;  // each shape's edges by face (face_edges.h), made with its copy
+	hs_face_tree *face_trees;   // each shape's many-faced parts as normal-cone trees (face_tree.h), made with its copy
+	int object_count;
+	int hand_count;
+	double grasp_limit;   // hs_grasp_limit(def.grasp_threshold_deg)
+	double oppose_cos;    // cos(90° − threshold / 2 + 10°), a grasp's opposition cone (grasp.c)
+	int hold_frames;      // round(tracking_hold_s / dt), the frames a lost hand keeps its grasps (tracking.c)
+} hs_world_model;
 
-// The resting objects near a box (broadphase.c, hs_grid_near): a neighbour list with a skin.
-#define HS_NEAR_BOXES 4      // lists kept at once (a hand and the objects it holds: one)
-#define HS_NEAR_LISTED 64    // objects a list holds at most (more: the grid answers alone)
-#define HS_NEAR_AWAKE_MAX 32 // lists are read only while this few objects are awake
-typedef struct hs_near_list {
-	double lo[2], hi[2]; // m: the box (x, y)
-	long epoch;          // hs_world.near_epoch when listed (0: never; near_epoch starts at 1)
-	long used;           // hs_world.near_clock when it last answered
-	int count;
-	int index[HS_NEAR_LISTED]; // ascending
-} hs_near_list;
+// STATE: saved, loaded and hashed by state.c's world walk (and spring_state.c's for the spring).
+typedef struct hs_world_state {
+	long frame;
+	long first_fault_frame; // frame of the first numeric fault (-1: none)
+	int first_fault_object; // its object index (-1: none or not an object's)
+	hs_body *bodies;        // all but shape and mass (the model's), def.max_objects of them
+	hs_hand *hands;         // all but def and the caches, def.max_hands of them
+	struct hs_spring_system *spring; // made by hs_world_create for a spring world (def.kind), NULL otherwise
+} hs_world_state;
 
-struct hs_world {
-	hs_world_def def;   // MODEL
-	uint16_t tag;       // MODEL: this world's tag in its handles (never 0)
-	int shape_count;    // MODEL
-	hs_shape *shapes;   // MODEL: deep copies, def.max_shapes of them
-	hs_face_edges *face_edges; // MODEL: each shape's edges by face (contact.c), built with its copy
-	double *shape_grow_reach; // MODEL: each shape's largest part grow_reach (part_reach.h)
-	hs_face_tree *face_trees;  // MODEL: each shape's many-faced parts as normal-cone trees (face_tree.h), built with its copy
-	int object_count;   // MODEL
-	hs_body *bodies;    // STATE (but shape, mass), def.max_objects of them
-	int hand_count;     // MODEL
-	hs_hand *hands;     // STATE (but def and caches), def.max_hands of them
-	double grasp_limit; // MODEL: hs_grasp_limit(def.grasp_threshold_deg)
-	double oppose_cos;  // MODEL: cos(90° − threshold / 2 + 10°), a grasp's opposition cone (grasp.c)
-	int hold_frames;    // MODEL: round(tracking_hold_s / dt), the frames a lost hand keeps its grasps (tracking.c)
-	long frame;         // STATE
-	hs_world_counters counters; // numeric_faults is STATE, the rest are work counters
-	long first_fault_frame;     // STATE: frame of the first numeric fault (-1: none)
-	int first_fault_object;     // STATE: its object index (-1: none or not an object's)
-	struct hs_spring_system *spring; // STATE (its own walk); made by hs_world_create for a spring world (def.kind), NULL otherwise
-	// SCRATCH for the floor and support tests, sized at hs_world_add_shape for the largest shape:
-	// hs_motion_pose_vertices writes scratch_world, hs_motion_floor_points / support.c write
-	// scratch_points, hs_motion_settle builds scratch_hull; each is read only by the caller that
-	// just filled it.
-	int scratch_capacity;
-	hs_vec3 *scratch_world; // posed vertices
-	hs_vec2 *scratch_points;
-	hs_vec2 *scratch_hull;
-	// SCRATCH of a swept check line against a many-faced part (contact.c, swept_line): the faces
-	// its sweep reaches, the edges of those faces (ascending) and a mark per edge, sized at
-	// hs_world_add_shape for the most faces and edges a shape has
-	int pick_faces, pick_edges;
-	int *face_pick, *edge_pick;
-	uint8_t *edge_mark;
-	// OUTPUT of the last step (hs_world_contacts), rebuilt from scratch by every step: not state
-	int contact_count, contact_capacity;
-	hs_contact *contacts; // this frame's hand contacts, grouped by object
-	// SCRATCH of the hand pass (manipulate.c)
-	int *queue;          // objects to move along with a moved one (§4.3), max_objects long
-	hs_vec3 *moved_from; // support mode: where each object in queue began the frame, max_objects long
-	int *candidates;     // objects a hand may touch this frame, in index order
-	int candidate_count;
-	const int *near;     // the last query's answer (hs_grid_near): `every` or `found`
-	int *every;          // 0 .. max_objects - 1, filled when the world is made: a full scan's answer
-	int *found;          // a grid query's answer, max_objects long
-	// CACHE: broad phase (broadphase.c), objects filed by the floor cell of their centre, each at
-	// the level of its bounding radius (hgrid.c)
+// CACHE: derived from model and state; invalidated or rebuilt after a load.
+typedef struct hs_world_cache {
+	int *every; // 0 .. max_objects - 1, filled when the world is made: a full scan's answer
+	// broad phase (broadphase.c): objects filed by the floor cell of their centre, each at the level
+	// of its bounding radius (hgrid.c), and the resting objects near a few boxes (near_list.h)
 	hs_hgrid grid;
-	// CACHE: the resting objects near a few boxes, listed from the grid (broadphase.c); a list is
-	// stale once near_epoch moved on (an object came to rest, or moved while resting)
-	hs_near_list near_lists[HS_NEAR_BOXES];
-	long near_epoch, near_clock;
-	long near_hits; // queries a list answered (tests: the lists are used)
-	bool grid_built;    // false until built at the first step
-	bool grid_dirty;    // objects were added (or a state loaded) since it was built
-	// CACHE: the awake objects in index order, the only ones the step visits when skip_work is on;
+	hs_near_lists near_lists;
+	bool grid_built; // false until built at the first step
+	bool grid_dirty; // objects were added (or a state loaded) since it was built
+	// the awake objects in index order, the only ones the step visits when skip_work is on;
 	// between steps exactly the objects with !asleep || held || carried (hs_awake_rebuild)
 	int awake_count;
 	int *awake;
 	uint8_t *awake_flag;
-	// CACHE: the state hash's object digests (state.c), so that a hash costs in the objects that
-	// changed, not in all of them: digest[i] is object i's walk hashed alone, digest_sum their sum.
-	// stale lists the objects that may have changed since they were digested (each step's awake
-	// list, new objects); all_stale says any of them may have (a load, the spring model's calls).
+	// the state hash's object digests (state.c), so that a hash costs in the objects that changed,
+	// not in all of them: digest[i] is object i's walk hashed alone, digest_sum their sum. stale
+	// lists the objects that may have changed since they were digested (each step's awake list, new
+	// objects); all_stale says any of them may have (a load, the spring model's calls).
 	uint64_t *digest;
 	uint64_t digest_sum;
 	int *stale;
 	uint8_t *stale_flag;
 	int stale_count;
 	bool all_stale;
-	// CACHE: the world boxes of single-part objects at their last two poses tested for interference
-	// (manipulate.c): a held object's box is made once a frame, not once per neighbour, and a
-	// resting neighbour's once. Keyed by the pose's bits, so never stale (a shape never changes).
-	hs_box_memo *box_memo;
+	hs_box_memo *box_memo; // single-part objects' world boxes at their last two poses (box_memo.h)
+} hs_world_cache;
+
+// SCRATCH: per call, never read before it is written in the same step. Every array is carved from
+// one allocation (arena), made when the world is created and again when a shape larger than any
+// before is added (world_core.c); a step never allocates.
+typedef struct hs_world_scratch {
+	void *arena;
+	// the hand pass (manipulate.c), max_objects long each
+	int *queue;          // objects to move along with a moved one (§4.3)
+	hs_vec3 *moved_from; // support mode: where each object in queue began the frame
+	int *candidates;     // objects a hand may touch this frame, in index order
+	int candidate_count;
+	int *found;          // a grid query's answer (hs_grid_near)
+	const int *near;     // the last query's answer: cache.every or found
+	// the floor and support tests, for the largest shape's vertices (and a closing hull point):
+	// hs_motion_pose_vertices writes posed, hs_motion_floor_points / support.c write points,
+	// hs_motion_settle builds hull; each is read only by the caller that just filled it
+	int vertex_room;
+	hs_vec3 *posed;
+	hs_vec2 *points;
+	hs_vec2 *hull;
+	// a swept check line against a many-faced part (contact_swept.c): the faces its sweep reaches,
+	// the edges of those faces (ascending) and a mark per edge (all 0 between uses), for the shape
+	// with the most faces and edges
+	int pick_faces, pick_edges;
+	int *face_pick, *edge_pick;
+	uint8_t *edge_mark;
+} hs_world_scratch;
+
+// OUTPUT of the last call, rebuilt by every step (or load): not state.
+typedef struct hs_world_output {
+	int contact_count, contact_capacity;
+	hs_contact *contacts;  // this frame's hand contacts, grouped by object (hs_world_contacts)
 	char state_error[160]; // why the last hs_world_load_state refused ("" when it did not)
+} hs_world_output;
+
+struct hs_world {
+	hs_world_model model;
+	hs_world_state state;
+	hs_world_cache cache;
+	hs_world_scratch scratch;
+	hs_world_output out;
+	// work counters, outside the state (they count what was done, not what will happen), but for
+	// numeric_faults, which is STATE
+	hs_world_counters counters;
 };
+
+// What the world derived from `part`, a part of `shape`, the world's copy of one of its shapes.
+static inline const hs_part_cache *hs_part_cache_of(const hs_world *world, const hs_shape *shape, const hs_part *part) {
+	return &world->model.part_cache[shape - world->model.shapes][part - shape->parts];
+}
 
 // Every live handle has this generation: objects, shapes and hands are never removed, so no slot
 // is reused yet. A handle whose generation differs is refused, so a removal can bump it later.
@@ -128,48 +134,48 @@ struct hs_world {
 
 // Object i may have changed: its digest is computed again at the next hash (state.c).
 static inline void hs_digest_stale(hs_world *world, int i) {
-	if (!world->stale_flag[i]) {
-		world->stale_flag[i] = 1;
-		world->stale[world->stale_count++] = i;
+	if (!world->cache.stale_flag[i]) {
+		world->cache.stale_flag[i] = 1;
+		world->cache.stale[world->cache.stale_count++] = i;
 	}
 }
 
 // Any object may have changed (a load, a spring step, a test writing fields): all are digested again.
-static inline void hs_digest_all_stale(hs_world *world) { world->all_stale = true; }
+static inline void hs_digest_all_stale(hs_world *world) { world->cache.all_stale = true; }
 
 static inline hs_object_id hs_object_handle(const hs_world *world, int i) {
 	hs_object_id id = {0, 0, 0};
-	if (i >= 0 && i < world->object_count)
-		id = (hs_object_id){(uint32_t)i + 1, world->tag, HS_GENERATION};
+	if (i >= 0 && i < world->model.object_count)
+		id = (hs_object_id){(uint32_t)i + 1, world->model.tag, HS_GENERATION};
 	return id;
 }
 
 static inline hs_hand_id hs_hand_handle(const hs_world *world, int h) {
 	hs_hand_id id = {0, 0, 0};
-	if (h >= 0 && h < world->hand_count)
-		id = (hs_hand_id){(uint32_t)h + 1, world->tag, HS_GENERATION};
+	if (h >= 0 && h < world->model.hand_count)
+		id = (hs_hand_id){(uint32_t)h + 1, world->model.tag, HS_GENERATION};
 	return id;
 }
 
 // The object index a handle names in this world; -1 for the null handle, a handle of another
 // world, a stale generation or an index out of range.
 static inline int hs_object_index(const hs_world *world, hs_object_id id) {
-	if (!world || id.world != world->tag || id.generation != HS_GENERATION || id.index1 < 1 ||
-	    id.index1 > (uint32_t)world->object_count)
+	if (!world || id.world != world->model.tag || id.generation != HS_GENERATION || id.index1 < 1 ||
+	    id.index1 > (uint32_t)world->model.object_count)
 		return -1;
 	return (int)id.index1 - 1;
 }
 
 static inline int hs_hand_index(const hs_world *world, hs_hand_id id) {
-	if (!world || id.world != world->tag || id.generation != HS_GENERATION || id.index1 < 1 ||
-	    id.index1 > (uint32_t)world->hand_count)
+	if (!world || id.world != world->model.tag || id.generation != HS_GENERATION || id.index1 < 1 ||
+	    id.index1 > (uint32_t)world->model.hand_count)
 		return -1;
 	return (int)id.index1 - 1;
 }
 
 static inline int hs_shape_index(const hs_world *world, hs_shape_id id) {
-	if (!world || id.world != world->tag || id.generation != HS_GENERATION || id.index1 < 1 ||
-	    id.index1 > (uint32_t)world->shape_count)
+	if (!world || id.world != world->model.tag || id.generation != HS_GENERATION || id.index1 < 1 ||
+	    id.index1 > (uint32_t)world->model.shape_count)
 		return -1;
 	return (int)id.index1 - 1;
 }
