@@ -266,7 +266,7 @@ static void get_at(hs_state_io *io, hs_capture *u) {
 	u->at.velocity = hs_get_finite3(io, "at.velocity");
 	u->at.holder = hs_get_object(io, "at.holder");
 	u->at.candidate = hs_get_object(io, "at.candidate");
-	u->at.kind = (hs_attach_kind)hs_get_range(io, "at.kind", HS_ATTACH_NONE, HS_ATTACH_ROD);
+	u->at.kind = (hs_attach_kind)hs_get_range(io, "at.kind", HS_ATTACH_NONE, HS_ATTACH_MAGNET);
 	u->at.ratio = hs_get_finite(io, "at.ratio");
 	u->at.extension = hs_get_finite(io, "at.extension");
 	u->at.rest_length = hs_get_finite(io, "at.rest_length");
@@ -349,7 +349,7 @@ static void put_release(hs_state_io *io, const hs_capture *u) {
 }
 
 static void get_release(hs_state_io *io, hs_capture *u) {
-	u->release.kind = (hs_release_kind)hs_get_range(io, "released.kind", HS_RELEASE_NONE, HS_RELEASE_THROW);
+	u->release.kind = (hs_release_kind)hs_get_range(io, "released.kind", HS_RELEASE_NONE, HS_RELEASE_RETURN);
 	u->release.object.index1 = (uint32_t)hs_get_range(io, "released.object", 0, io->objects); // index + 1, 0: none
 	u->release.time = hs_get_finite(io, "released.time");
 	u->release.velocity = hs_get_finite3(io, "released.velocity");
