@@ -210,7 +210,7 @@ static void test_capture_fields(void **state) {
 	expect_word_refused(first + 12 * WORD, 7, "state.resting is 7");
 	expect_word_refused(first + 16 * WORD, 2, "check 1 (line 15) at.holder is 2, not within [-1, 1]");
 	expect_word_refused(first + 17 * WORD, (uint64_t)-2, "at.candidate is -2, not within [-1, 1]");
-	expect_word_refused(first + 18 * WORD, 6, "at.kind is 6, not within [0, 5]");
+	expect_word_refused(first + 18 * WORD, 7, "at.kind is 7, not within [0, 6]"); // HS_ATTACH_MAGNET (6) is the last kind
 }
 
 // The world's own frame counter, the first word after its header: it must be the harness's.
