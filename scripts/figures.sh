@@ -62,6 +62,21 @@ n=$((n + 3))
 printf 'figures: %-34s %s\n' "1999_fig3_push.png" "Fig. 3: a push at one point, CB = T + R (eq. 1-2), checked against the model"
 printf 'figures: %-34s %s\n' "1999_fig4_normals.png" "Fig. 4: contact normals and an edge's pseudo-normal; a grasp"
 printf 'figures: %-34s %s\n' "1999_fig5_6_hull.png" "Figs. 5-6: floor vertices, hull, G'; stable, rules (1), (2)-a, (2)-b, (3), checked against the model"
+# Workbench Figs. 2 and 6: the damping cases against their closed forms; the tracker's samples and
+# speed during a recorded lift and throw (the plots of `make plots`, drawn here from the same generators)
+mkdir -p "$out/traj/spring"
+"$tool" run scenarios/spring/recorded_throw.yaml --out "$out/traj/spring/recorded_throw.csv" > /dev/null ||
+	{ echo "figures: spring/recorded_throw failed" >&2; exit 1; }
+for g in spring_damping spring_tracker; do
+	"$bin/$g" "$out" > /dev/null || { echo "figures: $g failed" >&2; exit 1; }
+	gnuplot -e "traj='$out/traj'; out='$out'" "plots/$g.gp"
+done
+rm -rf "$out/traj"
+mv "$out/spring_damping.png" "$out/workbench_fig2_damping.png"
+mv "$out/spring_tracker.png" "$out/workbench_fig6_tracker.png"
+n=$((n + 2))
+printf 'figures: %-34s %s\n' "workbench_fig2_damping.png" "WB Fig. 2: under-, critically and over-damped springs, simulated against closed forms"
+printf 'figures: %-34s %s\n' "workbench_fig6_tracker.png" "WB Fig. 6: the 50 Hz tracker's samples and speed estimate in a recorded lift and throw"
 # the default hand's check points in the wrist frame (handspring hand): top and side views, for
 # scenarios/README.md (writing a hand scenario needs no hidden geometry)
 "$tool" hand --posture open > "$out/hand_open.csv"
