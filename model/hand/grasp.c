@@ -15,17 +15,17 @@
 #include "inline.h"
 
 hs_vec3 hs_grasp_held_pos(const hs_body *body, const hs_hand *hand) {
-	return hs_add(hand->wrist_pos, hs_quat_rotate(hand->wrist_rot, body->grip_pos));
+	return hs_add(hand->state.wrist_pos, hs_quat_rotate(hand->state.wrist_rot, body->grip_pos));
 }
 
 void hs_grasp_follow_wrist(hs_body *body, const hs_hand *hand) {
 	body->pos = hs_grasp_held_pos(body, hand);
-	body->rot = hs_quat_normalize(hs_quat_mul(hand->wrist_rot, body->grip_rot));
+	body->rot = hs_quat_normalize(hs_quat_mul(hand->state.wrist_rot, body->grip_rot));
 }
 
 void hs_grasp_slip(hs_body *body, const hs_hand *hand) {
-	body->grip_pos = hs_quat_inv_rotate(hand->wrist_rot, hs_sub(body->pos, hand->wrist_pos));
-	body->grip_rot = hs_quat_normalize(hs_quat_mul(hs_quat_conj(hand->wrist_rot), body->rot));
+	body->grip_pos = hs_quat_inv_rotate(hand->state.wrist_rot, hs_sub(body->pos, hand->state.wrist_pos));
+	body->grip_rot = hs_quat_normalize(hs_quat_mul(hs_quat_conj(hand->state.wrist_rot), body->rot));
 }
 
 // The finger of a check point (i / 4) or check line (j / 12), §3.1.
@@ -42,8 +42,8 @@ static HS_FORCE_INLINE void hand_opening(const hs_hand *hand, unsigned fingers, 
 	*spread = *reach = 0.0;
 	for (int f = 0; f < 5; ++f)
 		if (fingers >> f & 1u) {
-			tips[m] = hand->points[4 * f + 3];
-			*reach += hs_length(hs_sub(tips[m], hand->points[4 * f]));
+			tips[m] = hand->cache.points[4 * f + 3];
+			*reach += hs_length(hs_sub(tips[m], hand->cache.points[4 * f]));
 			c = hs_add(c, tips[m++]);
 		}
 	if (m == 0)
@@ -69,9 +69,9 @@ void hs_grasp_track_pairs(hs_world *world) {
 		for (int a = 0; a < 4; ++a)
 			for (int b = a + 1; b < 5; ++b) {
 				int k = finger_pair(a, b);
-				double d = hs_length(hs_sub(hand->points[4 * a + 3], hand->points[4 * b + 3]));
-				double kept = hand->pair_open[k] - forget;
-				hand->pair_open[k] = d > kept ? d : kept;
+				double d = hs_length(hs_sub(hand->cache.points[4 * a + 3], hand->cache.points[4 * b + 3]));
+				double kept = hand->state.pair_open[k] - forget;
+				hand->state.pair_open[k] = d > kept ? d : kept;
 			}
 	}
 }
@@ -79,7 +79,7 @@ void hs_grasp_track_pairs(hs_world *world) {
 void hs_grasp_reset_pairs(hs_hand *hand) {
 	for (int a = 0; a < 4; ++a)
 		for (int b = a + 1; b < 5; ++b)
-			hand->pair_open[finger_pair(a, b)] = hs_length(hs_sub(hand->points[4 * a + 3], hand->points[4 * b + 3]));
+			hand->state.pair_open[finger_pair(a, b)] = hs_length(hs_sub(hand->cache.points[4 * a + 3], hand->cache.points[4 * b + 3]));
 }
 
 // True when contacts a and b press toward each other across the object (docs/model.md §3 "Grasp
@@ -103,9 +103,9 @@ static bool opposed(const hs_world *world, const hs_contact *a, const hs_contact
 // lately (hs_hand.pair_open) and are not opening now (their tips parted by at most HS_PAIR_STILL
 // plus HS_PAIR_DRIFT dt since the last frame): a hand that closed on one object and opens again is not closing.
 static bool pair_closing(const hs_world *world, const hs_hand *hand, int a, int b) {
-	double d = hs_length(hs_sub(hand->points[4 * a + 3], hand->points[4 * b + 3]));
-	double before = hs_length(hs_sub(hand->prev_points[4 * a + 3], hand->prev_points[4 * b + 3]));
-	return hand->pair_open[finger_pair(a, b)] - d >= world->model.def.grasp_close_mm * 1e-3 &&
+	double d = hs_length(hs_sub(hand->cache.points[4 * a + 3], hand->cache.points[4 * b + 3]));
+	double before = hs_length(hs_sub(hand->cache.prev_points[4 * a + 3], hand->cache.prev_points[4 * b + 3]));
+	return hand->state.pair_open[finger_pair(a, b)] - d >= world->model.def.grasp_close_mm * 1e-3 &&
 	       d <= before + HS_PAIR_STILL + HS_PAIR_DRIFT * world->model.def.dt;
 }
 

@@ -145,7 +145,7 @@ static void carry_along(hs_world *world, int moved, int current, rigid_move m) {
 // (docs/model.md §4 "Release").
 static int release_frames(const hs_world *world, const hs_hand *hand) {
 	int n = hs_release_window_frames(world->model.def.release_window_s, world->model.def.dt);
-	int most = hand->older_count + 1;
+	int most = hand->state.older_count + 1;
 	return n > most ? most : n;
 }
 
@@ -210,7 +210,7 @@ static void release_motion(const hs_world *world, const hs_body *body, const hs_
 	carried_motion(body, hand, 0, frames, v_dt, turn);
 	if (world->model.def.release_fit == HS_RELEASE_FIT_QUADRATIC && frames >= 2) // as the bench's lsq
 		*v_dt = quadratic_slope(body, hand, frames);
-	int held = frames < hand->older_count ? frames : hand->older_count; // past(1 + held) must exist
+	int held = frames < hand->state.older_count ? frames : hand->state.older_count; // past(1 + held) must exist
 	if (held < 1)
 		return;
 	hs_vec3 h_dt;
@@ -285,7 +285,7 @@ static void collect_candidates(hs_world *world) {
 	world->scratch.candidate_count = 0;
 	for (int h = 0; h < world->model.hand_count; ++h) {
 		const hs_hand *hand = &world->state.hands[h];
-		int n = hs_grid_near(world, hand->sweep_center, hand->sweep_radius);
+		int n = hs_grid_near(world, hand->cache.sweep_center, hand->cache.sweep_radius);
 		for (int k = 0; k < n; ++k) {
 			const hs_body *b = &world->state.bodies[world->scratch.near[k]];
 			if (!untouched(b) || hs_contact_hand_near(world, b, hand, 0.0))
@@ -405,18 +405,18 @@ static bool outruns(const hs_body *body, const hs_contact *c) {
 // point that touched and has come off by less than grasp_release_mm still touches (near_points).
 static void note_touching(hs_world *world) {
 	for (int h = 0; h < world->model.hand_count; ++h) {
-		world->state.hands[h].touch_points = world->state.hands[h].near_points;
-		world->state.hands[h].touch_lines = 0;
-		world->state.hands[h].embed_points = world->state.hands[h].embed_points_next;
-		world->state.hands[h].embed_lines = world->state.hands[h].embed_lines_next;
+		world->state.hands[h].state.touch_points = world->state.hands[h].scratch.near_points;
+		world->state.hands[h].state.touch_lines = 0;
+		world->state.hands[h].state.embed_points = world->state.hands[h].scratch.embed_points_next;
+		world->state.hands[h].state.embed_lines = world->state.hands[h].scratch.embed_lines_next;
 	}
 	for (int k = 0; k < world->out.contact_count; ++k) {
 		const hs_contact *c = &world->out.contacts[k];
 		hs_hand *hand = &world->state.hands[c->hand.index1 - 1];
 		if (c->part < HS_HAND_POINTS)
-			hand->touch_points |= 1u << c->part;
+			hand->state.touch_points |= 1u << c->part;
 		else
-			hand->touch_lines |= (uint64_t)1 << (c->part - HS_HAND_POINTS);
+			hand->state.touch_lines |= (uint64_t)1 << (c->part - HS_HAND_POINTS);
 	}
 }
 
@@ -424,8 +424,8 @@ void hs_manipulate(hs_world *world) {
 	world->out.contact_count = 0;
 	for (int h = 0; h < world->model.hand_count; ++h) { // the parts' paths through the frame (swept detection)
 		hs_hand_sweep(&world->state.hands[h], world->model.def.paper_contacts);
-		world->state.hands[h].near_points = world->state.hands[h].embed_points_next = 0;
-		world->state.hands[h].embed_lines_next = 0;
+		world->state.hands[h].scratch.near_points = world->state.hands[h].scratch.embed_points_next = 0;
+		world->state.hands[h].scratch.embed_lines_next = 0;
 	}
 	collect_candidates(world);
 	// candidate_count may grow in the loop: carry_along adds objects it moved within reach

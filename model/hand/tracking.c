@@ -23,22 +23,22 @@
 void hs_tracking_update(hs_world *world) {
 	for (int h = 0; h < world->model.hand_count; ++h) {
 		hs_hand *hand = &world->state.hands[h];
-		if (hand->untracked) {
-			if (hand->lost_frames < INT_MAX)
-				hand->lost_frames++;
-			if (hand->lost_frames == world->model.hold_frames + 1)
+		if (hand->state.untracked) {
+			if (hand->state.lost_frames < INT_MAX)
+				hand->state.lost_frames++;
+			if (hand->state.lost_frames == world->model.hold_frames + 1)
 				hs_grasp_let_go_in_place(world, h);
 			continue;
 		}
-		if (hand->lost_frames == 0)
+		if (hand->state.lost_frames == 0)
 			continue;
-		bool kept = hand->lost_frames <= world->model.hold_frames;
-		double reach = HS_TRACKING_JUMP + HS_TRACKING_SPEED * (hand->lost_frames + 1) * world->model.def.dt;
-		if (kept && hs_length(hs_sub(hand->wrist_pos, hand->prev_wrist_pos)) > reach)
+		bool kept = hand->state.lost_frames <= world->model.hold_frames;
+		double reach = HS_TRACKING_JUMP + HS_TRACKING_SPEED * (hand->state.lost_frames + 1) * world->model.def.dt;
+		if (kept && hs_length(hs_sub(hand->state.wrist_pos, hand->state.prev_wrist_pos)) > reach)
 			hs_grasp_let_go_in_place(world, h);
 		hs_hand_keep_previous(hand);
-		hand->older_count = 0;
+		hand->state.older_count = 0;
 		hs_grasp_reset_pairs(hand);
-		hand->lost_frames = 0;
+		hand->state.lost_frames = 0;
 	}
 }
