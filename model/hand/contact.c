@@ -47,7 +47,7 @@ static void detect_points(hs_world *world, int object, int h, const hs_part *par
 	bool still = !moved && same_pose(&world->state.bodies[object]);
 	// passed over: far fingers' points (far_fingers), and those beyond the sphere now unless paths count
 	uint32_t todo = ((1u << HS_HAND_POINTS) - 1u) & ~hs_finger_parts(far, 4);
-	uint32_t near = cull ? hs_contact_points_near_part(hand, pc->grow_reach, center, r, swept, hs_contact_keep(world, hand)) : todo;
+	uint32_t near = cull ? hs_contact_points_near_part(hand, pc->grow_reach, center, r, swept, hs_contact_keep(&world->model, hand)) : todo;
 	double margin = world->model.def.grasp_release_mm * 1e-3;
 	if (!swept || moved)
 		todo &= near;
@@ -214,7 +214,7 @@ int hs_contact_detect_grown(hs_world *world, int object, const hs_pose *before, 
 	const hs_body *body = &world->state.bodies[object];
 	const hs_shape *shape = &world->model.shapes[body->shape];
 	int h = 0; // the first hand near the object: only then are its poses made matrices
-	while (h < world->model.hand_count && !hs_contact_hand_near(world, body, &world->state.hands[h], grow))
+	while (h < world->model.hand_count && !hs_contact_hand_near(&world->model, body, &world->state.hands[h], grow))
 		++h;
 	if (h == world->model.hand_count)
 		return 0;
@@ -223,7 +223,7 @@ int hs_contact_detect_grown(hs_world *world, int object, const hs_pose *before, 
 		then = (hs_frame){before->pos, hs_mat3_from_quat(before->rot)};
 	for (; h < world->model.hand_count; ++h) {
 		const hs_hand *hand = &world->state.hands[h];
-		if (!hs_contact_hand_near(world, body, hand, grow))
+		if (!hs_contact_hand_near(&world->model, body, hand, grow))
 			continue; // bounding-volume rejection before the narrow tests (Fig. 2)
 		if (grow == 0.0) // the grown test repeats a held object's: counted once
 			world->counters.hand_tests++;
@@ -238,10 +238,10 @@ int hs_contact_detect_grown(hs_world *world, int object, const hs_pose *before, 
 			unsigned far = 0;
 			if (world->model.skip_work) {
 				hs_vec3 c = to_world(&now, part->center);
-				if (!hs_contact_sphere_near(world, hand, c, part->radius, pc->grow_reach, grow))
+				if (!hs_contact_sphere_near(&world->model, hand, c, part->radius, pc->grow_reach, grow))
 					continue;
 				if (fingers) {
-					far = hs_contact_far_fingers(hand, pc->grow_reach, c, part->radius + HS_CULL_SLACK, hs_contact_keep(world, hand));
+					far = hs_contact_far_fingers(hand, pc->grow_reach, c, part->radius + HS_CULL_SLACK, hs_contact_keep(&world->model, hand));
 				}
 			}
 			int from = world->out.contact_count;

@@ -288,7 +288,7 @@ static void collect_candidates(hs_world *world) {
 		int n = hs_grid_near(world, hand->cache.sweep_center, hand->cache.sweep_radius);
 		for (int k = 0; k < n; ++k) {
 			const hs_body *b = &world->state.bodies[world->scratch.near[k]];
-			if (!untouched(b) || hs_contact_hand_near(world, b, hand, 0.0))
+			if (!untouched(b) || hs_contact_hand_near(&world->model, b, hand, 0.0))
 				add_candidate(&world->scratch, world->scratch.near[k]);
 		}
 	}
