@@ -100,7 +100,7 @@ static bool opposed(const hs_world_model *model, const hs_contact *a, const hs_c
 #define HS_PAIR_DRIFT 0.05
 
 // True when fingers a < b of the hand have closed by grasp_close_mm from the most open they were
-// lately (hs_hand.pair_open) and are not opening now (their tips parted by at most HS_PAIR_STILL
+// lately (hs_hand.state.pair_open) and are not opening now (their tips parted by at most HS_PAIR_STILL
 // plus HS_PAIR_DRIFT dt since the last frame): a hand that closed on one object and opens again is not closing.
 static bool pair_closing(const hs_world_def *def, const hs_hand *hand, int a, int b) {
 	double d = hs_length(hs_sub(hand->cache.points[4 * a + 3], hand->cache.points[4 * b + 3]));
@@ -110,7 +110,7 @@ static bool pair_closing(const hs_world_def *def, const hs_hand *hand, int a, in
 }
 
 // True when the fingers of contacts a and b (one hand, different fingers) have closed by
-// grasp_close_mm from the most open they were lately (hs_hand.pair_open).
+// grasp_close_mm from the most open they were lately (hs_hand.state.pair_open).
 static bool closing(const hs_world_def *def, const hs_hand *hands, const hs_contact *a, const hs_contact *b) {
 	if (a->hand.index1 != b->hand.index1) // two hands squeezing from either side
 		return true;
@@ -247,7 +247,7 @@ static bool hand_within_margin(hs_world *world, int i, uint32_t r, int at) {
 	return near;
 }
 
-// True when some pair of fingertips of the hand has closed by grasp_close_mm (hs_hand.pair_open).
+// True when some pair of fingertips of the hand has closed by grasp_close_mm (hs_hand.state.pair_open).
 static bool hand_closing(const hs_world_def *def, const hs_hand *hand) {
 	for (int a = 0; a < 4; ++a)
 		for (int b = a + 1; b < 5; ++b)

@@ -16,7 +16,7 @@
 
 // Wrist poses kept beyond the last step's (for a release's velocity, manipulate.c): at least
 // HS_HAND_OLDER (the default 50 ms window needs 5 at 120 frames/s), more when the world's
-// release_window_s needs them (hs_hand.older_capacity), at most HS_HAND_OLDER_MAX.
+// release_window_s needs them (hs_hand.model.older_capacity), at most HS_HAND_OLDER_MAX.
 #define HS_HAND_OLDER 7
 // Pairs of different fingers (5 choose 2), hs_finger_pair.
 #define HS_FINGER_PAIRS 10
