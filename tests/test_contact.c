@@ -28,8 +28,8 @@ static hs_world *cube_world_dt(double dt) {
 static hs_world *cube_world(void) { return cube_world_dt(1.0 / 60); }
 
 static void move_point(hs_world *w, int i, hs_vec3 from, hs_vec3 to) {
-	w->state.hands[0].prev_points[i] = from;
-	w->state.hands[0].points[i] = to;
+	w->state.hands[0].cache.prev_points[i] = from;
+	w->state.hands[0].cache.points[i] = to;
 	hs_hand_points_moved(&w->state.hands[0]);
 }
 
@@ -57,7 +57,7 @@ static void test_point_inside_nearest_face(void **state) {
 	hs_world *w = cube_world();
 	move_point(w, 0, hs_v3(-0.45, 0, 2.1), hs_v3(-0.44, 0, 2.1));
 	assert_int_equal(hs_contact_detect(w, 0, NULL), 0);
-	w->state.hands[0].touch_points = 1u;
+	w->state.hands[0].state.touch_points = 1u;
 	assert_int_equal(hs_contact_detect(w, 0, NULL), 1);
 	assert_vec3_near(contact(w, 0).normal, hs_v3(-1, 0, 0), 1e-15);
 	assert_vec3_near(contact(w, 0).point, hs_v3(-0.5, 0, 2.1), 1e-15);
@@ -84,8 +84,8 @@ static void test_fingertip_friction_cone(void **state) {
 	assert_vec3_near(contact(w, 0).finger, hs_v3(0.39, 0.2, 2.45), 1e-12);
 	// sunk in the -x face (touching): in 0.01 and sideways 0.03 -> 0.01; sideways 0.005 stays whole
 	w->out.contact_count = 0;
-	w->state.hands[0].points[3] = w->state.hands[0].prev_points[3] = RIG_FAR;
-	w->state.hands[0].touch_points = 1u;
+	w->state.hands[0].cache.points[3] = w->state.hands[0].cache.prev_points[3] = RIG_FAR;
+	w->state.hands[0].state.touch_points = 1u;
 	move_point(w, 0, hs_v3(-0.45, 0, 2.1), hs_v3(-0.44, 0.03, 2.1));
 	assert_int_equal(hs_contact_detect(w, 0, NULL), 1);
 	assert_vec3_near(contact(w, 0).point, hs_v3(-0.5, 0, 2.1), 1e-15);
@@ -111,29 +111,29 @@ static void test_touching_point_within_margin(void **state) {
 	hs_body *b = &w->state.bodies[0];
 	b->prev = b->pos;
 	b->rot_prev = b->rot;
-	w->state.hands[0].touch_points = 1u << 3;
+	w->state.hands[0].state.touch_points = 1u << 3;
 	move_point(w, 3, hs_v3(0.1, 0.2, 2.499), hs_v3(0.1, 0.2, 2.503));
 	assert_int_equal(hs_contact_detect(w, 0, NULL), 1);
 	assert_vec3_near(contact(w, 0).point, hs_v3(0.1, 0.2, 2.5), 1e-15);
 	assert_vec3_near(contact(w, 0).finger, contact(w, 0).point, 0.0);
-	assert_int_equal(w->state.hands[0].near_points, 1u << 3);
+	assert_int_equal(w->state.hands[0].scratch.near_points, 1u << 3);
 	w->out.contact_count = 0;
-	w->state.hands[0].near_points = 0;
+	w->state.hands[0].scratch.near_points = 0;
 	b->prev.x -= 0.001; // moved last frame: no contact, still touching
 	assert_int_equal(hs_contact_detect(w, 0, NULL), 0);
-	assert_int_equal(w->state.hands[0].near_points, 1u << 3);
+	assert_int_equal(w->state.hands[0].scratch.near_points, 1u << 3);
 	w->out.contact_count = 0; // ... unless another part of the hand pushes it this frame: 3
 	move_point(w, 7, hs_v3(0.0, 0.2, 2.6), hs_v3(0.0, 0.2, 2.49));
 	assert_int_equal(hs_contact_detect(w, 0, NULL), 2);
 	assert_int_equal(hs_contact_classify(w->out.contacts, 2, w->model.grasp_limit, false), HS_CONTACT_PUSH_MANY);
 	assert_true(w->out.contacts[0].t == 0.0 || w->out.contacts[1].t == 0.0);
 	w->out.contact_count = 0;
-	w->state.hands[0].points[7] = w->state.hands[0].prev_points[7] = RIG_FAR;
+	w->state.hands[0].cache.points[7] = w->state.hands[0].cache.prev_points[7] = RIG_FAR;
 	b->prev = b->pos;
-	w->state.hands[0].near_points = 0;
+	w->state.hands[0].scratch.near_points = 0;
 	move_point(w, 3, hs_v3(0.1, 0.2, 2.499), hs_v3(0.1, 0.2, 2.506)); // beyond the margin: let go
 	assert_int_equal(hs_contact_detect(w, 0, NULL), 0);
-	assert_int_equal(w->state.hands[0].near_points, 0u);
+	assert_int_equal(w->state.hands[0].scratch.near_points, 0u);
 	hs_world_destroy(w);
 }
 
@@ -143,7 +143,7 @@ static void test_touching_point_within_margin(void **state) {
 static void test_trailing_part_set_aside(void **state) {
 	(void)state;
 	hs_world *w = cube_world();
-	w->state.hands[0].touch_points = 1u << 7;                           // finger 1's tip touched the -x face
+	w->state.hands[0].state.touch_points = 1u << 7;                           // finger 1's tip touched the -x face
 	move_point(w, 7, hs_v3(-0.45, 0, 2.1), hs_v3(-0.43, 0, 2.1)); // sunk: drives it in 0.02
 	move_point(w, 6, hs_v3(-0.6, 0, 2.2), hs_v3(-0.49, 0, 2.2));  // its DIP reaches it, 0.01 in
 	assert_int_equal(hs_contact_detect(w, 0, NULL), 1);
@@ -180,17 +180,17 @@ static void test_line_beside_touching_point(void **state) {
 	(void)state;
 	hs_world *w = cube_world();
 	hs_hand *hand = &w->state.hands[0];
-	hand->lines[8][0] = hs_v3(0.3, 0, 2.7); // enters the top, leaves +x; its end 3 mm off the +x face
-	hand->lines[8][1] = hs_v3(0.503, 0, 2.45);
+	hand->cache.lines[8][0] = hs_v3(0.3, 0, 2.7); // enters the top, leaves +x; its end 3 mm off the +x face
+	hand->cache.lines[8][1] = hs_v3(0.503, 0, 2.45);
 	assert_int_equal(hs_contact_detect(w, 0, NULL), 1);
 	assert_true(contact(w, 0).edge);
 	w->out.contact_count = 0;
-	hand->touch_points = 1u << 3;
+	hand->state.touch_points = 1u << 3;
 	assert_int_equal(hs_contact_detect(w, 0, NULL), 0);
-	hand->touch_points = 1u << 1; // another point of that finger: the line still touches
+	hand->state.touch_points = 1u << 1; // another point of that finger: the line still touches
 	assert_int_equal(hs_contact_detect(w, 0, NULL), 1);
 	w->out.contact_count = 0;
-	hand->touch_points = 0; // point 3 reaching the top this frame: the line is its business too
+	hand->state.touch_points = 0; // point 3 reaching the top this frame: the line is its business too
 	move_point(w, 3, hs_v3(0.45, 0, 2.6), hs_v3(0.45, 0, 2.49));
 	assert_int_equal(hs_contact_detect(w, 0, NULL), 1);
 	assert_int_equal(contact(w, 0).part, 3);
@@ -219,8 +219,8 @@ static void test_line_crosses_edge(void **state) {
 	(void)state;
 	hs_world *w = cube_world();
 	hs_hand *hand = &w->state.hands[0];
-	hand->lines[7][0] = hs_v3(0.25, 0, 2.6); // enters the top at t = 0.25, leaves +x at t = 0.625
-	hand->lines[7][1] = hs_v3(0.65, 0, 2.2);
+	hand->cache.lines[7][0] = hs_v3(0.25, 0, 2.6); // enters the top at t = 0.25, leaves +x at t = 0.625
+	hand->cache.lines[7][1] = hs_v3(0.65, 0, 2.2);
 	assert_int_equal(hs_contact_detect(w, 0, NULL), 1);
 	hs_contact c = contact(w, 0);
 	assert_true(c.edge);
@@ -236,14 +236,14 @@ static void test_line_across_and_line_ending_inside(void **state) {
 	(void)state;
 	hs_world *w = cube_world();
 	hs_hand *hand = &w->state.hands[0];
-	hand->lines[0][0] = hs_v3(-1, 0, 2.45);
-	hand->lines[0][1] = hs_v3(1, 0, 2.45);
+	hand->cache.lines[0][0] = hs_v3(-1, 0, 2.45);
+	hand->cache.lines[0][1] = hs_v3(1, 0, 2.45);
 	assert_int_equal(hs_contact_detect(w, 0, NULL), 1);
 	assert_false(contact(w, 0).edge);
 	assert_vec3_near(contact(w, 0).normal, hs_v3(0, 0, 1), 1e-15);
 	assert_vec3_near(contact(w, 0).point, hs_v3(0, 0, 2.5), 1e-15);
 	w->out.contact_count = 0;
-	hand->lines[0][1] = hs_v3(0, 0, 2.45);
+	hand->cache.lines[0][1] = hs_v3(0, 0, 2.45);
 	assert_int_equal(hs_contact_detect(w, 0, NULL), 0);
 	hs_world_destroy(w);
 }
@@ -360,22 +360,22 @@ static void test_grasp_follow_release(void **state) {
 	assert_vec3_near(w->state.bodies[0].pos, hs_v3(0, 0, 2), 0); // held where it was grasped
 	for (int k = 1; k <= 3; ++k) { // the wrist and fingers rise 0.1 per frame and turn 10 deg about z
 		hs_vec3 lift = hs_v3(0, 0, 0.1 * k);
-		hand->wrist_pos = lift;
-		hand->wrist_rot = hs_quat_from_axis_angle(hs_v3(0, 0, 1), k * 10 * HS_PI / 180);
-		hs_vec3 tip3 = hs_add(hs_quat_rotate(hand->wrist_rot, hs_v3(-0.45, 0, 2)), hs_v3(0, 0, 0));
-		hs_vec3 tip7 = hs_quat_rotate(hand->wrist_rot, hs_v3(0.45, 0, 2));
-		hand->points[3] = hs_add(tip3, lift);
-		hand->points[7] = hs_add(tip7, lift);
+		hand->state.wrist_pos = lift;
+		hand->state.wrist_rot = hs_quat_from_axis_angle(hs_v3(0, 0, 1), k * 10 * HS_PI / 180);
+		hs_vec3 tip3 = hs_add(hs_quat_rotate(hand->state.wrist_rot, hs_v3(-0.45, 0, 2)), hs_v3(0, 0, 0));
+		hs_vec3 tip7 = hs_quat_rotate(hand->state.wrist_rot, hs_v3(0.45, 0, 2));
+		hand->cache.points[3] = hs_add(tip3, lift);
+		hand->cache.points[7] = hs_add(tip7, lift);
 		hs_hand_points_moved(hand);
 		hs_world_step(w);
 		assert_int_equal(w->state.bodies[0].contact, HS_CONTACT_GRASP);
-		assert_vec3_near(w->state.bodies[0].pos, hs_add(hs_quat_rotate(hand->wrist_rot, hs_v3(0, 0, 2)), lift), 1e-14);
+		assert_vec3_near(w->state.bodies[0].pos, hs_add(hs_quat_rotate(hand->state.wrist_rot, hs_v3(0, 0, 2)), lift), 1e-14);
 	}
-	hand->points[3] = hand->points[7] = FAR; // the hand opens while it goes on rising and turning
+	hand->cache.points[3] = hand->cache.points[7] = FAR; // the hand opens while it goes on rising and turning
 	hs_hand_points_moved(hand);
-	hand->wrist_pos = hs_v3(0, 0, 0.4);
-	hand->wrist_rot = hs_quat_from_axis_angle(hs_v3(0, 0, 1), 40 * HS_PI / 180);
-	hs_vec3 carried = hs_add(hs_quat_rotate(hand->wrist_rot, hs_v3(0, 0, 2)), hand->wrist_pos);
+	hand->state.wrist_pos = hs_v3(0, 0, 0.4);
+	hand->state.wrist_rot = hs_quat_from_axis_angle(hs_v3(0, 0, 1), 40 * HS_PI / 180);
+	hs_vec3 carried = hs_add(hs_quat_rotate(hand->state.wrist_rot, hs_v3(0, 0, 2)), hand->state.wrist_pos);
 	hs_world_step(w);
 	assert_int_equal(w->state.bodies[0].contact, HS_CONTACT_NONE);
 	// v = the hand's motion over the frame it let go in, (carried - last) / dt: let go in the
@@ -397,19 +397,19 @@ static void test_grasp_slips_on_floor(void **state) {
 	hs_hand *hand = &w->state.hands[0];
 	move_point(w, 3, hs_v3(-0.6, 0, 0.5), hs_v3(-0.45, 0, 0.5)); // two opposite faces: a grasp
 	move_point(w, 7, hs_v3(0.6, 0, 0.5), hs_v3(0.45, 0, 0.5));
-	hand->points[0] = hand->prev_points[0] = hs_v3(-0.45, 0, 5); // the fingers' bases, far above:
-	hand->points[4] = hand->prev_points[4] = hs_v3(0.45, 0, 5);  // moved with the tips, no reach out
+	hand->cache.points[0] = hand->cache.prev_points[0] = hs_v3(-0.45, 0, 5); // the fingers' bases, far above:
+	hand->cache.points[4] = hand->cache.prev_points[4] = hs_v3(0.45, 0, 5);  // moved with the tips, no reach out
 	hs_hand_points_moved(hand);
 	hs_world_step(w);
 	assert_int_equal(w->state.bodies[0].contact, HS_CONTACT_GRASP);
 	const double dz[2] = {-0.1, 0.3}; // the wrist and the tips press 0.1 down, then rise 0.3
 	const double held[2] = {0.5, 0.8}; // G: kept on the floor, then 0.3 above it
 	for (int k = 0; k < 2; ++k) {
-		hand->wrist_pos = hs_v3(0, 0, hand->wrist_pos.z + dz[k]);
-		move_point(w, 3, hand->points[3], hs_add(hand->points[3], hs_v3(0, 0, dz[k])));
-		move_point(w, 7, hand->points[7], hs_add(hand->points[7], hs_v3(0, 0, dz[k])));
-		move_point(w, 0, hand->points[0], hs_add(hand->points[0], hs_v3(0, 0, dz[k])));
-		move_point(w, 4, hand->points[4], hs_add(hand->points[4], hs_v3(0, 0, dz[k])));
+		hand->state.wrist_pos = hs_v3(0, 0, hand->state.wrist_pos.z + dz[k]);
+		move_point(w, 3, hand->cache.points[3], hs_add(hand->cache.points[3], hs_v3(0, 0, dz[k])));
+		move_point(w, 7, hand->cache.points[7], hs_add(hand->cache.points[7], hs_v3(0, 0, dz[k])));
+		move_point(w, 0, hand->cache.points[0], hs_add(hand->cache.points[0], hs_v3(0, 0, dz[k])));
+		move_point(w, 4, hand->cache.points[4], hs_add(hand->cache.points[4], hs_v3(0, 0, dz[k])));
 		hs_world_step(w);
 		assert_int_equal(w->state.bodies[0].contact, HS_CONTACT_GRASP);
 		assert_vec3_near(w->state.bodies[0].pos, hs_v3(0, 0, held[k]), 1e-15);
@@ -428,17 +428,17 @@ static int carry_path_and_release(hs_world *w, hs_vec3 u_dt, hs_vec3 a_dt2, int 
 	assert_int_equal(w->state.bodies[0].contact, HS_CONTACT_GRASP);
 	for (int k = 1; k <= frames; ++k) {
 		hs_vec3 shift = hs_mul_add(hs_scale(u_dt, k), 0.5 * k * k, a_dt2);
-		hand->wrist_pos = shift;
-		hand->points[3] = hs_add(hs_v3(-0.45, 0, 2), shift);
-		hand->points[7] = hs_add(hs_v3(0.45, 0, 2), shift);
+		hand->state.wrist_pos = shift;
+		hand->cache.points[3] = hs_add(hs_v3(-0.45, 0, 2), shift);
+		hand->cache.points[7] = hs_add(hs_v3(0.45, 0, 2), shift);
 		hs_hand_points_moved(hand);
-		hand->center = hs_add(hs_v3(0, 0, 2), shift);
+		hand->cache.center = hs_add(hs_v3(0, 0, 2), shift);
 		hs_world_step(w);
 		assert_int_equal(w->state.bodies[0].contact, HS_CONTACT_GRASP);
 	}
-	hand->points[3] = hand->points[7] = FAR; // the hand opens while it goes on moving
+	hand->cache.points[3] = hand->cache.points[7] = FAR; // the hand opens while it goes on moving
 	hs_hand_points_moved(hand);
-	hand->wrist_pos = hs_mul_add(hs_scale(u_dt, frames + 1), 0.5 * (frames + 1) * (frames + 1), a_dt2);
+	hand->state.wrist_pos = hs_mul_add(hs_scale(u_dt, frames + 1), 0.5 * (frames + 1) * (frames + 1), a_dt2);
 	return frames + 1;
 }
 
@@ -615,9 +615,9 @@ static void pyramid_by_one_finger(bool any_contacts) {
 	hs_vec3 p0 = w->state.bodies[0].pos;
 	for (int k = 1; k <= 2; ++k) { // the wrist and the finger rise 0.1 m a frame, out past the +x side
 		hs_vec3 lift = hs_v3(0.1 * k, 0, 0.1 * k);
-		hand->wrist_pos = lift;
-		hand->points[6] = hs_add(dip, lift);
-		hand->points[7] = hs_add(hs_v3(0.03, 0, 1.985), lift);
+		hand->state.wrist_pos = lift;
+		hand->cache.points[6] = hs_add(dip, lift);
+		hand->cache.points[7] = hs_add(hs_v3(0.03, 0, 1.985), lift);
 		hs_hand_points_moved(hand);
 		hs_world_step(w);
 		if (any_contacts) { // held: it follows the wrist
@@ -647,10 +647,10 @@ static void test_grasp_continues_on_two_fingers_only(void **state) {
 	move_point(w, 7, hs_v3(0.6, 0, 2), hs_v3(0.45, 0, 2));   // index tip in the +x face
 	hs_world_step(w);
 	assert_int_equal(w->state.bodies[0].contact, HS_CONTACT_GRASP);
-	w->state.hands[0].points[7] = FAR;
+	w->state.hands[0].cache.points[7] = FAR;
 	hs_hand_points_moved(&w->state.hands[0]);
-	w->state.hands[0].prev_points[2] = hs_v3(0.6, 0.1, 2); // the thumb's IP joint in the +x face
-	w->state.hands[0].points[2] = hs_v3(0.45, 0.1, 2);
+	w->state.hands[0].cache.prev_points[2] = hs_v3(0.6, 0.1, 2); // the thumb's IP joint in the +x face
+	w->state.hands[0].cache.points[2] = hs_v3(0.45, 0.1, 2);
 	hs_hand_points_moved(&w->state.hands[0]);
 	hs_world_step(w);
 	assert_int_not_equal(w->state.bodies[0].contact, HS_CONTACT_GRASP);
@@ -694,18 +694,18 @@ static void test_grasp_holds_fast_hand(void **state) {
 	(void)state;
 	hs_world *w = cube_world();
 	hs_hand *hand = &w->state.hands[0];
-	hand->wrist_pos = hs_v3(0, 0, 2);
+	hand->state.wrist_pos = hs_v3(0, 0, 2);
 	move_point(w, 3, hs_v3(-0.6, 0, 2), hs_v3(-0.45, 0, 2));
 	move_point(w, 7, hs_v3(0.6, 0, 2), hs_v3(0.45, 0, 2));
 	hs_world_step(w);
 	assert_int_equal(w->state.bodies[0].contact, HS_CONTACT_GRASP);
 	for (int k = 1; k <= 5; ++k) {
 		hs_vec3 shift = hs_v3(2.0 * k, 0, 0);
-		hand->wrist_pos = hs_add(hs_v3(0, 0, 2), shift);
-		hand->points[3] = hs_add(hs_v3(-0.45, 0, 2), shift);
-		hand->points[7] = hs_add(hs_v3(0.45, 0, 2), shift);
+		hand->state.wrist_pos = hs_add(hs_v3(0, 0, 2), shift);
+		hand->cache.points[3] = hs_add(hs_v3(-0.45, 0, 2), shift);
+		hand->cache.points[7] = hs_add(hs_v3(0.45, 0, 2), shift);
 		hs_hand_points_moved(hand);
-		hand->center = hs_add(hs_v3(0, 0, 2), shift);
+		hand->cache.center = hs_add(hs_v3(0, 0, 2), shift);
 		hs_world_step(w);
 		assert_int_equal(w->state.bodies[0].contact, HS_CONTACT_GRASP);
 		assert_vec3_near(w->state.bodies[0].pos, hs_add(hs_v3(0, 0, 2), shift), 1e-12);

@@ -326,9 +326,9 @@ static void test_left_hand_mirrors(void **state) {
 // the given side and its glove table.
 static void fresh_hand(hs_hand *hand, bool left) {
 	memset(hand, 0, sizeof *hand); // a hand's definition is fixed for its life (its caches follow it)
-	hand->def = hs_default_hand_def();
-	hand->def.left = left;
-	hs_glove_table_build(&hand->def, &hand->glove);
+	hand->model.def = hs_default_hand_def();
+	hand->model.def.left = left;
+	hs_glove_table_build(&hand->model.def, &hand->model.glove);
 }
 
 // A fixed LCG: the same readings every run.
@@ -345,7 +345,7 @@ static void lcg_reading(uint32_t *x, uint8_t sensors[HS_GLOVE_SENSORS]) {
 static void place_reading(hs_hand *hand) {
 	hs_hand_update_shape(hand);
 	hs_hand_place_points(hand);
-	hand->placed = true;
+	hand->state.placed = true;
 	hs_hand_update_bounds(hand);
 }
 
@@ -361,26 +361,26 @@ static void test_bounds_reach_the_farthest_end(void **state) {
 	const double radii[3] = {0.002, 0.008, 0.03};
 	for (int trial = 0; trial < 3000; ++trial) {
 		fresh_hand(hand, trial % 2 == 1);
-		hand->def.finger_radius = radii[trial % 3];
-		lcg_reading(&x, hand->sensors);
+		hand->model.def.finger_radius = radii[trial % 3];
+		lcg_reading(&x, hand->state.sensors);
 		hs_hand_update_shape(hand);
 		// every line (the bounds compute none of them)
 		hs_vec3 points[HS_HAND_POINTS], lines[HS_HAND_LINES][2];
-		hs_hand_local_shape_with(&hand->def, &hand->glove, hand->sensors, points, lines);
-		assert_memory_equal(points, hand->local.points, sizeof points);
+		hs_hand_local_shape_with(&hand->model.def, &hand->model.glove, hand->state.sensors, points, lines);
+		assert_memory_equal(points, hand->cache.local.points, sizeof points);
 		double most = 0.0;
 		for (int i = 0; i < HS_HAND_POINTS; ++i) {
-			double d = hs_length_sq(hs_sub(hand->local.points[i], hand->local_center));
+			double d = hs_length_sq(hs_sub(hand->cache.local.points[i], hand->cache.local_center));
 			most = d > most ? d : most;
 		}
 		for (int j = 0; j < HS_HAND_LINES; ++j)
 			for (int k = 0; k < 2; ++k) {
-				double d = hs_length_sq(hs_sub(lines[j][k], hand->local_center));
+				double d = hs_length_sq(hs_sub(lines[j][k], hand->cache.local_center));
 				most = d > most ? d : most;
 			}
 		double radius = sqrt(most);
-		assert_true(radius <= hand->local_radius);
-		assert_true(hand->local_radius <= radius + hand->def.finger_radius * (1.0 + 1e-6));
+		assert_true(radius <= hand->cache.local_radius);
+		assert_true(hand->cache.local_radius <= radius + hand->model.def.finger_radius * (1.0 + 1e-6));
 	}
 	free(hand);
 }
@@ -406,27 +406,27 @@ static void test_lines_placed_when_read(void **state) {
 			turn[f] = hs_quat_from_axis_angle(hs_normalize(hs_v3(1.0, 2.0, 3.0 + f)), 0.3 * trial + 0.7 * f);
 		}
 		for (int f = 0; f < 2; ++f) { // as hs_world_set_hand, then a step's reads and its end
-			memcpy(hand->sensors, readings[f], sizeof hand->sensors);
-			hand->wrist_pos = wrist[f];
-			hand->wrist_rot = turn[f];
+			memcpy(hand->state.sensors, readings[f], sizeof hand->state.sensors);
+			hand->state.wrist_pos = wrist[f];
+			hand->state.wrist_rot = turn[f];
 			place_reading(hand);
 			if (f == 0)
 				hs_hand_keep_previous(hand);
 			hs_hand_ready_segment(hand, (2 + trial) % 15); // read in both frames
 			if (f == 1) {
 				hs_hand_ready_segment(hand, (9 + trial) % 15); // read in the second only
-				assert_int_equal(hand->lines_ready, 1u << (2 + trial) % 15 | 1u << (9 + trial) % 15);
+				assert_int_equal(hand->cache.lines_ready, 1u << (2 + trial) % 15 | 1u << (9 + trial) % 15);
 				hs_hand_ready_all(hand);
 				break;
 			}
-			assert_int_equal(hand->lines_ready, 1u << ((2 + trial) % 15));
+			assert_int_equal(hand->cache.lines_ready, 1u << ((2 + trial) % 15));
 			hs_hand_keep_previous(hand);
 		}
 		hs_vec3 points[HS_HAND_POINTS], lines[HS_HAND_LINES][2], prev_lines[HS_HAND_LINES][2];
-		hs_hand_kinematics(&hand->def, wrist[1], turn[1], readings[1], points, lines);
-		hs_hand_kinematics(&hand->def, wrist[0], turn[0], readings[0], points, prev_lines);
-		assert_memory_equal(lines, hand->lines, sizeof lines);
-		assert_memory_equal(prev_lines, hand->prev_lines, sizeof prev_lines);
+		hs_hand_kinematics(&hand->model.def, wrist[1], turn[1], readings[1], points, lines);
+		hs_hand_kinematics(&hand->model.def, wrist[0], turn[0], readings[0], points, prev_lines);
+		assert_memory_equal(lines, hand->cache.lines, sizeof lines);
+		assert_memory_equal(prev_lines, hand->cache.prev_lines, sizeof prev_lines);
 	}
 	free(hand);
 }
@@ -446,32 +446,32 @@ static void test_finger_spheres_hold_the_fingers(void **state) {
 		for (int f = 0; f < 2; ++f) { // as hs_world_set_hand, then the step's sweep
 			for (int i = 0; i < HS_GLOVE_SENSORS; ++i) { // one trial in four: each moves by 3 units at most
 				uint32_t r = lcg(&x);
-				hand->sensors[i] = (uint8_t)(trial % 4 == 0 && f == 1 ? hand->sensors[i] ^ (r >> 30) : r >> 24);
+				hand->state.sensors[i] = (uint8_t)(trial % 4 == 0 && f == 1 ? hand->state.sensors[i] ^ (r >> 30) : r >> 24);
 			}
-			hand->wrist_pos = hs_v3(0.05 * f, -0.2, 0.3 + 0.01 * trial);
-			hand->wrist_rot = hs_quat_from_axis_angle(hs_normalize(hs_v3(1.0, 2.0, 3.0)), 0.2 * trial + 0.5 * f);
+			hand->state.wrist_pos = hs_v3(0.05 * f, -0.2, 0.3 + 0.01 * trial);
+			hand->state.wrist_rot = hs_quat_from_axis_angle(hs_normalize(hs_v3(1.0, 2.0, 3.0)), 0.2 * trial + 0.5 * f);
 			place_reading(hand);
 			if (f == 0)
 				hs_hand_keep_previous(hand);
 		}
 		hs_hand_sweep(hand, false);
 		hs_hand_ready_all(hand);
-		assert_false(hand->finger_spheres_ready);
+		assert_false(hand->cache.finger_spheres_ready);
 		hs_hand_finger_spheres(hand);
-		assert_true(hand->finger_spheres_ready);
-		pieces += hand->path_steps;
-		double rf = hand->def.finger_radius;
-		for (int k = 0; k <= hand->path_steps; ++k) {
-			const hs_vec3 *p = k == 0 ? hand->prev_points : k == hand->path_steps ? hand->points : hand->path_points[k - 1];
-			hs_vec3(*l)[2] = k == 0 ? hand->prev_lines : k == hand->path_steps ? hand->lines : hand->path_lines[k - 1];
+		assert_true(hand->cache.finger_spheres_ready);
+		pieces += hand->cache.path_steps;
+		double rf = hand->model.def.finger_radius;
+		for (int k = 0; k <= hand->cache.path_steps; ++k) {
+			const hs_vec3 *p = k == 0 ? hand->cache.prev_points : k == hand->cache.path_steps ? hand->cache.points : hand->cache.path_points[k - 1];
+			hs_vec3(*l)[2] = k == 0 ? hand->cache.prev_lines : k == hand->cache.path_steps ? hand->cache.lines : hand->cache.path_lines[k - 1];
 			for (int i = 0; i < HS_HAND_POINTS; ++i)
-				assert_true(hs_distance(p[i], hand->finger_center[i / 4]) <= hand->finger_reach[i / 4] - rf);
+				assert_true(hs_distance(p[i], hand->cache.finger_center[i / 4]) <= hand->cache.finger_reach[i / 4] - rf);
 			for (int j = 0; j < HS_HAND_LINES; ++j)
 				for (int e = 0; e < 2; ++e)
-					assert_true(hs_distance(l[j][e], hand->finger_center[j / 12]) <= hand->finger_reach[j / 12]);
+					assert_true(hs_distance(l[j][e], hand->cache.finger_center[j / 12]) <= hand->cache.finger_reach[j / 12]);
 		}
 		hs_hand_place_points(hand);
-		assert_false(hand->finger_spheres_ready);
+		assert_false(hand->cache.finger_spheres_ready);
 	}
 	assert_true(pieces > 40 + 40); // paths of several pieces were tried
 	free(hand);
@@ -491,26 +491,26 @@ static void test_sweep_pieces_follow_the_turn(void **state) {
 	for (int k = 0; k < (int)(sizeof turns / sizeof turns[0]); ++k)
 		for (int a = 0; a < 3; ++a) {
 			fresh_hand(hand, false);
-			memset(hand->sensors, 100, sizeof hand->sensors);
-			hand->wrist_rot = hs_quat_from_axis_angle(hs_v3(0, 1, 0), 0.4);
+			memset(hand->state.sensors, 100, sizeof hand->state.sensors);
+			hand->state.wrist_rot = hs_quat_from_axis_angle(hs_v3(0, 1, 0), 0.4);
 			place_reading(hand);
 			hs_hand_keep_previous(hand);
-			hand->wrist_rot = hs_quat_mul(hs_quat_from_axis_angle(hs_normalize(axes[a]), turns[k] * HS_PI / 180.0),
-			                              hand->prev_wrist_rot);
+			hand->state.wrist_rot = hs_quat_mul(hs_quat_from_axis_angle(hs_normalize(axes[a]), turns[k] * HS_PI / 180.0),
+			                              hand->state.prev_wrist_rot);
 			if (k == 1 && a == 2) { // 3.9 deg of wrist and 6 of a finger: a piece; 4.1: two
-				hand->wrist_rot = hs_quat_mul(hs_quat_from_axis_angle(hs_v3(0, 0, 1), 3.9 * HS_PI / 180.0), hand->prev_wrist_rot);
-				hand->sensors[HS_SENSOR_INDEX_PIP] = 106;
+				hand->state.wrist_rot = hs_quat_mul(hs_quat_from_axis_angle(hs_v3(0, 0, 1), 3.9 * HS_PI / 180.0), hand->state.prev_wrist_rot);
+				hand->state.sensors[HS_SENSOR_INDEX_PIP] = 106;
 			}
 			place_reading(hand);
 			hs_hand_sweep(hand, false);
-			assert_int_equal(hand->path_steps, pieces[k]);
+			assert_int_equal(hand->cache.path_steps, pieces[k]);
 			if (k == 1 && a == 2) {
-				hand->wrist_rot = hs_quat_mul(hs_quat_from_axis_angle(hs_v3(0, 0, 1), 4.1 * HS_PI / 180.0), hand->prev_wrist_rot);
+				hand->state.wrist_rot = hs_quat_mul(hs_quat_from_axis_angle(hs_v3(0, 0, 1), 4.1 * HS_PI / 180.0), hand->state.prev_wrist_rot);
 				hs_hand_sweep(hand, false);
-				assert_int_equal(hand->path_steps, 2);
+				assert_int_equal(hand->cache.path_steps, 2);
 			}
 			hs_hand_sweep(hand, true); // the paper's chords
-			assert_int_equal(hand->path_steps, 1);
+			assert_int_equal(hand->cache.path_steps, 1);
 		}
 	free(hand);
 }
@@ -526,25 +526,25 @@ static void test_fingers_kept_between_readings(void **state) {
 	uint32_t x = 11u;
 	for (int side = 0; side < 2; ++side) {
 		fresh_hand(hand, side == 1);
-		hand->wrist_pos = hs_v3(0.1, 0.2, 0.3);
-		hand->wrist_rot = hs_quat_from_axis_angle(hs_normalize(hs_v3(1.0, -2.0, 0.5)), 0.4);
+		hand->state.wrist_pos = hs_v3(0.1, 0.2, 0.3);
+		hand->state.wrist_rot = hs_quat_from_axis_angle(hs_normalize(hs_v3(1.0, -2.0, 0.5)), 0.4);
 		int kept = 0;
 		for (int frame = 0; frame < 300; ++frame) {
 			uint8_t was[HS_GLOVE_SENSORS];
-			memcpy(was, hand->sensors, sizeof was);
+			memcpy(was, hand->state.sensors, sizeof was);
 			for (int i = 0; i < HS_GLOVE_SENSORS; ++i) { // each sensor moves in one frame of four
 				uint32_t r = lcg(&x);
 				if (frame == 0 || (r >> 30) == 0)
-					hand->sensors[i] = (uint8_t)(r >> 8);
+					hand->state.sensors[i] = (uint8_t)(r >> 8);
 			}
-			kept += memcmp(was + HS_SENSOR_MIDDLE_MCP, hand->sensors + HS_SENSOR_MIDDLE_MCP, 2) == 0;
+			kept += memcmp(was + HS_SENSOR_MIDDLE_MCP, hand->state.sensors + HS_SENSOR_MIDDLE_MCP, 2) == 0;
 			hs_hand_update_shape(hand);
 			hs_hand_place_points(hand);
 			hs_hand_ready_all(hand);
 			hs_vec3 points[HS_HAND_POINTS], lines[HS_HAND_LINES][2];
-			hs_hand_kinematics(&hand->def, hand->wrist_pos, hand->wrist_rot, hand->sensors, points, lines);
-			assert_memory_equal(points, hand->points, sizeof points);
-			assert_memory_equal(lines, hand->lines, sizeof lines);
+			hs_hand_kinematics(&hand->model.def, hand->state.wrist_pos, hand->state.wrist_rot, hand->state.sensors, points, lines);
+			assert_memory_equal(points, hand->cache.points, sizeof points);
+			assert_memory_equal(lines, hand->cache.lines, sizeof lines);
 			hs_hand_keep_previous(hand);
 		}
 		assert_true(kept > 100); // the middle finger's chain was reused that often

@@ -145,7 +145,7 @@ static void lists_in_a_busy_world(hs_stacking stacking, double fps, bool noisy) 
 		}
 		hs_world *w = on.world;
 		const hs_hand *hand = &w->state.hands[0];
-		check_answer(w, hand->sweep_center, hand->sweep_radius, "the hand", f + 1);
+		check_answer(w, hand->cache.sweep_center, hand->cache.sweep_radius, "the hand", f + 1);
 		for (int k = 0; k < w->cache.awake_count; ++k) { // the queries the step makes for moved objects
 			const hs_body *b = &w->state.bodies[w->cache.awake[k]];
 			check_answer(w, b->pos, w->model.shapes[b->shape].radius, "an awake object", f + 1);

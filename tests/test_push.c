@@ -40,8 +40,8 @@ static void test_press_down_leaves_box(void **state) {
 		hs_body *b = &w->state.bodies[0];
 		hs_vec3 tip = hs_v3(offsets[k][0], offsets[k][1], 0.099);
 		for (int frame = 0; frame < 30; ++frame) { // it came down onto the box in frame 0, then stays
-			w->state.hands[0].prev_points[7] = frame == 0 ? hs_add(tip, hs_v3(0, 0, 0.01)) : tip;
-			w->state.hands[0].points[7] = tip;
+			w->state.hands[0].cache.prev_points[7] = frame == 0 ? hs_add(tip, hs_v3(0, 0, 0.01)) : tip;
+			w->state.hands[0].cache.points[7] = tip;
 			hs_hand_points_moved(&w->state.hands[0]);
 			hs_manipulate(w);
 			assert_int_equal(b->contact, HS_CONTACT_PUSH_ONE);
@@ -57,7 +57,7 @@ static void test_press_down_leaves_box(void **state) {
 		hs_world_destroy(w);
 	}
 	hs_world *w = box_world(hs_v3(0.1, 0.1, 0.1)); // a fingertip that starts there touches nothing
-	w->state.hands[0].prev_points[7] = w->state.hands[0].points[7] = hs_v3(0.04, 0, 0.099);
+	w->state.hands[0].cache.prev_points[7] = w->state.hands[0].cache.points[7] = hs_v3(0.04, 0, 0.099);
 	hs_hand_points_moved(&w->state.hands[0]);
 	hs_manipulate(w);
 	assert_int_equal(w->state.bodies[0].contact, HS_CONTACT_NONE);
@@ -161,8 +161,8 @@ static void test_push_remembers_finger_speed(void **state) {
 		hs_body *b = &w->state.bodies[0];
 		b->prev = b->pos; // at rest
 		double y = k == 3 ? 0.03 : 0.0;
-		w->state.hands[0].prev_points[7] = hs_v3(from[k], y, 0.05); // at G's height: slides, no swing
-		w->state.hands[0].points[7] = hs_v3(from[k] + 0.02, y, 0.05);
+		w->state.hands[0].cache.prev_points[7] = hs_v3(from[k], y, 0.05); // at G's height: slides, no swing
+		w->state.hands[0].cache.points[7] = hs_v3(from[k] + 0.02, y, 0.05);
 		hs_hand_points_moved(&w->state.hands[0]);
 		hs_manipulate(w);
 		assert_int_equal(b->contact, HS_CONTACT_PUSH_ONE);
@@ -177,8 +177,8 @@ static void test_push_remembers_finger_speed(void **state) {
 	hs_world *w = box_world(hs_v3(0.1, 0.1, 0.1)); // moving already: pos - prev is the push
 	hs_body *b = &w->state.bodies[0];
 	b->prev = hs_v3(-0.001, 0, 0.05);
-	w->state.hands[0].prev_points[7] = hs_v3(-0.06, 0, 0.05);
-	w->state.hands[0].points[7] = hs_v3(-0.04, 0, 0.05);
+	w->state.hands[0].cache.prev_points[7] = hs_v3(-0.06, 0, 0.05);
+	w->state.hands[0].cache.points[7] = hs_v3(-0.04, 0, 0.05);
 	hs_hand_points_moved(&w->state.hands[0]);
 	hs_manipulate(w);
 	assert_vec3_near(b->prev, hs_v3(0, 0, 0.05), 0.0);
@@ -233,15 +233,15 @@ static void test_push_end_stops_on_floor(void **state) {
 	hs_world *w = box_world(hs_v3(0.1, 0.1, 0.1));
 	hs_body *b = &w->state.bodies[0];
 	b->prev = hs_v3(-0.001, 0, 0.05); // moving already: no speed-up of the remembered motion
-	w->state.hands[0].prev_points[7] = hs_v3(-0.0505, 0, 0.05);
-	w->state.hands[0].points[7] = hs_v3(-0.049, 0, 0.05);
+	w->state.hands[0].cache.prev_points[7] = hs_v3(-0.0505, 0, 0.05);
+	w->state.hands[0].cache.points[7] = hs_v3(-0.049, 0, 0.05);
 	hs_hand_points_moved(&w->state.hands[0]);
 	hs_manipulate(w);
 	assert_int_equal(b->contact, HS_CONTACT_PUSH_ONE);
 	assert_vec3_near(b->pos, hs_v3(0.001, 0, 0.05), 1e-15);
 	hs_vec3 at = b->pos;
-	w->state.hands[0].prev_points[7] = w->state.hands[0].points[7];
-	w->state.hands[0].points[7] = hs_v3(-0.08, 0, 0.05); // drawn back
+	w->state.hands[0].cache.prev_points[7] = w->state.hands[0].cache.points[7];
+	w->state.hands[0].cache.points[7] = hs_v3(-0.08, 0, 0.05); // drawn back
 	hs_hand_points_moved(&w->state.hands[0]);
 	hs_manipulate(w);
 	assert_int_equal(b->contact, HS_CONTACT_NONE);
@@ -300,9 +300,9 @@ static void test_leaving_part_keeps_motion(void **state) {
 		hs_body *b = &w->state.bodies[0];
 		hs_vec3 prev = moving ? hs_v3(-0.001, 0, 0.05) : b->pos;
 		b->prev = prev;
-		w->state.hands[0].touch_points = 1u << 7;                 // touching last frame, 1 mm in
-		w->state.hands[0].prev_points[7] = hs_v3(-0.049, 0, 0.05);
-		w->state.hands[0].points[7] = hs_v3(-0.0495, 0, 0.05);    // drawn back, still inside
+		w->state.hands[0].state.touch_points = 1u << 7;                 // touching last frame, 1 mm in
+		w->state.hands[0].cache.prev_points[7] = hs_v3(-0.049, 0, 0.05);
+		w->state.hands[0].cache.points[7] = hs_v3(-0.0495, 0, 0.05);    // drawn back, still inside
 		hs_hand_points_moved(&w->state.hands[0]);
 		hs_manipulate(w);
 		assert_int_equal(b->contact, HS_CONTACT_PUSH_ONE);

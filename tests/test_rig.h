@@ -28,17 +28,17 @@ static inline hs_world *rig_world(const hs_world_def *def, hs_shape *shape, hs_v
 	assert_int_equal(hs_world_add_hand(w, &hd, NULL).index1, 1);
 	hs_hand *hand = &w->state.hands[0];
 	for (int i = 0; i < HS_HAND_POINTS; ++i)
-		hand->points[i] = hand->prev_points[i] = RIG_FAR;
+		hand->cache.points[i] = hand->cache.prev_points[i] = RIG_FAR;
 	hs_hand_points_moved(hand);
 	for (int j = 0; j < HS_HAND_LINES; ++j)
-		hand->lines[j][0] = hand->lines[j][1] = hand->prev_lines[j][0] = hand->prev_lines[j][1] = RIG_FAR;
-	hand->center = hand->prev_center = hand->sweep_center = hand_center;
-	hand->radius = hand->prev_radius = hand->sweep_radius = 1000;
-	hand->path_steps = 1; // straight paths: hs_hand_sweep (run by hs_manipulate) keeps it so
+		hand->cache.lines[j][0] = hand->cache.lines[j][1] = hand->cache.prev_lines[j][0] = hand->cache.prev_lines[j][1] = RIG_FAR;
+	hand->cache.center = hand->cache.prev_center = hand->cache.sweep_center = hand_center;
+	hand->cache.radius = hand->cache.prev_radius = hand->cache.sweep_radius = 1000;
+	hand->cache.path_steps = 1; // straight paths: hs_hand_sweep (run by hs_manipulate) keeps it so
 	// the tests place lines without their segment's check points (a hand's lie finger_radius from
 	// them, which contact_cull.c's per-segment culling relies on): a radius so large that it never decides
-	hand->def.finger_radius = 1000;
-	hand->placed = true;
+	hand->model.def.finger_radius = 1000;
+	hand->state.placed = true;
 	return w;
 }
 

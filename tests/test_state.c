@@ -157,11 +157,11 @@ static void test_hand_world_continues_identically(void **state) {
 	assert_int_equal(hs_world_load_state(r.world, set, size), HS_OK);
 	assert_int_equal(hs_world_hand_points(r.world, r.hand, reloaded), HS_OK);
 	assert_memory_equal(points, reloaded, sizeof points); // the caches are rebuilt bit for bit
-	assert_memory_equal(cached.prev_points, r.world->state.hands[0].prev_points, sizeof cached.prev_points);
+	assert_memory_equal(cached.cache.prev_points, r.world->state.hands[0].cache.prev_points, sizeof cached.cache.prev_points);
 	hs_hand_ready_all(&r.world->state.hands[0]);
-	assert_memory_equal(cached.lines, r.world->state.hands[0].lines, sizeof cached.lines);
-	assert_memory_equal(cached.prev_lines, r.world->state.hands[0].prev_lines, sizeof cached.prev_lines);
-	assert_true(cached.center.x == r.world->state.hands[0].center.x && cached.radius == r.world->state.hands[0].radius);
+	assert_memory_equal(cached.cache.lines, r.world->state.hands[0].cache.lines, sizeof cached.cache.lines);
+	assert_memory_equal(cached.cache.prev_lines, r.world->state.hands[0].cache.prev_lines, sizeof cached.cache.prev_lines);
+	assert_true(cached.cache.center.x == r.world->state.hands[0].cache.center.x && cached.cache.radius == r.world->state.hands[0].cache.radius);
 	free(set);
 	assert_int_equal(hs_world_load_state(r.world, buffer, size), HS_OK);
 	uint64_t first[M_FRAMES], again[M_FRAMES], other[M_FRAMES];
@@ -286,10 +286,10 @@ static void test_load_unset_hand_then_set(void **state) {
 	const hs_hand *a = &r.world->state.hands[0], *b = &fresh.world->state.hands[0];
 	hs_hand_ready_all(&r.world->state.hands[0]);
 	hs_hand_ready_all(&fresh.world->state.hands[0]);
-	assert_memory_equal(a->points, b->points, sizeof a->points);
-	assert_memory_equal(a->lines, b->lines, sizeof a->lines);
-	assert_memory_equal(a->local.points, b->local.points, sizeof a->local.points);
-	assert_true(a->center.x == b->center.x && a->radius == b->radius);
+	assert_memory_equal(a->cache.points, b->cache.points, sizeof a->cache.points);
+	assert_memory_equal(a->cache.lines, b->cache.lines, sizeof a->cache.lines);
+	assert_memory_equal(a->cache.local.points, b->cache.local.points, sizeof a->cache.local.points);
+	assert_true(a->cache.center.x == b->cache.center.x && a->cache.radius == b->cache.radius);
 	assert_true(hs_world_hash(r.world) == hs_world_hash(fresh.world));
 	free(unset);
 	hs_world_destroy(r.world);
@@ -572,13 +572,13 @@ static void test_long_release_window_continues_identically(void **state) {
 	hand_rig plain = long_window_world(HS_RELEASE_FIT_MEAN, 0.05, true);
 	hand_rig mean = long_window_world(HS_RELEASE_FIT_MEAN, 0.16, true);
 	hand_rig r = long_window_world(HS_RELEASE_FIT_QUADRATIC, 0.16, true);
-	assert_int_equal(r.world->state.hands[0].older_capacity, 18);
+	assert_int_equal(r.world->state.hands[0].model.older_capacity, 18);
 	assert_int_equal(hs_world_state_size(r.world) - hs_world_state_size(plain.world), WORD * 11 * 7);
 	step_hand(&r, r.world, 0, 2 * N_FRAMES, NULL); // t = 1.67 s: held and lifting, the history full
 	hs_object_state target;
 	assert_int_equal(hs_world_object_state(r.world, r.target, &target), HS_OK);
 	assert_int_equal(target.contact, HS_CONTACT_GRASP);
-	assert_int_equal(r.world->state.hands[0].older_count, 18);
+	assert_int_equal(r.world->state.hands[0].state.older_count, 18);
 	size_t size;
 	unsigned char *buffer = save(r.world, &size);
 	uint64_t first[2 * M_FRAMES], again[2 * M_FRAMES], other[2 * M_FRAMES];
@@ -632,15 +632,15 @@ static void test_hash_sees_what_the_old_one_missed(void **state) {
 	w->state.bodies[0].grip_pos.y += 1e-12;
 	assert_true(rehash(w) != h);
 	w->state.bodies[0].grip_pos.y -= 1e-12;
-	w->state.hands[0].sensors[3] ^= 1;
+	w->state.hands[0].state.sensors[3] ^= 1;
 	assert_true(rehash(w) != h);
-	w->state.hands[0].sensors[3] ^= 1;
-	w->state.hands[0].prev_wrist_pos.z += 1e-9; // where the previous check points were placed from
+	w->state.hands[0].state.sensors[3] ^= 1;
+	w->state.hands[0].state.prev_wrist_pos.z += 1e-9; // where the previous check points were placed from
 	assert_true(rehash(w) != h);
-	w->state.hands[0].prev_wrist_pos.z -= 1e-9;
-	w->state.hands[0].prev_sensors[7] ^= 1;
+	w->state.hands[0].state.prev_wrist_pos.z -= 1e-9;
+	w->state.hands[0].state.prev_sensors[7] ^= 1;
 	assert_true(rehash(w) != h);
-	w->state.hands[0].prev_sensors[7] ^= 1;
+	w->state.hands[0].state.prev_sensors[7] ^= 1;
 	assert_true(rehash(w) == h);
 	hs_world_destroy(w);
 }

@@ -43,11 +43,11 @@ static void detect_points(hs_world *world, int object, int h, const hs_part *par
 	hs_vec3 center = to_world(body, part->center); // cull before the transform
 	double r = part->radius + pc->grow_reach * grow, r_sq = r * r; // grown: its corners reach further
 	bool paper = world->model.def.paper_contacts, swept = grow == 0.0 && !paper;
-	int steps = moved ? 1 : hand->path_steps; // a held object moves with the hand: chords suffice
+	int steps = moved ? 1 : hand->cache.path_steps; // a held object moves with the hand: chords suffice
 	bool still = !moved && same_pose(&world->state.bodies[object]);
 	// passed over: far fingers' points (far_fingers), and those beyond the sphere now unless paths count
 	uint32_t todo = ((1u << HS_HAND_POINTS) - 1u) & ~hs_finger_parts(far, 4);
-	uint32_t near = cull ? hs_contact_points_near_part(hand, pc->grow_reach, center, r, swept, hs_contact_keep(world, hand)) : todo;
+	uint32_t near = cull ? hs_contact_points_near_part(hand, pc->grow_reach, center, r, swept, hs_contact_keep(&world->model, hand)) : todo;
 	double margin = world->model.def.grasp_release_mm * 1e-3;
 	if (!swept || moved)
 		todo &= near;
@@ -55,21 +55,21 @@ static void detect_points(hs_world *world, int object, int h, const hs_part *par
 		int i = hs_lowest_bit(todo);
 		if (!(near >> i & 1u) && !hs_contact_path_near(hand, i, steps, center, r_sq))
 			continue;
-		hs_vec3 b = to_body(body, hand->points[i]);
+		hs_vec3 b = to_body(body, hand->cache.points[i]);
 		bool inside = inside_part_with(world, shape, part, pc, b, grow);
 		if (paper) {
 			if (inside)
-				hs_contact_paper_point(world, object, h, i, part, body, to_body(before, hand->prev_points[i]), b, grow);
+				hs_contact_paper_point(world, object, h, i, part, body, to_body(before, hand->cache.prev_points[i]), b, grow);
 			continue;
 		}
-		bool touched = swept && (hand->touch_points >> i & 1u);
-		if (swept && (hand->embed_points >> i & 1u)) { // started inside: touches nothing until clear
+		bool touched = swept && (hand->state.touch_points >> i & 1u);
+		if (swept && (hand->state.embed_points >> i & 1u)) { // started inside: touches nothing until clear
 			if (inside_part_with(world, shape, part, pc, b, 2.0 * margin))
-				world->state.hands[h].embed_points_next |= 1u << i;
+				world->state.hands[h].scratch.embed_points_next |= 1u << i;
 			continue;
 		}
 		if (!inside && touched && inside_part_with(world, shape, part, pc, b, margin)) {
-			world->state.hands[h].near_points |= 1u << i; // off the surface, within the margin: still touching
+			world->state.hands[h].scratch.near_points |= 1u << i; // off the surface, within the margin: still touching
 			if (moved)
 				continue;
 			const hs_face *f = &shape->faces[nearest_face_with(world, shape, part, pc, b)];
@@ -80,7 +80,7 @@ static void detect_points(hs_world *world, int object, int h, const hs_part *par
 		}
 		if (!inside && (!swept || moved))
 			continue; // a held object moves with the hand: nothing passes through it unseen
-		hs_vec3 a = to_body(before, hand->prev_points[i]); // where it was
+		hs_vec3 a = to_body(before, hand->cache.prev_points[i]); // where it was
 		hs_clip c;
 		hs_vec3 from = a, to = b; // (path_enters sets them when it enters: read only then)
 		bool entered = false;
@@ -102,7 +102,7 @@ static void detect_points(hs_world *world, int object, int h, const hs_part *par
 		} else if (inside && !touched && !inside_part_with(world, shape, part, pc, a, grow)) { // from on the surface (the clip's t = 0)
 			int face = nearest_face_with(world, shape, part, pc, a);
 			hs_contact_push(world, object, h, i, false, face, body, a, shape->faces[face].normal, b, 0.0);
-		} else if (inside && (grow > 0.0 || touched || hs_contact_came_onto(world, object, part, hand->prev_points[i], grow))) {
+		} else if (inside && (grow > 0.0 || touched || hs_contact_came_onto(world, object, part, hand->cache.prev_points[i], grow))) {
 			// sunk in (or back in, within the margin), or the object came onto it; or within the grown
 			// part (the margin counts every part)
 			int face = nearest_face_with(world, shape, part, pc, a);
@@ -112,7 +112,7 @@ static void detect_points(hs_world *world, int object, int h, const hs_part *par
 			hs_contact_push(world, object, h, i, false, face, body, point, f->normal,
 			                hs_add(point, hs_sub(b, start)), 0.0);
 		} else if (inside && swept) { // in it since before it touched anything: started inside
-			world->state.hands[h].embed_points_next |= 1u << i;
+			world->state.hands[h].scratch.embed_points_next |= 1u << i;
 		}
 	}
 }
@@ -131,7 +131,7 @@ static void detect_lines(hs_world *world, int object, int h, const hs_part *part
 	hs_vec3 center = to_world(body, part->center);
 	double r = part->radius + pc->grow_reach * grow; // grown: its corners reach further
 	bool paper = world->model.def.paper_contacts, swept = grow == 0.0 && !paper;
-	int steps = moved ? 1 : hand->path_steps; // a held object moves with the hand: chords suffice
+	int steps = moved ? 1 : hand->cache.path_steps; // a held object moves with the hand: chords suffice
 	hs_segment_bounds sb = hs_contact_segment_bounds(world, hand, r);
 	hs_deep_memo memo = {0, 0};
 	hs_held_turn turn = {.ready = false};
@@ -144,7 +144,7 @@ static void detect_lines(hs_world *world, int object, int h, const hs_part *part
 	for (; segments; segments &= segments - 1u) {
 		int s = hs_lowest_bit(segments), a = hs_segment_first_point(s); // a: the segment's first check point
 		double d_sq = cull ? d_axis[s] : 0.0;
-		bool plain = swept && !(hand->embed_lines >> (4 * s) & 0xFu); // none of its lines embedded
+		bool plain = swept && !(hand->state.embed_lines >> (4 * s) & 0xFu); // none of its lines embedded
 		if ((!(near >> s & 1u) && !hs_contact_axis_path_near(hand, a, steps, center, sb.rp)) ||
 		    (swept && hs_contact_ends_deep(world, hand, touching, a, body, shape, part, sb.deep, &memo)) ||
 		    (plain && !moved && steps == 1 && hs_contact_segment_clear_of_a_face(world, h, a, body, before, shape, part)) ||
@@ -154,12 +154,12 @@ static void detect_lines(hs_world *world, int object, int h, const hs_part *part
 		bool all_near = (sb.ri > 0.0 && d_sq <= sb.ri * sb.ri) || (swept && !plain); // all within r now
 		unsigned lines = cull && !all_near ? hs_contact_lines_near(hand, s, center, r * r) : 0xFu;
 		for (int j = 4 * s; j < 4 * s + 4; ++j) {
-			const hs_vec3 *l = hand->lines[j], *m = hand->prev_lines[j];
+			const hs_vec3 *l = hand->cache.lines[j], *m = hand->cache.prev_lines[j];
 			if (!(lines >> (j - 4 * s) & 1u) && (!swept || moved || !hs_contact_line_path_near(hand, j, steps, center, r)))
 				continue;
 			hs_vec3 p[2];
 			line_to_body(body, l, p);
-			bool embedded = swept && (hand->embed_lines >> j & 1u);
+			bool embedded = swept && (hand->state.embed_lines >> j & 1u);
 			// where no path is swept (a held object; the grown and paper tests) a line that misses the part
 			// now is done: clipped before the line a frame ago is transformed (most lines end here)
 			bool miss_ends = (moved || !swept) && !embedded;
@@ -172,11 +172,11 @@ static void detect_lines(hs_world *world, int object, int h, const hs_part *part
 			line_to_body(before, m, q);
 			if (swept && !moved && !embedded && steps == 1 && hs_contact_sweep_clear_of_a_face(world, shape, part, q, p))
 				continue; // missed it at both ends and swept nothing of it
-			if (swept && hs_contact_end_touches(world, hand->touch_points, a, shape, part, q))
+			if (swept && hs_contact_end_touches(world, hand->state.touch_points, a, shape, part, q))
 				continue; // or at its start
 			if (embedded) { // started inside: touches nothing until clear
 				if (clip_part_with(world, shape, part, pc, p[0], p[1], 2.0 * world->model.def.grasp_release_mm * 1e-3).hit)
-					world->state.hands[h].embed_lines_next |= (uint64_t)1 << j;
+					world->state.hands[h].scratch.embed_lines_next |= (uint64_t)1 << j;
 				continue;
 			}
 			if (!miss_ends)
@@ -194,12 +194,12 @@ static void detect_lines(hs_world *world, int object, int h, const hs_part *part
 			}
 			if (!clip_part_with(world, shape, part, pc, q[0], q[1], grow).hit) { // reached it this frame
 				hs_contact_line_across(world, object, h, j, part, body, p[0], p[1], c, NULL);
-			} else if (grow > 0.0 || (hand->touch_lines >> j & 1u) || hs_contact_line_came_onto(world, object, part, m, grow)) {
+			} else if (grow > 0.0 || (hand->state.touch_lines >> j & 1u) || hs_contact_line_came_onto(world, object, part, m, grow)) {
 				// in it a frame ago too: sunk in (touching), or the object came onto it
 				hs_vec3 d = hs_scale(hs_add(hs_sub(p[0], q[0]), hs_sub(p[1], q[1])), 0.5);
 				hs_contact_line_across(world, object, h, j, part, body, p[0], p[1], c, &d);
 			} else if (swept) { // in it since before it touched anything: started inside, touches nothing
-				world->state.hands[h].embed_lines_next |= (uint64_t)1 << j;
+				world->state.hands[h].scratch.embed_lines_next |= (uint64_t)1 << j;
 			}
 		}
 	}
@@ -214,7 +214,7 @@ int hs_contact_detect_grown(hs_world *world, int object, const hs_pose *before, 
 	const hs_body *body = &world->state.bodies[object];
 	const hs_shape *shape = &world->model.shapes[body->shape];
 	int h = 0; // the first hand near the object: only then are its poses made matrices
-	while (h < world->model.hand_count && !hs_contact_hand_near(world, body, &world->state.hands[h], grow))
+	while (h < world->model.hand_count && !hs_contact_hand_near(&world->model, body, &world->state.hands[h], grow))
 		++h;
 	if (h == world->model.hand_count)
 		return 0;
@@ -223,7 +223,7 @@ int hs_contact_detect_grown(hs_world *world, int object, const hs_pose *before, 
 		then = (hs_frame){before->pos, hs_mat3_from_quat(before->rot)};
 	for (; h < world->model.hand_count; ++h) {
 		const hs_hand *hand = &world->state.hands[h];
-		if (!hs_contact_hand_near(world, body, hand, grow))
+		if (!hs_contact_hand_near(&world->model, body, hand, grow))
 			continue; // bounding-volume rejection before the narrow tests (Fig. 2)
 		if (grow == 0.0) // the grown test repeats a held object's: counted once
 			world->counters.hand_tests++;
@@ -238,15 +238,15 @@ int hs_contact_detect_grown(hs_world *world, int object, const hs_pose *before, 
 			unsigned far = 0;
 			if (world->model.skip_work) {
 				hs_vec3 c = to_world(&now, part->center);
-				if (!hs_contact_sphere_near(world, hand, c, part->radius, pc->grow_reach, grow))
+				if (!hs_contact_sphere_near(&world->model, hand, c, part->radius, pc->grow_reach, grow))
 					continue;
 				if (fingers) {
-					far = hs_contact_far_fingers(hand, pc->grow_reach, c, part->radius + HS_CULL_SLACK, hs_contact_keep(world, hand));
+					far = hs_contact_far_fingers(hand, pc->grow_reach, c, part->radius + HS_CULL_SLACK, hs_contact_keep(&world->model, hand));
 				}
 			}
 			int from = world->out.contact_count;
 			detect_points(world, object, h, part, pc, &now, &then, before != NULL, world->model.skip_work, grow, far);
-			uint32_t touching = hand->touch_points; // touched last frame, or touch this part now
+			uint32_t touching = hand->state.touch_points; // touched last frame, or touch this part now
 			for (int k = from; k < world->out.contact_count; ++k)
 				touching |= 1u << world->out.contacts[k].part;
 			detect_lines(world, object, h, part, pc, &now, &then, before != NULL, world->model.skip_work, grow, touching, far);

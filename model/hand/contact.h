@@ -13,38 +13,38 @@
 // How far beyond a part a finger part can still count (contact.c): a check point that touched stays
 // touching within the release margin, a check point or line that started inside stays so within
 // twice it; the bounding-volume tests reach that much further while the hand has such parts.
-static inline double hs_contact_keep(const hs_world *world, const hs_hand *hand) {
-	if (world->model.def.paper_contacts)
+static inline double hs_contact_keep(const hs_world_model *model, const hs_hand *hand) {
+	if (model->def.paper_contacts)
 		return 0.0;
-	bool embedded = hand->embed_points || hand->embed_lines;
-	return 1e-3 * world->model.def.grasp_release_mm * (embedded ? 2.0 : hand->touch_points ? 1.0 : 0.0);
+	bool embedded = hand->state.embed_points || hand->state.embed_lines;
+	return 1e-3 * model->def.grasp_release_mm * (embedded ? 2.0 : hand->state.touch_points ? 1.0 : 0.0);
 }
 
 // True when the hand's path through the frame may reach a part or body of bounding sphere (c, r)
 // and growth factor k (part_reach.h) grown by `grow`, or one of the hand's parts that still count
 // beyond it (hs_contact_keep) lies within reach of it now.
-static inline bool hs_contact_sphere_near(const hs_world *world, const hs_hand *hand, hs_vec3 c, double r, double k,
+static inline bool hs_contact_sphere_near(const hs_world_model *model, const hs_hand *hand, hs_vec3 c, double r, double k,
                                           double grow) {
-	double d_sq = hs_length_sq(hs_sub(c, hand->sweep_center)), reach = r + k * grow + hand->sweep_radius;
+	double d_sq = hs_length_sq(hs_sub(c, hand->cache.sweep_center)), reach = r + k * grow + hand->cache.sweep_radius;
 	if (d_sq <= reach * reach)
 		return true;
-	double keep = k * hs_contact_keep(world, hand);
+	double keep = k * hs_contact_keep(model, hand);
 	if (!(keep > 0.0) || d_sq > (reach + keep) * (reach + keep))
 		return false;
-	if (hand->embed_lines) // (seldom: not looked at more closely)
+	if (hand->state.embed_lines) // (seldom: not looked at more closely)
 		return true;
 	double r_keep = (r + k * grow + keep) * (r + k * grow + keep);
-	for (uint32_t kept = hand->touch_points | hand->embed_points; kept; kept &= kept - 1u)
-		if (hs_length_sq(hs_sub(hand->points[hs_lowest_bit(kept)], c)) <= r_keep)
+	for (uint32_t kept = hand->state.touch_points | hand->state.embed_points; kept; kept &= kept - 1u)
+		if (hs_length_sq(hs_sub(hand->cache.points[hs_lowest_bit(kept)], c)) <= r_keep)
 			return true;
 	return false;
 }
 
-static inline bool hs_contact_hand_near(const hs_world *world, const hs_body *body, const hs_hand *hand, double grow) {
-	if (hand->lost_frames > world->model.hold_frames) // lost past the hold: it touches nothing (tracking.c)
+static inline bool hs_contact_hand_near(const hs_world_model *model, const hs_body *body, const hs_hand *hand, double grow) {
+	if (hand->state.lost_frames > model->hold_frames) // lost past the hold: it touches nothing (tracking.c)
 		return false;
-	return !world->model.skip_work || hs_contact_sphere_near(world, hand, body->pos, world->model.shapes[body->shape].radius,
-	                                                       world->model.shape_grow_reach[body->shape], grow);
+	return !model->skip_work || hs_contact_sphere_near(model, hand, body->pos, model->shapes[body->shape].radius,
+	                                                 model->shape_grow_reach[body->shape], grow);
 }
 
 // Where an object's G is and how it is turned.

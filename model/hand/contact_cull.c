@@ -13,7 +13,7 @@
 #if HS_LANES4
 // The hand's check points i to i + 3 in the four lanes (from its point rows).
 HS_AVX static inline hs_lanes4 point_lanes(const hs_hand *hand, int i) {
-	return hs_lanes4_rows(&hand->point_rows[0][i], HS_HAND_POINTS + 4);
+	return hs_lanes4_rows(&hand->cache.point_rows[0][i], HS_HAND_POINTS + 4);
 }
 
 // points_near four points at a time (AVX).
@@ -34,7 +34,7 @@ HS_AVX static uint32_t points_near_avx(const hs_hand *hand, hs_vec3 c, double r_
 // points at a time, with SSE2 two, each lane doing hs_length_sq(hs_sub(p, c))'s operations in its
 // order (the same bits).
 uint32_t hs_contact_points_near(const hs_hand *hand, hs_vec3 c, double r_sq, double keep_sq, uint32_t *kept) {
-	const hs_vec3 *p = hand->points;
+	const hs_vec3 *p = hand->cache.points;
 	uint32_t near = 0, within = 0;
 	int i = 0;
 #if HS_LANES4
@@ -82,8 +82,8 @@ uint32_t hs_contact_points_near(const hs_hand *hand, hs_vec3 c, double r_sq, dou
 // True when check line j's path through the frame may come within r of c: each piece's quad.
 bool hs_contact_line_path_near(const hs_hand *hand, int j, int steps, hs_vec3 c, double r) {
 	for (int k = 0; k < steps; ++k) {
-		const hs_vec3 *m = k == 0 ? hand->prev_lines[j] : hand->path_lines[k - 1][j];
-		const hs_vec3 *l = k + 1 == steps ? hand->lines[j] : hand->path_lines[k][j];
+		const hs_vec3 *m = k == 0 ? hand->cache.prev_lines[j] : hand->cache.path_lines[k - 1][j];
+		const hs_vec3 *l = k + 1 == steps ? hand->cache.lines[j] : hand->cache.path_lines[k][j];
 		if (quad_near(&m[0], &m[1], &l[0], &l[1], c, r))
 			return true;
 	}
@@ -189,8 +189,8 @@ uint32_t hs_contact_axes_near(const hs_hand *hand, hs_vec3 c, double r_sq, doubl
 #if defined(__SSE2__)
 	for (; s + 1 < 15; s += 2) {
 		int a0 = hs_segment_first_point(s), a1 = hs_segment_first_point(s + 1);
-		__m128d dist = segment_distance_sq2(hs_lanes2_load(&hand->points[a0], &hand->points[a1]),
-		                                    hs_lanes2_load(&hand->points[a0 + 1], &hand->points[a1 + 1]), c);
+		__m128d dist = segment_distance_sq2(hs_lanes2_load(&hand->cache.points[a0], &hand->cache.points[a1]),
+		                                    hs_lanes2_load(&hand->cache.points[a0 + 1], &hand->cache.points[a1 + 1]), c);
 		_mm_storel_pd(&d[s], dist);
 		_mm_storeh_pd(&d[s + 1], dist);
 		near |= (uint32_t)_mm_movemask_pd(_mm_cmpngt_pd(dist, _mm_set1_pd(r_sq))) << s;
@@ -198,7 +198,7 @@ uint32_t hs_contact_axes_near(const hs_hand *hand, hs_vec3 c, double r_sq, doubl
 #endif
 	for (; s < 15; ++s) {
 		int a = hs_segment_first_point(s);
-		d[s] = segment_distance_sq(c, hand->points[a], hand->points[a + 1]);
+		d[s] = segment_distance_sq(c, hand->cache.points[a], hand->cache.points[a + 1]);
 		if (!(d[s] > r_sq))
 			near |= 1u << s;
 	}
@@ -218,7 +218,7 @@ uint32_t hs_contact_axes_near(const hs_hand *hand, hs_vec3 c, double r_sq, doubl
 // the line cull reads segment_distance_sq: !(d > r_sq), NaN near; two at a time with SSE2.
 unsigned hs_contact_lines_near(const hs_hand *hand, int s, hs_vec3 c, double r_sq) {
 	unsigned near = 0;
-	const hs_vec3(*l)[2] = &hand->lines[4 * s];
+	const hs_vec3(*l)[2] = &hand->cache.lines[4 * s];
 #if defined(__SSE2__)
 	for (int k = 0; k < 4; k += 2) {
 		__m128d dist = segment_distance_sq2(hs_lanes2_load(&l[k][0], &l[k + 1][0]), hs_lanes2_load(&l[k][1], &l[k + 1][1]), c);
@@ -262,8 +262,8 @@ static inline void check_held_clear(hs_world *world, int h, int s, int a, const 
 #endif
 
 static HS_NOINLINE void held_turn_make(hs_held_turn *t, const hs_frame *body, const hs_hand *hand) {
-	hs_mat3 p = hand->place_m;
-	double rf = hand->def.finger_radius, ry = hand->def.left ? -rf : rf;
+	hs_mat3 p = hand->cache.place_m;
+	double rf = hand->model.def.finger_radius, ry = hand->model.def.left ? -rf : rf;
 	t->c[0] = hs_mat3_tmul(body->rot, hs_v3(rf * p.r0.x, rf * p.r1.x, rf * p.r2.x));
 	t->c[1] = hs_mat3_tmul(body->rot, hs_v3(ry * p.r0.y, ry * p.r1.y, ry * p.r2.y));
 	t->c[2] = hs_mat3_tmul(body->rot, hs_v3(rf * p.r0.z, rf * p.r1.z, rf * p.r2.z));
@@ -372,10 +372,10 @@ static HS_FORCE_INLINE bool held_lines_clear_in(hs_world *world, int h, int s, i
                                                 const hs_shape *shape, const hs_part *part, uint32_t touching, double grow,
                                                 hs_held_turn *turn, bool four) {
 	const hs_hand *hand = &world->state.hands[h];
-	hs_vec3 e0 = to_body(body, hand->points[a]), e1 = to_body(body, hand->points[a + 1]);
+	hs_vec3 e0 = to_body(body, hand->cache.points[a]), e1 = to_body(body, hand->cache.points[a + 1]);
 	if (!hs_part_box_takes(e0) || !hs_part_box_takes(e1))
 		return false;
-	hs_quat q = hand->local.segment[s]; // its y and z axes: the rotation's second and third columns
+	hs_quat q = hand->cache.local.segment[s]; // its y and z axes: the rotation's second and third columns
 	hs_vec3 y = hs_v3(2.0 * (q.x * q.y - q.w * q.z), 1.0 - 2.0 * (q.x * q.x + q.z * q.z), 2.0 * (q.y * q.z + q.w * q.x));
 	hs_vec3 z = hs_v3(2.0 * (q.x * q.z + q.w * q.y), 2.0 * (q.y * q.z - q.w * q.x), 1.0 - 2.0 * (q.x * q.x + q.y * q.y));
 	if (!turn->ready)
@@ -455,11 +455,11 @@ static inline void check_far(const hs_hand *hand, unsigned far, hs_vec3 c, doubl
 // (sqrt 3 - 1) times the growth): a finger with one keeps its tests.
 unsigned hs_contact_far_fingers(const hs_hand *hand, double grow_reach, hs_vec3 c, double reach, double hand_keep) {
 	unsigned far = 0;
-	uint32_t kept = hand->touch_points | hand->embed_points; // counted beyond the sphere (detect_points)
+	uint32_t kept = hand->state.touch_points | hand->state.embed_points; // counted beyond the sphere (detect_points)
 	double keep = grow_reach * hand_keep;
 	for (int f = 0; f < 5; ++f) {
-		double r = hand->finger_reach[f] + reach + (kept >> (4 * f) & 0xFu ? keep : 0.0);
-		if (!(hand->embed_lines >> (12 * f) & 0xFFFu) && hs_length_sq(hs_sub(hand->finger_center[f], c)) > r * r)
+		double r = hand->cache.finger_reach[f] + reach + (kept >> (4 * f) & 0xFu ? keep : 0.0);
+		if (!(hand->state.embed_lines >> (12 * f) & 0xFFFu) && hs_length_sq(hs_sub(hand->cache.finger_center[f], c)) > r * r)
 			far |= 1u << f;
 	}
 	check_far(hand, far, c, reach);

@@ -17,13 +17,13 @@ static inline int hs_segment_first_point(int s) {
 
 // Where check point i is at piece boundary k of its path (0: a frame ago, steps: now).
 static inline hs_vec3 hs_contact_path_point(const hs_hand *hand, int i, int k, int steps) {
-	return k == 0 ? hand->prev_points[i] : k == steps ? hand->points[i] : hand->path_points[k - 1][i];
+	return k == 0 ? hand->cache.prev_points[i] : k == steps ? hand->cache.points[i] : hand->cache.path_points[k - 1][i];
 }
 
 // True when check point i's path through the frame comes within sqrt(r_sq) of c.
 static inline bool hs_contact_path_near(const hs_hand *hand, int i, int steps, hs_vec3 c, double r_sq) {
 	if (steps == 1) // one piece (most frames): read straight, not through path_point
-		return segment_distance_sq(c, hand->prev_points[i], hand->points[i]) <= r_sq;
+		return segment_distance_sq(c, hand->cache.prev_points[i], hand->cache.points[i]) <= r_sq;
 	for (int k = 0; k < steps; ++k)
 		if (segment_distance_sq(c, hs_contact_path_point(hand, i, k, steps), hs_contact_path_point(hand, i, k + 1, steps)) <= r_sq)
 			return true;
@@ -64,7 +64,7 @@ typedef struct hs_segment_bounds {
 } hs_segment_bounds;
 
 static inline hs_segment_bounds hs_contact_segment_bounds(const hs_world *world, const hs_hand *hand, double r) {
-	double rf = hand->def.finger_radius;
+	double rf = hand->model.def.finger_radius;
 	hs_segment_bounds b = {r + rf + HS_CULL_SLACK, r + 3.0 * rf + HS_CULL_SLACK, r - rf - HS_CULL_SLACK,
 	                    world->model.def.grasp_release_mm * 1e-3 - rf - HS_CULL_SLACK};
 	return b;
@@ -122,16 +122,16 @@ static inline uint32_t hs_contact_points_near_part(const hs_hand *hand, double g
                                                    double hand_keep) {
 	double keep = r + grow_reach * hand_keep;
 	uint32_t within = 0, near = hs_contact_points_near(hand, center, r * r, keep * keep, &within);
-	return swept ? near | (within & (hand->touch_points | hand->embed_points)) : near;
+	return swept ? near | (within & (hand->state.touch_points | hand->state.embed_points)) : near;
 }
 
 // The finger segments (bit s) with an embedded check line: such a line stays so within twice the
 // margin of the part, beyond its sphere (detect_lines), so its segment is not culled.
 static inline uint32_t hs_contact_segments_embedded(const hs_hand *hand) {
 	uint32_t segments = 0;
-	if (hand->embed_lines)
+	if (hand->state.embed_lines)
 		for (int k = 0; k < HS_HAND_LINES / 4; ++k)
-			segments |= (uint32_t)((hand->embed_lines >> (4 * k) & 0xFu) != 0) << k;
+			segments |= (uint32_t)((hand->state.embed_lines >> (4 * k) & 0xFu) != 0) << k;
 	return segments;
 }
 
@@ -146,7 +146,7 @@ static inline bool hs_contact_ends_deep(const hs_world *world, const hs_hand *ha
 		uint32_t bit = 1u << i;
 		if (!(memo->known & bit)) { // a check point ends two segments: tested once
 			memo->known |= bit;
-			if (inside_part(world, shape, part, to_body(body, hand->points[i]), grow))
+			if (inside_part(world, shape, part, to_body(body, hand->cache.points[i]), grow))
 				memo->deep |= bit;
 		}
 		if (memo->deep & bit)
@@ -195,7 +195,7 @@ static HS_FORCE_INLINE bool quad_near(const hs_vec3 *m0, const hs_vec3 *m1, cons
 // The same for the axis of a finger segment, check points a to a + 1.
 static inline bool hs_contact_axis_path_near(const hs_hand *hand, int a, int steps, hs_vec3 c, double r) {
 	if (steps == 1) // one piece (most frames): read straight, not through path_point
-		return quad_near(&hand->prev_points[a], &hand->prev_points[a + 1], &hand->points[a], &hand->points[a + 1], c, r);
+		return quad_near(&hand->cache.prev_points[a], &hand->cache.prev_points[a + 1], &hand->cache.points[a], &hand->cache.points[a + 1], c, r);
 	for (int k = 0; k < steps; ++k) {
 		hs_vec3 m0 = hs_contact_path_point(hand, a, k, steps), m1 = hs_contact_path_point(hand, a + 1, k, steps);
 		hs_vec3 l0 = hs_contact_path_point(hand, a, k + 1, steps), l1 = hs_contact_path_point(hand, a + 1, k + 1, steps);
@@ -216,9 +216,9 @@ static inline bool hs_contact_segment_clear_of_a_face(const hs_world *world, int
 	const hs_hand *hand = &world->state.hands[h];
 	if (part->face_count >= HS_FACE_TREE_MIN_FACES)
 		return false;
-	const hs_vec3 e[4] = {to_body(body, hand->points[a]), to_body(body, hand->points[a + 1]),
-	                      to_body(before, hand->prev_points[a]), to_body(before, hand->prev_points[a + 1])};
-	if (!scan_beyond(shape, part, e, hand->def.finger_radius + 2.0 * HS_CULL_SLACK))
+	const hs_vec3 e[4] = {to_body(body, hand->cache.points[a]), to_body(body, hand->cache.points[a + 1]),
+	                      to_body(before, hand->cache.prev_points[a]), to_body(before, hand->cache.prev_points[a + 1])};
+	if (!scan_beyond(shape, part, e, hand->model.def.finger_radius + 2.0 * HS_CULL_SLACK))
 		return false;
 #if defined(HS_SELFCHECK)
 	hs_contact_check_segment_clear(world, h, a, body, before, shape, part);

@@ -125,8 +125,8 @@ static double push_depth(const hs_contact *c) { return -hs_dot(hs_sub(c->finger,
 
 static bool touched_before(const hs_world *world, const hs_contact *c) {
 	const hs_hand *hand = &world->state.hands[c->hand.index1 - 1];
-	return c->part < HS_HAND_POINTS ? (hand->touch_points >> c->part & 1u)
-	                                : (hand->touch_lines >> (c->part - HS_HAND_POINTS) & 1u);
+	return c->part < HS_HAND_POINTS ? (hand->state.touch_points >> c->part & 1u)
+	                                : (hand->state.touch_lines >> (c->part - HS_HAND_POINTS) & 1u);
 }
 
 // A part that reached a face this frame behind a part of the same finger that already touched

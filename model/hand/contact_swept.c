@@ -11,7 +11,7 @@ bool hs_contact_path_enters(const hs_world *world, const hs_shape *shape, const 
                             const hs_frame *body, hs_vec3 a, bool inside, hs_clip *hit, hs_vec3 *from, hs_vec3 *to,
                             double *when) {
 	for (int k = 1; k <= steps; ++k) {
-		hs_vec3 b = k == steps ? to_body(body, hand->points[i]) : to_body(body, hand->path_points[k - 1][i]);
+		hs_vec3 b = k == steps ? to_body(body, hand->cache.points[i]) : to_body(body, hand->cache.path_points[k - 1][i]);
 		hs_clip c = clip_part(world, shape, part, a, b, 0.0);
 		if (c.face_in >= 0 && c.hit && (c.t_in < c.t_out || (k == steps && inside))) {
 			*hit = c;
@@ -180,8 +180,8 @@ void hs_contact_swept_path(hs_world *world, int object, int h, int j, const hs_p
 			return;
 		hs_vec3 n[2] = {p[0], p[1]};
 		if (k < steps) {
-			n[0] = to_body(body, hand->path_lines[k - 1][j][0]);
-			n[1] = to_body(body, hand->path_lines[k - 1][j][1]);
+			n[0] = to_body(body, hand->cache.path_lines[k - 1][j][0]);
+			n[1] = to_body(body, hand->cache.path_lines[k - 1][j][1]);
 		}
 		if (swept_line(world, object, h, j, part, body, q, n, p, (double)(k - 1) / steps, 1.0 / steps))
 			return;

@@ -15,17 +15,17 @@
 #include "inline.h"
 
 hs_vec3 hs_grasp_held_pos(const hs_body *body, const hs_hand *hand) {
-	return hs_add(hand->wrist_pos, hs_quat_rotate(hand->wrist_rot, body->grip_pos));
+	return hs_add(hand->state.wrist_pos, hs_quat_rotate(hand->state.wrist_rot, body->grip_pos));
 }
 
 void hs_grasp_follow_wrist(hs_body *body, const hs_hand *hand) {
 	body->pos = hs_grasp_held_pos(body, hand);
-	body->rot = hs_quat_normalize(hs_quat_mul(hand->wrist_rot, body->grip_rot));
+	body->rot = hs_quat_normalize(hs_quat_mul(hand->state.wrist_rot, body->grip_rot));
 }
 
 void hs_grasp_slip(hs_body *body, const hs_hand *hand) {
-	body->grip_pos = hs_quat_inv_rotate(hand->wrist_rot, hs_sub(body->pos, hand->wrist_pos));
-	body->grip_rot = hs_quat_normalize(hs_quat_mul(hs_quat_conj(hand->wrist_rot), body->rot));
+	body->grip_pos = hs_quat_inv_rotate(hand->state.wrist_rot, hs_sub(body->pos, hand->state.wrist_pos));
+	body->grip_rot = hs_quat_normalize(hs_quat_mul(hs_quat_conj(hand->state.wrist_rot), body->rot));
 }
 
 // The finger of a check point (i / 4) or check line (j / 12), §3.1.
@@ -42,8 +42,8 @@ static HS_FORCE_INLINE void hand_opening(const hs_hand *hand, unsigned fingers, 
 	*spread = *reach = 0.0;
 	for (int f = 0; f < 5; ++f)
 		if (fingers >> f & 1u) {
-			tips[m] = hand->points[4 * f + 3];
-			*reach += hs_length(hs_sub(tips[m], hand->points[4 * f]));
+			tips[m] = hand->cache.points[4 * f + 3];
+			*reach += hs_length(hs_sub(tips[m], hand->cache.points[4 * f]));
 			c = hs_add(c, tips[m++]);
 		}
 	if (m == 0)
@@ -69,9 +69,9 @@ void hs_grasp_track_pairs(hs_world *world) {
 		for (int a = 0; a < 4; ++a)
 			for (int b = a + 1; b < 5; ++b) {
 				int k = finger_pair(a, b);
-				double d = hs_length(hs_sub(hand->points[4 * a + 3], hand->points[4 * b + 3]));
-				double kept = hand->pair_open[k] - forget;
-				hand->pair_open[k] = d > kept ? d : kept;
+				double d = hs_length(hs_sub(hand->cache.points[4 * a + 3], hand->cache.points[4 * b + 3]));
+				double kept = hand->state.pair_open[k] - forget;
+				hand->state.pair_open[k] = d > kept ? d : kept;
 			}
 	}
 }
@@ -79,18 +79,18 @@ void hs_grasp_track_pairs(hs_world *world) {
 void hs_grasp_reset_pairs(hs_hand *hand) {
 	for (int a = 0; a < 4; ++a)
 		for (int b = a + 1; b < 5; ++b)
-			hand->pair_open[finger_pair(a, b)] = hs_length(hs_sub(hand->points[4 * a + 3], hand->points[4 * b + 3]));
+			hand->state.pair_open[finger_pair(a, b)] = hs_length(hs_sub(hand->cache.points[4 * a + 3], hand->cache.points[4 * b + 3]));
 }
 
 // True when contacts a and b press toward each other across the object (docs/model.md §3 "Grasp
 // start"): each one's push into the object (−normal) lies within the opposition cone of the line
-// from it to the other, world->model.oppose_cos the cosine of that cone's half-angle.
-static bool opposed(const hs_world *world, const hs_contact *a, const hs_contact *b) {
+// from it to the other, model->oppose_cos the cosine of that cone's half-angle.
+static bool opposed(const hs_world_model *model, const hs_contact *a, const hs_contact *b) {
 	hs_vec3 d = hs_sub(b->point, a->point);
 	double len = hs_length(d);
 	if (!(len > 1e-9)) // one point: nothing to squeeze between
 		return false;
-	double limit = world->model.oppose_cos * len;
+	double limit = model->oppose_cos * len;
 	return -hs_dot(a->normal, d) >= limit && hs_dot(b->normal, d) >= limit;
 }
 
@@ -100,18 +100,18 @@ static bool opposed(const hs_world *world, const hs_contact *a, const hs_contact
 #define HS_PAIR_DRIFT 0.05
 
 // True when fingers a < b of the hand have closed by grasp_close_mm from the most open they were
-// lately (hs_hand.pair_open) and are not opening now (their tips parted by at most HS_PAIR_STILL
+// lately (hs_hand.state.pair_open) and are not opening now (their tips parted by at most HS_PAIR_STILL
 // plus HS_PAIR_DRIFT dt since the last frame): a hand that closed on one object and opens again is not closing.
-static bool pair_closing(const hs_world *world, const hs_hand *hand, int a, int b) {
-	double d = hs_length(hs_sub(hand->points[4 * a + 3], hand->points[4 * b + 3]));
-	double before = hs_length(hs_sub(hand->prev_points[4 * a + 3], hand->prev_points[4 * b + 3]));
-	return hand->pair_open[finger_pair(a, b)] - d >= world->model.def.grasp_close_mm * 1e-3 &&
-	       d <= before + HS_PAIR_STILL + HS_PAIR_DRIFT * world->model.def.dt;
+static bool pair_closing(const hs_world_def *def, const hs_hand *hand, int a, int b) {
+	double d = hs_length(hs_sub(hand->cache.points[4 * a + 3], hand->cache.points[4 * b + 3]));
+	double before = hs_length(hs_sub(hand->cache.prev_points[4 * a + 3], hand->cache.prev_points[4 * b + 3]));
+	return hand->state.pair_open[finger_pair(a, b)] - d >= def->grasp_close_mm * 1e-3 &&
+	       d <= before + HS_PAIR_STILL + HS_PAIR_DRIFT * def->dt;
 }
 
 // True when the fingers of contacts a and b (one hand, different fingers) have closed by
-// grasp_close_mm from the most open they were lately (hs_hand.pair_open).
-static bool closing(const hs_world *world, const hs_contact *a, const hs_contact *b) {
+// grasp_close_mm from the most open they were lately (hs_hand.state.pair_open).
+static bool closing(const hs_world_def *def, const hs_hand *hands, const hs_contact *a, const hs_contact *b) {
 	if (a->hand.index1 != b->hand.index1) // two hands squeezing from either side
 		return true;
 	int fa = finger_of(a->part), fb = finger_of(b->part);
@@ -122,7 +122,7 @@ static bool closing(const hs_world *world, const hs_contact *a, const hs_contact
 		fa = fb;
 		fb = t;
 	}
-	return pair_closing(world, &world->state.hands[a->hand.index1 - 1], fa, fb);
+	return pair_closing(def, &hands[a->hand.index1 - 1], fa, fb);
 }
 
 // A new grasp (§3.2 (2) with the realistic start, docs/model.md §3): two contacts whose normals lie
@@ -130,17 +130,17 @@ static bool closing(const hs_world *world, const hs_contact *a, const hs_contact
 // toward each other across the object (grasp_opposed), on fingers that are closing (grasp_close_mm)
 // unless the object is `taking_over` from a hand that let it go this frame: another hand already
 // squeezing it (a handover) holds it on without closing again.
-bool hs_grasp_starts(const hs_world *world, const hs_contact *cs, int n, bool taking_over) {
-	bool any = world->model.def.grasp_any_contacts, oppose = world->model.def.grasp_opposed;
-	bool close = world->model.def.grasp_close_mm > 0.0 && !taking_over;
+bool hs_grasp_starts(const hs_world_model *model, const hs_hand *hands, const hs_contact *cs, int n, bool taking_over) {
+	bool any = model->def.grasp_any_contacts, oppose = model->def.grasp_opposed;
+	bool close = model->def.grasp_close_mm > 0.0 && !taking_over;
 	for (int i = 0; i < n; ++i)
 		for (int j = i + 1; j < n; ++j) {
 			const hs_contact *a = &cs[i], *b = &cs[j];
 			if (!(any || a->hand.index1 != b->hand.index1 || finger_of(a->part) != finger_of(b->part)))
 				continue;
-			if (hs_dot(a->normal, b->normal) > world->model.grasp_limit)
+			if (hs_dot(a->normal, b->normal) > model->grasp_limit)
 				continue;
-			if ((!oppose || opposed(world, a, b)) && (!close || closing(world, a, b)))
+			if ((!oppose || opposed(model, a, b)) && (!close || closing(&model->def, hands, a, b)))
 				return true;
 		}
 	return false;
@@ -247,11 +247,11 @@ static bool hand_within_margin(hs_world *world, int i, uint32_t r, int at) {
 	return near;
 }
 
-// True when some pair of fingertips of hand h has closed by grasp_close_mm (hs_hand.pair_open).
-static bool hand_closing(const hs_world *world, int h) {
+// True when some pair of fingertips of the hand has closed by grasp_close_mm (hs_hand.state.pair_open).
+static bool hand_closing(const hs_world_def *def, const hs_hand *hand) {
 	for (int a = 0; a < 4; ++a)
 		for (int b = a + 1; b < 5; ++b)
-			if (pair_closing(world, &world->state.hands[h], a, b))
+			if (pair_closing(def, hand, a, b))
 				return true;
 	return false;
 }
@@ -306,17 +306,17 @@ static int set_aside_released(hs_world *world, int i, int first, int n) {
 // others before they reach it).
 static hs_contact_state start_or_push(hs_world *world, int i, int first, int *n, hs_contact_state state) {
 	if (state == HS_CONTACT_GRASP)
-		return hs_grasp_starts(world, &world->out.contacts[first], *n, false) ? state : HS_CONTACT_PUSH_MANY;
+		return hs_grasp_starts(&world->model, world->state.hands, &world->out.contacts[first], *n, false) ? state : HS_CONTACT_PUSH_MANY;
 	if (state == HS_CONTACT_NONE || !(world->model.def.grasp_close_mm > 0.0) || world->state.bodies[i].released_by)
 		return state;
 	bool closing_hand = false;
 	for (int k = 0; k < *n && !closing_hand; ++k)
-		closing_hand = hand_closing(world, (int)world->out.contacts[first + k].hand.index1 - 1);
+		closing_hand = hand_closing(&world->model.def, &world->state.hands[world->out.contacts[first + k].hand.index1 - 1]);
 	if (!closing_hand)
 		return state;
 	world->out.contact_count = first;
 	int grown = hs_contact_detect_grown(world, i, NULL, world->model.def.grasp_release_mm * 1e-3);
-	if (hs_grasp_starts(world, &world->out.contacts[first], grown, false)) {
+	if (hs_grasp_starts(&world->model, world->state.hands, &world->out.contacts[first], grown, false)) {
 		*n = grown;
 		return HS_CONTACT_GRASP;
 	}
@@ -346,7 +346,7 @@ hs_contact_state hs_grasp_detect(hs_world *world, int i, int first, int *n, bool
 		*n = set_aside_released(world, i, first, *n);
 		hs_contact_state state =
 		    hs_contact_classify(&world->out.contacts[first], *n, world->model.grasp_limit, world->model.def.grasp_any_contacts);
-		if (state == HS_CONTACT_GRASP && !hs_grasp_starts(world, &world->out.contacts[first], *n, true))
+		if (state == HS_CONTACT_GRASP && !hs_grasp_starts(&world->model, world->state.hands, &world->out.contacts[first], *n, true))
 			state = HS_CONTACT_PUSH_MANY;
 		if (state == HS_CONTACT_NONE) { // it flies from its last held pose (manipulate.c, release)
 			body->pos = before.pos;

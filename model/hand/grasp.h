@@ -17,7 +17,7 @@ void hs_grasp_slip(hs_body *body, const hs_hand *hand);
 // The grasp of hand index `h` begins: fixes the object's pose in the wrist frame, the glove's
 // reading and the fingers touching it (cs[0..n)), and ends any release rule (docs/model.md §3).
 void hs_grasp_begin(hs_world *world, hs_body *body, int h, const hs_contact *cs, int n);
-// How fast a fingertip pair's most open distance is forgotten (m/s; hs_hand.pair_open).
+// How fast a fingertip pair's most open distance is forgotten (m/s; hs_hand.state.pair_open).
 #define HS_PAIR_FORGET 0.01
 // Each hand's fingertip pairs: their most open lately, updated with this frame's points.
 void hs_grasp_track_pairs(hs_world *world);
@@ -28,7 +28,7 @@ void hs_grasp_reset_pairs(hs_hand *hand);
 void hs_grasp_let_go_in_place(hs_world *world, int h);
 // True when contacts cs[0..n) may begin a grasp (docs/model.md §3 "Grasp start"); `taking_over`:
 // the hand that held the object let it go this frame (no closing needed).
-bool hs_grasp_starts(const hs_world *world, const hs_contact *cs, int n, bool taking_over);
+bool hs_grasp_starts(const hs_world_model *model, const hs_hand *hands, const hs_contact *cs, int n, bool taking_over);
 // Fig. 2 for object i: its contacts (appended from world->out.contacts[first], *n of them) and state.
 // A held object whose grasp continues has moved with its wrist and *continues is set; else it is
 // classified where it was, without the contacts the release rule sets aside.

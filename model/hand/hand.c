@@ -277,15 +277,15 @@ static uint32_t sensors_changed(const uint8_t a[HS_GLOVE_SENSORS], const uint8_t
 // chain kept, wrist sensors unchanged; their points and frames in `out` are left as they are.
 static unsigned hand_pose_wrist(const reading *r, hand_pose *out, hs_hand *cache) {
 	const hs_hand_joints *j = &r->j;
-	hand_pose *palm_pose = cache ? &cache->palm_pose : out;
+	hand_pose *palm_pose = cache ? &cache->cache.palm_pose : out;
 	unsigned same = 0, kept = 0; // kept: fingers whose chains the cache holds for these sensors
 	if (cache) {
-		uint32_t changed = cache->palm_ready ? sensors_changed(cache->palm_sensors, r->v) : ~0u;
+		uint32_t changed = cache->cache.palm_ready ? sensors_changed(cache->cache.palm_sensors, r->v) : ~0u;
 		for (int f = 0; f < 5; f++)
 			kept |= (unsigned)!(changed & FINGER_SENSORS[f]) << f;
 		same = changed & WRIST_SENSORS ? 0u : kept;
-		memcpy(cache->palm_sensors, r->v, sizeof cache->palm_sensors);
-		cache->palm_ready = true;
+		memcpy(cache->cache.palm_sensors, r->v, sizeof cache->cache.palm_sensors);
+		cache->cache.palm_ready = true;
 	}
 	for (int f = 0; f < 5; f++) {
 		if (kept >> f & 1u)
@@ -406,10 +406,10 @@ void hs_hand_kinematics(const hs_hand_def *def, hs_vec3 wrist_position, hs_quat 
 
 // Segment s's lines in the wrist frame, computed once for a reading.
 static void ready_local(hs_hand *hand, int s) {
-	if ((unsigned)hand->local_ready >> s & 1u)
+	if ((unsigned)hand->cache.local_ready >> s & 1u)
 		return;
-	hs_hand_segment_lines(&hand->def, hand->local.points, hand->local.segment, s, &hand->local_lines[4 * s]);
-	hand->local_ready = (uint16_t)(hand->local_ready | 1u << s);
+	hs_hand_segment_lines(&hand->model.def, hand->cache.local.points, hand->cache.local.segment, s, &hand->cache.local_lines[4 * s]);
+	hand->cache.local_ready = (uint16_t)(hand->cache.local_ready | 1u << s);
 }
 
 // The bounding sphere of a shape in the wrist frame: about the mean check point, through the
@@ -417,14 +417,14 @@ static void ready_local(hs_hand *hand, int s) {
 // finger_radius from a check point; the relative slack is far above rounding). The lines are not
 // computed for it: most frames the contact tests read a third of them.
 static void local_bounds(hs_hand *hand) {
-	const hs_vec3 *points = hand->local.points;
+	const hs_vec3 *points = hand->cache.local.points;
 	hs_vec3 c = hs_v3(0, 0, 0);
 	for (int i = 0; i < HS_HAND_POINTS; ++i)
 		c = hs_add(c, points[i]);
 	c = hs_scale(c, 1.0 / HS_HAND_POINTS);
 	double r_sq = hs_hand_farthest_sq(c, points, HS_HAND_POINTS, 0.0);
-	hand->local_center = c;
-	hand->local_radius = (sqrt(r_sq) + hand->def.finger_radius) * (1.0 + 1e-9) + 1e-12;
+	hand->cache.local_center = c;
+	hand->cache.local_radius = (sqrt(r_sq) + hand->model.def.finger_radius) * (1.0 + 1e-9) + 1e-12;
 }
 
 #if defined(HS_SELFCHECK)
@@ -443,45 +443,45 @@ static inline void check_shape(const hs_hand *hand) { (void)hand; }
 #endif
 
 void hs_hand_update_shape(hs_hand *hand) {
-	if (hand->def.joint_driven) {
-		hs_hand_joint_pose(&hand->def, hand->joints, &hand->local);
-		hand->local_ready = 0;
+	if (hand->model.def.joint_driven) {
+		hs_hand_joint_pose(&hand->model.def, hand->state.joints, &hand->cache.local);
+		hand->cache.local_ready = 0;
 		local_bounds(hand);
 		return;
 	}
-	unsigned same = local_pose(&hand->def, &hand->glove, hand->sensors, &hand->local, hand);
+	unsigned same = local_pose(&hand->model.def, &hand->model.glove, hand->state.sensors, &hand->cache.local, hand);
 	check_shape(hand);
-	hand->local_ready = (uint16_t)(hand->local_ready & hs_finger_parts(same, 3)); // a finger's lines as they were
+	hand->cache.local_ready = (uint16_t)(hand->cache.local_ready & hs_finger_parts(same, 3)); // a finger's lines as they were
 	local_bounds(hand);
 }
 
 void hs_hand_place_points(hs_hand *hand) {
-	hand->place_m = hs_mat3_from_quat(hand->wrist_rot); // as hs_hand_place
-	place_vectors_rows(hand->place_m, hand->wrist_pos, hand->local.points, hand->points, HS_HAND_POINTS, hand->point_rows);
-	hand->lines_ready = 0;
-	hand->finger_spheres_ready = false;
+	hand->cache.place_m = hs_mat3_from_quat(hand->state.wrist_rot); // as hs_hand_place
+	place_vectors_rows(hand->cache.place_m, hand->state.wrist_pos, hand->cache.local.points, hand->cache.points, HS_HAND_POINTS, hand->cache.point_rows);
+	hand->cache.lines_ready = 0;
+	hand->cache.finger_spheres_ready = false;
 }
 
 void hs_hand_points_moved(hs_hand *hand) {
 	for (int i = 0; i < HS_HAND_POINTS; ++i) {
-		hand->point_rows[0][i] = hand->points[i].x;
-		hand->point_rows[1][i] = hand->points[i].y;
-		hand->point_rows[2][i] = hand->points[i].z;
+		hand->cache.point_rows[0][i] = hand->cache.points[i].x;
+		hand->cache.point_rows[1][i] = hand->cache.points[i].y;
+		hand->cache.point_rows[2][i] = hand->cache.points[i].z;
 	}
 }
 
 void hs_hand_place_segment(hs_hand *hand, int s) {
 	unsigned bit = 1u << s;
-	if (!(hand->lines_ready & bit)) {
+	if (!(hand->cache.lines_ready & bit)) {
 		ready_local(hand, s);
-		place_vectors(hand->place_m, hand->wrist_pos, &hand->local_lines[4 * s][0], &hand->lines[4 * s][0], 8);
-		hand->lines_ready = (uint16_t)(hand->lines_ready | bit);
+		place_vectors(hand->cache.place_m, hand->state.wrist_pos, &hand->cache.local_lines[4 * s][0], &hand->cache.lines[4 * s][0], 8);
+		hand->cache.lines_ready = (uint16_t)(hand->cache.lines_ready | bit);
 	}
-	if (!(hand->prev_lines_ready & bit)) { // not read last frame: from the shape kept with it
+	if (!(hand->cache.prev_lines_ready & bit)) { // not read last frame: from the shape kept with it
 		hs_vec3 local[4][2];
-		hs_hand_segment_lines(&hand->def, hand->prev_local.points, hand->prev_local.segment, s, local);
-		place_vectors(hand->prev_place_m, hand->prev_wrist_pos, &local[0][0], &hand->prev_lines[4 * s][0], 8);
-		hand->prev_lines_ready = (uint16_t)(hand->prev_lines_ready | bit);
+		hs_hand_segment_lines(&hand->model.def, hand->cache.prev_local.points, hand->cache.prev_local.segment, s, local);
+		place_vectors(hand->cache.prev_place_m, hand->state.prev_wrist_pos, &local[0][0], &hand->cache.prev_lines[4 * s][0], 8);
+		hand->cache.prev_lines_ready = (uint16_t)(hand->cache.prev_lines_ready | bit);
 	}
 }
 
@@ -491,51 +491,51 @@ void hs_hand_ready_all(hs_hand *hand) {
 }
 
 void hs_hand_update_bounds(hs_hand *hand) {
-	if (!hand->placed) { // touches nothing until it is set
-		hand->center = hs_v3(0, 0, 0);
-		hand->radius = -1.0;
+	if (!hand->state.placed) { // touches nothing until it is set
+		hand->cache.center = hs_v3(0, 0, 0);
+		hand->cache.radius = -1.0;
 		return;
 	}
 	// kept in the wrist frame with the shape; grown by a micrometre so the rounding of the
 	// placement can never leave a check point outside it
-	hand->center = hs_add(hand->wrist_pos, hs_quat_rotate(hand->wrist_rot, hand->local_center));
-	hand->radius = hand->local_radius + 1e-6;
+	hand->cache.center = hs_add(hand->state.wrist_pos, hs_quat_rotate(hand->state.wrist_rot, hand->cache.local_center));
+	hand->cache.radius = hand->cache.local_radius + 1e-6;
 }
 
 void hs_hand_keep_previous(hs_hand *hand) {
-	hand->finger_spheres_ready = false;
-	hand->prev_center = hand->center;
-	hand->prev_radius = hand->radius;
-	memcpy(hand->prev_points, hand->points, sizeof hand->points);
-	for (unsigned todo = hand->lines_ready; todo; todo &= todo - 1u) { // the placed segments' lines
+	hand->cache.finger_spheres_ready = false;
+	hand->cache.prev_center = hand->cache.center;
+	hand->cache.prev_radius = hand->cache.radius;
+	memcpy(hand->cache.prev_points, hand->cache.points, sizeof hand->cache.points);
+	for (unsigned todo = hand->cache.lines_ready; todo; todo &= todo - 1u) { // the placed segments' lines
 		int s = hs_lowest_bit(todo);
-		memcpy(hand->prev_lines[4 * s], hand->lines[4 * s], sizeof hand->lines[0] * 4);
+		memcpy(hand->cache.prev_lines[4 * s], hand->cache.lines[4 * s], sizeof hand->cache.lines[0] * 4);
 	}
-	hand->prev_lines_ready = hand->lines_ready; // the others from the shape they would be placed from
-	hand->prev_place_m = hand->place_m;
-	hand->prev_local = hand->local;
-	hand->prev_wrist_pos = hand->wrist_pos;
-	hand->prev_wrist_rot = hand->wrist_rot;
-	memcpy(hand->prev_sensors, hand->sensors, sizeof hand->sensors);
-	if (hand->def.joint_driven)
-		memcpy(hand->prev_joints, hand->joints, sizeof hand->joints);
+	hand->cache.prev_lines_ready = hand->cache.lines_ready; // the others from the shape they would be placed from
+	hand->cache.prev_place_m = hand->cache.place_m;
+	hand->cache.prev_local = hand->cache.local;
+	hand->state.prev_wrist_pos = hand->state.wrist_pos;
+	hand->state.prev_wrist_rot = hand->state.wrist_rot;
+	memcpy(hand->state.prev_sensors, hand->state.sensors, sizeof hand->state.sensors);
+	if (hand->model.def.joint_driven)
+		memcpy(hand->state.prev_joints, hand->state.joints, sizeof hand->state.joints);
 }
 
 void hs_hand_age_wrist(hs_hand *hand) {
-	if (!hand->placed)
+	if (!hand->state.placed)
 		return;
-	size_t keep = (size_t)(hand->older_capacity - 1);
-	memmove(&hand->older_pos[1], &hand->older_pos[0], keep * sizeof hand->older_pos[0]);
-	memmove(&hand->older_rot[1], &hand->older_rot[0], keep * sizeof hand->older_rot[0]);
-	hand->older_pos[0] = hand->prev_wrist_pos;
-	hand->older_rot[0] = hand->prev_wrist_rot;
-	if (hand->older_count < hand->older_capacity)
-		hand->older_count++;
+	size_t keep = (size_t)(hand->model.older_capacity - 1);
+	memmove(&hand->state.older_pos[1], &hand->state.older_pos[0], keep * sizeof hand->state.older_pos[0]);
+	memmove(&hand->state.older_rot[1], &hand->state.older_rot[0], keep * sizeof hand->state.older_rot[0]);
+	hand->state.older_pos[0] = hand->state.prev_wrist_pos;
+	hand->state.older_rot[0] = hand->state.prev_wrist_rot;
+	if (hand->state.older_count < hand->model.older_capacity)
+		hand->state.older_count++;
 }
 
 void hs_hand_past_wrist(const hs_hand *hand, int frames, hs_vec3 *pos, hs_quat *rot) {
-	*pos = frames == 0 ? hand->wrist_pos : frames == 1 ? hand->prev_wrist_pos : hand->older_pos[frames - 2];
-	*rot = frames == 0 ? hand->wrist_rot : frames == 1 ? hand->prev_wrist_rot : hand->older_rot[frames - 2];
+	*pos = frames == 0 ? hand->state.wrist_pos : frames == 1 ? hand->state.prev_wrist_pos : hand->state.older_pos[frames - 2];
+	*rot = frames == 0 ? hand->state.wrist_rot : frames == 1 ? hand->state.prev_wrist_rot : hand->state.older_rot[frames - 2];
 }
 
 int hs_release_window_frames(double window_s, double dt) {
@@ -549,39 +549,39 @@ int hs_hand_older_capacity(double window_s, double dt) {
 }
 
 void hs_hand_refresh(hs_hand *hand) {
-	if (!hand->placed) { // as hs_world_add_hand left it
-		memset(hand->points, 0, sizeof hand->points);
-		memset(hand->point_rows, 0, sizeof hand->point_rows);
-		memset(hand->prev_points, 0, sizeof hand->prev_points);
-		memset(hand->lines, 0, sizeof hand->lines);
-		memset(hand->prev_lines, 0, sizeof hand->prev_lines);
-		memset(hand->local.points, 0, sizeof hand->local.points);
-		memset(hand->local_lines, 0, sizeof hand->local_lines);
-		hand->palm_ready = false; // its shape is no longer the last one made through the cache
-		hand->lines_ready = hand->prev_lines_ready = hand->local_ready = HS_HAND_ALL_SEGMENTS;
-		hand->local_center = hs_v3(0, 0, 0);
-		hand->local_radius = 0.0;
+	if (!hand->state.placed) { // as hs_world_add_hand left it
+		memset(hand->cache.points, 0, sizeof hand->cache.points);
+		memset(hand->cache.point_rows, 0, sizeof hand->cache.point_rows);
+		memset(hand->cache.prev_points, 0, sizeof hand->cache.prev_points);
+		memset(hand->cache.lines, 0, sizeof hand->cache.lines);
+		memset(hand->cache.prev_lines, 0, sizeof hand->cache.prev_lines);
+		memset(hand->cache.local.points, 0, sizeof hand->cache.local.points);
+		memset(hand->cache.local_lines, 0, sizeof hand->cache.local_lines);
+		hand->cache.palm_ready = false; // its shape is no longer the last one made through the cache
+		hand->cache.lines_ready = hand->cache.prev_lines_ready = hand->cache.local_ready = HS_HAND_ALL_SEGMENTS;
+		hand->cache.local_center = hs_v3(0, 0, 0);
+		hand->cache.local_radius = 0.0;
 		hs_hand_update_bounds(hand);
-		hand->prev_center = hand->center;
-		hand->prev_radius = hand->radius;
+		hand->cache.prev_center = hand->cache.center;
+		hand->cache.prev_radius = hand->cache.radius;
 		return;
 	}
 	// the previous points and bounds: the same calls that placed them, on the previous reading;
 	// its lines from the shape kept for them
-	if (hand->def.joint_driven)
-		hs_hand_joint_pose(&hand->def, hand->prev_joints, &hand->local);
+	if (hand->model.def.joint_driven)
+		hs_hand_joint_pose(&hand->model.def, hand->state.prev_joints, &hand->cache.local);
 	else
-		local_pose(&hand->def, &hand->glove, hand->prev_sensors, &hand->local, hand);
-	hand->local_ready = 0;
+		local_pose(&hand->model.def, &hand->model.glove, hand->state.prev_sensors, &hand->cache.local, hand);
+	hand->cache.local_ready = 0;
 	local_bounds(hand);
-	hand->prev_place_m = hs_mat3_from_quat(hand->prev_wrist_rot);
-	place_vectors(hand->prev_place_m, hand->prev_wrist_pos, hand->local.points, hand->prev_points, HS_HAND_POINTS);
-	hand->prev_local = hand->local;
-	hand->prev_lines_ready = 0;
-	hand->center = hs_add(hand->prev_wrist_pos, hs_quat_rotate(hand->prev_wrist_rot, hand->local_center));
-	hand->radius = hand->local_radius + 1e-6;
-	hand->prev_center = hand->center;
-	hand->prev_radius = hand->radius;
+	hand->cache.prev_place_m = hs_mat3_from_quat(hand->state.prev_wrist_rot);
+	place_vectors(hand->cache.prev_place_m, hand->state.prev_wrist_pos, hand->cache.local.points, hand->cache.prev_points, HS_HAND_POINTS);
+	hand->cache.prev_local = hand->cache.local;
+	hand->cache.prev_lines_ready = 0;
+	hand->cache.center = hs_add(hand->state.prev_wrist_pos, hs_quat_rotate(hand->state.prev_wrist_rot, hand->cache.local_center));
+	hand->cache.radius = hand->cache.local_radius + 1e-6;
+	hand->cache.prev_center = hand->cache.center;
+	hand->cache.prev_radius = hand->cache.radius;
 	hs_hand_update_shape(hand);
 	hs_hand_place_points(hand);
 	hs_hand_update_bounds(hand);

@@ -16,7 +16,7 @@
 
 // Wrist poses kept beyond the last step's (for a release's velocity, manipulate.c): at least
 // HS_HAND_OLDER (the default 50 ms window needs 5 at 120 frames/s), more when the world's
-// release_window_s needs them (hs_hand.older_capacity), at most HS_HAND_OLDER_MAX.
+// release_window_s needs them (hs_hand.model.older_capacity), at most HS_HAND_OLDER_MAX.
 #define HS_HAND_OLDER 7
 // Pairs of different fingers (5 choose 2), hs_finger_pair.
 #define HS_FINGER_PAIRS 10
@@ -36,27 +36,35 @@ typedef struct hs_glove_table {
 	hs_half_turn rows[HS_GLOVE_ROWS][256];
 } hs_glove_table;
 
-// A hand of a world. MODEL: `def`. STATE (state.c's field table hand_fields lists them): the wrist pose and
-// sensors now and at the end of the last step, `placed`, the touch masks. CACHES, rebuilt from the state after a
-// load (hs_hand_refresh): the check points and lines now and one frame ago (the kinematics of
-// those two readings, §3.1: bit for bit what hs_world_set_hand computed), the shape in the wrist
-// frame and the bounding spheres. 55 words of state instead of the 866 of the points and lines.
 // One hand in its palm frame, right-handed: check points and segment orientations.
 typedef struct hs_hand_pose {
 	hs_vec3 points[HS_HAND_POINTS];
 	hs_quat segment[15]; // finger × 3 + segment: x along the bone, z toward the back (nail)
 } hs_hand_pose;
 
-typedef struct hs_hand {
+// A hand's definition: fixed when the hand is built, read-only while stepping (in the saved state
+// only through the world's checksum).
+typedef struct hs_hand_model {
 	hs_hand_def def;
+	// how many older wrist poses are kept (hs_hand_older_capacity of the world's definition); the
+	// state holds that many, the rest of hs_hand_state's arrays is unused
+	int older_capacity;
+	// built with the hand (hs_glove_table_build): a new reading's kinematics looks its sines up,
+	// the same values the sines of its angles give
+	hs_glove_table glove;
+} hs_hand_model;
+
+// A hand's per-frame state: saved, loaded and hashed (state.c's field table hand_fields lists
+// every field, in the order they are written). 55 words instead of the 866 of the points and lines.
+typedef struct hs_hand_state {
 	hs_vec3 wrist_pos;
 	hs_quat wrist_rot;
 	uint8_t sensors[HS_GLOVE_SENSORS];
 	hs_vec3 prev_wrist_pos; // the reading the previous points were placed from
 	hs_quat prev_wrist_rot;
 	uint8_t prev_sensors[HS_GLOVE_SENSORS];
-	// a joint-driven hand's input (def.joint_driven; state, in place of the sensors): its check
-	// points in the wrist frame now and at the end of the last step
+	// a joint-driven hand's input (def.joint_driven; in place of the sensors): its check points in
+	// the wrist frame now and at the end of the last step
 	hs_vec3 joints[HS_HAND_POINTS], prev_joints[HS_HAND_POINTS];
 	bool placed; // set at least once: before that its previous points are its current ones
 	// tracking (hs_world_set_hand_tracked): untracked is the input for the next step; lost_frames
@@ -68,10 +76,8 @@ typedef struct hs_hand {
 	// to have closed from it by grasp_close_mm (grasp.c)
 	double pair_open[HS_FINGER_PAIRS];
 	// the wrist poses at the ends of the steps before the last one, newest first (older_pos[0]: two
-	// frames ago), older_count of them: a release takes the hand's motion over its last frames.
-	// MODEL: older_capacity, how many are kept (hs_hand_older_capacity of the world's definition);
-	// the state holds that many, the rest of the arrays is unused
-	int older_capacity;
+	// frames ago), older_count of them (at most model.older_capacity): a release takes the hand's
+	// motion over its last frames
 	int older_count;
 	hs_vec3 older_pos[HS_HAND_OLDER_MAX];
 	hs_quat older_rot[HS_HAND_OLDER_MAX];
@@ -84,12 +90,13 @@ typedef struct hs_hand {
 	// it) and have not come out of it by grasp_release_mm since: they touch nothing (contact.c)
 	uint32_t embed_points;
 	uint64_t embed_lines;
-	// scratch of a step's hand pass: check points that touched and have come off the surface by
-	// less than grasp_release_mm (the contact's hysteresis, contact.c): they stay touching; and the
-	// embedded parts of the next frame
-	uint32_t near_points, embed_points_next;
-	uint64_t embed_lines_next;
-	// cache: points and lines of (sensors, wrist) and of (prev_sensors, prev_wrist); zero until placed.
+} hs_hand_state;
+
+// A hand's caches, rebuilt from the state after a load (hs_hand_refresh): the check points and
+// lines now and one frame ago (the kinematics of those two readings, §3.1: bit for bit what
+// hs_world_set_hand computed), the shape in the wrist frame and the bounding spheres.
+typedef struct hs_hand_cache {
+	// points and lines of (sensors, wrist) and of (prev_sensors, prev_wrist); zero until placed.
 	// The points are placed with the reading; a finger segment's 4 lines only when something reads
 	// them (hs_hand_ready_segment): bit s of lines_ready / prev_lines_ready says segment s's are
 	// there. Most frames the contact tests reach a third of the segments (the rest are culled by
@@ -104,45 +111,59 @@ typedef struct hs_hand {
 	// wrist frame too (prev_local; the current one is `local`)
 	hs_mat3 place_m, prev_place_m;
 	hs_hand_pose prev_local;
-	// cache: bounding sphere of the check points and lines (radius < 0: touches nothing)
+	// bounding sphere of the check points and lines (radius < 0: touches nothing)
 	hs_vec3 center;
 	double radius;
-	// cache: the shape in the wrist frame for `sensors`, recomputed only when the glove reading
-	// changes: the check points, each segment's frame, and the lines of the segments in local_ready
+	// the shape in the wrist frame for `sensors`, recomputed only when the glove reading changes:
+	// the check points, each segment's frame, and the lines of the segments in local_ready
 	hs_hand_pose local; // check points and segment frames
 	hs_vec3 local_lines[HS_HAND_LINES][2];
 	uint16_t local_ready;
 	hs_vec3 local_center; // its bounding sphere in the wrist frame
 	double local_radius;
-	// cache: the bounding sphere at the end of the last step (of prev_points and prev_lines)
+	// the bounding sphere at the end of the last step (of prev_points and prev_lines)
 	hs_vec3 prev_center;
 	double prev_radius;
-	// cache, filled by hs_hand_sweep at the start of each step's hand pass: the pieces of the
-	// parts' path through the frame (path_steps; for > 1, the parts at k / path_steps of the way
-	// in path_points[k - 1], path_lines[k - 1]) and the bounding sphere of the whole path
+	// filled by hs_hand_sweep at the start of each step's hand pass: the pieces of the parts' path
+	// through the frame (path_steps; for > 1, the parts at k / path_steps of the way in
+	// path_points[k - 1], path_lines[k - 1]) and the bounding sphere of the whole path
 	int path_steps;
 	hs_vec3 path_points[HS_HAND_PATH_MAX - 1][HS_HAND_POINTS];
 	hs_vec3 path_lines[HS_HAND_PATH_MAX - 1][HS_HAND_LINES][2];
 	hs_vec3 sweep_center;
 	double sweep_radius;
-	// cache, made by hs_hand_finger_spheres when a contact test first reads it after the points
-	// moved (finger_spheres_ready, cleared by hs_hand_sweep, hs_hand_place_points and
+	// made by hs_hand_finger_spheres when a contact test first reads it after the points moved
+	// (finger_spheres_ready, cleared by hs_hand_sweep, hs_hand_place_points and
 	// hs_hand_keep_previous): finger f's 4 check points now, a frame ago and on the path between
 	// lie within finger_reach[f] - finger_radius of finger_center[f], so its check lines lie within
 	// finger_reach[f] of it (contact.c passes over a finger far from a part)
 	hs_vec3 finger_center[5];
 	double finger_reach[5];
 	bool finger_spheres_ready;
-	// model cache, built with the hand (hs_glove_table_build): a new reading's kinematics looks its
-	// sines up, the same values the sines of its angles give
-	hs_glove_table glove;
-	// cache: each finger's chain in the palm frame (before the wrist sensors' turn), made from the
-	// sensor values of the last shape made through it (palm_sensors, once palm_ready): a glove's
-	// deadband keeps about half the fingers' readings from one frame to the next, and their chains
-	// are not computed again
+	// each finger's chain in the palm frame (before the wrist sensors' turn), made from the sensor
+	// values of the last shape made through it (palm_sensors, once palm_ready): a glove's deadband
+	// keeps about half the fingers' readings from one frame to the next, and their chains are not
+	// computed again
 	hs_hand_pose palm_pose;
 	uint8_t palm_sensors[HS_GLOVE_SENSORS];
 	bool palm_ready;
+} hs_hand_cache;
+
+// A step's hand pass's scratch (contact.c), never read before written in the same pass: check
+// points that touched and have come off the surface by less than grasp_release_mm (the contact's
+// hysteresis): they stay touching; and the embedded parts of the next frame.
+typedef struct hs_hand_scratch {
+	uint32_t near_points, embed_points_next;
+	uint64_t embed_lines_next;
+} hs_hand_scratch;
+
+// A hand of a world, its fields grouped by role as struct hs_world's are (docs/architecture.md
+// "The world's data").
+typedef struct hs_hand {
+	hs_hand_model model;
+	hs_hand_state state;
+	hs_hand_cache cache;
+	hs_hand_scratch scratch;
 } hs_hand;
 
 // The hand's shape in its wrist frame (depends on the sensors only) and its placement.
@@ -226,7 +247,7 @@ static inline int hs_lowest_bit(uint32_t m) {
 // placing all of them with the reading.
 void hs_hand_place_segment(hs_hand *hand, int s);
 static inline void hs_hand_ready_segment(hs_hand *hand, int s) {
-	if (!((unsigned)(hand->lines_ready & hand->prev_lines_ready) >> s & 1u))
+	if (!((unsigned)(hand->cache.lines_ready & hand->cache.prev_lines_ready) >> s & 1u))
 		hs_hand_place_segment(hand, s);
 }
 // Every segment's lines, now and a frame ago (a path through the frame reads them all).

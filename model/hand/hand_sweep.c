@@ -17,7 +17,7 @@
 // deg per sensor unit (paper §5.1)
 #define DEG_PER_UNIT 0.5
 
-static int delta(const hs_hand *hand, int sensor) { return abs((int)hand->sensors[sensor] - (int)hand->prev_sensors[sensor]); }
+static int delta(const hs_hand *hand, int sensor) { return abs((int)hand->state.sensors[sensor] - (int)hand->state.prev_sensors[sensor]); }
 
 // The largest turn (deg) of any part of the hand relative to the wrist over the frame: the sum of
 // the sensed joint changes along each finger chain (the DIP follows 2/3 of the PIP), the palm and
@@ -43,14 +43,14 @@ static double chain_turn_deg(const hs_hand *hand) {
 static double joint_turn_deg(const hs_hand *hand) {
 	double worst = 0.0;
 	for (int s = 0; s < 15; ++s) {
-		double a = hs_quat_angle(hs_quat_mul(hand->local.segment[s], hs_quat_conj(hand->prev_local.segment[s])));
+		double a = hs_quat_angle(hs_quat_mul(hand->cache.local.segment[s], hs_quat_conj(hand->cache.prev_local.segment[s])));
 		worst = a > worst ? a : worst;
 	}
 	return worst * (180.0 / HS_PI);
 }
 
 static double wrist_turn_deg(const hs_hand *hand) {
-	hs_quat a = hand->prev_wrist_rot, b = hand->wrist_rot;
+	hs_quat a = hand->state.prev_wrist_rot, b = hand->state.wrist_rot;
 	if (a.w == b.w && a.x == b.x && a.y == b.y && a.z == b.z)
 		return 0.0;
 	return hs_quat_angle(hs_quat_mul(b, hs_quat_conj(a))) * (180.0 / HS_PI);
@@ -60,7 +60,7 @@ static double wrist_turn_deg(const hs_hand *hand) {
 // wrist's angle 2 atan2(v, |w|) is at most 2 v / |w| (atan x <= x), with a slack far above the
 // rounding of either. Most frames the bound settles it and the arc tangent is not taken.
 static bool turn_within_a_piece(const hs_hand *hand, double chain) {
-	hs_quat r = hs_quat_mul(hand->wrist_rot, hs_quat_conj(hand->prev_wrist_rot));
+	hs_quat r = hs_quat_mul(hand->state.wrist_rot, hs_quat_conj(hand->state.prev_wrist_rot));
 	double v = sqrt(r.x * r.x + r.y * r.y + r.z * r.z), w = fabs(r.w);
 	return w > 0.0 && chain + 2.0 * (v / w) * (180.0 / HS_PI) * (1.0 + 1e-9) < HS_HAND_PATH_DEG;
 }
@@ -91,67 +91,67 @@ static double farthest_sq(hs_vec3 c, const hs_vec3 points[HS_HAND_POINTS], const
 static void place_between(hs_hand *hand, int k, int steps) {
 	double t = (double)k / steps;
 	hs_vec3 local_points[HS_HAND_POINTS], local_lines[HS_HAND_LINES][2];
-	if (hand->def.joint_driven) {
+	if (hand->model.def.joint_driven) {
 		hs_vec3 joints[HS_HAND_POINTS];
 		for (int i = 0; i < HS_HAND_POINTS; ++i)
-			joints[i] = hs_lerp(hand->prev_joints[i], hand->joints[i], t);
-		hs_hand_joint_shape(&hand->def, joints, local_points, local_lines);
+			joints[i] = hs_lerp(hand->state.prev_joints[i], hand->state.joints[i], t);
+		hs_hand_joint_shape(&hand->model.def, joints, local_points, local_lines);
 	} else {
 		uint8_t sensors[HS_GLOVE_SENSORS];
 		for (int i = 0; i < HS_GLOVE_SENSORS; ++i) // to the nearest unit, halves up: integers only
-			sensors[i] = (uint8_t)(((int)hand->prev_sensors[i] * (steps - k) + (int)hand->sensors[i] * k + steps / 2) / steps);
-		hs_hand_local_shape_with(&hand->def, &hand->glove, sensors, local_points, local_lines);
+			sensors[i] = (uint8_t)(((int)hand->state.prev_sensors[i] * (steps - k) + (int)hand->state.sensors[i] * k + steps / 2) / steps);
+		hs_hand_local_shape_with(&hand->model.def, &hand->model.glove, sensors, local_points, local_lines);
 	}
-	hs_hand_place(local_points, (const hs_vec3(*)[2])local_lines, hs_lerp(hand->prev_wrist_pos, hand->wrist_pos, t),
-	              hs_quat_slerp(hand->prev_wrist_rot, hand->wrist_rot, t), hand->path_points[k - 1],
-	              hand->path_lines[k - 1]);
+	hs_hand_place(local_points, (const hs_vec3(*)[2])local_lines, hs_lerp(hand->state.prev_wrist_pos, hand->state.wrist_pos, t),
+	              hs_quat_slerp(hand->state.prev_wrist_rot, hand->state.wrist_rot, t), hand->cache.path_points[k - 1],
+	              hand->cache.path_lines[k - 1]);
 }
 
 void hs_hand_sweep(hs_hand *hand, bool chords_only) {
-	hand->path_steps = 1;
-	hand->finger_spheres_ready = false;
-	if (!hand->placed || hand->radius < 0.0) {
-		hand->sweep_center = hand->center;
-		hand->sweep_radius = hand->radius;
+	hand->cache.path_steps = 1;
+	hand->cache.finger_spheres_ready = false;
+	if (!hand->state.placed || hand->cache.radius < 0.0) {
+		hand->cache.sweep_center = hand->cache.center;
+		hand->cache.sweep_radius = hand->cache.radius;
 		return;
 	}
 	double turn = 0.0; // (only read above HS_HAND_PATH_DEG)
 	if (!chords_only) {
-		double chain = hand->def.joint_driven ? joint_turn_deg(hand) : chain_turn_deg(hand);
+		double chain = hand->model.def.joint_driven ? joint_turn_deg(hand) : chain_turn_deg(hand);
 		if (!turn_within_a_piece(hand, chain))
 			turn = chain + wrist_turn_deg(hand);
 	}
 	if (turn > HS_HAND_PATH_DEG)
-		hand->path_steps = turn >= HS_HAND_PATH_DEG * HS_HAND_PATH_MAX ? HS_HAND_PATH_MAX
+		hand->cache.path_steps = turn >= HS_HAND_PATH_DEG * HS_HAND_PATH_MAX ? HS_HAND_PATH_MAX
 		                                                                  : (int)ceil(turn / HS_HAND_PATH_DEG);
-	if (hand->path_steps == 1) { // chords: within the two spheres' hull
-		merge_spheres(hand->prev_center, hand->prev_radius, hand->center, hand->radius, &hand->sweep_center,
-		              &hand->sweep_radius);
+	if (hand->cache.path_steps == 1) { // chords: within the two spheres' hull
+		merge_spheres(hand->cache.prev_center, hand->cache.prev_radius, hand->cache.center, hand->cache.radius, &hand->cache.sweep_center,
+		              &hand->cache.sweep_radius);
 		return;
 	}
 	hs_hand_ready_all(hand); // the path's sphere holds every line
-	hs_vec3 c = hs_scale(hs_add(hand->prev_center, hand->center), 0.5);
-	double r_sq = farthest_sq(c, hand->points, (const hs_vec3(*)[2])hand->lines, 0.0);
-	r_sq = farthest_sq(c, hand->prev_points, (const hs_vec3(*)[2])hand->prev_lines, r_sq);
-	for (int k = 1; k < hand->path_steps; ++k) {
-		place_between(hand, k, hand->path_steps);
-		r_sq = farthest_sq(c, hand->path_points[k - 1], (const hs_vec3(*)[2])hand->path_lines[k - 1], r_sq);
+	hs_vec3 c = hs_scale(hs_add(hand->cache.prev_center, hand->cache.center), 0.5);
+	double r_sq = farthest_sq(c, hand->cache.points, (const hs_vec3(*)[2])hand->cache.lines, 0.0);
+	r_sq = farthest_sq(c, hand->cache.prev_points, (const hs_vec3(*)[2])hand->cache.prev_lines, r_sq);
+	for (int k = 1; k < hand->cache.path_steps; ++k) {
+		place_between(hand, k, hand->cache.path_steps);
+		r_sq = farthest_sq(c, hand->cache.path_points[k - 1], (const hs_vec3(*)[2])hand->cache.path_lines[k - 1], r_sq);
 	}
-	hand->sweep_center = c;
-	hand->sweep_radius = sqrt(r_sq) + 1e-6; // as hs_hand_update_bounds: rounding never leaves a part outside
+	hand->cache.sweep_center = c;
+	hand->cache.sweep_radius = sqrt(r_sq) + 1e-6; // as hs_hand_update_bounds: rounding never leaves a part outside
 }
 
 // The 4 check points of finger f in one of the hand's poses through the frame: k = 0 a frame ago,
 // path_steps now, the path's pieces between.
 static const hs_vec3 *finger_points(const hs_hand *hand, int k, int f) {
-	const hs_vec3 *p = k == 0 ? hand->prev_points : k == hand->path_steps ? hand->points : hand->path_points[k - 1];
+	const hs_vec3 *p = k == 0 ? hand->cache.prev_points : k == hand->cache.path_steps ? hand->cache.points : hand->cache.path_points[k - 1];
 	return p + 4 * f;
 }
 
 void hs_hand_finger_spheres(hs_hand *hand) {
-	if (hand->finger_spheres_ready)
+	if (hand->cache.finger_spheres_ready)
 		return;
-	int poses = hand->path_steps + 1;
+	int poses = hand->cache.path_steps + 1;
 	for (int f = 0; f < 5; ++f) {
 		hs_vec3 sum = hs_v3(0.0, 0.0, 0.0);
 		for (int k = 0; k < poses; ++k) {
@@ -160,11 +160,11 @@ void hs_hand_finger_spheres(hs_hand *hand) {
 		}
 		hs_vec3 c = hs_scale(sum, 1.0 / (4.0 * poses));
 		// the lines' ends lie finger_radius from the points; rounding far below the micrometre
-		hand->finger_center[f] = c;
+		hand->cache.finger_center[f] = c;
 		double r_sq = 0.0; // (a NaN point makes the centre NaN: the sphere then culls nothing)
 		for (int k = 0; k < poses; ++k)
 			r_sq = hs_hand_farthest_sq(c, finger_points(hand, k, f), 4, r_sq);
-		hand->finger_reach[f] = (sqrt(r_sq) + hand->def.finger_radius) * (1.0 + 1e-9) + 1e-6;
+		hand->cache.finger_reach[f] = (sqrt(r_sq) + hand->model.def.finger_radius) * (1.0 + 1e-9) + 1e-6;
 	}
-	hand->finger_spheres_ready = true;
+	hand->cache.finger_spheres_ready = true;
 }

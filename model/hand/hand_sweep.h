@@ -12,7 +12,7 @@
 // interpolated between them), and the bounding sphere of every part over the whole path.
 // `chords_only` (the paper's letter, hs_world_def.paper_contacts): S = 1 always.
 void hs_hand_sweep(hs_hand *hand, bool chords_only);
-// Fills the hand's finger spheres (hs_hand.finger_center, finger_reach) for its points now, a frame
+// Fills the hand's finger spheres (hs_hand.cache.finger_center, finger_reach) for its points now, a frame
 // ago and on the path of the last hs_hand_sweep, unless they are already made for them.
 void hs_hand_finger_spheres(hs_hand *hand);
 

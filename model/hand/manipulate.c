@@ -59,16 +59,16 @@ static int grasping_hand(const hs_world *world, const hs_body *body, const hs_co
 }
 
 // Adds object j to the sorted candidates of this frame's hand pass, once.
-static HS_FORCE_INLINE void add_candidate(hs_world *world, int j) {
-	int k = world->scratch.candidate_count;
-	while (k > 0 && world->scratch.candidates[k - 1] > j)
+static HS_FORCE_INLINE void add_candidate(hs_world_scratch *scratch, int j) {
+	int k = scratch->candidate_count;
+	while (k > 0 && scratch->candidates[k - 1] > j)
 		--k;
-	if (k > 0 && world->scratch.candidates[k - 1] == j)
+	if (k > 0 && scratch->candidates[k - 1] == j)
 		return;
-	for (int m = world->scratch.candidate_count; m > k; --m)
-		world->scratch.candidates[m] = world->scratch.candidates[m - 1];
-	world->scratch.candidates[k] = j;
-	++world->scratch.candidate_count;
+	for (int m = scratch->candidate_count; m > k; --m)
+		scratch->candidates[m] = scratch->candidates[m - 1];
+	scratch->candidates[k] = j;
+	++scratch->candidate_count;
 }
 
 // The rigid motion of a hand's frame on an object: from (pos0, rot0) to (pos, rot).
@@ -133,7 +133,7 @@ static void carry_along(hs_world *world, int moved, int current, rigid_move m) {
 			hs_grid_update(world, j);
 			world->scratch.queue[tail++] = j;
 			if (j > current) // it may have come within a hand's reach: look at it this frame
-				add_candidate(world, j);
+				add_candidate(&world->scratch, j);
 		}
 	}
 }
@@ -143,9 +143,9 @@ static void carry_along(hs_world *world, int moved, int current, rigid_move m) {
 // it has. Over one frame at 120 frames/s the tracker's noise alone (0.76 mm) made a hand opening in
 // place release the object at up to 0.2 m/s and 30 deg/s: a pair let go 0.1 m up landed 3 cm off
 // (docs/model.md §4 "Release").
-static int release_frames(const hs_world *world, const hs_hand *hand) {
-	int n = hs_release_window_frames(world->model.def.release_window_s, world->model.def.dt);
-	int most = hand->older_count + 1;
+static int release_frames(const hs_world_def *def, const hs_hand *hand) {
+	int n = hs_release_window_frames(def->release_window_s, def->dt);
+	int most = hand->state.older_count + 1;
 	return n > most ? most : n;
 }
 
@@ -205,19 +205,19 @@ static void carried_motion(const hs_body *body, const hs_hand *hand, int back, i
 // and at 12 frames/s the frame before the opening can be half a swing behind. Otherwise the slower
 // of the two: a hand that opens and moves off sideways in the same frame, both fingertips leaving
 // the object, does not throw it, and a hand that stopped and opened sets it down.
-static void release_motion(const hs_world *world, const hs_body *body, const hs_hand *hand, hs_vec3 *v_dt, hs_quat *turn) {
-	int frames = release_frames(world, hand);
+static void release_motion(const hs_world_def *def, const hs_body *body, const hs_hand *hand, hs_vec3 *v_dt, hs_quat *turn) {
+	int frames = release_frames(def, hand);
 	carried_motion(body, hand, 0, frames, v_dt, turn);
-	if (world->model.def.release_fit == HS_RELEASE_FIT_QUADRATIC && frames >= 2) // as the bench's lsq
+	if (def->release_fit == HS_RELEASE_FIT_QUADRATIC && frames >= 2) // as the bench's lsq
 		*v_dt = quadratic_slope(body, hand, frames);
-	int held = frames < hand->older_count ? frames : hand->older_count; // past(1 + held) must exist
+	int held = frames < hand->state.older_count ? frames : hand->state.older_count; // past(1 + held) must exist
 	if (held < 1)
 		return;
 	hs_vec3 h_dt;
 	hs_quat h_turn;
 	carried_motion(body, hand, 1, held, &h_dt, &h_turn);
 	double held_len = hs_length(h_dt), open_len = hs_length(*v_dt);
-	bool moving = held_len >= HS_RELEASE_MOVING * world->model.def.dt;
+	bool moving = held_len >= HS_RELEASE_MOVING * def->dt;
 	double along = hs_dot(*v_dt, h_dt);
 	if (moving && along >= HS_RELEASE_CONTINUES * open_len * held_len)
 		return;
@@ -250,7 +250,7 @@ static void release(hs_world *world, hs_body *body, hs_contact_state last) {
 		double dt = world->model.def.dt;
 		hs_vec3 v_dt;
 		hs_quat turn;
-		release_motion(world, body, hand, &v_dt, &turn);
+		release_motion(&world->model.def, body, hand, &v_dt, &turn);
 		// the fingers opened somewhere in this frame, which does not say where: taken as its middle,
 		// the object leaves this frame where the hand carried it (this frame's step adds v dt) with
 		// the velocity v + g dt / 2 it has half a frame after leaving the hand at v
@@ -285,16 +285,16 @@ static void collect_candidates(hs_world *world) {
 	world->scratch.candidate_count = 0;
 	for (int h = 0; h < world->model.hand_count; ++h) {
 		const hs_hand *hand = &world->state.hands[h];
-		int n = hs_grid_near(world, hand->sweep_center, hand->sweep_radius);
+		int n = hs_grid_near(world, hand->cache.sweep_center, hand->cache.sweep_radius);
 		for (int k = 0; k < n; ++k) {
 			const hs_body *b = &world->state.bodies[world->scratch.near[k]];
-			if (!untouched(b) || hs_contact_hand_near(world, b, hand, 0.0))
-				add_candidate(world, world->scratch.near[k]);
+			if (!untouched(b) || hs_contact_hand_near(&world->model, b, hand, 0.0))
+				add_candidate(&world->scratch, world->scratch.near[k]);
 		}
 	}
 	for (int k = 0; k < world->cache.awake_count; ++k) // a release rule lapses once its hand is clear (grasp.c)
 		if (world->state.bodies[world->cache.awake[k]].held || world->state.bodies[world->cache.awake[k]].released_by)
-			add_candidate(world, world->cache.awake[k]);
+			add_candidate(&world->scratch, world->cache.awake[k]);
 }
 
 static bool pose_changed(const hs_body *body, hs_pose was) {
@@ -403,30 +403,36 @@ static bool outruns(const hs_body *body, const hs_contact *c) {
 // Which finger parts of each hand touch an object at the end of the frame: next frame a part found
 // inside an object it did not reach then is in contact only if it touches now (contact.c). A check
 // point that touched and has come off by less than grasp_release_mm still touches (near_points).
-static void note_touching(hs_world *world) {
-	for (int h = 0; h < world->model.hand_count; ++h) {
-		world->state.hands[h].touch_points = world->state.hands[h].near_points;
-		world->state.hands[h].touch_lines = 0;
-		world->state.hands[h].embed_points = world->state.hands[h].embed_points_next;
-		world->state.hands[h].embed_lines = world->state.hands[h].embed_lines_next;
+static void note_touching(hs_hand *hands, int hand_count, const hs_contact *contacts, int contact_count) {
+	for (int h = 0; h < hand_count; ++h) {
+		hands[h].state.touch_points = hands[h].scratch.near_points;
+		hands[h].state.touch_lines = 0;
+		hands[h].state.embed_points = hands[h].scratch.embed_points_next;
+		hands[h].state.embed_lines = hands[h].scratch.embed_lines_next;
 	}
-	for (int k = 0; k < world->out.contact_count; ++k) {
-		const hs_contact *c = &world->out.contacts[k];
-		hs_hand *hand = &world->state.hands[c->hand.index1 - 1];
+	for (int k = 0; k < contact_count; ++k) {
+		const hs_contact *c = &contacts[k];
+		hs_hand *hand = &hands[c->hand.index1 - 1];
 		if (c->part < HS_HAND_POINTS)
-			hand->touch_points |= 1u << c->part;
+			hand->state.touch_points |= 1u << c->part;
 		else
-			hand->touch_lines |= (uint64_t)1 << (c->part - HS_HAND_POINTS);
+			hand->state.touch_lines |= (uint64_t)1 << (c->part - HS_HAND_POINTS);
+	}
+}
+
+// The start of the hand pass: each hand's parts' paths through the frame (swept detection;
+// `chords_only`: hs_world_def.paper_contacts) and its pass scratch emptied.
+static void begin_hand_pass(hs_hand *hands, int hand_count, bool chords_only) {
+	for (int h = 0; h < hand_count; ++h) {
+		hs_hand_sweep(&hands[h], chords_only);
+		hands[h].scratch.near_points = hands[h].scratch.embed_points_next = 0;
+		hands[h].scratch.embed_lines_next = 0;
 	}
 }
 
 void hs_manipulate(hs_world *world) {
 	world->out.contact_count = 0;
-	for (int h = 0; h < world->model.hand_count; ++h) { // the parts' paths through the frame (swept detection)
-		hs_hand_sweep(&world->state.hands[h], world->model.def.paper_contacts);
-		world->state.hands[h].near_points = world->state.hands[h].embed_points_next = 0;
-		world->state.hands[h].embed_lines_next = 0;
-	}
+	begin_hand_pass(world->state.hands, world->model.hand_count, world->model.def.paper_contacts);
 	collect_candidates(world);
 	// candidate_count may grow in the loop: carry_along adds objects it moved within reach
 	for (int c = 0; c < world->scratch.candidate_count; ++c) {
@@ -473,5 +479,5 @@ void hs_manipulate(hs_world *world) {
 			carry_along(world, i, i,
 			            (rigid_move){old_pos, body->pos, hs_quat_normalize(hs_quat_mul(body->rot, hs_quat_conj(old_rot)))});
 	}
-	note_touching(world);
+	note_touching(world->state.hands, world->model.hand_count, world->out.contacts, world->out.contact_count);
 }

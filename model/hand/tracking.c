@@ -20,25 +20,20 @@
 #define HS_TRACKING_JUMP 0.05 // m
 #define HS_TRACKING_SPEED 0.5 // m/s
 
-void hs_tracking_update(hs_world *world) {
-	for (int h = 0; h < world->model.hand_count; ++h) {
-		hs_hand *hand = &world->state.hands[h];
-		if (hand->untracked) {
-			if (hand->lost_frames < INT_MAX)
-				hand->lost_frames++;
-			if (hand->lost_frames == world->model.hold_frames + 1)
-				hs_grasp_let_go_in_place(world, h);
-			continue;
-		}
-		if (hand->lost_frames == 0)
-			continue;
-		bool kept = hand->lost_frames <= world->model.hold_frames;
-		double reach = HS_TRACKING_JUMP + HS_TRACKING_SPEED * (hand->lost_frames + 1) * world->model.def.dt;
-		if (kept && hs_length(hs_sub(hand->wrist_pos, hand->prev_wrist_pos)) > reach)
-			hs_grasp_let_go_in_place(world, h);
-		hs_hand_keep_previous(hand);
-		hand->older_count = 0;
-		hs_grasp_reset_pairs(hand);
-		hand->lost_frames = 0;
+bool hs_tracking_update(hs_hand *hand, int hold_frames, double dt) {
+	if (hand->state.untracked) {
+		if (hand->state.lost_frames < INT_MAX)
+			hand->state.lost_frames++;
+		return hand->state.lost_frames == hold_frames + 1;
 	}
+	if (hand->state.lost_frames == 0)
+		return false;
+	bool kept = hand->state.lost_frames <= hold_frames;
+	double reach = HS_TRACKING_JUMP + HS_TRACKING_SPEED * (hand->state.lost_frames + 1) * dt;
+	bool let_go = kept && hs_length(hs_sub(hand->state.wrist_pos, hand->state.prev_wrist_pos)) > reach;
+	hs_hand_keep_previous(hand);
+	hand->state.older_count = 0;
+	hs_grasp_reset_pairs(hand);
+	hand->state.lost_frames = 0;
+	return let_go;
 }

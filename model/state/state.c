@@ -101,7 +101,7 @@ static uint64_t definition_checksum(const hs_world *w) {
 			h = hs_state_mix_f64(h, w->state.bodies[i].restitution);
 	}
 	for (int i = 0; i < w->model.hand_count; ++i)
-		h = hand_def_checksum(h, &w->state.hands[i].def);
+		h = hand_def_checksum(h, &w->state.hands[i].model.def);
 	return h;
 }
 
@@ -159,8 +159,8 @@ static const hs_field body_fields[] = {
 
 // A hand's older wrist poses, element by element (older_pos[0], older_rot[0], older_pos[1], ...).
 static const hs_field hand_older_fields[] = {
-    {HS_ALL(hs_hand, older_pos, VEC3)},
-    {HS_ALL(hs_hand, older_rot, ROTATION)},
+    {HS_ALL(hs_hand, state.older_pos, VEC3)},
+    {HS_ALL(hs_hand, state.older_rot, ROTATION)},
 };
 
 // One hand: 68 words and 7 for each of its older_capacity older wrist poses (117 at the default
@@ -170,25 +170,25 @@ static const hs_field hand_older_fields[] = {
 // touch masks and its two embedded masks; a joint-driven hand's joints too (120 words). Its
 // definition is in the checksum; older_capacity follows from the world's (dt, release_window_s).
 static const hs_field hand_fields[] = {
-    {HS_ONE(hs_hand, wrist_pos, VEC3)},
-    {HS_ONE(hs_hand, wrist_rot, ROTATION)},
-    {HS_ALL(hs_hand, sensors, U8), .hi = UINT8_MAX},
-    {HS_ONE(hs_hand, prev_wrist_pos, VEC3)},
-    {HS_ONE(hs_hand, prev_wrist_rot, ROTATION)},
-    {HS_ALL(hs_hand, prev_sensors, U8), .hi = UINT8_MAX},
-    {HS_ALL(hs_hand, joints, VEC3), HS_WHEN(hs_hand, def.joint_driven)},
-    {HS_ALL(hs_hand, prev_joints, VEC3), HS_WHEN(hs_hand, def.joint_driven)},
-    {HS_ONE(hs_hand, placed, BOOL)},
-    {HS_ONE(hs_hand, untracked, BOOL)},
-    {HS_ONE(hs_hand, lost_frames, INT), .lo = 0, .hi = INT_MAX},
-    {HS_ALL(hs_hand, pair_open, F64)},
-    {HS_ONE(hs_hand, older_count, INT), .lo = 0, HS_HI_PLUS(hs_hand, older_capacity)},
+    {HS_ONE(hs_hand, state.wrist_pos, VEC3)},
+    {HS_ONE(hs_hand, state.wrist_rot, ROTATION)},
+    {HS_ALL(hs_hand, state.sensors, U8), .hi = UINT8_MAX},
+    {HS_ONE(hs_hand, state.prev_wrist_pos, VEC3)},
+    {HS_ONE(hs_hand, state.prev_wrist_rot, ROTATION)},
+    {HS_ALL(hs_hand, state.prev_sensors, U8), .hi = UINT8_MAX},
+    {HS_ALL(hs_hand, state.joints, VEC3), HS_WHEN(hs_hand, model.def.joint_driven)},
+    {HS_ALL(hs_hand, state.prev_joints, VEC3), HS_WHEN(hs_hand, model.def.joint_driven)},
+    {HS_ONE(hs_hand, state.placed, BOOL)},
+    {HS_ONE(hs_hand, state.untracked, BOOL)},
+    {HS_ONE(hs_hand, state.lost_frames, INT), .lo = 0, .hi = INT_MAX},
+    {HS_ALL(hs_hand, state.pair_open, F64)},
+    {HS_ONE(hs_hand, state.older_count, INT), .lo = 0, HS_HI_PLUS(hs_hand, model.older_capacity)},
     // all of them (those not yet reached are zero): a fixed size
-    {HS_GROUP("older poses", hand_older_fields), HS_COUNT_AT(hs_hand, older_capacity)},
-    {HS_ONE(hs_hand, touch_points, MASK32), .hi = HS_HAND_POINTS},
-    {HS_ONE(hs_hand, touch_lines, MASK64), .hi = HS_HAND_LINES},
-    {HS_ONE(hs_hand, embed_points, MASK32), .hi = HS_HAND_POINTS},
-    {HS_ONE(hs_hand, embed_lines, MASK64), .hi = HS_HAND_LINES},
+    {HS_GROUP("older poses", hand_older_fields), HS_COUNT_AT(hs_hand, model.older_capacity)},
+    {HS_ONE(hs_hand, state.touch_points, MASK32), .hi = HS_HAND_POINTS},
+    {HS_ONE(hs_hand, state.touch_lines, MASK64), .hi = HS_HAND_LINES},
+    {HS_ONE(hs_hand, state.embed_points, MASK32), .hi = HS_HAND_POINTS},
+    {HS_ONE(hs_hand, state.embed_lines, MASK64), .hi = HS_HAND_LINES},
 };
 
 // The world's own words, before its objects, hands and spring system.

@@ -1,10 +1,12 @@
 // step_hand.c — one frame of a hand world (the 1999 paper's model): the step's stages in order,
-// each a function below that names its section (docs/model.md follows the same order). Stages
-// read and write struct hs_world (world_internal.h) and call the concepts below them; none calls
-// back up here. They are forced inline: the step's cost is read from what hs_step_hand calls
+// each a function below that names its section (docs/model.md follows the same order). A stage
+// takes what it reads and writes: the hands alone where that is all (age_hands), else struct
+// hs_world (world_internal.h), whose core calls (the grid, the wake list, the digests) need it
+// whole; stages call the concepts below them and none calls back up here. They are forced inline: the step's cost is read from what hs_step_hand calls
 // (tool/bench_cmd.c's stage table), as it was from hs_world_step's.
 #include "broadphase.h"
 #include "fall_group.h"
+#include "grasp.h"
 #include "inline.h"
 #include "interfere.h"
 #include "manipulate.h"
@@ -78,11 +80,13 @@ static HS_FORCE_INLINE void file_objects(hs_world *world) {
 	}
 }
 
-// docs/model.md §3 "Tracking loss": hands lost past tracking_hold_s let their grasps go. In: the
-// hands' tracked flags. Out: their lost-frame counts, grasps and placements.
+// docs/model.md §3 "Tracking loss": hands lost past tracking_hold_s let their grasps go. In: each
+// hand's tracked flag, the hold in frames, dt. Out: the hand's lost-frame count and placement; the
+// bodies it let go (a let-go alone reads the whole world: the bodies, the awake list, the digests).
 static HS_FORCE_INLINE void track_hands(hs_world *world) {
-	if (world->model.hand_count > 0) // a scene without hands never runs the hand subsystem
-		hs_tracking_update(world);
+	for (int h = 0; h < world->model.hand_count; ++h)
+		if (hs_tracking_update(&world->state.hands[h], world->model.hold_frames, world->model.def.dt))
+			hs_grasp_let_go_in_place(world, h);
 }
 
 // §3.2 (Fig. 2-3, eq. 1-2): the hands' contacts, grasps and pushes move what they touch, and
@@ -147,10 +151,10 @@ static HS_FORCE_INLINE void wake_neighbours(hs_world *world, int moved, int fall
 
 // docs/model.md §4 "Release": each hand's wrist history ages by a frame and its points become the
 // previous ones; a hand not set again stays where it is. In and out: the hands.
-static HS_FORCE_INLINE void age_hands(hs_world *world) {
-	for (int h = 0; h < world->model.hand_count; ++h) {
-		hs_hand_age_wrist(&world->state.hands[h]);
-		hs_hand_keep_previous(&world->state.hands[h]);
+static HS_FORCE_INLINE void age_hands(hs_hand *hands, int hand_count) {
+	for (int h = 0; h < hand_count; ++h) {
+		hs_hand_age_wrist(&hands[h]);
+		hs_hand_keep_previous(&hands[h]);
 	}
 }
 
@@ -161,6 +165,6 @@ void hs_step_hand(hs_world *world) {
 	int fallen = 0;                                // paper mode: objects moved with a falling group
 	int moved = move_free_objects(world, &fallen); // §4.2-§4.3: free motion, floor, stacking
 	wake_neighbours(world, moved, fallen);         // §4.3: what rested on a moved object looks again
-	age_hands(world);                              // docs/model.md §4: the hands' history
+	age_hands(world->state.hands, world->model.hand_count); // docs/model.md §4: the hands' history
 	world->state.frame++;
 }

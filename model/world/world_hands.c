@@ -31,13 +31,13 @@ hs_hand_id hs_world_add_hand(hs_world *world, const hs_hand_def *def, hs_status 
 	}
 	hs_hand *hand = &world->state.hands[world->model.hand_count];
 	memset(hand, 0, sizeof *hand);
-	hand->def = *def;
-	hs_glove_table_build(&hand->def, &hand->glove);
-	hand->wrist_rot = hand->prev_wrist_rot = hs_quat_identity();
-	hand->older_capacity = hs_hand_older_capacity(world->model.def.release_window_s, world->model.def.dt);
+	hand->model.def = *def;
+	hs_glove_table_build(&hand->model.def, &hand->model.glove);
+	hand->state.wrist_rot = hand->state.prev_wrist_rot = hs_quat_identity();
+	hand->model.older_capacity = hs_hand_older_capacity(world->model.def.release_window_s, world->model.def.dt);
 	for (int k = 0; k < HS_HAND_OLDER_MAX; ++k) // not yet reached: a unit rotation, as a state file must hold
-		hand->older_rot[k] = hs_quat_identity();
-	hand->lines_ready = hand->prev_lines_ready = hand->local_ready = HS_HAND_ALL_SEGMENTS; // all zero until set
+		hand->state.older_rot[k] = hs_quat_identity();
+	hand->cache.lines_ready = hand->cache.prev_lines_ready = hand->cache.local_ready = HS_HAND_ALL_SEGMENTS; // all zero until set
 	hs_hand_update_bounds(hand); // touches nothing until it is set
 	hs_set_status(status, HS_OK);
 	int index = world->model.hand_count++;
@@ -57,8 +57,8 @@ static hs_hand *hand_of(const hs_world *world, hs_hand_id id) {
 // The hand placed from its new reading (its shape made): the first placement moves nothing.
 static hs_status place_hand(hs_hand *hand) {
 	hs_hand_place_points(hand);
-	bool first = !hand->placed;
-	hand->placed = true;
+	bool first = !hand->state.placed;
+	hand->state.placed = true;
 	hs_hand_update_bounds(hand);
 	if (first) { // no motion before the first pose, no closing either
 		hs_hand_keep_previous(hand);
@@ -70,20 +70,20 @@ static hs_status place_hand(hs_hand *hand) {
 hs_status hs_world_set_hand(hs_world *world, hs_hand_id id, hs_vec3 wrist_position, hs_quat wrist_orientation,
                             const uint8_t reading[HS_GLOVE_SENSORS]) {
 	hs_hand *hand = hand_of(world, id);
-	if (!hand || hand->def.joint_driven || !reading || !hs_within(wrist_position, HS_MAX_COORDINATE) ||
+	if (!hand || hand->model.def.joint_driven || !reading || !hs_within(wrist_position, HS_MAX_COORDINATE) ||
 	    !hs_quat_is_unit(wrist_orientation))
 		return HS_ERR_INVALID_ARGUMENT;
-	hand->wrist_pos = wrist_position;
-	hand->wrist_rot = hs_quat_normalize(wrist_orientation);
+	hand->state.wrist_pos = wrist_position;
+	hand->state.wrist_rot = hs_quat_normalize(wrist_orientation);
 	// The glove's deadband (docs/model.md §1). Without it a glove's per-frame noise (±4 units, ±2°,
 	// is ±6 mm at a fingertip from the wrist sensors alone) moves a still hand every frame:
 	// fingertips on a face drag and turn what they touch, and the drags add up frame after frame (a
 	// two-fingertip push drifted 2 cm sideways). A still reading keeps the hand's bits; a moving one
 	// lags by the band. The first reading is used as it is.
 	uint8_t sensors[HS_GLOVE_SENSORS];
-	hs_glove_deadband(hand->placed ? hand->sensors : reading, world->model.def.glove_deadband, reading, sensors);
-	if (!hand->placed || memcmp(hand->sensors, sensors, sizeof hand->sensors) != 0) {
-		memcpy(hand->sensors, sensors, sizeof hand->sensors); // the glove moved: a new hand shape
+	hs_glove_deadband(hand->state.placed ? hand->state.sensors : reading, world->model.def.glove_deadband, reading, sensors);
+	if (!hand->state.placed || memcmp(hand->state.sensors, sensors, sizeof hand->state.sensors) != 0) {
+		memcpy(hand->state.sensors, sensors, sizeof hand->state.sensors); // the glove moved: a new hand shape
 		hs_hand_update_shape(hand);
 	}
 	return place_hand(hand);
@@ -92,16 +92,16 @@ hs_status hs_world_set_hand(hs_world *world, hs_hand_id id, hs_vec3 wrist_positi
 hs_status hs_world_set_hand_joints(hs_world *world, hs_hand_id id, hs_vec3 wrist_position, hs_quat wrist_orientation,
                                    const hs_vec3 points[HS_HAND_POINTS]) {
 	hs_hand *hand = hand_of(world, id);
-	if (!hand || !hand->def.joint_driven || !points || !hs_within(wrist_position, HS_MAX_COORDINATE) ||
+	if (!hand || !hand->model.def.joint_driven || !points || !hs_within(wrist_position, HS_MAX_COORDINATE) ||
 	    !hs_quat_is_unit(wrist_orientation))
 		return HS_ERR_INVALID_ARGUMENT;
 	for (int i = 0; i < HS_HAND_POINTS; ++i)
 		if (!hs_within(points[i], HS_MAX_COORDINATE))
 			return HS_ERR_INVALID_ARGUMENT;
-	hand->wrist_pos = wrist_position;
-	hand->wrist_rot = hs_quat_normalize(wrist_orientation);
-	if (!hand->placed || memcmp(hand->joints, points, sizeof hand->joints) != 0) {
-		memcpy(hand->joints, points, sizeof hand->joints); // a new hand shape
+	hand->state.wrist_pos = wrist_position;
+	hand->state.wrist_rot = hs_quat_normalize(wrist_orientation);
+	if (!hand->state.placed || memcmp(hand->state.joints, points, sizeof hand->state.joints) != 0) {
+		memcpy(hand->state.joints, points, sizeof hand->state.joints); // a new hand shape
 		hs_hand_update_shape(hand);
 	}
 	return place_hand(hand);
@@ -111,7 +111,7 @@ hs_status hs_world_set_hand_tracked(hs_world *world, hs_hand_id id, bool tracked
 	hs_hand *hand = hand_of(world, id);
 	if (!hand)
 		return HS_ERR_INVALID_ARGUMENT;
-	hand->untracked = !tracked;
+	hand->state.untracked = !tracked;
 	return HS_OK;
 }
 
@@ -119,7 +119,7 @@ hs_status hs_world_hand_points(const hs_world *world, hs_hand_id id, hs_vec3 poi
 	const hs_hand *hand = hand_of(world, id);
 	if (!hand || !points)
 		return HS_ERR_INVALID_ARGUMENT;
-	memcpy(points, hand->points, sizeof hand->points);
+	memcpy(points, hand->cache.points, sizeof hand->cache.points);
 	return HS_OK;
 }
 
@@ -129,9 +129,9 @@ hs_status hs_world_hand_rectified_points(const hs_world *world, hs_hand_id id, h
 	if (!hand || !points)
 		return HS_ERR_INVALID_ARGUMENT;
 	for (int i = 0; i < HS_HAND_POINTS; ++i)
-		points[i] = hand->touch_points >> i & 1u ? hs_contact_rectify(world, hand->points[i]) : hand->points[i];
+		points[i] = hand->state.touch_points >> i & 1u ? hs_contact_rectify(world, hand->cache.points[i]) : hand->cache.points[i];
 	if (touching)
-		*touching = hand->touch_points;
+		*touching = hand->state.touch_points;
 	return HS_OK;
 }
 
