@@ -62,20 +62,6 @@ static int finger_pair(int a, int b) {
 	return first[a] + (b - a - 1);
 }
 
-void hs_grasp_track_pairs(hs_world *world) {
-	double forget = HS_PAIR_FORGET * world->model.def.dt;
-	for (int h = 0; h < world->model.hand_count; ++h) {
-		hs_hand *hand = &world->state.hands[h];
-		for (int a = 0; a < 4; ++a)
-			for (int b = a + 1; b < 5; ++b) {
-				int k = finger_pair(a, b);
-				double d = hs_length(hs_sub(hand->cache.points[4 * a + 3], hand->cache.points[4 * b + 3]));
-				double kept = hand->state.pair_open[k] - forget;
-				hand->state.pair_open[k] = d > kept ? d : kept;
-			}
-	}
-}
-
 void hs_grasp_reset_pairs(hs_hand *hand) {
 	for (int a = 0; a < 4; ++a)
 		for (int b = a + 1; b < 5; ++b)
@@ -99,8 +85,9 @@ static bool opposed(const hs_world_model *model, const hs_contact *a, const hs_c
 #define HS_PAIR_STILL 2e-3
 #define HS_PAIR_DRIFT 0.05
 
-// True when fingers a < b of the hand have closed by grasp_close_mm from the most open they were
-// lately (hs_hand.state.pair_open) and are not opening now (their tips parted by at most HS_PAIR_STILL
+// True when fingers a < b of the hand have closed by grasp_close_mm from where their tips were when
+// the pair's reference was last set (hs_hand.state.pair_open: the hand's first pose, its return
+// from a tracking loss, its last release) and are not opening now (their tips parted by at most HS_PAIR_STILL
 // plus HS_PAIR_DRIFT dt since the last frame): a hand that closed on one object and opens again is not closing.
 static bool pair_closing(const hs_world_def *def, const hs_hand *hand, int a, int b) {
 	double d = hs_length(hs_sub(hand->cache.points[4 * a + 3], hand->cache.points[4 * b + 3]));
@@ -110,7 +97,7 @@ static bool pair_closing(const hs_world_def *def, const hs_hand *hand, int a, in
 }
 
 // True when the fingers of contacts a and b (one hand, different fingers) have closed by
-// grasp_close_mm from the most open they were lately (hs_hand.state.pair_open).
+// grasp_close_mm from their reference (hs_hand.state.pair_open, pair_closing).
 static bool closing(const hs_world_def *def, const hs_hand *hands, const hs_contact *a, const hs_contact *b) {
 	if (a->hand.index1 != b->hand.index1) // two hands squeezing from either side
 		return true;

@@ -17,10 +17,6 @@ void hs_grasp_slip(hs_body *body, const hs_hand *hand);
 // The grasp of hand index `h` begins: fixes the object's pose in the wrist frame, the glove's
 // reading and the fingers touching it (cs[0..n)), and ends any release rule (docs/model.md §3).
 void hs_grasp_begin(hs_world *world, hs_body *body, int h, const hs_contact *cs, int n);
-// How fast a fingertip pair's most open distance is forgotten (m/s; hs_hand.state.pair_open).
-#define HS_PAIR_FORGET 0.01
-// Each hand's fingertip pairs: their most open lately, updated with this frame's points.
-void hs_grasp_track_pairs(hs_world *world);
 // A hand's fingertip pairs' peaks set to their distances now (its first pose, a return from a loss).
 void hs_grasp_reset_pairs(hs_hand *hand);
 // Every grasp of hand index h ends where it is, with no velocity, and the hand's fingers are set
