@@ -374,7 +374,7 @@ uint64_t hs_world_hash(const hs_world *world);
 // world: frame, numeric faults, first fault frame and object; per object 39 words (pose, previous
 // pose, rot_prev, spin, velocity, contact state, floor contacts, grounded / asleep / held /
 // carried, grasped_by, grip pose, grip spread and reach, grip fingers, released_by); per hand 67 words and 7 a kept older wrist pose (wrist pose and 18 sensors as last set and as
-// at the end of the last step, placed, tracked and frames lost, the ten fingertip pairs' recent peaks: the check points and lines now and a frame ago are their
+// at the end of the last step, placed, tracked and frames lost, the ten fingertip pairs' closing references: the check points and lines now and a frame ago are their
 // kinematics, rebuilt bit for bit after a load; which check points and lines touch, which started inside); then the spring system and its tracker when on.
 // The seed scene (10 cubes, no hand) saves 403 words, 3224 bytes.
 // Not in it: caches rebuilt after a load (check points and lines, the hand's shape in its wrist

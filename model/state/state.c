@@ -166,7 +166,7 @@ static const hs_field hand_older_fields[] = {
 // One hand: 68 words and 7 for each of its older_capacity older wrist poses (117 at the default
 // release window: HS_HAND_OLDER of them), the two readings its check points now and a frame ago
 // come from (the points and lines are rebuilt from them after a load), its tracking state and its
-// fingertip pairs' recent peaks, the wrist poses before those (a release's velocity), its two
+// fingertip pairs' closing references, the wrist poses before those (a release's velocity), its two
 // touch masks and its two embedded masks; a joint-driven hand's joints too (120 words). Its
 // definition is in the checksum; older_capacity follows from the world's (dt, release_window_s).
 static const hs_field hand_fields[] = {
