@@ -679,36 +679,36 @@ static int exact_world(scene *sc, hs_quat q, hs_vec3 g, int kind, double thresho
 	hs_hand *hand = &sc->world->state.hands[0];
 	hs_vec3 far = hs_v3(100, 100, 100);
 	for (int p = 0; p < HS_HAND_POINTS; ++p)
-		hand->points[p] = hand->prev_points[p] = far;
+		hand->cache.points[p] = hand->cache.prev_points[p] = far;
 	for (int l = 0; l < HS_HAND_LINES; ++l)
-		hand->lines[l][0] = hand->lines[l][1] = hand->prev_lines[l][0] = hand->prev_lines[l][1] = far;
-	hand->center = g;
-	hand->radius = 1000;
-	hand->placed = true;
+		hand->cache.lines[l][0] = hand->cache.lines[l][1] = hand->cache.prev_lines[l][0] = hand->cache.prev_lines[l][1] = far;
+	hand->cache.center = g;
+	hand->cache.radius = 1000;
+	hand->state.placed = true;
 #define W(x, y, z) hs_add(g, hs_quat_rotate(q, hs_v3((x), (y), (z))))
 	if (kind == 0) { // two points just inside adjoining faces +x and +z, entering along their normals
-		hand->prev_points[3] = W(0.06, 0.0, 0.02);
-		hand->points[3] = W(0.049, 0.0, 0.02);
-		hand->prev_points[7] = W(0.02, 0.0, 0.06);
-		hand->points[7] = W(0.02, 0.0, 0.049);
+		hand->cache.prev_points[3] = W(0.06, 0.0, 0.02);
+		hand->cache.points[3] = W(0.049, 0.0, 0.02);
+		hand->cache.prev_points[7] = W(0.02, 0.0, 0.06);
+		hand->cache.points[7] = W(0.02, 0.0, 0.049);
 		hs_hand_points_moved(hand);
 	} else if (kind == 1) { // a point entering exactly through a vertex, one exactly through an edge
-		hand->prev_points[3] = W(0.07, 0.07, 0.07);
-		hand->points[3] = W(0.03, 0.03, 0.03);
-		hand->prev_points[7] = W(0.07, 0.0, 0.07);
-		hand->points[7] = W(0.03, 0.0, 0.03);
+		hand->cache.prev_points[3] = W(0.07, 0.07, 0.07);
+		hand->cache.points[3] = W(0.03, 0.03, 0.03);
+		hand->cache.prev_points[7] = W(0.07, 0.0, 0.07);
+		hand->cache.points[7] = W(0.03, 0.0, 0.03);
 		hs_hand_points_moved(hand);
 	} else if (kind == 2) { // check lines through a vertex, along an edge, across an edge
-		hand->lines[0][0] = W(0.1, 0.1, 0.1);
-		hand->lines[0][1] = W(-0.1, -0.1, -0.1);
-		hand->lines[1][0] = W(0.05, 0.05, -0.2);
-		hand->lines[1][1] = W(0.05, 0.05, 0.2);
-		hand->lines[2][0] = W(0.0, -0.2, 0.07);
-		hand->lines[2][1] = W(0.0, 0.2, 0.03);
+		hand->cache.lines[0][0] = W(0.1, 0.1, 0.1);
+		hand->cache.lines[0][1] = W(-0.1, -0.1, -0.1);
+		hand->cache.lines[1][0] = W(0.05, 0.05, -0.2);
+		hand->cache.lines[1][1] = W(0.05, 0.05, 0.2);
+		hand->cache.lines[2][0] = W(0.0, -0.2, 0.07);
+		hand->cache.lines[2][1] = W(0.0, 0.2, 0.03);
 	} else { // points on the surface (within the rounding of the rotation), at a vertex, an edge, a face
-		hand->prev_points[3] = hand->points[3] = W(0.05, 0.05, 0.05);
-		hand->prev_points[7] = hand->points[7] = W(0.05, 0.0, 0.05);
-		hand->prev_points[11] = hand->points[11] = W(0.0, 0.0, 0.05);
+		hand->cache.prev_points[3] = hand->cache.points[3] = W(0.05, 0.05, 0.05);
+		hand->cache.prev_points[7] = hand->cache.points[7] = W(0.05, 0.0, 0.05);
+		hand->cache.prev_points[11] = hand->cache.points[11] = W(0.0, 0.0, 0.05);
 		hs_hand_points_moved(hand);
 	}
 #undef W
