@@ -62,7 +62,7 @@ uint32_t hs_contact_points_near(const hs_hand *hand, hs_vec3 c, double r_sq, dou
 	*kept = within;
 #if defined(HS_SELFCHECK)
 	for (int k = 0; k < HS_HAND_POINTS; ++k) {
-		const double row[3] = {hand->point_rows[0][k], hand->point_rows[1][k], hand->point_rows[2][k]};
+		const double row[3] = {hand->cache.point_rows[0][k], hand->cache.point_rows[1][k], hand->cache.point_rows[2][k]};
 		const double point[3] = {p[k].x, p[k].y, p[k].z};
 		if (memcmp(row, point, sizeof row) != 0) {
 			fprintf(stderr, "selfcheck: the hand's point rows differ from its points\n");
@@ -128,8 +128,8 @@ void hs_contact_check_segment_clear(const hs_world *world, int h, int a, const h
 	hs_hand_ready_segment(hand, s);
 	for (int j = 4 * s; j < 4 * s + 4; ++j) {
 		hs_vec3 p[2], q[2];
-		line_to_body(body, hand->lines[j], p);
-		line_to_body(before, hand->prev_lines[j], q);
+		line_to_body(body, hand->cache.lines[j], p);
+		line_to_body(before, hand->cache.prev_lines[j], q);
 		if (!hs_contact_sweep_clear_of_a_face(world, shape, part, q, p)) {
 			fprintf(stderr, "handspring: a segment passed over as clear of a face has line %d near the part\n", j);
 			abort();
@@ -204,7 +204,7 @@ uint32_t hs_contact_axes_near(const hs_hand *hand, hs_vec3 c, double r_sq, doubl
 	}
 #if defined(HS_SELFCHECK)
 	for (int k = 0; k < 15; ++k) {
-		double e = segment_distance_sq(c, hand->points[hs_segment_first_point(k)], hand->points[hs_segment_first_point(k) + 1]);
+		double e = segment_distance_sq(c, hand->cache.points[hs_segment_first_point(k)], hand->cache.points[hs_segment_first_point(k) + 1]);
 		if (memcmp(&e, &d[k], sizeof e) != 0 || (near >> k & 1u) != !(e > r_sq)) {
 			fprintf(stderr, "selfcheck: hs_contact_axes_near differs from segment_distance_sq\n");
 			abort();
@@ -247,7 +247,7 @@ static void check_held_clear(hs_world *world, int h, int s, int a, const hs_fram
 	hs_hand_ready_segment(&world->state.hands[h], s);
 	for (int j = 4 * s; j < 4 * s + 4; ++j) {
 		hs_vec3 p[2];
-		line_to_body(body, world->state.hands[h].lines[j], p);
+		line_to_body(body, world->state.hands[h].cache.lines[j], p);
 		if (!hs_contact_end_touches(world, touching, a, shape, part, p) && clip_part(world, shape, part, p[0], p[1], grow).hit) {
 			fprintf(stderr, "selfcheck: a held object's line passed over as clear touches the part\n");
 			abort();
@@ -427,13 +427,13 @@ static void check_far(const hs_hand *hand, unsigned far, hs_vec3 c, double reach
 	bool near = false;
 	for (int i = 0; i < HS_HAND_POINTS; ++i)
 		if (far >> (i / 4) & 1u)
-			near |= hs_length_sq(hs_sub(hand->points[i], c)) <= reach * reach ||
-			        hs_length_sq(hs_sub(hand->prev_points[i], c)) <= reach * reach;
+			near |= hs_length_sq(hs_sub(hand->cache.points[i], c)) <= reach * reach ||
+			        hs_length_sq(hs_sub(hand->cache.prev_points[i], c)) <= reach * reach;
 	for (int j = 0; j < HS_HAND_LINES; ++j)
 		if (far >> (j / 12) & 1u)
-			near |= (hand->lines_ready >> (j / 4) & 1u && segment_distance_sq(c, hand->lines[j][0], hand->lines[j][1]) <= reach * reach) ||
-			        (hand->prev_lines_ready >> (j / 4) & 1u &&
-			         segment_distance_sq(c, hand->prev_lines[j][0], hand->prev_lines[j][1]) <= reach * reach);
+			near |= (hand->cache.lines_ready >> (j / 4) & 1u && segment_distance_sq(c, hand->cache.lines[j][0], hand->cache.lines[j][1]) <= reach * reach) ||
+			        (hand->cache.prev_lines_ready >> (j / 4) & 1u &&
+			         segment_distance_sq(c, hand->cache.prev_lines[j][0], hand->cache.prev_lines[j][1]) <= reach * reach);
 	if (near) {
 		fprintf(stderr, "selfcheck: a finger passed over as far from a part comes near it\n");
 		abort();

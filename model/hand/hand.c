@@ -432,8 +432,8 @@ static void local_bounds(hs_hand *hand) {
 // bits of the shape made afresh.
 static void check_shape(const hs_hand *hand) {
 	hand_pose fresh;
-	local_pose(&hand->def, &hand->glove, hand->sensors, &fresh, NULL);
-	if (memcmp(&fresh, &hand->local, sizeof fresh) != 0) {
+	local_pose(&hand->model.def, &hand->model.glove, hand->state.sensors, &fresh, NULL);
+	if (memcmp(&fresh, &hand->cache.local, sizeof fresh) != 0) {
 		fprintf(stderr, "selfcheck: a hand's shape through its cache differs from the shape made afresh\n");
 		abort();
 	}
