@@ -138,7 +138,9 @@ static void keep_turning_about_edge(hs_world *world, hs_body *body, hs_vec3 moti
 
 // Support mode: the smallest angle in [0, limit] at which the body, turned about the unit `axis`
 // through `c`, meets another object it is clear of now (bisected on libccd's overlap test to
-// 1e-9 rad, the angle just short of touching); `limit` when it meets none. A tall box tipping
+// 1e-6 rad, the angle just short of touching: libccd's own builds differ by a few ulps between
+// architectures, so a finer bisection's last probes, next to the touch, went either way on i386
+// and aarch64); `limit` when it meets none. A tall box tipping
 // over onto a cube beside it stops where it leans on the cube's edge, as the floor stops a turn
 // (eq. 7's first touch), instead of turning into the cube and being lifted out of it, off the
 // floor, frame after frame.
@@ -158,7 +160,7 @@ static double first_touch_neighbour(hs_world *world, const hs_body *body, hs_vec
 		    hs_shapes_overlap(shape, body->pos, body->rot, sb, b->pos, b->rot))
 			continue; // clear of it at the end of the turn, or already touching it
 		double lo = 0.0, hi = best;
-		while (hi - lo > 1e-9) {
+		while (hi - lo > 1e-6) {
 			double mid = 0.5 * (lo + hi);
 			q = hs_quat_from_axis_angle(axis, mid);
 			at = hs_add(c, hs_quat_rotate(q, hs_sub(body->pos, c)));

@@ -63,8 +63,9 @@ static bool penetrates(const hs_world *world, const hs_body *a, hs_vec3 pos, con
 }
 
 // Vertex-face interpenetration is lifted exactly; what is left (faces flush with each other, edges
-// crossing: no vertex strictly inside) is found by bisection on the lift, ending where the two
-// only touch (libccd GJK counts touching within ~1e-12 m as interference).
+// crossing: no vertex strictly inside) is found by bisection on the lift, ending within 0.1 um
+// clear of touching (libccd GJK counts touching within ~1e-12 m as interference, and its builds
+// differ by a few ulps between architectures: a bisection to 1e-13 m decided its last probes by them).
 static double lift_from(const hs_world *world, const hs_body *a, const hs_body *b) {
 	hs_body lifted = *a;
 	double lo = hs_stack_lift_out(&world->model.shapes[a->shape], a, &world->model.shapes[b->shape], b);
@@ -73,7 +74,7 @@ static double lift_from(const hs_world *world, const hs_body *a, const hs_body *
 		return lo;
 	const hs_shape *sa = &world->model.shapes[a->shape], *sb = &world->model.shapes[b->shape];
 	double hi = lo + 2.0 * (sa->radius + sb->radius); // clear of b for certain
-	for (int k = 0; k < 64 && hi - lo > 1e-13; ++k) {
+	for (int k = 0; k < 64 && hi - lo > 1e-7; ++k) {
 		double mid = 0.5 * (lo + hi);
 		lifted.pos.z = a->pos.z + mid;
 		if (hs_shapes_overlap(sa, lifted.pos, lifted.rot, sb, b->pos, b->rot))
