@@ -19,10 +19,10 @@ MANDIR     ?= $(DATADIR)/man
 INSTALL  ?= install
 LDCONFIG ?= ldconfig
 
-# the physics (model/) needs libccd only; the harness (harness/) adds libyaml and GSL. While a
-# model/ file still includes a GSL header (the tracker's noise, to move to the harness: noise is
-# input), GSL is added to the physics' link and to handspring.pc's Requires.private here.
-MODEL_PKGS   := ccd $(if $(shell grep -l '<gsl/' model/*/*.c model/*/*.h 2>/dev/null),gsl)
+# the physics (model/) needs libccd only, which it compiles itself (below); the harness
+# (harness/) adds libyaml and GSL. Should a model/ file include a GSL header, GSL is added to the
+# physics' link and to handspring.pc's Requires.private here.
+MODEL_PKGS   := $(if $(shell grep -l '<gsl/' model/*/*.c model/*/*.h 2>/dev/null),gsl)
 HARNESS_PKGS := yaml-0.1 gsl
 PKGS := $(MODEL_PKGS) $(HARNESS_PKGS)
 # recursive on purpose: pkg-config is asked only after `deps` has installed it
@@ -56,7 +56,21 @@ ifeq ($(SANITIZE),1)
 SAN_CFLAGS := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer -DHS_HASH_SELFCHECK -DHS_SELFCHECK
 LDFLAGS    += -fsanitize=address,undefined
 endif
-CFLAGS_BASE = -std=c11 -D_POSIX_C_SOURCE=200809L $(OPT) -g $(WARN) $(FP) $(SAN_CFLAGS) $(PKG_CFLAGS) $(CFLAGS)
+# libccd (docs/building.md "libccd"): compiled here from its source with the flags above, not
+# taken from the distribution, whose builds round differently on i386 (x87) and arm64 (fused
+# multiply-add), while libccd's penetration depths feed object positions. Its objects go into
+# libhandspring (static and shared, where its symbols stay local). scripts/libccd_src.sh fetches
+# the source (Debian's source package of libccd 2.1) into CCD_SRC when it is not there.
+CCD_SRC  ?= build/src/libccd-2.1
+CCD_NAMES := ccd mpr polytope support vec3
+# (named libccd_*.o: an archive names its members by file name, and libccd has a support.c too)
+CCD_OBJ   := $(CCD_NAMES:%=$(BUILD)/ccd/libccd_%.o)
+CCD_PIC_OBJ := $(CCD_NAMES:%=$(BUILD)/ccd/pic/libccd_%.o)
+# its public headers alone, in a folder of their own: its private ones (support.h, list.h...)
+# must not shadow ours
+CCD_CONFIG := $(BUILD)/ccd/include/ccd/config.h
+CCD_INC    := -I$(BUILD)/ccd/include -DCCD_STATIC_DEFINE
+CFLAGS_BASE = -std=c11 -D_POSIX_C_SOURCE=200809L $(OPT) -g $(WARN) $(FP) $(SAN_CFLAGS) $(CCD_INC) $(PKG_CFLAGS) $(CFLAGS)
 CFLAGS_ALL  = $(CFLAGS_BASE) $(PUBLIC_INC)
 # the model's folders (docs/architecture.md): each one's private headers, for the model and its tests
 MODEL_INC     := $(patsubst %/,-I%,$(sort $(dir $(wildcard model/*/*.h))))
@@ -116,10 +130,26 @@ tool: $(TOOL)
 
 # Debian packages (scripts/deps.sh): a plain build asks only for what the libraries and the tool
 # need; the test, plot, campaign and benchmark targets ask for their own tools.
-deps:
+deps: $(CCD_CONFIG)
 	@sh scripts/deps.sh build
-deps-test:
+deps-test: $(CCD_CONFIG)
 	@sh scripts/deps.sh build test
+
+$(CCD_NAMES:%=$(CCD_SRC)/src/%.c) &:
+	@sh scripts/libccd_src.sh $(CCD_SRC)
+# libccd's public headers and its configuration (double precision, as Debian's libccd-dev)
+$(CCD_CONFIG): $(CCD_SRC)/src/ccd.c
+	@mkdir -p $(dir $@)
+	cp $(CCD_SRC)/src/ccd/ccd.h $(CCD_SRC)/src/ccd/compiler.h $(CCD_SRC)/src/ccd/ccd_export.h \
+		$(CCD_SRC)/src/ccd/quat.h $(CCD_SRC)/src/ccd/vec3.h $(dir $@)
+	printf '#ifndef __CCD_CONFIG_H__\n#define __CCD_CONFIG_H__\n#define CCD_DOUBLE\n#endif\n' > $@
+# libccd's own code: the project's optimisation, floating-point and sanitizer flags, its warnings off
+CCD_CFLAGS = -std=c11 $(OPT) -g -w $(FP) $(SAN_CFLAGS) $(CCD_INC) -I$(CCD_SRC)/src $(CFLAGS)
+$(BUILD)/ccd/libccd_%.o: $(CCD_SRC)/src/%.c $(CCD_CONFIG)
+	$(CC) $(CCD_CFLAGS) -c $< -o $@
+$(BUILD)/ccd/pic/libccd_%.o: $(CCD_SRC)/src/%.c $(CCD_CONFIG)
+	@mkdir -p $(dir $@)
+	$(CC) $(CCD_CFLAGS) $(PIC_FLAGS) -c $< -o $@
 
 $(BUILD)/obj/model/%.o: model/%.c $(MODEL_H) $(WERROR_STAMP) | deps
 	@mkdir -p $(dir $@)
@@ -141,7 +171,7 @@ $(BUILD)/obj/tool/%.o: tool/%.c $(wildcard tool/*.h model/include/*.h harness/in
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS_ALL) -c $< -o $@
 
-$(LIB): $(LIB_OBJ)
+$(LIB): $(LIB_OBJ) $(CCD_OBJ)
 	@rm -f $@
 	ar rcs $@ $^
 
@@ -160,10 +190,10 @@ $(BUILD)/pic/handspring.map: model/include/handspring.h model/include/hs_math.h 
 $(BUILD)/pic/handspring-harness.map: harness/include/hs_harness.h
 
 # shared objects, their soname link (what programs load) and their development link (-l...)
-$(SOLIB): $(LIB_PIC_OBJ) $(BUILD)/pic/handspring.map
+$(SOLIB): $(LIB_PIC_OBJ) $(CCD_PIC_OBJ) $(BUILD)/pic/handspring.map
 	$(CC) -shared $(LDFLAGS) $(SO_LDFLAGS) -Wl,-soname,libhandspring.so.$(HS_SOVERSION) \
-		-Wl,--version-script=$(BUILD)/pic/handspring.map -o $@ $(LIB_PIC_OBJ) \
-		$$(pkg-config --libs $(MODEL_PKGS)) -lm
+		-Wl,--version-script=$(BUILD)/pic/handspring.map -o $@ $(LIB_PIC_OBJ) $(CCD_PIC_OBJ) \
+		$(if $(MODEL_PKGS),$$(pkg-config --libs $(MODEL_PKGS))) -lm
 	ln -sf $(notdir $@) $(BUILD)/libhandspring.so.$(HS_SOVERSION)
 	ln -sf libhandspring.so.$(HS_SOVERSION) $(BUILD)/libhandspring.so
 

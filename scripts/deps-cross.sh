@@ -12,7 +12,7 @@
 #                                                one where the kernel cannot (qemu-i386)
 #    Debian's cross compilers, not gcc-multilib: gcc-12-multilib and gcc-12-aarch64-linux-gnu
 #    conflict in bookworm, and the cross compilers carry their own C library.
-# 2. The libraries the tool links (libccd, libyaml, GSL) for i386 and arm64, in a private sysroot
+# 2. The libraries the tool links (libyaml, GSL; libccd it compiles itself) for i386 and arm64, in a private sysroot
 #    per architecture, $BUILD/det/sysroot-{i386,arm64} (no root needed): the Debian packages are
 #    fetched by apt-get with a private package list for that architecture and unpacked with
 #    dpkg-deb. Not `dpkg --add-architecture` + `apt-get install libgsl-dev:arm64`: libgsl-dev is
@@ -65,9 +65,9 @@ fi
 # ---------------------------------------------------------------------------------------------
 # 2. the foreign libraries, one private sysroot per architecture
 
-# runtime and development packages: the tool is linked against the shared libraries (libccd-dev
-# ships no static library) and finds them at run time through an rpath into the sysroot
-PACKAGES="libccd-dev libccd2 libyaml-dev libyaml-0-2 libgsl-dev libgsl27 libgslcblas0"
+# runtime and development packages: the tool is linked against the shared libraries and finds them
+# at run time through an rpath into the sysroot
+PACKAGES="libyaml-dev libyaml-0-2 libgsl-dev libgsl27 libgslcblas0"
 
 sysroot() { # ARCH TRIPLET
 	arch=$1 triplet=$2
@@ -115,7 +115,7 @@ export PKG_CONFIG_LIBDIR PKG_CONFIG_SYSROOT_DIR PKG_CONFIG_PATH
 exec /usr/bin/pkg-config "\$@"
 EOF
 	chmod +x "$root/bin/pkg-config"
-	ls "$root/usr/lib/$triplet/libgsl.so" "$root/usr/lib/$triplet/libccd.so" "$root/usr/lib/$triplet/libyaml.so" >/dev/null
+	ls "$root/usr/lib/$triplet/libgsl.so" "$root/usr/lib/$triplet/libyaml.so" >/dev/null
 	echo "$PACKAGES" >"$stamp"
 }
 

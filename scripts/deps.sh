@@ -7,7 +7,8 @@
 #   sh scripts/deps.sh [GROUP...]
 #
 # Each target asks only for the groups it uses:
-#   build     the libraries and the tool (plain `make`): pkg-config, libccd, libyaml, GSL
+#   build     the libraries and the tool (plain `make`): pkg-config, libyaml, GSL (libccd's source
+#             comes through scripts/libccd_src.sh: the Makefile compiles it)
 #   test      the unit tests and the README's examples: cmocka; libpng (test_view reads the
 #             pictures `handspring view` draws, with gnuplot); clang (the determinism pair: the
 #             catalog built with gcc and clang must agree); g++ and clang++ (the public headers
@@ -42,7 +43,6 @@ for group in "$@"; do
 	check) ;;
 	build)
 		has_cmd pkg-config || need="$need pkg-config"
-		has_file /usr/include/ccd/ccd.h || need="$need libccd-dev"
 		has_file /usr/include/gsl/gsl_odeiv2.h || need="$need libgsl-dev"
 		has_file /usr/include/yaml.h || need="$need libyaml-dev"
 		;;

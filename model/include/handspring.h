@@ -17,7 +17,8 @@
 // and name nothing in any other world.
 //
 // Use: #include <handspring/handspring.h>, link with `pkg-config --cflags --libs handspring`
-// (libccd and libm; add --static for libhandspring.a). Valid C99/C11 and C++11.
+// (libm; libccd is compiled into the library; add --static for libhandspring.a). Valid C99/C11
+// and C++11.
 // The models in detail: docs/model.md in the repository (index docs/README.md) — the 18-sensor
 // glove layout, check points and lines, contact states, stacking modes `paper` and `support`,
 // and every choice made where the papers are silent.
