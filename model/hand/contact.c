@@ -256,3 +256,49 @@ int hs_contact_detect_grown(hs_world *world, int object, const hs_pose *before, 
 		return hs_contact_keep_hovering(world, first, hs_contact_drop_trailing(world, first));
 	return world->out.contact_count - first;
 }
+
+// The question hs_contact_detect_grown(world, object, NULL, grow) answers for one hand, without
+// making its contacts: with `grow` > 0 and no motion of the object, every check point inside a
+// grown part and every check line across one (both ends outside) gives a contact there, and
+// nothing else does (detect_points, detect_lines). The same culls pass the same parts over.
+bool hs_contact_hand_within(hs_world *world, int object, int h, double grow) {
+	const hs_body *body = &world->state.bodies[object];
+	const hs_shape *shape = &world->model.shapes[body->shape];
+	hs_hand *hand = &world->state.hands[h];
+	if (!(grow > 0.0) || !hs_contact_hand_near(&world->model, body, hand, grow))
+		return false;
+	hs_frame now = frame_of(body);
+	bool cull = world->model.skip_work;
+	for (int p = 0; p < shape->part_count; ++p) {
+		const hs_part *part = &shape->parts[p];
+		const hs_part_cache *pc = &world->model.part_cache[body->shape][p];
+		hs_vec3 center = to_world(&now, part->center);
+		if (cull && !hs_contact_sphere_near(&world->model, hand, center, part->radius, pc->grow_reach, grow))
+			continue;
+		double r = part->radius + pc->grow_reach * grow;
+		uint32_t points = (1u << HS_HAND_POINTS) - 1u;
+		if (cull)
+			points &= hs_contact_points_near_part(hand, pc->grow_reach, center, r, false, hs_contact_keep(&world->model, hand));
+		for (; points; points &= points - 1u)
+			if (inside_part_with(world, shape, part, pc, to_body(&now, hand->cache.points[hs_lowest_bit(points)]), grow))
+				return true;
+		hs_segment_bounds sb = hs_contact_segment_bounds(world, hand, r);
+		double d_axis[16]; // axes_near's AVX path fills a 16th
+		uint32_t segments = cull ? HS_HAND_ALL_SEGMENTS & hs_contact_axes_near(hand, center, sb.rs * sb.rs, d_axis) : HS_HAND_ALL_SEGMENTS;
+		for (; segments; segments &= segments - 1u) {
+			int s = hs_lowest_bit(segments);
+			hs_hand_ready_segment(hand, s);
+			bool all_near = !cull || (sb.ri > 0.0 && d_axis[s] <= sb.ri * sb.ri);
+			unsigned lines = all_near ? 0xFu : hs_contact_lines_near(hand, s, center, r * r);
+			for (int j = 4 * s; j < 4 * s + 4; ++j) {
+				if (!(lines >> (j - 4 * s) & 1u))
+					continue;
+				hs_vec3 q[2];
+				line_to_body(&now, hand->cache.lines[j], q);
+				if (across(clip_part_with(world, shape, part, pc, q[0], q[1], grow)))
+					return true;
+			}
+		}
+	}
+	return false;
+}

@@ -60,6 +60,9 @@ int hs_contact_detect(hs_world *world, int object, const hs_pose *before);
 // surface touches it (the grasp's release margin, docs/model.md §3). Contact points are
 // projected on the faces themselves.
 int hs_contact_detect_grown(hs_world *world, int object, const hs_pose *before, double grow);
+// True when hs_contact_detect_grown(world, object, NULL, grow) would give hand index h a contact
+// (grow > 0): found without making the contacts, at the first one.
+bool hs_contact_hand_within(hs_world *world, int object, int h, double grow);
 // §3.2 rectification of a check point: p moved to the nearest face of the convex part of the
 // first object (in index order) it lies in, or p itself (hs_world_hand_rectified_points).
 hs_vec3 hs_contact_rectify(const hs_world *world, hs_vec3 p);

@@ -11,6 +11,10 @@
 //    five fingers close again by grasp_open_mm: no 2 <-> 3 flicker, no drag while opening.
 #include "broadphase.h"
 #include "contact.h"
+#if defined(HS_SELFCHECK)
+#include <stdio.h>
+#include <stdlib.h>
+#endif
 #include "grasp.h"
 #include "inline.h"
 
@@ -223,14 +227,21 @@ static bool grasp_continues(hs_world *world, int i, const hs_pose *before, int f
 // by grasp_release_mm (5 mm) one frame it shoved it the next.
 #define HS_RELEASE_CLEAR 0.02
 
-// True when a finger part of hand index + 1 `r` lies within HS_RELEASE_CLEAR of object i (the
-// contacts found for this are not kept; they are appended from `at`).
-static bool hand_within_margin(hs_world *world, int i, uint32_t r, int at) {
-	int n = hs_contact_detect_grown(world, i, NULL, HS_RELEASE_CLEAR);
-	bool near = false;
-	for (int k = 0; k < n && !near; ++k)
-		near = world->out.contacts[at + k].hand.index1 == r;
+// True when a finger part of hand index + 1 `r` lies within HS_RELEASE_CLEAR of object i.
+static bool hand_within_margin(hs_world *world, int i, uint32_t r) {
+	bool near = hs_contact_hand_within(world, i, (int)r - 1, HS_RELEASE_CLEAR);
+#if defined(HS_SELFCHECK)
+	// the rule it stands for: the grown test's contacts, one of them that hand's (then dropped)
+	int at = world->out.contact_count, n = hs_contact_detect_grown(world, i, NULL, HS_RELEASE_CLEAR);
+	bool any = false;
+	for (int k = 0; k < n; ++k)
+		any = any || world->out.contacts[at + k].hand.index1 == r;
 	world->out.contact_count = at;
+	if (any != near && world->out.contact_count + n < world->out.contact_capacity) {
+		fprintf(stderr, "selfcheck: hs_contact_hand_within differs from the grown test's contacts\n");
+		abort();
+	}
+#endif
 	return near;
 }
 
@@ -275,7 +286,7 @@ static int set_aside_released(hs_world *world, int i, int first, int n) {
 	double closed = body->grip_spread - spread;
 	bool closes = (other_finger && (!(world->model.def.grasp_close_mm > 0.0) || closed >= HS_PAIR_STILL)) ||
 	              closed > world->model.def.grasp_open_mm * 1e-3;
-	if (kept == n && !closes && hand_within_margin(world, i, r, first + n))
+	if (kept == n && !closes && hand_within_margin(world, i, r))
 		return n; // the object falls clear of a finger it rested on: still that hand's release
 	if (kept == n || closes) { // the rule lapses
 		body->released_by = 0;
