@@ -129,9 +129,12 @@ static inline uint32_t hs_contact_points_near_part(const hs_hand *hand, double g
 // margin of the part, beyond its sphere (detect_lines), so its segment is not culled.
 static inline uint32_t hs_contact_segments_embedded(const hs_hand *hand) {
 	uint32_t segments = 0;
-	if (hand->state.embed_lines)
-		for (int k = 0; k < HS_HAND_LINES / 4; ++k)
-			segments |= (uint32_t)((hand->state.embed_lines >> (4 * k) & 0xFu) != 0) << k;
+	for (uint64_t lines = hand->state.embed_lines; lines;) { // one turn per embedded segment, not per segment
+		uint32_t low = (uint32_t)lines;
+		int s = (low ? hs_lowest_bit(low) : 32 + hs_lowest_bit((uint32_t)(lines >> 32))) / 4;
+		segments |= 1u << s;
+		lines &= ~((uint64_t)0xFu << (4 * s));
+	}
 	return segments;
 }
 
