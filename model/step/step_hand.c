@@ -101,22 +101,21 @@ static HS_FORCE_INLINE void hands_move_objects(hs_world *world) {
 }
 
 // §4.2-§4.3 (docs/model.md §5-§6): every awake object the hands leave free, through its own frame
-// (step_object). In: the awake list. Out: bodies; support mode's moved objects in scratch->queue
-// and moved_from (the count returned); paper mode's fallen groups in scratch->queue (*fallen); a
-// numeric fault in the counters and the state's first-fault words (`faults`, of the same world).
-static HS_FORCE_INLINE int move_free_objects(const hs_broadphase *bp, const hs_motion_pass *motion, hs_world_state *faults,
-                                             int *fallen) {
-	const hs_world_model *model = bp->model;
-	const hs_world_cache *cache = bp->cache;
-	hs_world_scratch *scratch = bp->scratch;
+// (step_object). In: the model, the awake list (cache). Out: bodies; the grid; support mode's
+// moved objects in scratch->queue and moved_from (the count returned); paper mode's fallen groups
+// in scratch->queue (*fallen); the counters; a numeric fault's frame and object in the state's
+// first-fault words (`faults`). All parts of one world.
+static HS_FORCE_INLINE int move_free_objects(const hs_world_model *model, hs_body *bodies, hs_world_cache *cache,
+                                             hs_world_scratch *scratch, hs_world_counters *counters,
+                                             hs_world_state *faults, int *fallen) {
 	bool skip = model->skip_work;
 	int visits = skip ? cache->awake_count : model->object_count;
 	if (skip) // the sleeping objects cost nothing (the awake list holds the others, in index order)
-		motion->counters->sleeping_skips += model->object_count - cache->awake_count;
+		counters->sleeping_skips += model->object_count - cache->awake_count;
 	int moved = 0; // support mode: objects that moved, to wake what rested on them (after the loop)
 	for (int k = 0; k < visits; ++k) {
 		int i = skip ? cache->awake[k] : k;
-		hs_body *body = &bp->bodies[i];
+		hs_body *body = &bodies[i];
 		if (body->held || body->carried || in_list(scratch->queue, *fallen, i))
 			continue;
 		// asleep: stays as it is until woken — on the floor, on a support (support mode), where it
@@ -125,14 +124,17 @@ static HS_FORCE_INLINE int move_free_objects(const hs_broadphase *bp, const hs_m
 		// awake list below
 		if (body->asleep)
 			continue;
-		bool interferes = model->def.stacking == HS_STACKING_PAPER && hs_object_interferes(bp, i);
-		if (interferes && paper_group_falls(bp, i, fallen))
+		// the concepts' parts, made here: most frames step no free object
+		hs_broadphase bp = {model, bodies, cache, scratch};
+		bool interferes = model->def.stacking == HS_STACKING_PAPER && hs_object_interferes(&bp, i);
+		if (interferes && paper_group_falls(&bp, i, fallen))
 			continue;
 		hs_body saved = *body;
-		step_object(bp, motion, i, interferes);
+		hs_motion_pass motion = {model, bodies, scratch, counters};
+		step_object(&bp, &motion, i, interferes);
 		if (!body_is_finite(body)) { // never let a NaN spread: freeze the object and count it
 			*body = saved;
-			hs_world_note_fault(motion->counters, faults, i);
+			hs_world_note_fault(counters, faults, i);
 		}
 		// support mode: what moved by more than the floor's tolerance wakes what rests on it (a
 		// settling stack's rounding-size moves woke each other for good)
@@ -140,23 +142,25 @@ static HS_FORCE_INLINE int move_free_objects(const hs_broadphase *bp, const hs_m
 			scratch->moved_from[moved] = saved.pos;
 			scratch->queue[moved++] = i;
 		}
-		hs_grid_update(model, bp->bodies, bp->cache, i);
+		hs_grid_update(model, bodies, cache, i);
 	}
 	return moved;
 }
 
 // §4.3 and docs/model.md §6: what rested on a moved object, and a fallen group, wake and look
 // again; the awake list drops what fell asleep. In: the queue from move_free_objects. Out: the
-// awake list, the stale digests.
-static HS_FORCE_INLINE void wake_neighbours(const hs_broadphase *bp, int moved, int fallen) {
-	const hs_world_scratch *scratch = bp->scratch;
-	for (int k = 0; k < moved; ++k) // the awake list may grow only once the loop is over
-		hs_support_wake_neighbours(bp, scratch->queue[k], scratch->moved_from[k]);
+// awake list, the stale digests. The broad phase's parts: hs_broadphase (broadphase.h).
+static HS_FORCE_INLINE void wake_neighbours(const hs_world_model *model, hs_body *bodies, hs_world_cache *cache,
+                                           hs_world_scratch *scratch, int moved, int fallen) {
+	for (int k = 0; k < moved; ++k) { // the awake list may grow only once the loop is over
+		hs_broadphase bp = {model, bodies, cache, scratch};
+		hs_support_wake_neighbours(&bp, scratch->queue[k], scratch->moved_from[k]);
+	}
 	for (int k = 0; k < fallen; ++k)
-		hs_wake(bp->bodies, bp->cache, scratch->queue[k]);
-	hs_awake_compact(bp->bodies, bp->cache);
-	if (!bp->model->skip_work) // every object was looked at (the awake list does not bound what may have changed)
-		hs_digest_all_stale(bp->cache);
+		hs_wake(bodies, cache, scratch->queue[k]);
+	hs_awake_compact(bodies, cache);
+	if (!model->skip_work) // every object was looked at (the awake list does not bound what may have changed)
+		hs_digest_all_stale(cache);
 }
 
 // docs/model.md §4 "Release": each hand's wrist history ages by a frame and its points become the
@@ -169,14 +173,17 @@ static HS_FORCE_INLINE void age_hands(hs_hand *hands, int hand_count) {
 }
 
 void hs_step_hand(hs_world *world) {
-	hs_broadphase bp = hs_broadphase_of(world); // the object stages' parts of the world
-	hs_motion_pass motion = hs_motion_pass_of(world);
-	file_objects(&world->model, world->state.bodies, &world->cache); // Experiment 3: the broad phase
-	track_hands(world);                            // docs/model.md §3: tracking loss
-	hands_move_objects(world);                     // §3.2: contacts, grasps, pushes
-	int fallen = 0;                                // paper mode: objects moved with a falling group
-	int moved = move_free_objects(&bp, &motion, &world->state, &fallen); // §4.2-§4.3: free motion, floor, stacking
-	wake_neighbours(&bp, moved, fallen);           // §4.3: what rested on a moved object looks again
-	age_hands(world->state.hands, world->model.hand_count); // docs/model.md §4: the hands' history
+	const hs_world_model *model = &world->model;
+	hs_body *bodies = world->state.bodies;
+	hs_world_cache *cache = &world->cache;
+	hs_world_scratch *scratch = &world->scratch;
+	file_objects(model, bodies, cache); // Experiment 3: the broad phase
+	track_hands(world);                 // docs/model.md §3: tracking loss
+	hands_move_objects(world);          // §3.2: contacts, grasps, pushes
+	int fallen = 0;                     // paper mode: objects moved with a falling group
+	// §4.2-§4.3: free motion, floor, stacking
+	int moved = move_free_objects(model, bodies, cache, scratch, &world->counters, &world->state, &fallen);
+	wake_neighbours(model, bodies, cache, scratch, moved, fallen); // §4.3: what rested on a moved object looks again
+	age_hands(world->state.hands, model->hand_count);              // docs/model.md §4: the hands' history
 	world->state.frame++;
 }

@@ -14,22 +14,9 @@
 #include "broadphase.h"
 #include "inline.h"
 
-// A world of this many objects or fewer is scanned whole: each caller's bounding-sphere test of
-// every object costs less than hashing the cells of its query (the seed scene, 10 cubes: 233
-// instructions a frame less over its three queries; 16 cubes: 930). The same bits either way.
-#define HS_GRID_SCAN_MAX 16
+// (HS_GRID_SCAN_MAX and the test of a world scanned whole, hs_grid_scanned: broadphase.h)
 
-// Whether queries read the grid once it is built: a larger world with skip_work on. Otherwise no
-// moved object is filed in it (233 instructions a frame less in the seed scene); a world that
-// grows past the limit files every object at its next step (grid_dirty). skip_work is fixed
-// when the world is made.
-static bool grid_read(const hs_world_model *model) {
-	return model->skip_work && model->object_count > HS_GRID_SCAN_MAX;
-}
-
-void hs_grid_update(const hs_world_model *model, const hs_body *bodies, hs_world_cache *cache, int i) {
-	if (!cache->grid_built || !grid_read(model))
-		return; // not built yet (the first step builds it), or not read (nor its lists)
+void hs_grid_file(const hs_body *bodies, hs_world_cache *cache, int i) {
 	if (!cache->awake_flag[i]) // a resting object filed anew (a load, objects added, or carried):
 		cache->near_lists.epoch++;   // the neighbour lists may miss it
 	hs_hgrid_file(&cache->grid, i, bodies[i].pos);
@@ -47,18 +34,13 @@ void hs_grid_build(const hs_world_model *model, const hs_body *bodies, hs_world_
 	hs_hgrid_pack(&cache->grid); // the cells the objects occupy, read without hashing
 }
 
-// A query answers by a full scan, in index order (the grid not read, or not built yet).
-static bool scanned(const hs_world_model *model, const hs_world_cache *cache) {
-	return !cache->grid_built || !grid_read(model);
-}
-
 static int grid_answer(const hs_world_cache *cache, hs_vec3 center, double radius, int *out) {
 	hs_vec3 r = hs_v3(radius, radius, radius); // objects are filed by their centres (x, y)
 	return hs_hgrid_query(&cache->grid, hs_sub(center, r), hs_add(center, r), out);
 }
 
 int hs_grid_query(const hs_world_model *model, const hs_world_cache *cache, hs_vec3 center, double radius, int *out) {
-	if (!scanned(model, cache))
+	if (!hs_grid_scanned(model, cache))
 		return grid_answer(cache, center, radius, out);
 	memcpy(out, cache->every, (size_t)model->object_count * sizeof *out);
 	return model->object_count;
@@ -73,22 +55,31 @@ int hs_grid_query(const hs_world_model *model, const hs_world_cache *cache, hs_v
 // moves a few mm a frame reuses it for many frames. Every answer holds all the objects the
 // callers' own tests can pass, in index order: no result depends on the lists.
 
+// The parts of a world a neighbour query reads and writes (hs_grid_near_filed's arguments): the
+// broad phase's, its bodies read only.
+typedef struct query {
+	const hs_world_model *model;
+	const hs_body *bodies;
+	hs_world_cache *cache;
+	hs_world_scratch *scratch;
+} query;
+
 // Rounding allowance of the centre tests (m), far below any caller's tolerance.
 static double slack(hs_vec3 c, double reach) { return 1e-9 * (1.0 + fabs(c.x) + fabs(c.y) + reach); }
 
-static bool centre_near(const hs_broadphase *bp, int i, hs_vec3 c, double r, double allow) {
-	hs_vec3 p = bp->bodies[i].pos;
-	double reach = r + bp->cache->grid.half[i];
+static bool centre_near(const query *q, int i, hs_vec3 c, double r, double allow) {
+	hs_vec3 p = q->bodies[i].pos;
+	double reach = r + q->cache->grid.half[i];
 	reach += allow * slack(c, reach);
 	return fabs(p.x - c.x) <= reach && fabs(p.y - c.y) <= reach;
 }
 
 // Merges a list's objects with the awake list (both ascending; an object on both once), keeping
 // those near the query.
-static int list_answer(const hs_broadphase *bp, const hs_near_list *l, hs_vec3 c, double r) {
-	const int *awake = bp->cache->awake;
-	int *found = bp->scratch->found;
-	int n = 0, a = 0, b = 0, na = bp->cache->awake_count;
+static int list_answer(const query *q, const hs_near_list *l, hs_vec3 c, double r) {
+	const int *awake = q->cache->awake;
+	int *found = q->scratch->found;
+	int n = 0, a = 0, b = 0, na = q->cache->awake_count;
 	while (a < l->count || b < na) {
 		int i;
 		if (b == na || (a < l->count && l->index[a] < awake[b]))
@@ -97,16 +88,16 @@ static int list_answer(const hs_broadphase *bp, const hs_near_list *l, hs_vec3 c
 			i = awake[b++];
 			a += a < l->count && l->index[a] == i;
 		}
-		if (centre_near(bp, i, c, r, 1.0))
+		if (centre_near(q, i, c, r, 1.0))
 			found[n++] = i;
 	}
 #if defined(HS_SELFCHECK)
 	// sanitizer builds: every object the contract asks for is in the answer (a stale list is not)
-	for (int j = 0, k = 0; j < bp->model->object_count; ++j) {
+	for (int j = 0, k = 0; j < q->model->object_count; ++j) {
 		while (k < n && found[k] < j)
 			++k;
-		hs_vec3 p = bp->bodies[j].pos;
-		if (hypot(p.x - c.x, p.y - c.y) <= r + bp->cache->grid.half[j] && (k == n || found[k] != j)) {
+		hs_vec3 p = q->bodies[j].pos;
+		if (hypot(p.x - c.x, p.y - c.y) <= r + q->cache->grid.half[j] && (k == n || found[k] != j)) {
 			fprintf(stderr, "selfcheck: object %d missing from a neighbour list's answer\n", j);
 			abort();
 		}
@@ -127,9 +118,9 @@ static hs_near_list *list_holding(hs_near_lists *lists, hs_vec3 c, double r) {
 
 // Lists the resting objects near the query's box grown by the skin, in place of the least recently
 // used list; or, when more than a list holds, answers from the grid's answer alone (found).
-static int list_and_answer(const hs_broadphase *bp, hs_vec3 c, double r) {
-	hs_world_cache *cache = bp->cache;
-	int *found = bp->scratch->found;
+static int list_and_answer(const query *q, hs_vec3 c, double r) {
+	hs_world_cache *cache = q->cache;
+	int *found = q->scratch->found;
 	double grown = r + cache->grid.cell0;
 	int n = grid_answer(cache, c, grown, found);
 	hs_near_list *l = &cache->near_lists.list[0];
@@ -139,12 +130,12 @@ static int list_and_answer(const hs_broadphase *bp, hs_vec3 c, double r) {
 	l->count = 0;
 	for (int k = 0; k < n; ++k) {
 		int i = found[k];
-		if (cache->awake_flag[i] || !centre_near(bp, i, c, grown, 4.0))
+		if (cache->awake_flag[i] || !centre_near(q, i, c, grown, 4.0))
 			continue;
 		if (l->count == HS_NEAR_LISTED) { // a crowd: the grid's answer, kept where near the query
 			int kept = 0;
 			for (int j = 0; j < n; ++j)
-				if (centre_near(bp, found[j], c, r, 1.0))
+				if (centre_near(q, found[j], c, r, 1.0))
 					found[kept++] = found[j];
 			return kept;
 		}
@@ -156,37 +147,22 @@ static int list_and_answer(const hs_broadphase *bp, hs_vec3 c, double r) {
 	l->hi[1] = c.y + grown;
 	l->epoch = cache->near_lists.epoch;
 	l->used = ++cache->near_lists.clock;
-	return list_answer(bp, l, c, r);
+	return list_answer(q, l, c, r);
 }
 
-// (not inlined: a world scanned whole pays no more than its test)
-static HS_NOINLINE int grid_near(const hs_broadphase *bp, hs_vec3 center, double radius) {
-	hs_world_cache *cache = bp->cache;
-	bp->scratch->near = bp->scratch->found;
+// (out of line: a world scanned whole pays no more than its test, inline in broadphase.h)
+int hs_grid_near_filed(const hs_world_model *model, const hs_body *bodies, hs_world_cache *cache,
+                       hs_world_scratch *scratch, hs_vec3 center, double radius) {
+	const query parts = {model, bodies, cache, scratch}, *q = &parts;
+	scratch->near = scratch->found;
 	if (cache->awake_count > HS_NEAR_AWAKE_MAX) // many in motion: the lists would hold few
-		return grid_answer(cache, center, radius, bp->scratch->found);
+		return grid_answer(cache, center, radius, scratch->found);
 	hs_near_list *l = list_holding(&cache->near_lists, center, radius);
 	if (!l)
-		return list_and_answer(bp, center, radius);
+		return list_and_answer(q, center, radius);
 	l->used = ++cache->near_lists.clock;
 	cache->near_lists.hits++;
-	return list_answer(bp, l, center, radius);
-}
-
-// A world scanned whole answers with every index, listed when the world was made: nothing written.
-static int every_index(const hs_broadphase *bp) {
-	bp->scratch->near = bp->cache->every;
-	return bp->model->object_count;
-}
-
-int hs_grid_near(const hs_broadphase *bp, hs_vec3 center, double radius) {
-	return scanned(bp->model, bp->cache) ? every_index(bp) : grid_near(bp, center, radius);
-}
-
-int hs_grid_near_either(const hs_broadphase *bp, hs_vec3 a, hs_vec3 b, double radius) {
-	if (scanned(bp->model, bp->cache))
-		return every_index(bp);
-	return grid_near(bp, hs_scale(hs_add(a, b), 0.5), radius + 0.5 * hs_length(hs_sub(b, a)));
+	return list_answer(q, l, center, radius);
 }
 
 static void insert_sorted(int *list, int *count, int value) {
@@ -199,12 +175,9 @@ static void insert_sorted(int *list, int *count, int value) {
 	++*count;
 }
 
-void hs_wake(hs_body *bodies, hs_world_cache *cache, int i) {
-	bodies[i].asleep = 0;
-	if (!cache->awake_flag[i]) {
-		cache->awake_flag[i] = 1;
-		insert_sorted(cache->awake, &cache->awake_count, i);
-	}
+void hs_awake_insert(hs_world_cache *cache, int i) {
+	cache->awake_flag[i] = 1;
+	insert_sorted(cache->awake, &cache->awake_count, i);
 }
 
 void hs_awake_compact(const hs_body *bodies, hs_world_cache *cache) {
