@@ -48,11 +48,11 @@ static void finish_bodies(hs_world *world, hs_spring_system *sys) {
 	for (int i = 0; i < world->model.object_count; ++i) {
 		hs_body *body = &world->state.bodies[i];
 		if (!hs_vec3_is_finite(body->pos) || !hs_vec3_is_finite(body->vel)) {
-			body->pos = sys->saved_pos[i]; // an explicit integrator blew up: freeze, count, go on
-			body->vel = sys->saved_vel[i];
+			body->pos = world->scratch.spring.saved_pos[i]; // an explicit integrator blew up: freeze, count, go on
+			body->vel = world->scratch.spring.saved_vel[i];
 			hs_world_note_fault(&world->counters, &world->state, i);
 		}
-		body->prev = sys->saved_pos[i];
+		body->prev = world->scratch.spring.saved_pos[i];
 		bool still = body->vel.x == 0.0 && body->vel.y == 0.0 && body->vel.z == 0.0;
 		body->grounded = sys->on_floor[i];
 		body->asleep = (sys->on_floor[i] || sys->held[i]) && still && !sys->separated[i] && i != sys->attached;
@@ -82,8 +82,8 @@ static void prepare_frame(hs_world *world, hs_spring_system *sys) {
 static void move_objects(hs_world *world, hs_spring_system *sys) {
 	int n = world->model.object_count;
 	for (int i = 0; i < n; ++i) {
-		sys->saved_pos[i] = world->state.bodies[i].pos;
-		sys->saved_vel[i] = world->state.bodies[i].vel;
+		world->scratch.spring.saved_pos[i] = world->state.bodies[i].pos;
+		world->scratch.spring.saved_vel[i] = world->state.bodies[i].vel;
 	}
 	for (int i = 0; i < n; ++i) {
 		if (!sys->held[i]) {

@@ -103,6 +103,19 @@ typedef struct hs_world_scratch {
 	int pick_faces, pick_edges;
 	int *face_pick, *edge_pick;
 	uint8_t *edge_mark;
+	// the spring step, max_objects long each in a spring world (empty in a hand world): each
+	// object's position and velocity when the frame began (the numeric guard, step_spring.c), where
+	// its path through the frame starts and at which fraction of the frame (spring_collide.c), and
+	// the floor layer's projection (spring_collide.c): its objects, their count and a mark per
+	// object (count and marks 0 between uses)
+	struct {
+		hs_vec3 *saved_pos, *saved_vel;
+		hs_vec3 *path_pos, *path_vel;
+		double *path_t0;
+		int *layer;
+		int layer_count;
+		uint8_t *in_layer;
+	} spring;
 } hs_world_scratch;
 
 // OUTPUT of the last call, rebuilt by every step (or load): not state.
