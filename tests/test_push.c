@@ -282,8 +282,9 @@ static void test_push_many_end_stays_on_floor(void **state) {
 	assert_true(b->grounded == 1);
 	assert_true(hs_motion_pose_vertices(&w->model, &w->scratch, b) >= -1e-15);
 	assert_true(fabs(b->pos.x - at.x) < 1e-4 && b->pos.y == at.y); // turned about its edge, not slid
+	hs_motion_pass motion = hs_motion_pass_of(w);
 	for (int n = 0; n < 30 && !b->asleep; ++n) // §4.2 on the floor from here on
-		hs_motion_step(&(hs_motion_pass){&w->model, w->state.bodies, &w->scratch, &w->counters}, b);
+		hs_motion_step(&motion, b);
 	assert_true(b->asleep);
 	assert_int_equal(b->floor_contacts, 4);
 	assert_true(fabs(b->pos.x - at.x) < 1e-4 && fabs(b->pos.z - 0.03) < 1e-12);

@@ -369,7 +369,8 @@ static void test_support_carried_by_lifted_support(void **state) {
 		lower->held = 1;
 		hs_wake(w->state.bodies, &w->cache, li);
 		hs_grid_update(&w->model, w->state.bodies, &w->cache, li);
-		hs_support_wake_neighbours(&(hs_broadphase){&w->model, w->state.bodies, &w->cache, &w->scratch}, li, lower->prev);
+		hs_broadphase bp = hs_broadphase_of(w);
+		hs_support_wake_neighbours(&bp, li, lower->prev);
 		hs_world_step(w);
 		hs_world_object_state(w, bar, &a);
 		hs_world_object_state(w, cube, &b);
@@ -431,7 +432,8 @@ static void test_support_push_moves_what_is_beside(void **state) {
 	b->contact = HS_CONTACT_PUSH_MANY;
 	hs_wake(w->state.bodies, &w->cache, i);
 	hs_grid_update(&w->model, w->state.bodies, &w->cache, i);
-	hs_support_wake_neighbours(&(hs_broadphase){&w->model, w->state.bodies, &w->cache, &w->scratch}, i, b->prev);
+	hs_broadphase bp = hs_broadphase_of(w);
+	hs_support_wake_neighbours(&bp, i, b->prev);
 	assert_near(w->state.bodies[(int)first.index1 - 1].pos.x, 0.0855, 1e-15);  // 9.5 mm into it: moved 1 cm, the gap kept
 	assert_near(w->state.bodies[(int)second.index1 - 1].pos.x, 0.1405, 1e-15); // moved into by the first
 	assert_near(w->state.bodies[(int)behind.index1 - 1].pos.x, -0.08, 0);
@@ -457,7 +459,8 @@ static void test_support_push_does_not_sink(void **state) {
 	b->contact = HS_CONTACT_PUSH_ONE;
 	hs_wake(w->state.bodies, &w->cache, i);
 	hs_grid_update(&w->model, w->state.bodies, &w->cache, i);
-	hs_support_wake_neighbours(&(hs_broadphase){&w->model, w->state.bodies, &w->cache, &w->scratch}, i, b->prev);
+	hs_broadphase bp = hs_broadphase_of(w);
+	hs_support_wake_neighbours(&bp, i, b->prev);
 	assert_near(b->pos.z, 0.12, 1e-12);
 	assert_vec3_near(hs_sub(b->pos, b->prev), hs_v3(0.002, 0, -0.003), 1e-15);
 	hs_world_destroy(w);

@@ -1,9 +1,10 @@
 // step_hand.c — one frame of a hand world (the 1999 paper's model): the step's stages in order,
 // each a function below that names its section (docs/model.md follows the same order). A stage
 // takes the parts of struct hs_world (world_internal.h) it reads and writes: the hands alone
-// (age_hands), the model, bodies and cache (file_objects), the broad phase's parts (broadphase.h)
-// and free motion's (motion.h) for the object stages; the hand stages still take the world.
-// Stages call the concepts below them and none calls back up here. They are forced inline: the
+// (age_hands); the model, bodies and cache (file_objects); the object stages the model, bodies,
+// cache, scratch (and counters, fault words), from which they make the broad phase's context
+// (broadphase.h) and free motion's (motion.h) where they step an object; the hand stages still
+// take the world, whose hand pass reads and writes nearly all of it. Stages call the concepts below them and none calls back up here. They are forced inline: the
 // step's cost is read from what hs_step_hand calls (tool/bench_cmd.c's stage table), as it was
 // from hs_world_step's.
 #include "broadphase.h"
@@ -124,7 +125,8 @@ static HS_FORCE_INLINE int move_free_objects(const hs_world_model *model, hs_bod
 		// awake list below
 		if (body->asleep)
 			continue;
-		// the concepts' parts, made here: most frames step no free object
+		// the broad phase's and free motion's parts, made here rather than each frame: most frames
+		// step no free object
 		hs_broadphase bp = {model, bodies, cache, scratch};
 		bool interferes = model->def.stacking == HS_STACKING_PAPER && hs_object_interferes(&bp, i);
 		if (interferes && paper_group_falls(&bp, i, fallen))
