@@ -41,7 +41,7 @@ static uint64_t *run_scenario(hs_scenario *s, FILE *out, long *count, bool fresh
 	while (hs_scenario_step(s)) {
 		assert_true(n < capacity);
 		if (fresh)
-			hs_digest_all_stale(world);
+			hs_digest_all_stale(&world->cache);
 		hashes[n++] = hs_world_hash(world);
 		if (out)
 			hs_trajectory_write_frame(out, s);
@@ -143,7 +143,7 @@ static void test_noisy_digests(void **state) {
 			long frame = 0;
 			do {
 				uint64_t kept = hs_world_hash(world);
-				hs_digest_all_stale(world);
+				hs_digest_all_stale(&world->cache);
 				if (hs_world_hash(world) != kept) {
 					hs_scenario_destroy(s);
 					fail_msg("%s at 1/%.0f s, seed %lu: frame %ld: the kept digests' hash differs from a fresh one",

@@ -232,8 +232,8 @@ static hs_vec3 tip_on_corner(double speed) {
 	                          hs_quat_from_axis_angle(hs_v3(0, 1, 0), 20 * HS_PI / 180));
 	hs_object_id id = add_object(w, add_box(w, 0.1, 0.1, 0.2), hs_v3(0, 0, 0.5), rot, hs_v3(0, 0, 0));
 	hs_body *b = &w->state.bodies[0];
-	b->pos.z -= hs_motion_pose_vertices(w, b); // its lowest vertex on the floor
-	hs_motion_keep_above_floor(w, b);
+	b->pos.z -= hs_motion_pose_vertices(&w->model, &w->scratch, b); // its lowest vertex on the floor
+	hs_motion_keep_above_floor(&w->model, &w->scratch, b);
 	assert_int_equal(b->floor_contacts, 1);
 	hs_vec3 edge = hs_v3(0.05, 0, -0.1), g_dir = hs_normalize(hs_cross(hs_v3(0, 1, 0), hs_quat_rotate(rot, hs_neg(edge))));
 	b->prev = hs_sub(b->pos, hs_scale(g_dir, speed / 60)); // G turning about +y over the far edge

@@ -42,7 +42,8 @@ static int add_object(hs_world *w, hs_shape_id shape, hs_vec3 pos) {
 // hs_grid_near's answer at (c, r) holds, ascending, every object whose centre lies within r plus
 // its bounding radius of c in (x, y).
 static void check_answer(hs_world *w, hs_vec3 c, double r, const char *what, int frame) {
-	int n = hs_grid_near(w, c, r);
+	hs_broadphase bp = hs_broadphase_of(w);
+	int n = hs_grid_near(&bp, c, r);
 	for (int k = 1; k < n; ++k)
 		if (w->scratch.near[k - 1] >= w->scratch.near[k])
 			fail_msg("frame %d, %s: answer not ascending at %d", frame, what, k);

@@ -22,11 +22,11 @@ static hs_world *box_world(hs_vec3 size) {
 	hs_world_def def = hs_default_world_def();
 	def.dt = 1.0 / 60;
 	hs_world *w = rig_world(&def, hs_shape_box(size, NULL), hs_v3(0, 0, 0.5 * size.z), hs_v3(0, 0, 0));
-	hs_motion_keep_above_floor(w, &w->state.bodies[0]); // floor contacts of the initial pose
+	hs_motion_keep_above_floor(&w->model, &w->scratch, &w->state.bodies[0]); // floor contacts of the initial pose
 	return w;
 }
 
-static double lowest_z(hs_world *w) { return hs_motion_pose_vertices(w, &w->state.bodies[0]); }
+static double lowest_z(hs_world *w) { return hs_motion_pose_vertices(&w->model, &w->scratch, &w->state.bodies[0]); }
 
 // (a) A still fingertip 1 mm into the top of a 10 cm box on the floor (it came down onto it in the
 // first frame), at several offsets from the centre, for 30 frames through the whole hand pass (detection, classification, push, §4.2
@@ -117,7 +117,7 @@ static void test_push_high_tips(void **state) {
 	for (int frame = 0; frame < 20; ++frame) {
 		hs_vec3 top = hs_add(b->pos, hs_quat_rotate(b->rot, hs_v3(-0.05, 0, 0.1)));
 		assert_true(hs_push_on_floor(w, b, top, hs_add(top, hs_v3(d, 0, 0))));
-		hs_motion_keep_above_floor(w, b);
+		hs_motion_keep_above_floor(&w->model, &w->scratch, b);
 		assert_true(lowest_z(w) >= -1e-12);
 		assert_true(hs_quat_angle(b->rot) > last);
 		last = hs_quat_angle(b->rot);
@@ -194,8 +194,8 @@ static void test_push_on_a_corner_keeps_floor(void **state) {
 	hs_quat tilt = hs_quat_mul(hs_quat_from_axis_angle(hs_v3(1, 0, 0), 0.1), hs_quat_from_axis_angle(hs_v3(0, 1, 0), 0.1));
 	b->rot = hs_quat_normalize(tilt);
 	b->pos = hs_v3(0, 0, 0.2);
-	b->pos.z -= hs_motion_pose_vertices(w, b); // its lowest vertex on the floor
-	hs_motion_keep_above_floor(w, b);
+	b->pos.z -= hs_motion_pose_vertices(&w->model, &w->scratch, b); // its lowest vertex on the floor
+	hs_motion_keep_above_floor(&w->model, &w->scratch, b);
 	assert_int_equal(b->floor_contacts, 1);
 	hs_vec3 at = b->pos;
 	hs_push_many(w, b, hs_v3(0.002, 0.001, 0.003));
@@ -214,7 +214,7 @@ static void test_skewed_push_tips_about_floor_edge(void **state) {
 	for (int frame = 0; frame < 10; ++frame) {
 		hs_vec3 c = hs_add(b->pos, hs_quat_rotate(b->rot, hs_v3(-0.05, 0.03, 0.1)));
 		assert_true(hs_push_on_floor(w, b, c, hs_add(c, hs_v3(0.002, 0.0, 0.0))));
-		hs_motion_keep_above_floor(w, b);
+		hs_motion_keep_above_floor(&w->model, &w->scratch, b);
 		assert_int_equal(b->floor_contacts, 2);
 		assert_near(lowest_z(w), 0.0, 1e-15);
 	}
@@ -255,8 +255,8 @@ static void test_push_end_stops_on_floor(void **state) {
 	b = &w->state.bodies[0];
 	b->rot = hs_quat_from_axis_angle(hs_v3(0, 1, 0), -0.349);
 	b->pos = hs_v3(0, 0, 0.2);
-	b->pos.z -= hs_motion_pose_vertices(w, b);
-	hs_motion_keep_above_floor(w, b);
+	b->pos.z -= hs_motion_pose_vertices(&w->model, &w->scratch, b);
+	hs_motion_keep_above_floor(&w->model, &w->scratch, b);
 	assert_int_equal(b->floor_contacts, 2);
 	b->prev = b->pos;
 	assert_false(hs_push_release_on_floor(w, b, false)); // after a one-point push: eq. 3 carries it on
@@ -273,17 +273,18 @@ static void test_push_many_end_stays_on_floor(void **state) {
 	hs_body *b = &w->state.bodies[0];
 	b->rot = hs_quat_from_axis_angle(hs_v3(0, 1, 0), -7e-5); // the -x edge a hair up: on its +x edge
 	b->pos = hs_v3(0, 0, 0.2);
-	b->pos.z -= hs_motion_pose_vertices(w, b);
-	hs_motion_keep_above_floor(w, b);
+	b->pos.z -= hs_motion_pose_vertices(&w->model, &w->scratch, b);
+	hs_motion_keep_above_floor(&w->model, &w->scratch, b);
 	assert_int_equal(b->floor_contacts, 2);
 	hs_vec3 at = b->pos;
 	b->prev = hs_sub(at, hs_v3(0.01, 0, 0));
 	assert_true(hs_push_release_on_floor(w, b, true));
 	assert_true(b->grounded == 1);
-	assert_true(hs_motion_pose_vertices(w, b) >= -1e-15);
+	assert_true(hs_motion_pose_vertices(&w->model, &w->scratch, b) >= -1e-15);
 	assert_true(fabs(b->pos.x - at.x) < 1e-4 && b->pos.y == at.y); // turned about its edge, not slid
+	hs_motion_pass motion = hs_motion_pass_of(w);
 	for (int n = 0; n < 30 && !b->asleep; ++n) // §4.2 on the floor from here on
-		hs_motion_step(w, b);
+		hs_motion_step(&motion, b);
 	assert_true(b->asleep);
 	assert_int_equal(b->floor_contacts, 4);
 	assert_true(fabs(b->pos.x - at.x) < 1e-4 && fabs(b->pos.z - 0.03) < 1e-12);

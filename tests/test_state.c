@@ -209,9 +209,9 @@ static void test_grid_world_same_bits(void **state) {
 	int n = on.world->model.object_count, *found = malloc((size_t)n * sizeof *found);
 	assert_non_null(found);
 	assert_int_equal(n, 24);
-	int near = hs_grid_query(on.world, hs_v3(-1.0, 0.0, 0.025), 0.05, found); // the first of the row
+	int near = hs_grid_query(&on.world->model, &on.world->cache, hs_v3(-1.0, 0.0, 0.025), 0.05, found); // the first of the row
 	assert_true(near >= 1 && near < n);
-	assert_int_equal(hs_grid_query(off.world, hs_v3(-1.0, 0.0, 0.025), 0.05, found), n); // off: all
+	assert_int_equal(hs_grid_query(&off.world->model, &off.world->cache, hs_v3(-1.0, 0.0, 0.025), 0.05, found), n); // off: all
 	free(found);
 	hs_world_destroy(on.world);
 	hs_world_destroy(off.world);
@@ -244,7 +244,7 @@ static void grown_past_the_scan(double fps) {
 	assert_int_equal(n, 24);
 	for (int i = 0; i < n; ++i) { // the held cube and the block included, where they are now
 		const hs_body *body = &on.world->state.bodies[i];
-		int near = hs_grid_query(on.world, body->pos, on.world->model.shapes[body->shape].radius, found), k = 0;
+		int near = hs_grid_query(&on.world->model, &on.world->cache, body->pos, on.world->model.shapes[body->shape].radius, found), k = 0;
 		while (k < near && found[k] != i)
 			++k;
 		if (k == near)
@@ -608,7 +608,7 @@ static void test_long_release_window_continues_identically(void **state) {
 // The hash after fields were written by hand, not through the library's calls (which mark what
 // they change): its kept object digests are dropped first.
 static uint64_t rehash(hs_world *w) {
-	hs_digest_all_stale(w);
+	hs_digest_all_stale(&w->cache);
 	return hs_world_hash(w);
 }
 
@@ -688,9 +688,9 @@ static void test_first_fault(void **state) {
 	step_hand(&r, r.world, 0, 10, NULL);
 	size_t size;
 	unsigned char *clean = save(r.world, &size);
-	hs_world_note_fault(r.world, 1); // as the step does when it freezes an object
+	hs_world_note_fault(&r.world->counters, &r.world->state, 1); // as the step does when it freezes an object
 	step_hand(&r, r.world, 10, 3, NULL);
-	hs_world_note_fault(r.world, 2);
+	hs_world_note_fault(&r.world->counters, &r.world->state, 2);
 	assert_int_equal(hs_world_get_counters(r.world).numeric_faults, 2);
 	assert_int_equal(hs_world_first_fault(r.world, &frame, &object), HS_OK);
 	assert_int_equal(frame, 10);

@@ -157,18 +157,18 @@ static void test_paper_push_piles_onto_foot(void **state) {
 	hs_object_id flat = add_box(w, hs_v3(0.1, 0.1, 0.04), hs_v3(front - 0.003 + 0.05, 0.2, 0.02));
 	hs_body *c = &w->state.bodies[cube.index1 - 1], *f = &w->state.bodies[flat.index1 - 1];
 	double fall = c->pos.z - c->prev.z;
-	assert_true(hs_stack_pile_onto(w, (int)cube.index1 - 1, (int)lb.index1 - 1));
+	assert_true(hs_stack_pile_onto(&w->model, w->state.bodies, (int)cube.index1 - 1, (int)lb.index1 - 1));
 	assert_near(c->pos.z, 0.075 - 0.5e-9, 1e-12);
 	assert_near(c->pos.z - c->prev.z, fall, 1e-15); // lifted, not thrown: its motion is as it was
-	assert_true(hs_objects_interfere(w, (int)cube.index1 - 1, (int)lb.index1 - 1));
+	assert_true(hs_objects_interfere(&w->model, w->state.bodies, w->cache.box_memo, (int)cube.index1 - 1, (int)lb.index1 - 1));
 	f->pos.y = 0.0; // the same place, in the cube's stead
 	c->pos.y = c->prev.y = 0.3;
-	assert_false(hs_stack_pile_onto(w, (int)flat.index1 - 1, (int)lb.index1 - 1));
+	assert_false(hs_stack_pile_onto(&w->model, w->state.bodies, (int)flat.index1 - 1, (int)lb.index1 - 1));
 	assert_near(f->pos.z, 0.02, 1e-15);
 	f->pos.y = f->prev.y = 0.3;
 	c->pos.y = c->prev.y = 0.0;
-	hs_grid_update(w, (int)cube.index1 - 1);
-	hs_grid_update(w, (int)flat.index1 - 1);
+	hs_grid_update(&w->model, w->state.bodies, &w->cache, (int)cube.index1 - 1);
+	hs_grid_update(&w->model, w->state.bodies, &w->cache, (int)flat.index1 - 1);
 	hs_object_state s = run(w, cube, 30);
 	assert_near(s.position.z, 0.075 - 0.5e-9, 1e-12); // held up by the foot, the foot by the floor
 	hs_world_destroy(w);
@@ -367,9 +367,10 @@ static void test_support_carried_by_lifted_support(void **state) {
 		lower->pos = hs_v3(0.000762 * jitter(&seed), 0.000762 * jitter(&seed), 0.025 + 0.1 * i / 60.0 + 0.000762 * jitter(&seed));
 		lower->rot = hs_quat_from_rpy(0.15 * HS_PI / 180 * jitter(&seed), 0.15 * HS_PI / 180 * jitter(&seed), 0.0);
 		lower->held = 1;
-		hs_wake(w, li);
-		hs_grid_update(w, li);
-		hs_support_wake_neighbours(w, li, lower->prev);
+		hs_wake(w->state.bodies, &w->cache, li);
+		hs_grid_update(&w->model, w->state.bodies, &w->cache, li);
+		hs_broadphase bp = hs_broadphase_of(w);
+		hs_support_wake_neighbours(&bp, li, lower->prev);
 		hs_world_step(w);
 		hs_world_object_state(w, bar, &a);
 		hs_world_object_state(w, cube, &b);
@@ -429,9 +430,10 @@ static void test_support_push_moves_what_is_beside(void **state) {
 	b->pos = hs_add(b->pos, hs_v3(0.01, 0, 0));
 	b->held = 1;
 	b->contact = HS_CONTACT_PUSH_MANY;
-	hs_wake(w, i);
-	hs_grid_update(w, i);
-	hs_support_wake_neighbours(w, i, b->prev);
+	hs_wake(w->state.bodies, &w->cache, i);
+	hs_grid_update(&w->model, w->state.bodies, &w->cache, i);
+	hs_broadphase bp = hs_broadphase_of(w);
+	hs_support_wake_neighbours(&bp, i, b->prev);
 	assert_near(w->state.bodies[(int)first.index1 - 1].pos.x, 0.0855, 1e-15);  // 9.5 mm into it: moved 1 cm, the gap kept
 	assert_near(w->state.bodies[(int)second.index1 - 1].pos.x, 0.1405, 1e-15); // moved into by the first
 	assert_near(w->state.bodies[(int)behind.index1 - 1].pos.x, -0.08, 0);
@@ -455,9 +457,10 @@ static void test_support_push_does_not_sink(void **state) {
 	b->pos = hs_add(b->pos, hs_v3(0.002, 0, -0.003));
 	b->held = 1;
 	b->contact = HS_CONTACT_PUSH_ONE;
-	hs_wake(w, i);
-	hs_grid_update(w, i);
-	hs_support_wake_neighbours(w, i, b->prev);
+	hs_wake(w->state.bodies, &w->cache, i);
+	hs_grid_update(&w->model, w->state.bodies, &w->cache, i);
+	hs_broadphase bp = hs_broadphase_of(w);
+	hs_support_wake_neighbours(&bp, i, b->prev);
 	assert_near(b->pos.z, 0.12, 1e-12);
 	assert_vec3_near(hs_sub(b->pos, b->prev), hs_v3(0.002, 0, -0.003), 1e-15);
 	hs_world_destroy(w);

@@ -167,8 +167,8 @@ void hs_grasp_let_go_in_place(hs_world *world, int h) {
 		b->prev = b->pos; // no velocity: it drops from where it is
 		b->rot_prev = b->rot;
 		b->spin = hs_quat_identity();
-		hs_wake(world, i);
-		hs_digest_stale(world, i);
+		hs_wake(world->state.bodies, &world->cache, i);
+		hs_digest_stale(&world->cache, i);
 	}
 }
 
@@ -268,7 +268,7 @@ static int set_aside_released(hs_world *world, int i, int first, int n) {
 	double spread = whole_hand_opening(hand);
 	if (spread > body->grip_spread) { // the object may sleep meanwhile: its hash digest is stale
 		body->grip_spread = spread;
-		hs_digest_stale(world, i);
+		hs_digest_stale(&world->cache, i);
 	}
 	hs_contact *cs = &world->out.contacts[first];
 	int kept = 0;
@@ -290,7 +290,7 @@ static int set_aside_released(hs_world *world, int i, int first, int n) {
 		return n; // the object falls clear of a finger it rested on: still that hand's release
 	if (kept == n || closes) { // the rule lapses
 		body->released_by = 0;
-		hs_digest_stale(world, i);
+		hs_digest_stale(&world->cache, i);
 		return n;
 	}
 	world->out.contact_count = first + kept;

@@ -90,6 +90,7 @@ static void carry_along(hs_world *world, int moved, int current, rigid_move m) {
 	if (world->model.def.stacking != HS_STACKING_PAPER || !(hs_length_sq(d) > 0.0 || turned))
 		return;
 	hs_quat back = hs_quat_conj(m.turn);
+	hs_broadphase bp = hs_broadphase_of(world);
 	int head = 0, tail = 0;
 	world->scratch.queue[tail++] = moved;
 	while (head < tail) {
@@ -99,7 +100,7 @@ static void carry_along(hs_world *world, int moved, int current, rigid_move m) {
 		hs_vec3 was = hs_add(m.from, hs_quat_rotate(back, hs_sub(moved_body->pos, m.to)));
 		hs_quat was_rot = hs_quat_normalize(hs_quat_mul(back, moved_body->rot));
 		double ra = world->model.shapes[moved_body->shape].radius;
-		int n = hs_grid_near_either(world, moved_body->pos, was, ra); // both are tested below
+		int n = hs_grid_near_either(&bp, moved_body->pos, was, ra); // both are tested below
 		for (int k = 0; k < n; ++k) {
 			int j = world->scratch.near[k];
 			hs_body *b = &world->state.bodies[j];
@@ -115,9 +116,9 @@ static void carry_along(hs_world *world, int moved, int current, rigid_move m) {
 			bool now = bodies_overlap(world, i, j), before = overlap_at_pose(world, i, was, was_rot, j);
 			if (!now && !before)
 				continue;
-			if (!before && hs_stack_pile_onto(world, j, i)) { // met from the side below its G: piled on i
-				hs_wake(world, j);
-				hs_grid_update(world, j);
+			if (!before && hs_stack_pile_onto(&world->model, world->state.bodies, j, i)) { // met from the side below its G: piled on i
+				hs_wake(world->state.bodies, &world->cache, j);
+				hs_grid_update(&world->model, world->state.bodies, &world->cache, j);
 				continue;
 			}
 			hs_vec3 at = hs_add(m.to, hs_quat_rotate(m.turn, hs_sub(b->pos, m.from)));
@@ -128,9 +129,9 @@ static void carry_along(hs_world *world, int moved, int current, rigid_move m) {
 				b->rot_prev = hs_quat_normalize(hs_quat_mul(m.turn, b->rot_prev));
 			}
 			b->carried = 1;
-			hs_wake(world, j);
-			hs_motion_keep_above_floor(world, b);
-			hs_grid_update(world, j);
+			hs_wake(world->state.bodies, &world->cache, j);
+			hs_motion_keep_above_floor(&world->model, &world->scratch, b);
+			hs_grid_update(&world->model, world->state.bodies, &world->cache, j);
 			world->scratch.queue[tail++] = j;
 			if (j > current) // it may have come within a hand's reach: look at it this frame
 				add_candidate(&world->scratch, j);
@@ -285,7 +286,8 @@ static void collect_candidates(hs_world *world) {
 	world->scratch.candidate_count = 0;
 	for (int h = 0; h < world->model.hand_count; ++h) {
 		const hs_hand *hand = &world->state.hands[h];
-		int n = hs_grid_near(world, hand->cache.sweep_center, hand->cache.sweep_radius);
+		hs_broadphase bp = hs_broadphase_of(world);
+		int n = hs_grid_near(&bp, hand->cache.sweep_center, hand->cache.sweep_radius);
 		for (int k = 0; k < n; ++k) {
 			const hs_body *b = &world->state.bodies[world->scratch.near[k]];
 			if (!untouched(b) || hs_contact_hand_near(&world->model, b, hand, 0.0))
@@ -452,7 +454,7 @@ void hs_manipulate(hs_world *world) {
 		bool was_held = body->held != 0;
 		hs_contact_state last = (hs_contact_state)body->contact;
 		if (state != last) // changed, even if it sleeps on (an object moved is woken, hs_wake)
-			hs_digest_stale(world, i);
+			hs_digest_stale(&world->cache, i);
 		body->contact = (uint8_t)state;
 		body->held = 0;
 		if (state == HS_CONTACT_NONE) {
@@ -462,7 +464,7 @@ void hs_manipulate(hs_world *world) {
 		}
 		move_by_contacts(world, body, state, &world->out.contacts[first], n, continues);
 		hs_pose carried_to = {body->pos, body->rot};
-		hs_motion_keep_above_floor(world, body); // §4.2 for a pushed object; the trajectory shows its floor contacts
+		hs_motion_keep_above_floor(&world->model, &world->scratch, body); // §4.2 for a pushed object; the trajectory shows its floor contacts
 		if (state == HS_CONTACT_GRASP && pose_changed(body, carried_to)) // pressed into the floor: it slid in the grip
 			hs_grasp_slip(body, &world->state.hands[body->grasped_by - 1]);
 		bool letter = world->model.def.paper_push_end; // eq. 3 from its last two positions, as they fall
@@ -470,11 +472,11 @@ void hs_manipulate(hs_world *world) {
 		if (letter || !push_drives_nothing(state, &world->out.contacts[first], n, at_rest)) // else its motion is kept
 			remember_motion(body, old_pos, old_rot, after);
 		body->held = 1;
-		hs_wake(world, i);
+		hs_wake(world->state.bodies, &world->cache, i);
 		body->grounded = 0;
-		hs_grid_update(world, i);
-		if (world->model.def.stacking == HS_STACKING_SUPPORT)
-			hs_support_wake_neighbours(world, i, body->prev); // what rested on it or against it looks again
+		hs_grid_update(&world->model, world->state.bodies, &world->cache, i);
+		if (world->model.def.stacking == HS_STACKING_SUPPORT) // what rested on it or against it looks again
+			hs_support_wake_neighbours(&(hs_broadphase){&world->model, world->state.bodies, &world->cache, &world->scratch}, i, body->prev);
 		else
 			carry_along(world, i, i,
 			            (rigid_move){old_pos, body->pos, hs_quat_normalize(hs_quat_mul(body->rot, hs_quat_conj(old_rot)))});

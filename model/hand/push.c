@@ -26,8 +26,8 @@
 // that a first fingertip tipped onto a corner was lifted off the floor by the next frame's push
 // at several points (its vertical part) and flew on by eq. 3 when the push ended.
 static bool lies_on_floor(hs_world *world, const hs_body *body, int *count) {
-	hs_motion_pose_vertices(world, body);
-	*count = hs_motion_floor_points(world, body);
+	hs_motion_pose_vertices(&world->model, &world->scratch, body);
+	*count = hs_motion_floor_points(&world->model, &world->scratch, body);
 	return *count >= 1;
 }
 
@@ -79,8 +79,8 @@ static hs_vec3 floor_edge_along(const hs_world *world, int count, hs_vec3 p, hs_
 // The floor points are those of the pose eq. 2's yaw turned and T slid: the edge it stands on.
 static bool tip_about_floor_edge(hs_world *world, hs_body *body, hs_vec3 c, hs_vec3 cb, hs_vec3 n_h,
                                  hs_vec3 r_swing, hs_vec3 slid) {
-	hs_motion_pose_vertices(world, body);
-	int count = hs_motion_floor_points(world, body);
+	hs_motion_pose_vertices(&world->model, &world->scratch, body);
+	int count = hs_motion_floor_points(&world->model, &world->scratch, body);
 	if (count < 1)
 		return false;
 	hs_vec3 a = hs_normalize(n_h);
@@ -168,11 +168,12 @@ bool hs_push_release_on_floor(hs_world *world, hs_body *body, bool many) {
 		return false;
 	double dt = world->model.def.dt;
 	hs_vec3 gm = hs_add(hs_sub(body->pos, body->prev), hs_scale(world->model.def.gravity, dt * dt));
-	bool stable = hs_motion_settle(world, body, count, 0.0, gm, many, NULL);
+	hs_motion_pass m = hs_motion_pass_of(world);
+	bool stable = hs_motion_settle(&m, body, count, 0.0, gm, many, NULL);
 	if (!stable && !many)
 		return false;
 	body->rot_prev = body->rot;
 	body->grounded = 1;
-	body->floor_contacts = stable ? count : hs_motion_floor_points(world, body);
+	body->floor_contacts = stable ? count : hs_motion_floor_points(&world->model, &world->scratch, body);
 	return true;
 }

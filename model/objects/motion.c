@@ -17,49 +17,49 @@
 // A tipping turn an object beside it stops within this angle (rad) is none: it leans there at rest.
 #define HS_LEAN_REST 1e-6
 
-double hs_motion_pose_vertices(hs_world *world, const hs_body *body) {
-	const hs_shape *shape = &world->model.shapes[body->shape];
+double hs_motion_pose_vertices(const hs_world_model *model, hs_world_scratch *scratch, const hs_body *body) {
+	const hs_shape *shape = &model->shapes[body->shape];
 	double zmin = INFINITY;
 	for (int i = 0; i < shape->vertex_count; ++i) {
 		hs_vec3 p = hs_add(body->pos, hs_quat_rotate(body->rot, shape->vertices[i]));
-		world->scratch.posed[i] = p;
+		scratch->posed[i] = p;
 		zmin = p.z < zmin ? p.z : zmin;
 	}
 	return zmin;
 }
 
-int hs_motion_floor_points(hs_world *world, const hs_body *body) {
-	const hs_shape *shape = &world->model.shapes[body->shape];
+int hs_motion_floor_points(const hs_world_model *model, hs_world_scratch *scratch, const hs_body *body) {
+	const hs_shape *shape = &model->shapes[body->shape];
 	int n = 0;
 	for (int i = 0; i < shape->vertex_count; ++i) {
-		hs_vec3 p = world->scratch.posed[i];
-		if (p.z <= world->model.def.floor_tolerance)
-			world->scratch.points[n++] = (hs_vec2){p.x, p.y};
+		hs_vec3 p = scratch->posed[i];
+		if (p.z <= model->def.floor_tolerance)
+			scratch->points[n++] = (hs_vec2){p.x, p.y};
 	}
 	return n;
 }
 
 // §4.2: lift the object so the vertex that penetrated deepest is on the floor.
-static void rectify(hs_world *world, hs_body *body, double zmin) {
+static void rectify(const hs_world_model *model, hs_world_scratch *scratch, hs_body *body, double zmin) {
 	if (zmin >= -HS_RECTIFY_SLOP)
 		return;
 	body->pos.z -= zmin;
-	const hs_shape *shape = &world->model.shapes[body->shape];
+	const hs_shape *shape = &model->shapes[body->shape];
 	for (int i = 0; i < shape->vertex_count; ++i)
-		world->scratch.posed[i].z -= zmin;
+		scratch->posed[i].z -= zmin;
 }
 
-void hs_motion_keep_above_floor(hs_world *world, hs_body *body) {
+void hs_motion_keep_above_floor(const hs_world_model *model, hs_world_scratch *scratch, hs_body *body) {
 	// Its bounding sphere clear of the floor's tolerance (with a slack far above the rounding of a
 	// posed vertex): no vertex lies below it, so there is nothing to rectify and no floor contact,
 	// the answer of posing every vertex (O(V) a frame for a held many-faced object) without it.
-	double clear = fmax(world->model.def.floor_tolerance, 0.0);
-	if (body->pos.z - world->model.shapes[body->shape].radius * (1.0 + 1e-9) - 1e-12 > clear) {
+	double clear = fmax(model->def.floor_tolerance, 0.0);
+	if (body->pos.z - model->shapes[body->shape].radius * (1.0 + 1e-9) - 1e-12 > clear) {
 		body->floor_contacts = 0;
 		return;
 	}
-	rectify(world, body, hs_motion_pose_vertices(world, body));
-	body->floor_contacts = hs_motion_floor_points(world, body);
+	rectify(model, scratch, body, hs_motion_pose_vertices(model, scratch, body));
+	body->floor_contacts = hs_motion_floor_points(model, scratch, body);
 }
 
 static void stop(hs_body *body) {
@@ -82,15 +82,15 @@ static hs_vec2 project_g(hs_vec3 g, hs_vec3 gm, double height) {
 // posed vertices turn about the unit `axis` through `c`; `limit` when none does. The plane is the
 // floor z = 0, or on supports (`sup`) the face they rest on (eq. 7's first touch against the
 // support; a vertex only lands where it is over a support, not past its edge).
-static double first_touch(hs_world *world, const hs_body *body, hs_vec3 c, hs_vec3 axis,
+static double first_touch(const hs_motion_pass *pass, const hs_body *body, hs_vec3 c, hs_vec3 axis,
                           double limit, const hs_settle_supports *sup) {
-	const hs_shape *shape = &world->model.shapes[body->shape];
+	const hs_shape *shape = &pass->model->shapes[body->shape];
 	hs_vec3 n = sup ? sup->normal : hs_v3(0, 0, 1);
 	double off = sup ? sup->offset : 0.0;
 	double best = limit;
 	for (int i = 0; i < shape->vertex_count; ++i) {
-		hs_vec3 p = world->scratch.posed[i];
-		if (hs_dot(n, p) <= off + world->model.def.floor_tolerance)
+		hs_vec3 p = pass->scratch->posed[i];
+		if (hs_dot(n, p) <= off + pass->model->def.floor_tolerance)
 			continue; // pivot vertices stay, other contact vertices lift (rule (3))
 		// height over the plane h(θ) = h0 + A cos θ + B sin θ = h0 + M cos(θ - φ)
 		hs_vec3 r = hs_sub(p, c);
@@ -110,7 +110,7 @@ static double first_touch(hs_world *world, const hs_body *body, hs_vec3 c, hs_ve
 			while (t > 2.0 * HS_PI)
 				t -= 2.0 * HS_PI;
 			if (t < best && sup &&
-			    !sup->over(world, sup, hs_add(c, hs_quat_rotate(hs_quat_from_axis_angle(axis, t), r))))
+			    !sup->over(pass, sup, hs_add(c, hs_quat_rotate(hs_quat_from_axis_angle(axis, t), r))))
 				continue; // it passes beyond the support's edge
 			best = t < best ? t : best;
 		}
@@ -124,10 +124,10 @@ static double first_touch(hs_world *world, const hs_body *body, hs_vec3 c, hs_ve
 // it back onto its base. G keeps its motion across the edge (its part along the edge is stopped:
 // a thrown cube kept it and tumbled on) and rule (2) turns it about the edge next frame
 // (docs/model.md §5); a landing on a face stops it, as before.
-static void keep_turning_about_edge(hs_world *world, hs_body *body, hs_vec3 motion) {
-	if (hs_motion_floor_points(world, body) != 2)
+static void keep_turning_about_edge(const hs_world_model *model, hs_world_scratch *scratch, hs_body *body, hs_vec3 motion) {
+	if (hs_motion_floor_points(model, scratch, body) != 2)
 		return;
-	const hs_vec2 *f = world->scratch.points;
+	const hs_vec2 *f = scratch->points;
 	hs_vec3 e = hs_v3(f[1].x - f[0].x, f[1].y - f[0].y, 0.0);
 	double len = hs_length(e);
 	if (!(len > 0.0))
@@ -144,13 +144,14 @@ static void keep_turning_about_edge(hs_world *world, hs_body *body, hs_vec3 moti
 // over onto a cube beside it stops where it leans on the cube's edge, as the floor stops a turn
 // (eq. 7's first touch), instead of turning into the cube and being lifted out of it, off the
 // floor, frame after frame.
-static double first_touch_neighbour(hs_world *world, const hs_body *body, hs_vec3 c, hs_vec3 axis, double limit) {
-	const hs_shape *shape = &world->model.shapes[body->shape];
+static double first_touch_neighbour(const hs_world_model *model, const hs_body *bodies, const hs_body *body, hs_vec3 c,
+                                    hs_vec3 axis, double limit) {
+	const hs_shape *shape = &model->shapes[body->shape];
 	double reach = shape->radius + hs_length(hs_sub(body->pos, c)) * limit;
 	double best = limit;
-	for (int j = 0; j < world->model.object_count; ++j) {
-		const hs_body *b = &world->state.bodies[j];
-		const hs_shape *sb = &world->model.shapes[b->shape];
+	for (int j = 0; j < model->object_count; ++j) {
+		const hs_body *b = &bodies[j];
+		const hs_shape *sb = &model->shapes[b->shape];
 		double r = reach + sb->radius;
 		if (b == body || hs_length_sq(hs_sub(b->pos, body->pos)) > r * r)
 			continue;
@@ -175,7 +176,7 @@ static double first_touch_neighbour(hs_world *world, const hs_body *body, hs_vec
 }
 
 // Rules (1)-(3) of §4.2 for an unstable object: pick the contact vertex or edge and turn about it.
-static void tip(hs_world *world, hs_body *body, const hs_vec2 *hull, int hull_count, double height,
+static void tip(const hs_motion_pass *m, hs_body *body, const hs_vec2 *hull, int hull_count, double height,
                 hs_vec2 g_proj, hs_vec3 gm, const hs_settle_supports *sup) {
 	hs_vec3 g = body->pos;
 	hs_vec3 c, line = hs_v3(0, 0, 0);
@@ -215,12 +216,12 @@ static void tip(hs_world *world, hs_body *body, const hs_vec2 *hull, int hull_co
 	if (about_line)
 		axis = hs_dot(line, axis) >= 0.0 ? line : hs_neg(line);
 	double theta = hs_atan(r_len / cg_len); // eq. 7
-	double touch = first_touch(world, body, c, axis, theta, sup);
+	double touch = first_touch(m, body, c, axis, theta, sup);
 	if (!sup) { // on the floor alone: an object beside it can stop the turn too
-		double lean = first_touch_neighbour(world, body, c, axis, touch);
+		double lean = first_touch_neighbour(m->model, m->bodies, body, c, axis, touch);
 		if (lean < touch && lean <= HS_LEAN_REST) { // leaning on it already: it rests there (§4.1)
 			stop(body);
-			world->counters.object_steps++;
+			m->counters->object_steps++;
 			return;
 		}
 		touch = lean;
@@ -233,45 +234,45 @@ static void tip(hs_world *world, hs_body *body, const hs_vec2 *hull, int hull_co
 	body->pos = hs_add(c, hs_quat_rotate(q, cg));
 	body->rot = hs_quat_normalize(hs_quat_mul(q, body->rot));
 	body->prev = landed ? body->pos : old;
-	rectify(world, body, hs_motion_pose_vertices(world, body));
+	rectify(m->model, m->scratch, body, hs_motion_pose_vertices(m->model, m->scratch, body));
 	// on the floor alone, in paper mode: support mode's step of an object on the floor and a
 	// support read the kept motion as a turn over both and sank a cube 5 µm into the floor
-	if (landed && hull_count == 1 && !sup && height == 0.0 && world->model.def.stacking == HS_STACKING_PAPER &&
-	    !world->model.def.paper_tipping)
-		keep_turning_about_edge(world, body, motion);
-	world->counters.object_steps++;
+	if (landed && hull_count == 1 && !sup && height == 0.0 && m->model->def.stacking == HS_STACKING_PAPER &&
+	    !m->model->def.paper_tipping)
+		keep_turning_about_edge(m->model, m->scratch, body, motion);
+	m->counters->object_steps++;
 }
 
-bool hs_motion_settle(hs_world *world, hs_body *body, int count, double height, hs_vec3 gm, bool may_tip,
+bool hs_motion_settle(const hs_motion_pass *m, hs_body *body, int count, double height, hs_vec3 gm, bool may_tip,
                       const hs_settle_supports *sup) {
-	int hull_count = hs_hull_build(world->scratch.points, count, world->scratch.hull);
+	int hull_count = hs_hull_build(m->scratch->points, count, m->scratch->hull);
 	hs_vec2 g_proj = project_g(body->pos, gm, height);
-	if (hs_hull_contains(world->scratch.hull, hull_count, g_proj, HS_RECTIFY_SLOP)) {
+	if (hs_hull_contains(m->scratch->hull, hull_count, g_proj, HS_RECTIFY_SLOP)) {
 		stop(body);
 		return true;
 	}
 	body->asleep = 0;
 	if (may_tip)
-		tip(world, body, world->scratch.hull, hull_count, height, g_proj, gm, sup);
+		tip(m, body, m->scratch->hull, hull_count, height, g_proj, gm, sup);
 	return false;
 }
 
 // Stability with the hull of the floor contacts and G' (eq. 4-5, Fig. 5); tip when unstable.
-static void settle_or_tip(hs_world *world, hs_body *body, hs_vec3 gm, bool may_tip) {
-	body->floor_contacts = hs_motion_floor_points(world, body);
-	if (!hs_motion_settle(world, body, body->floor_contacts, 0.0, gm, may_tip, NULL) && may_tip)
-		body->floor_contacts = hs_motion_floor_points(world, body);
+static void settle_or_tip(const hs_motion_pass *m, hs_body *body, hs_vec3 gm, bool may_tip) {
+	body->floor_contacts = hs_motion_floor_points(m->model, m->scratch, body);
+	if (!hs_motion_settle(m, body, body->floor_contacts, 0.0, gm, may_tip, NULL) && may_tip)
+		body->floor_contacts = hs_motion_floor_points(m->model, m->scratch, body);
 }
 
 // Eq. 3: P(t) = 2P(t - dt) - P(t - 2dt) + g dt², and the carried-over relative rotation.
 // True when another object's bounding sphere comes within `reach` of this one's centre (a landing
 // is rare: a pass over the objects costs nothing a frame).
-static bool near_another(const hs_world *world, const hs_body *body, double reach) {
-	for (int j = 0; j < world->model.object_count; ++j) {
-		const hs_body *b = &world->state.bodies[j];
+static bool near_another(const hs_world_model *model, const hs_body *bodies, const hs_body *body, double reach) {
+	for (int j = 0; j < model->object_count; ++j) {
+		const hs_body *b = &bodies[j];
 		if (b == body)
 			continue;
-		double r = reach + world->model.shapes[b->shape].radius;
+		double r = reach + model->shapes[b->shape].radius;
 		hs_vec3 d = hs_sub(b->pos, body->pos);
 		if (hs_dot(d, d) < r * r)
 			return true;
@@ -284,72 +285,72 @@ static bool near_another(const hs_world *world, const hs_body *body, double reac
 // its lowest vertex's fall that lay below the floor; §4.2's lift (rectify) then puts it on the
 // floor as before. Lifted straight up from the frame's end instead, a throw at 12 frames/s landed
 // up to v_x dt = 0.2 m further on, and where depended on where the frames fell on its flight.
-static void back_to_floor(hs_world *world, hs_body *body, hs_vec3 gm, double zmin) {
-	const hs_shape *shape = &world->model.shapes[body->shape];
+static void back_to_floor(const hs_motion_pass *m, hs_body *body, hs_vec3 gm, double zmin) {
+	const hs_shape *shape = &m->model->shapes[body->shape];
 	int low = 0;
 	for (int i = 1; i < shape->vertex_count; ++i)
-		low = world->scratch.posed[i].z < world->scratch.posed[low].z ? i : low;
+		low = m->scratch->posed[i].z < m->scratch->posed[low].z ? i : low;
 	double was = body->prev.z + hs_quat_rotate(body->rot_prev, shape->vertices[low]).z;
 	if (!(was > 0.0) || !(was > zmin)) // touching already, or not falling onto the floor
 		return;
 	double f = zmin / (was - zmin); // in [-1, 0): minus the part of its fall below the floor
 	double dx = f * gm.x, dy = f * gm.y;
-	if (near_another(world, body, shape->radius + sqrt(dx * dx + dy * dy)))
+	if (near_another(m->model, m->bodies, body, shape->radius + sqrt(dx * dx + dy * dy)))
 		return; // moved back it could meet that object: lifted straight up, as §4.2
 	body->pos.x += dx;
 	body->pos.y += dy;
 	for (int i = 0; i < shape->vertex_count; ++i) {
-		world->scratch.posed[i].x += dx;
-		world->scratch.posed[i].y += dy;
+		m->scratch->posed[i].x += dx;
+		m->scratch->posed[i].y += dy;
 	}
 }
 
-static void fly(hs_world *world, hs_body *body) {
-	double dt = world->model.def.dt;
+static void fly(const hs_motion_pass *m, hs_body *body) {
+	double dt = m->model->def.dt;
 	bool touching = body->floor_contacts > 0; // when the frame began
-	hs_vec3 gm = hs_add(hs_sub(body->pos, body->prev), hs_scale(world->model.def.gravity, dt * dt));
+	hs_vec3 gm = hs_add(hs_sub(body->pos, body->prev), hs_scale(m->model->def.gravity, dt * dt));
 	body->prev = body->pos;
 	body->pos = hs_add(body->pos, gm);
 	body->rot = hs_quat_normalize(hs_quat_mul(body->spin, body->rot));
-	world->counters.object_steps++;
+	m->counters->object_steps++;
 
-	const hs_shape *shape = &world->model.shapes[body->shape];
-	if (world->model.skip_work && body->pos.z - shape->radius > world->model.def.floor_tolerance) {
+	const hs_shape *shape = &m->model->shapes[body->shape];
+	if (m->model->skip_work && body->pos.z - shape->radius > m->model->def.floor_tolerance) {
 		body->floor_contacts = 0; // the bounding sphere is clear of the floor
 		return;
 	}
-	world->counters.floor_checks++;
-	double zmin = hs_motion_pose_vertices(world, body);
-	if (zmin > world->model.def.floor_tolerance) {
+	m->counters->floor_checks++;
+	double zmin = hs_motion_pose_vertices(m->model, m->scratch, body);
+	if (zmin > m->model->def.floor_tolerance) {
 		body->floor_contacts = 0;
 		return;
 	}
-	if (!world->model.def.paper_landing && !touching && zmin < 0.0)
-		back_to_floor(world, body, gm, zmin);
-	rectify(world, body, zmin);
+	if (!m->model->def.paper_landing && !touching && zmin < 0.0)
+		back_to_floor(m, body, gm, zmin);
+	rectify(m->model, m->scratch, body, zmin);
 	body->spin = hs_quat_identity(); // §4.1: rotation inertia ends at the floor
 	body->grounded = 1;
-	settle_or_tip(world, body, gm, false); // landing: tipping starts next frame
+	settle_or_tip(m, body, gm, false); // landing: tipping starts next frame
 }
 
 // In floor contact: no translation; stable → rest, otherwise rules (1)-(3).
-static void on_floor(hs_world *world, hs_body *body) {
-	double dt = world->model.def.dt;
-	hs_vec3 gm = hs_add(hs_sub(body->pos, body->prev), hs_scale(world->model.def.gravity, dt * dt));
-	world->counters.floor_checks++;
-	double zmin = hs_motion_pose_vertices(world, body);
-	if (zmin > world->model.def.floor_tolerance) { // lifted off (moved by a hand): fly again
+static void on_floor(const hs_motion_pass *m, hs_body *body) {
+	double dt = m->model->def.dt;
+	hs_vec3 gm = hs_add(hs_sub(body->pos, body->prev), hs_scale(m->model->def.gravity, dt * dt));
+	m->counters->floor_checks++;
+	double zmin = hs_motion_pose_vertices(m->model, m->scratch, body);
+	if (zmin > m->model->def.floor_tolerance) { // lifted off (moved by a hand): fly again
 		body->grounded = 0;
-		fly(world, body);
+		fly(m, body);
 		return;
 	}
-	rectify(world, body, zmin);
-	settle_or_tip(world, body, gm, true);
+	rectify(m->model, m->scratch, body, zmin);
+	settle_or_tip(m, body, gm, true);
 }
 
-void hs_motion_step(hs_world *world, hs_body *body) {
+void hs_motion_step(const hs_motion_pass *m, hs_body *body) {
 	if (body->grounded)
-		on_floor(world, body);
+		on_floor(m, body);
 	else
-		fly(world, body);
+		fly(m, body);
 }

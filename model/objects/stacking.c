@@ -52,8 +52,8 @@ double hs_stack_lift_out(const hs_shape *sa, const hs_body *a, const hs_shape *s
 }
 
 // a, posed at `pos`, sinks into b deeper than touching.
-static bool penetrates(const hs_world *world, const hs_body *a, hs_vec3 pos, const hs_body *b) {
-	const hs_shape *sa = &world->model.shapes[a->shape], *sb = &world->model.shapes[b->shape];
+static bool penetrates(const hs_world_model *model, const hs_body *a, hs_vec3 pos, const hs_body *b) {
+	const hs_shape *sa = &model->shapes[a->shape], *sb = &model->shapes[b->shape];
 	double r = sa->radius + sb->radius;
 	if (hs_length_sq(hs_sub(pos, b->pos)) > r * r)
 		return false;
@@ -66,13 +66,13 @@ static bool penetrates(const hs_world *world, const hs_body *a, hs_vec3 pos, con
 // crossing: no vertex strictly inside) is found by bisection on the lift, ending within 0.1 um
 // clear of touching (libccd GJK counts touching within ~1e-12 m as interference, and its builds
 // differ by a few ulps between architectures: a bisection to 1e-13 m decided its last probes by them).
-static double lift_from(const hs_world *world, const hs_body *a, const hs_body *b) {
+static double lift_from(const hs_world_model *model, const hs_body *a, const hs_body *b) {
 	hs_body lifted = *a;
-	double lo = hs_stack_lift_out(&world->model.shapes[a->shape], a, &world->model.shapes[b->shape], b);
+	double lo = hs_stack_lift_out(&model->shapes[a->shape], a, &model->shapes[b->shape], b);
 	lifted.pos.z = a->pos.z + lo;
-	if (!penetrates(world, &lifted, lifted.pos, b))
+	if (!penetrates(model, &lifted, lifted.pos, b))
 		return lo;
-	const hs_shape *sa = &world->model.shapes[a->shape], *sb = &world->model.shapes[b->shape];
+	const hs_shape *sa = &model->shapes[a->shape], *sb = &model->shapes[b->shape];
 	double hi = lo + 2.0 * (sa->radius + sb->radius); // clear of b for certain
 	for (int k = 0; k < 64 && hi - lo > 1e-7; ++k) {
 		double mid = 0.5 * (lo + hi);
@@ -85,15 +85,15 @@ static double lift_from(const hs_world *world, const hs_body *a, const hs_body *
 	return hi;
 }
 
-bool hs_stack_pile_onto(hs_world *world, int object, int mover) {
-	hs_body *b = &world->state.bodies[object];
-	const hs_shape *shape = &world->model.shapes[b->shape];
+bool hs_stack_pile_onto(const hs_world_model *model, hs_body *bodies, int object, int mover) {
+	hs_body *b = &bodies[object];
+	const hs_shape *shape = &model->shapes[b->shape];
 	double low = INFINITY;
 	for (int i = 0; i < shape->vertex_count; ++i) {
 		double z = b->pos.z + hs_quat_rotate(b->rot, shape->vertices[i]).z;
 		low = z < low ? z : low;
 	}
-	double lift = lift_from(world, b, &world->state.bodies[mover]);
+	double lift = lift_from(model, b, &bodies[mover]);
 	if (!(lift <= b->pos.z - low))
 		return false;
 	// it stays sunk in by half the slop: interfering, so the next frames carry it along (§4.3),
@@ -104,23 +104,23 @@ bool hs_stack_pile_onto(hs_world *world, int object, int mover) {
 	return true;
 }
 
-static bool is_under(const hs_world *world, int object, int j, double z) {
-	return j != object && world->state.bodies[j].pos.z <= z;
+static bool is_under(const hs_body *bodies, int object, int j, double z) {
+	return j != object && bodies[j].pos.z <= z;
 }
 
 // Out of one object under it: vertically (§4.2) when that lift is at most twice the least
 // penetration depth (the contact faces up, within 60 deg); against a steeper face (a wall, where a
 // vertical lift grows as 1 / cos of the slope, up to the object's height) along libccd's
 // direction of least penetration.
-static bool rectify_against(hs_world *world, hs_body *body, const hs_body *under) {
-	const hs_shape *sa = &world->model.shapes[body->shape], *sb = &world->model.shapes[under->shape];
+static bool rectify_against(const hs_world_model *model, hs_body *body, const hs_body *under) {
+	const hs_shape *sa = &model->shapes[body->shape], *sb = &model->shapes[under->shape];
 	double r = sa->radius + sb->radius, depth = 0.0;
 	hs_vec3 dir;
 	if (hs_length_sq(hs_sub(body->pos, under->pos)) > r * r ||
 	    !hs_shapes_penetration(sb, under->pos, under->rot, sa, body->pos, body->rot, &depth, &dir) ||
 	    !(depth > HS_STACK_SLOP))
 		return false;
-	double lift = lift_from(world, body, under);
+	double lift = lift_from(model, body, under);
 	if (lift <= 2.0 * depth)
 		body->pos.z += lift; // §4.2 rectification, against an object
 	else
@@ -128,15 +128,15 @@ static bool rectify_against(hs_world *world, hs_body *body, const hs_body *under
 	return true;
 }
 
-bool hs_stack_rectify(hs_world *world, int object) {
-	hs_body *body = &world->state.bodies[object];
+bool hs_stack_rectify(const hs_broadphase *bp, int object) {
+	hs_body *body = &bp->bodies[object];
 	bool inside = false;
 	for (int pass = 0; pass < 4; ++pass) { // leaving one may not leave another: look again
 		bool moved = false;
-		int n = hs_grid_near(world, body->pos, world->model.shapes[body->shape].radius);
+		int n = hs_grid_near(bp, body->pos, bp->model->shapes[body->shape].radius);
 		for (int k = 0; k < n; ++k)
-			if (is_under(world, object, world->scratch.near[k], body->pos.z))
-				moved = rectify_against(world, body, &world->state.bodies[world->scratch.near[k]]) || moved;
+			if (is_under(bp->bodies, object, bp->scratch->near[k], body->pos.z))
+				moved = rectify_against(bp->model, body, &bp->bodies[bp->scratch->near[k]]) || moved;
 		if (!moved)
 			break;
 		inside = true;
@@ -146,16 +146,17 @@ bool hs_stack_rectify(hs_world *world, int object) {
 
 // The first sub-pose (fraction of the frame's motion) at which the body sinks into an object
 // under it; -1 when none does.
-static double first_contact(hs_world *world, int object, hs_vec3 from, hs_vec3 d) {
-	const hs_body *body = &world->state.bodies[object];
-	double r = world->model.shapes[body->shape].radius, len = hs_length(d);
+static double first_contact(const hs_broadphase *bp, int object, hs_vec3 from, hs_vec3 d) {
+	const hs_body *body = &bp->bodies[object];
+	double r = bp->model->shapes[body->shape].radius, len = hs_length(d);
 	hs_vec3 mid = hs_mul_add(from, 0.5, d);
-	int n = hs_grid_near(world, mid, r + 0.5 * len);
+	int n = hs_grid_near(bp, mid, r + 0.5 * len);
+	const int *near = bp->scratch->near;
 	double step = INFINITY;
 	for (int k = 0; k < n; ++k) {
-		int j = world->scratch.near[k];
-		double rj = world->model.shapes[world->state.bodies[j].shape].radius;
-		if (is_under(world, object, j, from.z))
+		int j = near[k];
+		double rj = bp->model->shapes[bp->bodies[j].shape].radius;
+		if (is_under(bp->bodies, object, j, from.z))
 			step = 0.125 * (r < rj ? r : rj) < step ? 0.125 * (r < rj ? r : rj) : step;
 	}
 	if (!isfinite(step))
@@ -166,21 +167,20 @@ static double first_contact(hs_world *world, int object, hs_vec3 from, hs_vec3 d
 		double t = (double)s / count;
 		hs_vec3 p = hs_mul_add(from, t, d);
 		for (int k = 0; k < n; ++k)
-			if (is_under(world, object, world->scratch.near[k], from.z) &&
-			    penetrates(world, body, p, &world->state.bodies[world->scratch.near[k]]))
+			if (is_under(bp->bodies, object, near[k], from.z) && penetrates(bp->model, body, p, &bp->bodies[near[k]]))
 				return t;
 	}
 	return -1.0;
 }
 
-bool hs_stack_sweep(hs_world *world, int object, hs_vec3 from) {
-	hs_body *body = &world->state.bodies[object];
+bool hs_stack_sweep(const hs_broadphase *bp, int object, hs_vec3 from) {
+	hs_body *body = &bp->bodies[object];
 	hs_vec3 d = hs_sub(body->pos, from);
-	double t = first_contact(world, object, from, d);
+	double t = first_contact(bp, object, from, d);
 	if (t < 0.0)
 		return false;
 	body->pos = hs_mul_add(from, t, d);
-	hs_stack_rectify(world, object);
+	hs_stack_rectify(bp, object);
 	body->spin = hs_quat_identity(); // §4.1: no inertia kept after interfering
 	body->grounded = 0;               // on an object, not on the floor
 	body->asleep = 0; // a frame's fall that ended below the floor settled it there: it lies here now

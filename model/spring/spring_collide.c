@@ -39,9 +39,9 @@
 #include "spring_touch.h"
 
 // Object i lies where the frame began, without velocity along the floor.
-static bool still(const hs_world *world, const hs_spring_system *sys, int i) {
+static bool still(const hs_world *world, int i) {
 	const hs_body *b = &world->state.bodies[i];
-	hs_vec3 p = b->pos, s = sys->saved_pos[i];
+	hs_vec3 p = b->pos, s = world->scratch.spring.saved_pos[i];
 	return p.x == s.x && p.y == s.y && b->vel.x == 0.0 && b->vel.y == 0.0;
 }
 
@@ -60,7 +60,7 @@ static hs_vec3 free_part(const hs_world *world, const hs_spring_system *sys, int
 	double tol = world->model.def.floor_tolerance;
 	const hs_spring_walls *wl = &sys->def.walls;
 	bool on_floor = lies_on_floor(world, sys, i);
-	if (holds && on_floor && d.z <= 0.0 && still(world, sys, i))
+	if (holds && on_floor && d.z <= 0.0 && still(world, i))
 		return hs_v3(0.0, 0.0, 0.0); // it has not moved this frame
 	if (d.z < 0.0 && on_floor)
 		d.z = 0.0;
@@ -109,7 +109,7 @@ static void separate(hs_world *world, const hs_spring_system *sys, int i, int j,
 		return;
 	hs_body *a = &world->state.bodies[i], *b = &world->state.bodies[j];
 	// a resting pair where one has not moved: the other's doing (both still: shared)
-	bool hold_a = resting && !still(world, sys, j), hold_b = resting && !still(world, sys, i);
+	bool hold_a = resting && !still(world, j), hold_b = resting && !still(world, i);
 	hs_vec3 ua = free_part(world, sys, i, hs_neg(n), hold_a), ub = free_part(world, sys, j, n, hold_b);
 	// a pair in a line along a wall both touch (a row of balls against it, more than fit): parted
 	// along the line, the row's overlap only moves on to the next pair and back (a ball ended
@@ -146,8 +146,8 @@ static void separate(hs_world *world, const hs_spring_system *sys, int i, int j,
 		double kinetic = 0.5 * a->mass * hs_length_sq(a->vel) + 0.5 * b->mass * hs_length_sq(b->vel);
 		double share = kinetic >= lift || !resting ? 1.0 : kinetic / lift;
 		if (share < 1.0 && depth > HS_REST_DRIFT) {
-			double sank = fmax(0.0, a->mass * hs_dot(g, hs_sub(a->pos, sys->saved_pos[i])) +
-			                            b->mass * hs_dot(g, hs_sub(b->pos, sys->saved_pos[j])));
+			double sank = fmax(0.0, a->mass * hs_dot(g, hs_sub(a->pos, world->scratch.spring.saved_pos[i])) +
+			                            b->mass * hs_dot(g, hs_sub(b->pos, world->scratch.spring.saved_pos[j])));
 			share = fmax(fmin(1.0, (kinetic + sank) / lift), 1.0 - 0.5 * HS_REST_DRIFT / depth);
 		}
 		double keep = kinetic > lift ? sqrt(1.0 - lift / kinetic) : 0.0;
@@ -164,11 +164,11 @@ static void separate(hs_world *world, const hs_spring_system *sys, int i, int j,
 // sliding friction): the position from its path's start and the frame end's velocity, p0 + h (s v0
 // + s² (v1 - v0) / 2) with s the fraction of the path (h long) done, when its end is the frame's
 // end (the step was such); else the straight path. A path starts at the frame start, or where the
-// object was last answered this frame (sys->path_*); before that the object is where the path starts.
-static hs_vec3 path_at(const hs_world *world, const hs_spring_system *sys, int i, double tau) {
+// object was last answered this frame (the scratch's spring.path_*); before that the object is where the path starts.
+static hs_vec3 path_at(const hs_world *world, int i, double tau) {
 	const hs_body *b = &world->state.bodies[i];
-	double t0 = sys->path_t0[i];
-	hs_vec3 v0 = sys->path_vel[i], dv = hs_sub(b->vel, v0), p0 = sys->path_pos[i];
+	double t0 = world->scratch.spring.path_t0[i];
+	hs_vec3 v0 = world->scratch.spring.path_vel[i], dv = hs_sub(b->vel, v0), p0 = world->scratch.spring.path_pos[i];
 	if (!(tau > t0))
 		return p0;
 	double dt = (1.0 - t0) * world->model.def.dt, s = (tau - t0) / (1.0 - t0);
@@ -180,11 +180,11 @@ static hs_vec3 path_at(const hs_world *world, const hs_spring_system *sys, int i
 
 // Object i put back to the fraction tau of the frame: on its path, the velocity between the path
 // start's and the frame end's.
-static void state_at(hs_world *world, const hs_spring_system *sys, int i, double tau) {
+static void state_at(hs_world *world, int i, double tau) {
 	hs_body *b = &world->state.bodies[i];
-	hs_vec3 p = path_at(world, sys, i, tau);
-	double t0 = sys->path_t0[i], s = tau > t0 ? (tau - t0) / (1.0 - t0) : 0.0;
-	b->vel = hs_mul_add(sys->path_vel[i], s, hs_sub(b->vel, sys->path_vel[i]));
+	hs_vec3 p = path_at(world, i, tau);
+	double t0 = world->scratch.spring.path_t0[i], s = tau > t0 ? (tau - t0) / (1.0 - t0) : 0.0;
+	b->vel = hs_mul_add(world->scratch.spring.path_vel[i], s, hs_sub(b->vel, world->scratch.spring.path_vel[i]));
 	b->pos = p;
 }
 
@@ -198,7 +198,7 @@ static void state_at(hs_world *world, const hs_spring_system *sys, int i, double
 static bool meet_at(const hs_world *world, const hs_spring_system *sys, int i, int j, double t) {
 	hs_vec3 n;
 	double depth;
-	return hs_spring_contact(world, &sys->geom[i], path_at(world, sys, i, t), &sys->geom[j], path_at(world, sys, j, t),
+	return hs_spring_contact(world, &sys->geom[i], path_at(world, i, t), &sys->geom[j], path_at(world, j, t),
 	                         &n, &depth);
 }
 
@@ -206,13 +206,13 @@ static bool meet_at(const hs_world *world, const hs_spring_system *sys, int i, i
 static double depth_at(const hs_world *world, const hs_spring_system *sys, int i, int j, double t) {
 	hs_vec3 n;
 	double depth;
-	return hs_spring_contact(world, &sys->geom[i], path_at(world, sys, i, t), &sys->geom[j], path_at(world, sys, j, t),
+	return hs_spring_contact(world, &sys->geom[i], path_at(world, i, t), &sys->geom[j], path_at(world, j, t),
 	                         &n, &depth) ? depth : 0.0;
 }
 
 // Two spheres: the gap |G_b - G_a| - (r_a + r_b) along their paths, a smooth function of tau.
 static double sphere_gap(const hs_world *world, const hs_spring_system *sys, int i, int j, double t) {
-	return hs_length(hs_sub(path_at(world, sys, j, t), path_at(world, sys, i, t))) - sys->geom[i].radius -
+	return hs_length(hs_sub(path_at(world, j, t), path_at(world, i, t))) - sys->geom[i].radius -
 	       sys->geom[j].radius;
 }
 
@@ -247,9 +247,9 @@ static double sphere_root(const hs_world *world, const hs_spring_system *sys, in
 
 static double first_meeting(const hs_world *world, const hs_spring_system *sys, int i, int j, bool end_meets) {
 	const hs_spring_geom *ga = &sys->geom[i], *gb = &sys->geom[j];
-	double t0 = fmax(sys->path_t0[i], sys->path_t0[j]); // the later of their paths' starts
-	hs_vec3 rel = hs_sub(hs_sub(world->state.bodies[j].pos, path_at(world, sys, j, t0)),
-	                     hs_sub(world->state.bodies[i].pos, path_at(world, sys, i, t0)));
+	double t0 = fmax(world->scratch.spring.path_t0[i], world->scratch.spring.path_t0[j]); // the later of their paths' starts
+	hs_vec3 rel = hs_sub(hs_sub(world->state.bodies[j].pos, path_at(world, j, t0)),
+	                     hs_sub(world->state.bodies[i].pos, path_at(world, i, t0)));
 	double step = ga->inner + gb->inner, len = hs_length(rel);
 	if (!(step > 0.0) || !(len > 0.0) || (!end_meets && !(len > step)))
 		return -1.0; // no relative motion, or slower: a pass through the inner balls shows at an end
@@ -289,19 +289,19 @@ static bool both_on_floor(const hs_world *world, const hs_spring_system *sys, in
 }
 
 // Object i joins the floor layer's projection (once).
-static void join_layer(hs_spring_system *sys, int i) {
-	if (!sys->in_layer[i]) {
-		sys->in_layer[i] = 1;
-		sys->layer[sys->layer_count++] = i;
+static void join_layer(hs_world_scratch *scratch, int i) {
+	if (!scratch->spring.in_layer[i]) {
+		scratch->spring.in_layer[i] = 1;
+		scratch->spring.layer[scratch->spring.layer_count++] = i;
 	}
 }
 
 // Objects i and j, a resting pair, lie on the floor and in each other deeper than the drift
 // beyond the gap: they are for the floor layer's projection.
-static void note_layer(hs_spring_system *sys, const hs_world *world, int i, int j, double depth) {
+static void note_layer(const hs_spring_system *sys, hs_world *world, int i, int j, double depth) {
 	if (depth > HS_REST_DRIFT && both_on_floor(world, sys, i, j)) {
-		join_layer(sys, i);
-		join_layer(sys, j);
+		join_layer(&world->scratch, i);
+		join_layer(&world->scratch, j);
 	}
 }
 
@@ -315,8 +315,8 @@ static bool answer(hs_world *world, hs_spring_system *sys, int i, int j, double 
 	hs_vec3 n;
 	double depth;
 	if (tau >= 0.0 && tau < 1.0) {
-		state_at(world, sys, i, tau); // both back to where they met (the rest of the frame's
-		state_at(world, sys, j, tau); // motion is lost: a delay, no energy)
+		state_at(world, i, tau); // both back to where they met (the rest of the frame's
+		state_at(world, j, tau); // motion is lost: a delay, no energy)
 		if (!hs_spring_contact(world, ga, a->pos, gb, b->pos, &n, &depth)) { // just touching
 			n = hs_normalize(hs_sub(b->pos, a->pos));
 			depth = 0.0;
@@ -342,9 +342,9 @@ static bool answer(hs_world *world, hs_spring_system *sys, int i, int j, double 
 	if (tau > 0.0 && tau < 1.0) {
 		int ends[2] = {i, j};
 		for (int q = 0; q < 2; ++q) { // their paths start again here
-			sys->path_pos[ends[q]] = world->state.bodies[ends[q]].pos;
-			sys->path_vel[ends[q]] = world->state.bodies[ends[q]].vel;
-			sys->path_t0[ends[q]] = tau;
+			world->scratch.spring.path_pos[ends[q]] = world->state.bodies[ends[q]].pos;
+			world->scratch.spring.path_vel[ends[q]] = world->state.bodies[ends[q]].vel;
+			world->scratch.spring.path_t0[ends[q]] = tau;
 			if (ends[q] != sys->attached && !push)
 				hs_spring_advance(sys, ends[q], &world->state.bodies[ends[q]], &world->model.def, (1.0 - tau) * world->model.def.dt,
 				                  &world->counters);
@@ -460,7 +460,7 @@ static bool earliest(hs_spring_system *sys, hs_spring_event *out) {
 
 // Object i held still by its contacts this frame and not moved since (by a separation).
 static bool unmoved(const hs_world *world, const hs_spring_system *sys, int i) {
-	return sys->held[i] && memcmp(&world->state.bodies[i].pos, &sys->saved_pos[i], sizeof(hs_vec3)) == 0;
+	return sys->held[i] && memcmp(&world->state.bodies[i].pos, &world->scratch.spring.saved_pos[i], sizeof(hs_vec3)) == 0;
 }
 
 // Sorts by event_order in place: the meetings' min-heap (sift_down) taken apart from the back
@@ -553,13 +553,13 @@ static void project_floor_layer(hs_world *world, hs_spring_system *sys) {
 	double gap = world->model.def.floor_tolerance;
 	for (int sweep = 0; sweep < HS_LAYER_SWEEPS; ++sweep) {
 		double worst = 0.0;
-		for (int k = 0; k < sys->layer_count; ++k) { // (the list grows as the sweep pushes)
-			int q = sys->layer[k];
+		for (int k = 0; k < world->scratch.spring.layer_count; ++k) { // (the list grows as the sweep pushes)
+			int q = world->scratch.spring.layer[k];
 			const int *near;
 			int count = hs_spring_near(world, sys, q, 0.0, &near);
 			for (int m = 0; m < count; ++m) {
 				int r = near[m];
-				if (r == q || !both_on_floor(world, sys, q, r) || (sys->in_layer[r] && r < q))
+				if (r == q || !both_on_floor(world, sys, q, r) || (world->scratch.spring.in_layer[r] && r < q))
 					continue; // (a pair of two in the layer is met from the lower index)
 				hs_body *a = &world->state.bodies[q], *b = &world->state.bodies[r];
 				hs_vec3 n;
@@ -581,22 +581,22 @@ static void project_floor_layer(hs_world *world, hs_spring_system *sys) {
 				sys->separated[q] = sys->separated[r] = 1;
 				hs_spring_refile(world, sys, q);
 				hs_spring_refile(world, sys, r);
-				join_layer(sys, r);
+				join_layer(&world->scratch, r);
 			}
 		}
 		if (!(worst > HS_REST_DRIFT))
 			break;
 	}
-	for (int k = 0; k < sys->layer_count; ++k)
-		sys->in_layer[sys->layer[k]] = 0;
-	sys->layer_count = 0;
+	for (int k = 0; k < world->scratch.spring.layer_count; ++k)
+		world->scratch.spring.in_layer[world->scratch.spring.layer[k]] = 0;
+	world->scratch.spring.layer_count = 0;
 }
 
 void hs_spring_collide(hs_world *world, hs_spring_system *sys) {
 	const hs_spring_geom *geom = sys->geom;
 	double reach = 0.0, inner = INFINITY;
 	for (int i = 0; i < world->model.object_count; ++i) { // the farthest any object moved this frame
-		reach = fmax(reach, hs_length(hs_sub(world->state.bodies[i].pos, sys->saved_pos[i])));
+		reach = fmax(reach, hs_length(hs_sub(world->state.bodies[i].pos, world->scratch.spring.saved_pos[i])));
 		inner = fmin(inner, geom[i].inner);
 	}
 	// no two objects moved apart by more than the sum of any two inner radii: a pass through shows
@@ -604,9 +604,9 @@ void hs_spring_collide(hs_world *world, hs_spring_system *sys) {
 	if (2.0 * reach <= 2.0 * inner)
 		reach = 0.0;
 	for (int i = 0; i < world->model.object_count; ++i) { // every path starts at the frame start
-		sys->path_pos[i] = sys->saved_pos[i];
-		sys->path_vel[i] = sys->saved_vel[i];
-		sys->path_t0[i] = 0.0;
+		world->scratch.spring.path_pos[i] = world->scratch.spring.saved_pos[i];
+		world->scratch.spring.path_vel[i] = world->scratch.spring.saved_vel[i];
+		world->scratch.spring.path_t0[i] = 0.0;
 	}
 	hs_spring_file_all(world, sys);
 	// Meetings in the order of time (no tunnelling): the earliest is answered, then the
@@ -630,6 +630,6 @@ void hs_spring_collide(hs_world *world, hs_spring_system *sys) {
 		memset(sys->moved, 0, (size_t)world->model.object_count);
 	for (int pass = 0; pass < HS_SEPARATION_PASSES && end_pass(world, sys, pass == 0); ++pass)
 		;
-	if (sys->layer_count > 0)
+	if (world->scratch.spring.layer_count > 0)
 		project_floor_layer(world, sys);
 }

@@ -68,7 +68,7 @@ void hs_spring_refile(hs_world *world, hs_spring_system *sys, int i) {
 static void query_box(const hs_world *world, const hs_spring_system *sys, int i, double reach, hs_vec3 *lo,
                       hs_vec3 *hi) {
 	const hs_spring_geom *g = &sys->geom[i];
-	hs_vec3 p = world->state.bodies[i].pos, s = sys->path_pos[i];
+	hs_vec3 p = world->state.bodies[i].pos, s = world->scratch.spring.path_pos[i];
 	double m = hs_spring_margin(g, p);
 	*lo = hs_add(p, hs_sub(g->lo, hs_v3(m, m, m)));
 	*hi = hs_add(p, hs_add(g->hi, hs_v3(m, m, m)));

@@ -12,14 +12,9 @@ void hs_spring_system_destroy(hs_spring_system *system) {
 	free(system->on_floor);
 	free(system->sliding);
 	free(system->separated);
-	free(system->saved_pos);
-	free(system->saved_vel);
 	hs_hgrid_free(&system->grid);
 	free(system->near);
 	free(system->touch);
-	free(system->path_pos);
-	free(system->path_vel);
-	free(system->path_t0);
 	free(system->events);
 	free(system->version);
 	free(system->nb);
@@ -34,8 +29,6 @@ void hs_spring_system_destroy(hs_spring_system *system) {
 	free(system->moved);
 	free(system->active);
 	free(system->warm);
-	free(system->layer);
-	free(system->in_layer);
 	free(system->rest_index);
 	free(system->rest);
 	free(system->load);
@@ -52,8 +45,6 @@ hs_spring_system *hs_spring_system_create(const hs_spring_def *def, int max_obje
 	sys->on_floor = calloc(cap, sizeof *sys->on_floor);
 	sys->sliding = calloc(cap, sizeof *sys->sliding);
 	sys->separated = calloc(cap, sizeof *sys->separated);
-	sys->saved_pos = calloc(cap, sizeof *sys->saved_pos);
-	sys->saved_vel = calloc(cap, sizeof *sys->saved_vel);
 	sys->near = calloc(cap, sizeof *sys->near);
 	sys->nb_capacity = (int)(HS_SPRING_NEAR_PER_OBJECT * cap);
 	sys->nb = calloc((size_t)sys->nb_capacity, sizeof *sys->nb);
@@ -63,9 +54,6 @@ hs_spring_system *hs_spring_system_create(const hs_spring_def *def, int max_obje
 	sys->box_hi = calloc(cap, sizeof *sys->box_hi);
 	sys->nb_lo = calloc(cap, sizeof *sys->nb_lo);
 	sys->nb_hi = calloc(cap, sizeof *sys->nb_hi);
-	sys->path_pos = calloc(cap, sizeof *sys->path_pos);
-	sys->path_vel = calloc(cap, sizeof *sys->path_vel);
-	sys->path_t0 = calloc(cap, sizeof *sys->path_t0);
 	sys->moved = calloc(cap, sizeof *sys->moved);
 	sys->event_capacity = (int)(HS_SPRING_TOUCHES_PER_OBJECT * cap);
 	sys->events = calloc((size_t)sys->event_capacity, sizeof *sys->events);
@@ -75,8 +63,6 @@ hs_spring_system *hs_spring_system_create(const hs_spring_def *def, int max_obje
 	sys->touch_capacity = (int)(HS_SPRING_TOUCHES_PER_OBJECT * cap);
 	sys->touch = calloc((size_t)sys->touch_capacity, sizeof *sys->touch);
 	sys->warm = calloc((size_t)sys->touch_capacity, sizeof *sys->warm);
-	sys->layer = calloc(cap, sizeof *sys->layer);
-	sys->in_layer = calloc(cap, sizeof *sys->in_layer);
 	sys->active = calloc(cap, sizeof *sys->active);
 	sys->rest_index = malloc(cap * sizeof *sys->rest_index);
 	for (size_t i = 0; sys->rest_index && i < cap; ++i)
@@ -88,9 +74,9 @@ hs_spring_system *hs_spring_system_create(const hs_spring_def *def, int max_obje
 	sys->held = calloc(cap, sizeof *sys->held);
 	bool grid = hs_hgrid_alloc(&sys->grid, (int)cap, 3);
 	sys->grid_count = -1;
-	if (!sys->geom || !sys->on_floor || !sys->sliding || !sys->separated || !sys->saved_pos || !sys->saved_vel ||
-	    !sys->near || !sys->nb || !sys->nb_start || !sys->nb_pos || !sys->box_lo || !sys->box_hi || !sys->nb_lo || !sys->nb_hi || !grid || !sys->touch || !sys->warm || !sys->layer || !sys->in_layer || !sys->active || !sys->rest_index || !sys->rest || !sys->load ||
-	    !sys->held || !sys->path_pos || !sys->path_vel || !sys->path_t0 || !sys->events || !sys->version || !sys->params || !sys->params_mass ||
+	if (!sys->geom || !sys->on_floor || !sys->sliding || !sys->separated ||
+	    !sys->near || !sys->nb || !sys->nb_start || !sys->nb_pos || !sys->box_lo || !sys->box_hi || !sys->nb_lo || !sys->nb_hi || !grid || !sys->touch || !sys->warm || !sys->active || !sys->rest_index || !sys->rest || !sys->load ||
+	    !sys->held || !sys->events || !sys->version || !sys->params || !sys->params_mass ||
 	    !sys->moved) {
 		hs_spring_system_destroy(sys);
 		return NULL;

@@ -78,12 +78,7 @@ struct hs_spring_system {
 	uint8_t *on_floor;
 	uint8_t *sliding;
 	uint8_t *separated; // pushed apart from a neighbour this frame: moved without a velocity
-	hs_vec3 *saved_pos; // frame-start state for the numeric guard
-	hs_vec3 *saved_vel;
-	// SCRATCH of the swept collisions (spring_collide.c): where each object's path through the
-	// frame starts (the frame start, or where it was last answered) and at which fraction of it
-	hs_vec3 *path_pos, *path_vel;
-	double *path_t0;
+	// (the frame-start state, the swept paths and the floor layer: the world's scratch, spring)
 	// CACHE: each object's spring parameters (hs_spring_params_of: a power per call), for the mass
 	// params_mass holds (NaN: none); all forgotten when what else they depend on changes
 	hs_spring_params *params;
@@ -93,11 +88,6 @@ struct hs_spring_system {
 	uint32_t *version;       // per object: bumped when it is answered, so its listed meetings go stale
 	uint8_t *moved;          // moved by a separation pass (bit 0: the last, bit 1: this one)
 	bool shock;              // an end pass is separating bottom up (spring_collide.c)
-	// SCRATCH of the floor layer's projection (spring_collide.c): objects on the floor in a pair an
-	// end pass found deeper than the drift, and those the projection pushed since (marked in in_layer)
-	int *layer;
-	uint8_t *in_layer;
-	int layer_count;
 	int event_count, event_capacity;
 	// CACHE: the collisions' broad phase (spring_collide.c), 3D, built for grid_count objects
 	// (-1: to build), refiled every frame; near holds a query's result

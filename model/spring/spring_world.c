@@ -42,7 +42,7 @@ hs_status hs_world_spring_attach(hs_world *world, hs_object_id id) {
 	if (sys->attached >= 0 && sys->attached != i)
 		hs_spring_detach(world, sys, false, hs_world_time(world));
 	hs_spring_attach(world, sys, i, HS_ATTACH_API);
-	hs_digest_all_stale(world);
+	hs_digest_all_stale(&world->cache);
 	return HS_OK;
 }
 
@@ -51,7 +51,7 @@ hs_status hs_world_spring_detach(hs_world *world) {
 		return HS_ERR_INVALID_ARGUMENT;
 	if (world->state.spring->attached >= 0)
 		hs_spring_detach(world, world->state.spring, false, hs_world_time(world));
-	hs_digest_all_stale(world);
+	hs_digest_all_stale(&world->cache);
 	return HS_OK;
 }
 

@@ -1,9 +1,12 @@
 // step_hand.c — one frame of a hand world (the 1999 paper's model): the step's stages in order,
 // each a function below that names its section (docs/model.md follows the same order). A stage
-// takes what it reads and writes: the hands alone where that is all (age_hands), else struct
-// hs_world (world_internal.h), whose core calls (the grid, the wake list, the digests) need it
-// whole; stages call the concepts below them and none calls back up here. They are forced inline: the step's cost is read from what hs_step_hand calls
-// (tool/bench_cmd.c's stage table), as it was from hs_world_step's.
+// takes the parts of struct hs_world (world_internal.h) it reads and writes: the hands alone
+// (age_hands); the model, bodies and cache (file_objects); the object stages the model, bodies,
+// cache, scratch (and counters, fault words), from which they make the broad phase's context
+// (broadphase.h) and free motion's (motion.h) where they step an object; the hand stages still
+// take the world, whose hand pass reads and writes nearly all of it. Stages call the concepts below them and none calls back up here. They are forced inline: the
+// step's cost is read from what hs_step_hand calls (tool/bench_cmd.c's stage table), as it was
+// from hs_world_step's.
 #include "broadphase.h"
 #include "fall_group.h"
 #include "grasp.h"
@@ -30,10 +33,10 @@ static bool in_list(const int *list, int n, int i) {
 }
 
 // Paper mode, an awake object that interferes with others: if nothing holds it up, it falls with
-// what rests on it (fall_group.c), whose indices go to world->scratch.queue from *fallen (support mode's
-// list there is never used in paper mode).
-static bool paper_group_falls(hs_world *world, int i, int *fallen) {
-	int n = hs_fall_group(world, i, world->scratch.queue + *fallen, world->model.object_count - *fallen);
+// what rests on it (fall_group.c), whose indices go to bp->scratch->queue from *fallen (support
+// mode's list there is never used in paper mode).
+static bool paper_group_falls(const hs_broadphase *bp, int i, int *fallen) {
+	int n = hs_fall_group(bp, i, bp->scratch->queue + *fallen, bp->model->object_count - *fallen);
 	*fallen += n;
 	return n > 0;
 }
@@ -41,12 +44,14 @@ static bool paper_group_falls(hs_world *world, int i, int *fallen) {
 // One unheld object's frame: §4.3 in paper mode (interfering and untouched: no gravity, no
 // inertia, but rectified out of the objects under it as out of the floor, Fig. 11), else eq. 3 and
 // the floor (§4.2), the fall swept over the objects under it, and in support mode its supports.
-static void step_object(hs_world *world, int i, bool interferes) {
-	hs_body *body = &world->state.bodies[i];
+// The broad phase's parts (bp) and free motion's (motion) are of one world.
+static void step_object(const hs_broadphase *bp, const hs_motion_pass *motion, int i, bool interferes) {
+	const hs_world_model *model = bp->model;
+	hs_body *body = &bp->bodies[i];
 	hs_vec3 from = body->pos;
 	if (interferes) {
-		hs_stack_rectify(world, i);
-		hs_motion_keep_above_floor(world, body);
+		hs_stack_rectify(bp, i);
+		hs_motion_keep_above_floor(model, bp->scratch, body);
 		body->grounded = body->floor_contacts > 0; // it may rest above the floor (carried up)
 		body->prev = body->pos;
 		body->spin = hs_quat_identity();
@@ -54,29 +59,29 @@ static void step_object(hs_world *world, int i, bool interferes) {
 		return;
 	}
 	body->rot_prev = body->rot;
-	hs_motion_step(world, body);
-	if (hs_stack_sweep(world, i, from)) {
-		hs_motion_keep_above_floor(world, body); // its floor contacts where it landed
+	hs_motion_step(motion, body);
+	if (hs_stack_sweep(bp, i, from)) {
+		hs_motion_keep_above_floor(model, bp->scratch, body); // its floor contacts where it landed
 		// Gm of eq. 4-5 as on the floor (motion.c): the rectified motion and this frame's gravity
-		double dt = world->model.def.dt;
-		body->prev = hs_mul_add(from, -dt * dt, world->model.def.gravity);
-		if (world->model.def.stacking == HS_STACKING_PAPER) { // §4.1: stops at the interference, no rebound
+		double dt = model->def.dt;
+		body->prev = hs_mul_add(from, -dt * dt, model->def.gravity);
+		if (model->def.stacking == HS_STACKING_PAPER) { // §4.1: stops at the interference, no rebound
 			body->prev = body->pos;
 			body->asleep = 1;
 		}
 	}
-	if (world->model.def.stacking == HS_STACKING_SUPPORT && !body->asleep) {
-		hs_support_step(world, i);
-		hs_stack_rectify(world, i); // a turn about a support's edge stops at the floor only (eq. 7)
+	if (model->def.stacking == HS_STACKING_SUPPORT && !body->asleep) {
+		hs_support_step(bp, motion->counters, i);
+		hs_stack_rectify(bp, i); // a turn about a support's edge stops at the floor only (eq. 7)
 	}
 }
 
 // Experiment 3 (the broad phase): objects added, or a state loaded, since the grid was built are
-// filed again. In: the bodies. Out: world->cache.grid.
-static HS_FORCE_INLINE void file_objects(hs_world *world) {
-	if (world->cache.grid_dirty || !world->cache.grid_built) {
-		hs_grid_build(world);
-		world->cache.grid_dirty = false;
+// filed again. In: the model's shapes, the bodies. Out: cache->grid.
+static HS_FORCE_INLINE void file_objects(const hs_world_model *model, const hs_body *bodies, hs_world_cache *cache) {
+	if (cache->grid_dirty || !cache->grid_built) {
+		hs_grid_build(model, bodies, cache);
+		cache->grid_dirty = false;
 	}
 }
 
@@ -97,18 +102,22 @@ static HS_FORCE_INLINE void hands_move_objects(hs_world *world) {
 }
 
 // §4.2-§4.3 (docs/model.md §5-§6): every awake object the hands leave free, through its own frame
-// (step_object). In: the awake list. Out: bodies; support mode's moved objects in world->scratch.queue and
-// moved_from (the count returned); paper mode's fallen groups in world->queue (*fallen).
-static HS_FORCE_INLINE int move_free_objects(hs_world *world, int *fallen) {
-	bool skip = world->model.skip_work;
-	int visits = skip ? world->cache.awake_count : world->model.object_count;
+// (step_object). In: the model, the awake list (cache). Out: bodies; the grid; support mode's
+// moved objects in scratch->queue and moved_from (the count returned); paper mode's fallen groups
+// in scratch->queue (*fallen); the counters; a numeric fault's frame and object in the state's
+// first-fault words (`faults`). All parts of one world.
+static HS_FORCE_INLINE int move_free_objects(const hs_world_model *model, hs_body *bodies, hs_world_cache *cache,
+                                             hs_world_scratch *scratch, hs_world_counters *counters,
+                                             hs_world_state *faults, int *fallen) {
+	bool skip = model->skip_work;
+	int visits = skip ? cache->awake_count : model->object_count;
 	if (skip) // the sleeping objects cost nothing (the awake list holds the others, in index order)
-		world->counters.sleeping_skips += world->model.object_count - world->cache.awake_count;
+		counters->sleeping_skips += model->object_count - cache->awake_count;
 	int moved = 0; // support mode: objects that moved, to wake what rested on them (after the loop)
 	for (int k = 0; k < visits; ++k) {
-		int i = skip ? world->cache.awake[k] : k;
-		hs_body *body = &world->state.bodies[i];
-		if (body->held || body->carried || in_list(world->scratch.queue, *fallen, i))
+		int i = skip ? cache->awake[k] : k;
+		hs_body *body = &bodies[i];
+		if (body->held || body->carried || in_list(scratch->queue, *fallen, i))
 			continue;
 		// asleep: stays as it is until woken — on the floor, on a support (support mode), where it
 		// stopped at an interference (paper mode, §4.3) — with skip_work off too (the same bits:
@@ -116,37 +125,44 @@ static HS_FORCE_INLINE int move_free_objects(hs_world *world, int *fallen) {
 		// awake list below
 		if (body->asleep)
 			continue;
-		bool interferes = world->model.def.stacking == HS_STACKING_PAPER && hs_object_interferes(world, i);
-		if (interferes && paper_group_falls(world, i, fallen))
+		// the broad phase's and free motion's parts, made here rather than each frame: most frames
+		// step no free object
+		hs_broadphase bp = {model, bodies, cache, scratch};
+		bool interferes = model->def.stacking == HS_STACKING_PAPER && hs_object_interferes(&bp, i);
+		if (interferes && paper_group_falls(&bp, i, fallen))
 			continue;
 		hs_body saved = *body;
-		step_object(world, i, interferes);
+		hs_motion_pass motion = {model, bodies, scratch, counters};
+		step_object(&bp, &motion, i, interferes);
 		if (!body_is_finite(body)) { // never let a NaN spread: freeze the object and count it
 			*body = saved;
-			hs_world_note_fault(world, i);
+			hs_world_note_fault(counters, faults, i);
 		}
 		// support mode: what moved by more than the floor's tolerance wakes what rests on it (a
 		// settling stack's rounding-size moves woke each other for good)
-		if (world->model.def.stacking == HS_STACKING_SUPPORT && hs_length(hs_sub(body->pos, saved.pos)) > world->model.def.floor_tolerance) {
-			world->scratch.moved_from[moved] = saved.pos;
-			world->scratch.queue[moved++] = i;
+		if (model->def.stacking == HS_STACKING_SUPPORT && hs_length(hs_sub(body->pos, saved.pos)) > model->def.floor_tolerance) {
+			scratch->moved_from[moved] = saved.pos;
+			scratch->queue[moved++] = i;
 		}
-		hs_grid_update(world, i);
+		hs_grid_update(model, bodies, cache, i);
 	}
 	return moved;
 }
 
 // §4.3 and docs/model.md §6: what rested on a moved object, and a fallen group, wake and look
 // again; the awake list drops what fell asleep. In: the queue from move_free_objects. Out: the
-// awake list, the stale digests.
-static HS_FORCE_INLINE void wake_neighbours(hs_world *world, int moved, int fallen) {
-	for (int k = 0; k < moved; ++k) // the awake list may grow only once the loop is over
-		hs_support_wake_neighbours(world, world->scratch.queue[k], world->scratch.moved_from[k]);
+// awake list, the stale digests. The broad phase's parts: hs_broadphase (broadphase.h).
+static HS_FORCE_INLINE void wake_neighbours(const hs_world_model *model, hs_body *bodies, hs_world_cache *cache,
+                                           hs_world_scratch *scratch, int moved, int fallen) {
+	for (int k = 0; k < moved; ++k) { // the awake list may grow only once the loop is over
+		hs_broadphase bp = {model, bodies, cache, scratch};
+		hs_support_wake_neighbours(&bp, scratch->queue[k], scratch->moved_from[k]);
+	}
 	for (int k = 0; k < fallen; ++k)
-		hs_wake(world, world->scratch.queue[k]);
-	hs_awake_compact(world);
-	if (!world->model.skip_work) // every object was looked at (the awake list does not bound what may have changed)
-		hs_digest_all_stale(world);
+		hs_wake(bodies, cache, scratch->queue[k]);
+	hs_awake_compact(bodies, cache);
+	if (!model->skip_work) // every object was looked at (the awake list does not bound what may have changed)
+		hs_digest_all_stale(cache);
 }
 
 // docs/model.md §4 "Release": each hand's wrist history ages by a frame and its points become the
@@ -159,12 +175,17 @@ static HS_FORCE_INLINE void age_hands(hs_hand *hands, int hand_count) {
 }
 
 void hs_step_hand(hs_world *world) {
-	file_objects(world);                           // Experiment 3: the broad phase
-	track_hands(world);                            // docs/model.md §3: tracking loss
-	hands_move_objects(world);                     // §3.2: contacts, grasps, pushes
-	int fallen = 0;                                // paper mode: objects moved with a falling group
-	int moved = move_free_objects(world, &fallen); // §4.2-§4.3: free motion, floor, stacking
-	wake_neighbours(world, moved, fallen);         // §4.3: what rested on a moved object looks again
-	age_hands(world->state.hands, world->model.hand_count); // docs/model.md §4: the hands' history
+	const hs_world_model *model = &world->model;
+	hs_body *bodies = world->state.bodies;
+	hs_world_cache *cache = &world->cache;
+	hs_world_scratch *scratch = &world->scratch;
+	file_objects(model, bodies, cache); // Experiment 3: the broad phase
+	track_hands(world);                 // docs/model.md §3: tracking loss
+	hands_move_objects(world);          // §3.2: contacts, grasps, pushes
+	int fallen = 0;                     // paper mode: objects moved with a falling group
+	// §4.2-§4.3: free motion, floor, stacking
+	int moved = move_free_objects(model, bodies, cache, scratch, &world->counters, &world->state, &fallen);
+	wake_neighbours(model, bodies, cache, scratch, moved, fallen); // §4.3: what rested on a moved object looks again
+	age_hands(world->state.hands, model->hand_count);              // docs/model.md §4: the hands' history
 	world->state.frame++;
 }

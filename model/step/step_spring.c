@@ -37,8 +37,8 @@ static int floor_contacts(hs_world *world, const hs_spring_system *sys, int i) {
 	if (sys->geom[i].sphere)
 		return 1;
 	hs_body *body = &world->state.bodies[i];
-	hs_motion_pose_vertices(world, body);
-	return hs_motion_floor_points(world, body);
+	hs_motion_pose_vertices(&world->model, &world->scratch, body);
+	return hs_motion_floor_points(&world->model, &world->scratch, body);
 }
 
 // §4.2: the end of the frame for every object: the numeric guard, then what the world reports
@@ -48,11 +48,11 @@ static void finish_bodies(hs_world *world, hs_spring_system *sys) {
 	for (int i = 0; i < world->model.object_count; ++i) {
 		hs_body *body = &world->state.bodies[i];
 		if (!hs_vec3_is_finite(body->pos) || !hs_vec3_is_finite(body->vel)) {
-			body->pos = sys->saved_pos[i]; // an explicit integrator blew up: freeze, count, go on
-			body->vel = sys->saved_vel[i];
-			hs_world_note_fault(world, i);
+			body->pos = world->scratch.spring.saved_pos[i]; // an explicit integrator blew up: freeze, count, go on
+			body->vel = world->scratch.spring.saved_vel[i];
+			hs_world_note_fault(&world->counters, &world->state, i);
 		}
-		body->prev = sys->saved_pos[i];
+		body->prev = world->scratch.spring.saved_pos[i];
 		bool still = body->vel.x == 0.0 && body->vel.y == 0.0 && body->vel.z == 0.0;
 		body->grounded = sys->on_floor[i];
 		body->asleep = (sys->on_floor[i] || sys->held[i]) && still && !sys->separated[i] && i != sys->attached;
@@ -82,8 +82,8 @@ static void prepare_frame(hs_world *world, hs_spring_system *sys) {
 static void move_objects(hs_world *world, hs_spring_system *sys) {
 	int n = world->model.object_count;
 	for (int i = 0; i < n; ++i) {
-		sys->saved_pos[i] = world->state.bodies[i].pos;
-		sys->saved_vel[i] = world->state.bodies[i].vel;
+		world->scratch.spring.saved_pos[i] = world->state.bodies[i].pos;
+		world->scratch.spring.saved_vel[i] = world->state.bodies[i].vel;
 	}
 	for (int i = 0; i < n; ++i) {
 		if (!sys->held[i]) {
@@ -148,7 +148,7 @@ static void end_frame(hs_world *world, hs_spring_system *sys, long faults) {
 	sys->stylus_prev = sys->stylus;
 	sys->rot_prev = sys->rot;
 	sys->button_prev = sys->button;
-	hs_digest_all_stale(world);
+	hs_digest_all_stale(&world->cache);
 	if (world->counters.numeric_faults > faults && world->state.first_fault_frame < 0)
 		world->state.first_fault_frame = world->state.frame;
 	world->state.frame++;

@@ -14,52 +14,36 @@
 #include "broadphase.h"
 #include "inline.h"
 
-// A world of this many objects or fewer is scanned whole: each caller's bounding-sphere test of
-// every object costs less than hashing the cells of its query (the seed scene, 10 cubes: 233
-// instructions a frame less over its three queries; 16 cubes: 930). The same bits either way.
-#define HS_GRID_SCAN_MAX 16
+// (HS_GRID_SCAN_MAX and the test of a world scanned whole, hs_grid_scanned: broadphase.h)
 
-// Whether queries read the grid once it is built: a larger world with skip_work on. Otherwise no
-// moved object is filed in it (233 instructions a frame less in the seed scene); a world that
-// grows past the limit files every object at its next step (grid_dirty). skip_work is fixed
-// when the world is made.
-static bool grid_read(const hs_world *world) {
-	return world->model.skip_work && world->model.object_count > HS_GRID_SCAN_MAX;
+void hs_grid_file(const hs_body *bodies, hs_world_cache *cache, int i) {
+	if (!cache->awake_flag[i]) // a resting object filed anew (a load, objects added, or carried):
+		cache->near_lists.epoch++;   // the neighbour lists may miss it
+	hs_hgrid_file(&cache->grid, i, bodies[i].pos);
 }
 
-void hs_grid_update(hs_world *world, int i) {
-	if (!world->cache.grid_built || !grid_read(world))
-		return; // not built yet (the first step builds it), or not read (nor its lists)
-	if (!world->cache.awake_flag[i]) // a resting object filed anew (a load, objects added, or carried):
-		world->cache.near_lists.epoch++;   // the neighbour lists may miss it
-	hs_hgrid_file(&world->cache.grid, i, world->state.bodies[i].pos);
-}
-
-void hs_grid_build(hs_world *world) {
+void hs_grid_build(const hs_world_model *model, const hs_body *bodies, hs_world_cache *cache) {
 	// each object at the level of its bounding radius (hgrid.c): one huge object no longer makes
 	// the cell of all (the cell was twice the largest radius)
-	for (int i = 0; i < world->model.object_count; ++i)
-		world->cache.grid.half[i] = world->model.shapes[world->state.bodies[i].shape].radius;
-	hs_hgrid_build(&world->cache.grid, world->model.object_count);
-	world->cache.grid_built = true;
-	for (int i = 0; i < world->model.object_count; ++i)
-		hs_grid_update(world, i);
-	hs_hgrid_pack(&world->cache.grid); // the cells the objects occupy, read without hashing
+	for (int i = 0; i < model->object_count; ++i)
+		cache->grid.half[i] = model->shapes[bodies[i].shape].radius;
+	hs_hgrid_build(&cache->grid, model->object_count);
+	cache->grid_built = true;
+	for (int i = 0; i < model->object_count; ++i)
+		hs_grid_update(model, bodies, cache, i);
+	hs_hgrid_pack(&cache->grid); // the cells the objects occupy, read without hashing
 }
 
-// A query answers by a full scan, in index order (the grid not read, or not built yet).
-static bool scanned(const hs_world *world) { return !world->cache.grid_built || !grid_read(world); }
-
-static int grid_answer(const hs_world *world, hs_vec3 center, double radius, int *out) {
+static int grid_answer(const hs_world_cache *cache, hs_vec3 center, double radius, int *out) {
 	hs_vec3 r = hs_v3(radius, radius, radius); // objects are filed by their centres (x, y)
-	return hs_hgrid_query(&world->cache.grid, hs_sub(center, r), hs_add(center, r), out);
+	return hs_hgrid_query(&cache->grid, hs_sub(center, r), hs_add(center, r), out);
 }
 
-int hs_grid_query(const hs_world *world, hs_vec3 center, double radius, int *out) {
-	if (!scanned(world))
-		return grid_answer(world, center, radius, out);
-	memcpy(out, world->cache.every, (size_t)world->model.object_count * sizeof *out);
-	return world->model.object_count;
+int hs_grid_query(const hs_world_model *model, const hs_world_cache *cache, hs_vec3 center, double radius, int *out) {
+	if (!hs_grid_scanned(model, cache))
+		return grid_answer(cache, center, radius, out);
+	memcpy(out, cache->every, (size_t)model->object_count * sizeof *out);
+	return model->object_count;
 }
 
 // The neighbour lists: a query whose box (x, y: center ± radius) lies inside a list's box is
@@ -71,21 +55,31 @@ int hs_grid_query(const hs_world *world, hs_vec3 center, double radius, int *out
 // moves a few mm a frame reuses it for many frames. Every answer holds all the objects the
 // callers' own tests can pass, in index order: no result depends on the lists.
 
+// The parts of a world a neighbour query reads and writes (hs_grid_near_filed's arguments): the
+// broad phase's, its bodies read only.
+typedef struct query {
+	const hs_world_model *model;
+	const hs_body *bodies;
+	hs_world_cache *cache;
+	hs_world_scratch *scratch;
+} query;
+
 // Rounding allowance of the centre tests (m), far below any caller's tolerance.
 static double slack(hs_vec3 c, double reach) { return 1e-9 * (1.0 + fabs(c.x) + fabs(c.y) + reach); }
 
-static bool centre_near(const hs_world *world, int i, hs_vec3 c, double r, double allow) {
-	hs_vec3 p = world->state.bodies[i].pos;
-	double reach = r + world->cache.grid.half[i];
+static bool centre_near(const query *q, int i, hs_vec3 c, double r, double allow) {
+	hs_vec3 p = q->bodies[i].pos;
+	double reach = r + q->cache->grid.half[i];
 	reach += allow * slack(c, reach);
 	return fabs(p.x - c.x) <= reach && fabs(p.y - c.y) <= reach;
 }
 
 // Merges a list's objects with the awake list (both ascending; an object on both once), keeping
 // those near the query.
-static int list_answer(hs_world *world, const hs_near_list *l, hs_vec3 c, double r) {
-	const int *awake = world->cache.awake;
-	int n = 0, a = 0, b = 0, na = world->cache.awake_count;
+static int list_answer(const query *q, const hs_near_list *l, hs_vec3 c, double r) {
+	const int *awake = q->cache->awake;
+	int *found = q->scratch->found;
+	int n = 0, a = 0, b = 0, na = q->cache->awake_count;
 	while (a < l->count || b < na) {
 		int i;
 		if (b == na || (a < l->count && l->index[a] < awake[b]))
@@ -94,16 +88,16 @@ static int list_answer(hs_world *world, const hs_near_list *l, hs_vec3 c, double
 			i = awake[b++];
 			a += a < l->count && l->index[a] == i;
 		}
-		if (centre_near(world, i, c, r, 1.0))
-			world->scratch.found[n++] = i;
+		if (centre_near(q, i, c, r, 1.0))
+			found[n++] = i;
 	}
 #if defined(HS_SELFCHECK)
 	// sanitizer builds: every object the contract asks for is in the answer (a stale list is not)
-	for (int j = 0, k = 0; j < world->model.object_count; ++j) {
-		while (k < n && world->scratch.found[k] < j)
+	for (int j = 0, k = 0; j < q->model->object_count; ++j) {
+		while (k < n && found[k] < j)
 			++k;
-		hs_vec3 p = world->state.bodies[j].pos;
-		if (hypot(p.x - c.x, p.y - c.y) <= r + world->cache.grid.half[j] && (k == n || world->scratch.found[k] != j)) {
+		hs_vec3 p = q->bodies[j].pos;
+		if (hypot(p.x - c.x, p.y - c.y) <= r + q->cache->grid.half[j] && (k == n || found[k] != j)) {
 			fprintf(stderr, "selfcheck: object %d missing from a neighbour list's answer\n", j);
 			abort();
 		}
@@ -112,10 +106,10 @@ static int list_answer(hs_world *world, const hs_near_list *l, hs_vec3 c, double
 	return n;
 }
 
-static hs_near_list *list_holding(hs_world *world, hs_vec3 c, double r) {
+static hs_near_list *list_holding(hs_near_lists *lists, hs_vec3 c, double r) {
 	for (int k = 0; k < HS_NEAR_BOXES; ++k) {
-		hs_near_list *l = &world->cache.near_lists.list[k];
-		if (l->epoch == world->cache.near_lists.epoch && c.x - r >= l->lo[0] && c.x + r <= l->hi[0] && c.y - r >= l->lo[1] &&
+		hs_near_list *l = &lists->list[k];
+		if (l->epoch == lists->epoch && c.x - r >= l->lo[0] && c.x + r <= l->hi[0] && c.y - r >= l->lo[1] &&
 		    c.y + r <= l->hi[1])
 			return l;
 	}
@@ -124,23 +118,25 @@ static hs_near_list *list_holding(hs_world *world, hs_vec3 c, double r) {
 
 // Lists the resting objects near the query's box grown by the skin, in place of the least recently
 // used list; or, when more than a list holds, answers from the grid's answer alone (found).
-static int list_and_answer(hs_world *world, hs_vec3 c, double r) {
-	double grown = r + world->cache.grid.cell0;
-	int n = grid_answer(world, c, grown, world->scratch.found);
-	hs_near_list *l = &world->cache.near_lists.list[0];
+static int list_and_answer(const query *q, hs_vec3 c, double r) {
+	hs_world_cache *cache = q->cache;
+	int *found = q->scratch->found;
+	double grown = r + cache->grid.cell0;
+	int n = grid_answer(cache, c, grown, found);
+	hs_near_list *l = &cache->near_lists.list[0];
 	for (int k = 1; k < HS_NEAR_BOXES; ++k)
-		l = world->cache.near_lists.list[k].used < l->used ? &world->cache.near_lists.list[k] : l;
+		l = cache->near_lists.list[k].used < l->used ? &cache->near_lists.list[k] : l;
 	l->epoch = 0;
 	l->count = 0;
 	for (int k = 0; k < n; ++k) {
-		int i = world->scratch.found[k];
-		if (world->cache.awake_flag[i] || !centre_near(world, i, c, grown, 4.0))
+		int i = found[k];
+		if (cache->awake_flag[i] || !centre_near(q, i, c, grown, 4.0))
 			continue;
 		if (l->count == HS_NEAR_LISTED) { // a crowd: the grid's answer, kept where near the query
 			int kept = 0;
 			for (int j = 0; j < n; ++j)
-				if (centre_near(world, world->scratch.found[j], c, r, 1.0))
-					world->scratch.found[kept++] = world->scratch.found[j];
+				if (centre_near(q, found[j], c, r, 1.0))
+					found[kept++] = found[j];
 			return kept;
 		}
 		l->index[l->count++] = i;
@@ -149,38 +145,24 @@ static int list_and_answer(hs_world *world, hs_vec3 c, double r) {
 	l->hi[0] = c.x + grown;
 	l->lo[1] = c.y - grown;
 	l->hi[1] = c.y + grown;
-	l->epoch = world->cache.near_lists.epoch;
-	l->used = ++world->cache.near_lists.clock;
-	return list_answer(world, l, c, r);
+	l->epoch = cache->near_lists.epoch;
+	l->used = ++cache->near_lists.clock;
+	return list_answer(q, l, c, r);
 }
 
-// (not inlined: a world scanned whole pays no more than its test)
-static HS_NOINLINE int grid_near(hs_world *world, hs_vec3 center, double radius) {
-	world->scratch.near = world->scratch.found;
-	if (world->cache.awake_count > HS_NEAR_AWAKE_MAX) // many in motion: the lists would hold few
-		return grid_answer(world, center, radius, world->scratch.found);
-	hs_near_list *l = list_holding(world, center, radius);
+// (out of line: a world scanned whole pays no more than its test, inline in broadphase.h)
+int hs_grid_near_filed(const hs_world_model *model, const hs_body *bodies, hs_world_cache *cache,
+                       hs_world_scratch *scratch, hs_vec3 center, double radius) {
+	const query parts = {model, bodies, cache, scratch}, *q = &parts;
+	scratch->near = scratch->found;
+	if (cache->awake_count > HS_NEAR_AWAKE_MAX) // many in motion: the lists would hold few
+		return grid_answer(cache, center, radius, scratch->found);
+	hs_near_list *l = list_holding(&cache->near_lists, center, radius);
 	if (!l)
-		return list_and_answer(world, center, radius);
-	l->used = ++world->cache.near_lists.clock;
-	world->cache.near_lists.hits++;
-	return list_answer(world, l, center, radius);
-}
-
-// A world scanned whole answers with every index, listed when the world was made: nothing written.
-static int every_index(hs_world *world) {
-	world->scratch.near = world->cache.every;
-	return world->model.object_count;
-}
-
-int hs_grid_near(hs_world *world, hs_vec3 center, double radius) {
-	return scanned(world) ? every_index(world) : grid_near(world, center, radius);
-}
-
-int hs_grid_near_either(hs_world *world, hs_vec3 a, hs_vec3 b, double radius) {
-	if (scanned(world))
-		return every_index(world);
-	return grid_near(world, hs_scale(hs_add(a, b), 0.5), radius + 0.5 * hs_length(hs_sub(b, a)));
+		return list_and_answer(q, center, radius);
+	l->used = ++cache->near_lists.clock;
+	cache->near_lists.hits++;
+	return list_answer(q, l, center, radius);
 }
 
 static void insert_sorted(int *list, int *count, int value) {
@@ -193,28 +175,25 @@ static void insert_sorted(int *list, int *count, int value) {
 	++*count;
 }
 
-void hs_wake(hs_world *world, int i) {
-	world->state.bodies[i].asleep = 0;
-	if (!world->cache.awake_flag[i]) {
-		world->cache.awake_flag[i] = 1;
-		insert_sorted(world->cache.awake, &world->cache.awake_count, i);
-	}
+void hs_awake_insert(hs_world_cache *cache, int i) {
+	cache->awake_flag[i] = 1;
+	insert_sorted(cache->awake, &cache->awake_count, i);
 }
 
-void hs_awake_compact(hs_world *world) {
+void hs_awake_compact(const hs_body *bodies, hs_world_cache *cache) {
 	int kept = 0;
-	for (int k = 0; k < world->cache.awake_count; ++k) {
-		int i = world->cache.awake[k];
-		const hs_body *b = &world->state.bodies[i];
-		hs_digest_stale(world, i); // the step changes no other object (skip_work changes no result)
+	for (int k = 0; k < cache->awake_count; ++k) {
+		int i = cache->awake[k];
+		const hs_body *b = &bodies[i];
+		hs_digest_stale(cache, i); // the step changes no other object (skip_work changes no result)
 		if (b->asleep && !b->held && !b->carried) {
-			world->cache.awake_flag[i] = 0;
-			world->cache.near_lists.epoch++; // at rest where no neighbour list looked for it
+			cache->awake_flag[i] = 0;
+			cache->near_lists.epoch++; // at rest where no neighbour list looked for it
 		}
 		else
-			world->cache.awake[kept++] = i;
+			cache->awake[kept++] = i;
 	}
-	world->cache.awake_count = kept;
+	cache->awake_count = kept;
 }
 
 void hs_broadphase_reset(hs_world *world) {
@@ -229,5 +208,5 @@ void hs_broadphase_reset(hs_world *world) {
 			world->cache.awake[world->cache.awake_count++] = i;
 	}
 	world->cache.grid_dirty = true; // filed again at the next step (the neighbour lists made stale)
-	hs_digest_all_stale(world);
+	hs_digest_all_stale(&world->cache);
 }

@@ -10,11 +10,11 @@ long hs_world_frame(const hs_world *world) { return world ? world->state.frame :
 double hs_world_time(const hs_world *world) { return world ? (double)world->state.frame * world->model.def.dt : 0.0; }
 double hs_world_dt(const hs_world *world) { return world ? world->model.def.dt : 0.0; }
 
-void hs_world_note_fault(hs_world *world, int object) {
-	world->counters.numeric_faults++;
-	if (world->state.first_fault_frame < 0) {
-		world->state.first_fault_frame = world->state.frame;
-		world->state.first_fault_object = object;
+void hs_world_note_fault(hs_world_counters *counters, hs_world_state *state, int object) {
+	counters->numeric_faults++;
+	if (state->first_fault_frame < 0) {
+		state->first_fault_frame = state->frame;
+		state->first_fault_object = object;
 	}
 }
 

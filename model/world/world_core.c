@@ -277,14 +277,14 @@ hs_object_id hs_world_add_object(hs_world *world, const hs_object_def *def, hs_s
 	body->mass = def->density * world->model.shapes[body->shape].volume;
 	body->restitution = def->restitution < 0.0 ? -1.0 : def->restitution;
 	body->vel = def->velocity;
-	if (hs_motion_pose_vertices(world, body) <= world->model.def.floor_tolerance) {
+	if (hs_motion_pose_vertices(&world->model, &world->scratch, body) <= world->model.def.floor_tolerance) {
 		body->grounded = 1;
-		body->floor_contacts = hs_motion_floor_points(world, body);
+		body->floor_contacts = hs_motion_floor_points(&world->model, &world->scratch, body);
 	}
 	hs_set_status(status, HS_OK);
 	int index = world->model.object_count++;
-	hs_wake(world, index); // new objects look at the world once
-	hs_digest_stale(world, index);
+	hs_wake(world->state.bodies, &world->cache, index); // new objects look at the world once
+	hs_digest_stale(&world->cache, index);
 	world->cache.grid_dirty = true;
 	return hs_object_handle(world, index);
 }

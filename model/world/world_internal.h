@@ -103,6 +103,19 @@ typedef struct hs_world_scratch {
 	int pick_faces, pick_edges;
 	int *face_pick, *edge_pick;
 	uint8_t *edge_mark;
+	// the spring step, max_objects long each in a spring world (empty in a hand world): each
+	// object's position and velocity when the frame began (the numeric guard, step_spring.c), where
+	// its path through the frame starts and at which fraction of the frame (spring_collide.c), and
+	// the floor layer's projection (spring_collide.c): its objects, their count and a mark per
+	// object (count and marks 0 between uses)
+	struct {
+		hs_vec3 *saved_pos, *saved_vel;
+		hs_vec3 *path_pos, *path_vel;
+		double *path_t0;
+		int *layer;
+		int layer_count;
+		uint8_t *in_layer;
+	} spring;
 } hs_world_scratch;
 
 // OUTPUT of the last call, rebuilt by every step (or load): not state.
@@ -133,15 +146,15 @@ static inline const hs_part_cache *hs_part_cache_of(const hs_world *world, const
 #define HS_GENERATION 1
 
 // Object i may have changed: its digest is computed again at the next hash (state.c).
-static inline void hs_digest_stale(hs_world *world, int i) {
-	if (!world->cache.stale_flag[i]) {
-		world->cache.stale_flag[i] = 1;
-		world->cache.stale[world->cache.stale_count++] = i;
+static inline void hs_digest_stale(hs_world_cache *cache, int i) {
+	if (!cache->stale_flag[i]) {
+		cache->stale_flag[i] = 1;
+		cache->stale[cache->stale_count++] = i;
 	}
 }
 
 // Any object may have changed (a load, a spring step, a test writing fields): all are digested again.
-static inline void hs_digest_all_stale(hs_world *world) { world->cache.all_stale = true; }
+static inline void hs_digest_all_stale(hs_world_cache *cache) { cache->all_stale = true; }
 
 static inline hs_object_id hs_object_handle(const hs_world *world, int i) {
 	hs_object_id id = {0, 0, 0};
@@ -192,8 +205,9 @@ static inline bool hs_within(hs_vec3 v, double limit) {
 }
 
 // Numeric trouble (a non-finite value caught and frozen): counts it and remembers the first
-// (frame, object); `object` -1 when the fault belongs to no single object.
-// Defined in world_base.c, below every stage.
-void hs_world_note_fault(hs_world *world, int object);
+// (frame, object) in the state's fault words; `object` -1 when the fault belongs to no single
+// object. Reads the state's frame and writes nothing else of it. Defined in world_base.c, below
+// every stage.
+void hs_world_note_fault(hs_world_counters *counters, hs_world_state *state, int object);
 
 #endif

@@ -19,7 +19,8 @@ static void *take(carver *c, size_t count, size_t size) {
 	return c->base ? c->base + at : NULL;
 }
 
-static void lay_out(hs_world_scratch *s, carver *c, size_t objects, size_t vertices, size_t faces, size_t edges) {
+static void lay_out(hs_world_scratch *s, carver *c, size_t objects, size_t springs, size_t vertices, size_t faces,
+                    size_t edges) {
 	s->moved_from = take(c, objects, sizeof *s->moved_from);
 	s->posed = take(c, vertices + 1u, sizeof *s->posed); // room for a closing hull point
 	s->points = take(c, vertices + 1u, sizeof *s->points);
@@ -30,6 +31,13 @@ static void lay_out(hs_world_scratch *s, carver *c, size_t objects, size_t verti
 	s->face_pick = take(c, faces, sizeof *s->face_pick);
 	s->edge_pick = take(c, edges, sizeof *s->edge_pick);
 	s->edge_mark = take(c, edges, sizeof *s->edge_mark);
+	s->spring.saved_pos = take(c, springs, sizeof *s->spring.saved_pos);
+	s->spring.saved_vel = take(c, springs, sizeof *s->spring.saved_vel);
+	s->spring.path_pos = take(c, springs, sizeof *s->spring.path_pos);
+	s->spring.path_vel = take(c, springs, sizeof *s->spring.path_vel);
+	s->spring.path_t0 = take(c, springs, sizeof *s->spring.path_t0);
+	s->spring.layer = take(c, springs, sizeof *s->spring.layer);
+	s->spring.in_layer = take(c, springs, sizeof *s->spring.in_layer);
 }
 
 static int at_least(int a, int b) { return a > b ? a : b; }
@@ -42,16 +50,17 @@ bool hs_world_scratch_reserve(hs_world *world, int vertices, int faces, int edge
 	faces = at_least(faces, s->pick_faces);
 	edges = at_least(edges, s->pick_edges);
 	size_t objects = world->model.def.max_objects > 0 ? (size_t)world->model.def.max_objects : 1u;
+	size_t springs = world->model.def.kind == HS_WORLD_SPRING ? objects : 0u;
 	hs_world_scratch measured = *s;
 	carver c = {NULL, 0};
-	lay_out(&measured, &c, objects, (size_t)vertices, (size_t)faces, (size_t)edges);
+	lay_out(&measured, &c, objects, springs, (size_t)vertices, (size_t)faces, (size_t)edges);
 	void *arena = calloc(1, c.used); // zeroed: edge_mark is all 0 between uses
 	if (!arena)
 		return false;
 	free(s->arena);
 	s->arena = arena;
 	c = (carver){arena, 0};
-	lay_out(s, &c, objects, (size_t)vertices, (size_t)faces, (size_t)edges);
+	lay_out(s, &c, objects, springs, (size_t)vertices, (size_t)faces, (size_t)edges);
 	s->vertex_room = vertices;
 	s->pick_faces = faces;
 	s->pick_edges = edges;
