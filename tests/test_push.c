@@ -26,6 +26,13 @@ static hs_world *box_world(hs_vec3 size) {
 	return w;
 }
 
+// Free motion's parts of w, for the push functions (made at each call: one world at a time).
+static const hs_motion_pass *motion_of(hs_world *w) {
+	static hs_motion_pass m;
+	m = hs_motion_pass_of(w);
+	return &m;
+}
+
 static double lowest_z(hs_world *w) { return hs_motion_pose_vertices(&w->model, &w->scratch, &w->state.bodies[0]); }
 
 // (a) A still fingertip 1 mm into the top of a 10 cm box on the floor (it came down onto it in the
@@ -79,7 +86,7 @@ static void test_push_low_slides(void **state) {
 		double d = 0.002;
 		for (int frame = 1; frame <= 10; ++frame) {
 			hs_vec3 c = hs_v3(b->pos.x - 0.05, 0, heights[k]);
-			assert_true(hs_push_on_floor(w, b, c, hs_add(c, hs_v3(d, 0, 0))));
+			assert_true(hs_push_on_floor(motion_of(w), b, c, hs_add(c, hs_v3(d, 0, 0))));
 			assert_near(b->pos.x, frame * d, 1e-15);
 			assert_true(b->pos.y == 0.0 && b->pos.z == 0.05);
 			assert_true(b->rot.w == 1.0 && b->rot.x == 0.0 && b->rot.y == 0.0 && b->rot.z == 0.0);
@@ -103,7 +110,7 @@ static void test_push_high_tips(void **state) {
 	hs_vec3 t = hs_scale(cg, d * 0.05 / 0.0125);
 	hs_vec3 r = hs_sub(hs_v3(d, 0, 0), t);
 	double theta = atan((0.25 * r.x + 0.1 * r.z) / 0.0725);
-	assert_true(hs_push_on_floor(w, b, c, hs_add(c, hs_v3(d, 0, 0))));
+	assert_true(hs_push_on_floor(motion_of(w), b, c, hs_add(c, hs_v3(d, 0, 0))));
 	hs_vec3 pivot = hs_v3(0.05 + t.x, 0, 0);
 	hs_vec3 g = hs_add(pivot, hs_v3(-0.05 * cos(theta) + 0.15 * sin(theta), 0,
 	                                0.05 * sin(theta) + 0.15 * cos(theta)));
@@ -116,7 +123,7 @@ static void test_push_high_tips(void **state) {
 	double last = hs_quat_angle(b->rot);
 	for (int frame = 0; frame < 20; ++frame) {
 		hs_vec3 top = hs_add(b->pos, hs_quat_rotate(b->rot, hs_v3(-0.05, 0, 0.1)));
-		assert_true(hs_push_on_floor(w, b, top, hs_add(top, hs_v3(d, 0, 0))));
+		assert_true(hs_push_on_floor(motion_of(w), b, top, hs_add(top, hs_v3(d, 0, 0))));
 		hs_motion_keep_above_floor(&w->model, &w->scratch, b);
 		assert_true(lowest_z(w) >= -1e-12);
 		assert_true(hs_quat_angle(b->rot) > last);
@@ -135,14 +142,14 @@ static void test_press_within_floor_cone_holds(void **state) {
 	hs_world *w = box_world(hs_v3(0.1, 0.1, 0.1));
 	hs_body *b = &w->state.bodies[0];
 	hs_vec3 c = hs_v3(0.04, 0.01, 0.1);
-	assert_true(hs_push_on_floor(w, b, c, hs_add(c, hs_v3(0.0012, -0.0009, -0.0015)))); // |h| = 0.0015
+	assert_true(hs_push_on_floor(motion_of(w), b, c, hs_add(c, hs_v3(0.0012, -0.0009, -0.0015)))); // |h| = 0.0015
 	assert_true(b->pos.x == 0.0 && b->pos.y == 0.0 && b->pos.z == 0.05);
 	assert_true(b->rot.w == 1.0 && b->rot.x == 0.0 && b->rot.y == 0.0 && b->rot.z == 0.0);
-	hs_push_many(w, b, hs_v3(0.001, 0, -0.002));
+	hs_push_many(motion_of(w), b, hs_v3(0.001, 0, -0.002));
 	assert_true(b->pos.x == 0.0 && b->pos.y == 0.0 && b->pos.z == 0.05);
-	hs_push_many(w, b, hs_v3(0.003, 0, -0.002));
+	hs_push_many(motion_of(w), b, hs_v3(0.003, 0, -0.002));
 	assert_true(b->pos.x == 0.003 && b->pos.y == 0.0 && b->pos.z == 0.05);
-	assert_true(hs_push_on_floor(w, b, c, hs_add(c, hs_v3(0.002, 0, -0.001))));
+	assert_true(hs_push_on_floor(motion_of(w), b, c, hs_add(c, hs_v3(0.002, 0, -0.001))));
 	assert_true(b->pos.x != 0.003 || hs_quat_angle(b->rot) > 0.0); // outside the cone it acts
 	hs_world_destroy(w);
 }
@@ -198,7 +205,7 @@ static void test_push_on_a_corner_keeps_floor(void **state) {
 	hs_motion_keep_above_floor(&w->model, &w->scratch, b);
 	assert_int_equal(b->floor_contacts, 1);
 	hs_vec3 at = b->pos;
-	hs_push_many(w, b, hs_v3(0.002, 0.001, 0.003));
+	hs_push_many(motion_of(w), b, hs_v3(0.002, 0.001, 0.003));
 	assert_true(b->pos.x == at.x + 0.002 && b->pos.y == at.y + 0.001 && b->pos.z == at.z);
 	hs_world_destroy(w);
 }
@@ -213,7 +220,7 @@ static void test_skewed_push_tips_about_floor_edge(void **state) {
 	hs_body *b = &w->state.bodies[0];
 	for (int frame = 0; frame < 10; ++frame) {
 		hs_vec3 c = hs_add(b->pos, hs_quat_rotate(b->rot, hs_v3(-0.05, 0.03, 0.1)));
-		assert_true(hs_push_on_floor(w, b, c, hs_add(c, hs_v3(0.002, 0.0, 0.0))));
+		assert_true(hs_push_on_floor(motion_of(w), b, c, hs_add(c, hs_v3(0.002, 0.0, 0.0))));
 		hs_motion_keep_above_floor(&w->model, &w->scratch, b);
 		assert_int_equal(b->floor_contacts, 2);
 		assert_near(lowest_z(w), 0.0, 1e-15);
@@ -259,7 +266,7 @@ static void test_push_end_stops_on_floor(void **state) {
 	hs_motion_keep_above_floor(&w->model, &w->scratch, b);
 	assert_int_equal(b->floor_contacts, 2);
 	b->prev = b->pos;
-	assert_false(hs_push_release_on_floor(w, b, false)); // after a one-point push: eq. 3 carries it on
+	assert_false(hs_push_release_on_floor(motion_of(w), b, false)); // after a one-point push: eq. 3 carries it on
 	hs_world_destroy(w);
 }
 
@@ -278,7 +285,7 @@ static void test_push_many_end_stays_on_floor(void **state) {
 	assert_int_equal(b->floor_contacts, 2);
 	hs_vec3 at = b->pos;
 	b->prev = hs_sub(at, hs_v3(0.01, 0, 0));
-	assert_true(hs_push_release_on_floor(w, b, true));
+	assert_true(hs_push_release_on_floor(motion_of(w), b, true));
 	assert_true(b->grounded == 1);
 	assert_true(hs_motion_pose_vertices(&w->model, &w->scratch, b) >= -1e-15);
 	assert_true(fabs(b->pos.x - at.x) < 1e-4 && b->pos.y == at.y); // turned about its edge, not slid
@@ -318,7 +325,7 @@ static void test_free_object_untouched(void **state) {
 	hs_world *w = box_world(hs_v3(0.1, 0.1, 0.1));
 	w->state.bodies[0].pos.z = 1.0;
 	hs_body before = w->state.bodies[0];
-	assert_false(hs_push_on_floor(w, &w->state.bodies[0], hs_v3(0.04, 0, 1.05), hs_v3(0.04, 0, 1.049)));
+	assert_false(hs_push_on_floor(motion_of(w), &w->state.bodies[0], hs_v3(0.04, 0, 1.05), hs_v3(0.04, 0, 1.049)));
 	assert_memory_equal(&before, &w->state.bodies[0], sizeof before);
 	hs_world_destroy(w);
 }

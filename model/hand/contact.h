@@ -6,6 +6,7 @@
 #include <stdbool.h>
 #include <stdint.h>
 
+#include "contact_pass.h"
 #include "world_internal.h"
 
 // True when the hand's path through the frame may reach the body's bounding sphere grown by
@@ -53,19 +54,20 @@ typedef struct hs_pose {
 	hs_quat rot;
 } hs_pose;
 
-// Appends the contacts of every hand with the object to world->out.contacts; returns how many.
+// Appends the contacts of every hand with the object to cp->out->contacts; returns how many.
 // `before` is the object's pose one frame ago when it has moved since (NULL: it has not).
-int hs_contact_detect(hs_world *world, int object, const hs_pose *before);
+int hs_contact_detect(const hs_contact_pass *cp, int object, const hs_pose *before);
 // The same against the object's parts grown by `grow` (m): a finger part within `grow` of the
 // surface touches it (the grasp's release margin, docs/model.md §3). Contact points are
 // projected on the faces themselves.
-int hs_contact_detect_grown(hs_world *world, int object, const hs_pose *before, double grow);
-// True when hs_contact_detect_grown(world, object, NULL, grow) would give hand index h a contact
+int hs_contact_detect_grown(const hs_contact_pass *cp, int object, const hs_pose *before, double grow);
+// True when hs_contact_detect_grown(cp, object, NULL, grow) would give hand index h a contact
 // (grow > 0): found without making the contacts, at the first one.
-bool hs_contact_hand_within(hs_world *world, int object, int h, double grow);
+bool hs_contact_hand_within(const hs_contact_pass *cp, int object, int h, double grow);
 // §3.2 rectification of a check point: p moved to the nearest face of the convex part of the
-// first object (in index order) it lies in, or p itself (hs_world_hand_rectified_points).
-hs_vec3 hs_contact_rectify(const hs_world *world, hs_vec3 p);
+// first object (in index order) it lies in, or p itself (hs_world_hand_rectified_points). Reads
+// the model and the bodies alone.
+hs_vec3 hs_contact_rectify(const hs_world_model *model, const hs_body *bodies, hs_vec3 p);
 // The largest n_i · n_j of a grasp: cos(threshold) plus a tolerance (docs/model.md §3), once per world.
 double hs_grasp_limit(double grasp_threshold_deg);
 // Fig. 2: the contact state of a set of contacts (grasp when two normals are >= threshold apart,

@@ -92,12 +92,12 @@ bool hs_contact_line_path_near(const hs_hand *hand, int j, int steps, hs_vec3 c,
 
 #if defined(HS_SELFCHECK)
 // Sanitizer builds: what sweep_clear_of_a_face skipped would have found nothing.
-static void check_clear(const hs_world *world, const hs_shape *shape, const hs_part *part, const hs_vec3 q[2],
+static void check_clear(const hs_contact_pass *cp, const hs_shape *shape, const hs_part *part, const hs_vec3 q[2],
                         const hs_vec3 p[2]) {
-	if (clip_part(world, shape, part, p[0], p[1], 0.0).hit || clip_part(world, shape, part, q[0], q[1], 0.0).hit ||
-	    !hs_contact_sweep_beyond_a_face(world, shape, part, q, p)) {
+	if (clip_part(cp->model, shape, part, p[0], p[1], 0.0).hit || clip_part(cp->model, shape, part, q[0], q[1], 0.0).hit ||
+	    !hs_contact_sweep_beyond_a_face(cp->model, shape, part, q, p)) {
 		fprintf(stderr, "handspring: a line's sweep passed over as clear of a face touches the part (frame %ld)\n",
-		        world->state.frame);
+		        cp->frame);
 		abort();
 	}
 }
@@ -107,30 +107,30 @@ static void check_clear(const hs_world *world, const hs_shape *shape, const hs_p
 // scanned part by more than HS_CULL_SLACK (far above the rounding of body-frame coordinates within
 // HS_MAX_COORDINATE): then the clips of p and of q miss and sweep_beyond_a_face holds, so
 // swept_path finds nothing, and the line is passed over before them.
-bool hs_contact_sweep_clear_of_a_face(const hs_world *world, const hs_shape *shape, const hs_part *part, const hs_vec3 q[2],
+bool hs_contact_sweep_clear_of_a_face(const hs_contact_pass *cp, const hs_shape *shape, const hs_part *part, const hs_vec3 q[2],
                                       const hs_vec3 p[2]) {
 	const hs_vec3 ends[4] = {q[0], q[1], p[0], p[1]};
 	if (part->face_count >= HS_FACE_TREE_MIN_FACES || !scan_beyond(shape, part, ends, HS_CULL_SLACK))
 		return false;
 #if defined(HS_SELFCHECK)
-	check_clear(world, shape, part, q, p);
+	check_clear(cp, shape, part, q, p);
 #endif
-	(void)world;
+	(void)cp;
 	return true;
 }
 
 #if defined(HS_SELFCHECK)
 // Sanitizer builds: each line of a segment passed over as clear would have been passed over alone.
-void hs_contact_check_segment_clear(const hs_world *world, int h, int a, const hs_frame *body, const hs_frame *before,
+void hs_contact_check_segment_clear(const hs_contact_pass *cp, int h, int a, const hs_frame *body, const hs_frame *before,
                                     const hs_shape *shape, const hs_part *part) {
 	int s = a - a / 4; // the segment of first check point a (hs_segment_first_point)
-	hs_hand *hand = (hs_hand *)&world->state.hands[h]; // placing lines changes no result (hand_internal.h)
+	hs_hand *hand = (hs_hand *)&cp->hands[h]; // placing lines changes no result (hand_internal.h)
 	hs_hand_ready_segment(hand, s);
 	for (int j = 4 * s; j < 4 * s + 4; ++j) {
 		hs_vec3 p[2], q[2];
 		line_to_body(body, hand->cache.lines[j], p);
 		line_to_body(before, hand->cache.prev_lines[j], q);
-		if (!hs_contact_sweep_clear_of_a_face(world, shape, part, q, p)) {
+		if (!hs_contact_sweep_clear_of_a_face(cp, shape, part, q, p)) {
 			fprintf(stderr, "handspring: a segment passed over as clear of a face has line %d near the part\n", j);
 			abort();
 		}
@@ -242,22 +242,22 @@ unsigned hs_contact_lines_near(const hs_hand *hand, int s, hs_vec3 c, double r_s
 #if defined(HS_SELFCHECK)
 // Sanitizer builds: each line of a segment held_lines_clear passed over, placed and moved into
 // the body frame, lies beside a touching check point or misses the part.
-static void check_held_clear(hs_world *world, int h, int s, int a, const hs_frame *body, const hs_shape *shape,
+static void check_held_clear(const hs_contact_pass *cp, int h, int s, int a, const hs_frame *body, const hs_shape *shape,
                              const hs_part *part, uint32_t touching, double grow) {
-	hs_hand_ready_segment(&world->state.hands[h], s);
+	hs_hand_ready_segment(&cp->hands[h], s);
 	for (int j = 4 * s; j < 4 * s + 4; ++j) {
 		hs_vec3 p[2];
-		line_to_body(body, world->state.hands[h].cache.lines[j], p);
-		if (!hs_contact_end_touches(world, touching, a, shape, part, p) && clip_part(world, shape, part, p[0], p[1], grow).hit) {
+		line_to_body(body, cp->hands[h].cache.lines[j], p);
+		if (!hs_contact_end_touches(cp->model, touching, a, shape, part, p) && clip_part(cp->model, shape, part, p[0], p[1], grow).hit) {
 			fprintf(stderr, "selfcheck: a held object's line passed over as clear touches the part\n");
 			abort();
 		}
 	}
 }
 #else
-static inline void check_held_clear(hs_world *world, int h, int s, int a, const hs_frame *body, const hs_shape *shape,
+static inline void check_held_clear(const hs_contact_pass *cp, int h, int s, int a, const hs_frame *body, const hs_shape *shape,
                                     const hs_part *part, uint32_t touching, double grow) {
-	(void)world, (void)h, (void)s, (void)a, (void)body, (void)shape, (void)part, (void)touching, (void)grow;
+	(void)cp, (void)h, (void)s, (void)a, (void)body, (void)shape, (void)part, (void)touching, (void)grow;
 }
 #endif
 
@@ -368,10 +368,10 @@ HS_AVX static bool held_four_clear(const hs_part *part, const hs_part_cache *pc,
 // part grown by the margin (end_touches), have both ends beyond one face of the box (clip_part's
 // miss), or lie outside the part's bounding sphere. Box parts only (hs_part_is_box); the lines are
 // not embedded.
-static HS_FORCE_INLINE bool held_lines_clear_in(hs_world *world, int h, int s, int a, const hs_frame *body,
+static HS_FORCE_INLINE bool held_lines_clear_in(const hs_contact_pass *cp, int h, int s, int a, const hs_frame *body,
                                                 const hs_shape *shape, const hs_part *part, uint32_t touching, double grow,
                                                 hs_held_turn *turn, bool four) {
-	const hs_hand *hand = &world->state.hands[h];
+	const hs_hand *hand = &cp->hands[h];
 	hs_vec3 e0 = to_body(body, hand->cache.points[a]), e1 = to_body(body, hand->cache.points[a + 1]);
 	if (!hs_part_box_takes(e0) || !hs_part_box_takes(e1))
 		return false;
@@ -387,9 +387,9 @@ static HS_FORCE_INLINE bool held_lines_clear_in(hs_world *world, int h, int s, i
 	// the box's path whenever e0 and e1 do
 	if (!hs_part_box_takes(y) || !hs_part_box_takes(z))
 		return false;
-	const hs_part_cache *pc = hs_part_cache_of(world, shape, part);
+	const hs_part_cache *pc = part_cache_in(cp->model, shape, part);
 	held_ends ends = {e0, e1, y, z, touching >> a & 1u, touching >> (a + 1) & 1u,
-	                  world->model.def.grasp_release_mm * 1e-3 - HS_CULL_SLACK, grow, part->radius + pc->grow_reach * grow + HS_CULL_SLACK};
+	                  cp->model->def.grasp_release_mm * 1e-3 - HS_CULL_SLACK, grow, part->radius + pc->grow_reach * grow + HS_CULL_SLACK};
 #if HS_LANES4
 	bool clear = four ? held_four_clear(part, pc, &ends) : held_each_clear(part, pc, &ends);
 #else
@@ -404,19 +404,19 @@ static HS_FORCE_INLINE bool held_lines_clear_in(hs_world *world, int h, int s, i
 #endif
 	if (!clear)
 		return false;
-	check_held_clear(world, h, s, a, body, shape, part, touching, grow);
+	check_held_clear(cp, h, s, a, body, shape, part, touching, grow);
 	return true;
 }
 
-bool hs_contact_held_lines_clear_plain(hs_world *world, int h, int s, int a, const hs_frame *body, const hs_shape *shape,
+bool hs_contact_held_lines_clear_plain(const hs_contact_pass *cp, int h, int s, int a, const hs_frame *body, const hs_shape *shape,
                                        const hs_part *part, uint32_t touching, double grow, hs_held_turn *turn) {
-	return held_lines_clear_in(world, h, s, a, body, shape, part, touching, grow, turn, false);
+	return held_lines_clear_in(cp, h, s, a, body, shape, part, touching, grow, turn, false);
 }
 
 #if HS_LANES4
-HS_AVX bool hs_contact_held_lines_clear_avx(hs_world *world, int h, int s, int a, const hs_frame *body, const hs_shape *shape,
+HS_AVX bool hs_contact_held_lines_clear_avx(const hs_contact_pass *cp, int h, int s, int a, const hs_frame *body, const hs_shape *shape,
                                             const hs_part *part, uint32_t touching, double grow, hs_held_turn *turn) {
-	return held_lines_clear_in(world, h, s, a, body, shape, part, touching, grow, turn, true);
+	return held_lines_clear_in(cp, h, s, a, body, shape, part, touching, grow, turn, true);
 }
 #endif
 

@@ -7,6 +7,7 @@
 #include <stdint.h>
 
 #include "contact_part.h"
+#include "contact_pass.h"
 #include "lanes4.h"
 
 // The first check point of finger segment s (finger s / 3, segment s % 3): 4 (s / 3) + s % 3.
@@ -36,11 +37,11 @@ static inline bool hs_contact_path_near(const hs_hand *hand, int i, int steps, h
 // the frame or at its start (a finger lifting off sweeps its side past the face it leaves): a fingertip resting on a top face 1 cm from its edge, its prism's
 // side 2 mm from the edge, swept that side across the edge under glove noise (±6 mm a frame) and
 // pushed the object sideways while the tip itself held still.
-static inline bool hs_contact_end_touches(const hs_world *world, uint32_t touching, int point, const hs_shape *shape,
+static inline bool hs_contact_end_touches(const hs_world_model *model, uint32_t touching, int point, const hs_shape *shape,
                                           const hs_part *part, const hs_vec3 p[2]) { // the line runs beside point and point + 1
-	double margin = world->model.def.grasp_release_mm * 1e-3;
+	double margin = model->def.grasp_release_mm * 1e-3;
 	for (int k = 0; k < 2; ++k)
-		if ((touching >> (point + k) & 1u) && inside_part(world, shape, part, p[k], margin))
+		if ((touching >> (point + k) & 1u) && inside_part(model, shape, part, p[k], margin))
 			return true;
 	return false;
 }
@@ -63,10 +64,10 @@ typedef struct hs_segment_bounds {
 	double rs, rp, ri, deep;
 } hs_segment_bounds;
 
-static inline hs_segment_bounds hs_contact_segment_bounds(const hs_world *world, const hs_hand *hand, double r) {
+static inline hs_segment_bounds hs_contact_segment_bounds(const hs_world_model *model, const hs_hand *hand, double r) {
 	double rf = hand->model.def.finger_radius;
 	hs_segment_bounds b = {r + rf + HS_CULL_SLACK, r + 3.0 * rf + HS_CULL_SLACK, r - rf - HS_CULL_SLACK,
-	                    world->model.def.grasp_release_mm * 1e-3 - rf - HS_CULL_SLACK};
+	                    model->def.grasp_release_mm * 1e-3 - rf - HS_CULL_SLACK};
 	return b;
 }
 
@@ -84,11 +85,11 @@ uint32_t hs_contact_points_near(const hs_hand *hand, hs_vec3 c, double r_sq, dou
 // Check line j's path through the frame may come within r of c.
 bool hs_contact_line_path_near(const hs_hand *hand, int j, int steps, hs_vec3 c, double r);
 // A line's sweep (q to p, one piece) clear of one face of a scanned part.
-bool hs_contact_sweep_clear_of_a_face(const hs_world *world, const hs_shape *shape, const hs_part *part,
+bool hs_contact_sweep_clear_of_a_face(const hs_contact_pass *cp, const hs_shape *shape, const hs_part *part,
                                       const hs_vec3 q[2], const hs_vec3 p[2]);
 #if defined(HS_SELFCHECK)
 // Self-check builds: each line of a segment passed over as clear of a face is so alone.
-void hs_contact_check_segment_clear(const hs_world *world, int h, int a, const hs_frame *body, const hs_frame *before,
+void hs_contact_check_segment_clear(const hs_contact_pass *cp, int h, int a, const hs_frame *body, const hs_frame *before,
                                     const hs_shape *shape, const hs_part *part);
 #endif
 // The finger segments whose axis, and segment s's check lines whose line, lie within sqrt(r_sq) of c.
@@ -96,20 +97,20 @@ uint32_t hs_contact_axes_near(const hs_hand *hand, hs_vec3 c, double r_sq, doubl
 unsigned hs_contact_lines_near(const hs_hand *hand, int s, hs_vec3 c, double r_sq);
 // A held object's finger segment s whose four check lines would find nothing (box parts): four
 // lines in four AVX lanes, or one by one.
-bool hs_contact_held_lines_clear_plain(hs_world *world, int h, int s, int a, const hs_frame *body, const hs_shape *shape,
+bool hs_contact_held_lines_clear_plain(const hs_contact_pass *cp, int h, int s, int a, const hs_frame *body, const hs_shape *shape,
                                        const hs_part *part, uint32_t touching, double grow, hs_held_turn *turn);
 #if HS_LANES4
-bool hs_contact_held_lines_clear_avx(hs_world *world, int h, int s, int a, const hs_frame *body, const hs_shape *shape,
+bool hs_contact_held_lines_clear_avx(const hs_contact_pass *cp, int h, int s, int a, const hs_frame *body, const hs_shape *shape,
                                      const hs_part *part, uint32_t touching, double grow, hs_held_turn *turn);
 #endif
-static inline bool hs_contact_held_lines_clear(hs_world *world, int h, int s, int a, const hs_frame *body,
+static inline bool hs_contact_held_lines_clear(const hs_contact_pass *cp, int h, int s, int a, const hs_frame *body,
                                                const hs_shape *shape, const hs_part *part, uint32_t touching, double grow,
                                                hs_held_turn *turn) {
 #if HS_LANES4
 	if (hs_cpu_has_avx())
-		return hs_contact_held_lines_clear_avx(world, h, s, a, body, shape, part, touching, grow, turn);
+		return hs_contact_held_lines_clear_avx(cp, h, s, a, body, shape, part, touching, grow, turn);
 #endif
-	return hs_contact_held_lines_clear_plain(world, h, s, a, body, shape, part, touching, grow, turn);
+	return hs_contact_held_lines_clear_plain(cp, h, s, a, body, shape, part, touching, grow, turn);
 }
 // The fingers (bit f) far from a part's bounding sphere (centre c, radius `reach`) through the frame.
 // grow_reach: the part's (part_cache.h).
@@ -141,7 +142,7 @@ static inline uint32_t hs_contact_segments_embedded(const hs_hand *hand) {
 // True when check point a or a + 1 touches (`touching`) and lies inside the part grown by `grow`
 // now (the check points of a segment's line ends, end_touches). `memo` keeps each point's answer
 // for the rest of the part's lines.
-static inline bool hs_contact_ends_deep(const hs_world *world, const hs_hand *hand, uint32_t touching, int a,
+static inline bool hs_contact_ends_deep(const hs_world_model *model, const hs_hand *hand, uint32_t touching, int a,
                                         const hs_frame *body, const hs_shape *shape, const hs_part *part, double grow,
                                         hs_deep_memo *memo) {
 	for (uint32_t ends = touching & 3u << a; ends; ends &= ends - 1u) { // a, then a + 1
@@ -149,7 +150,7 @@ static inline bool hs_contact_ends_deep(const hs_world *world, const hs_hand *ha
 		uint32_t bit = 1u << i;
 		if (!(memo->known & bit)) { // a check point ends two segments: tested once
 			memo->known |= bit;
-			if (inside_part(world, shape, part, to_body(body, hand->cache.points[i]), grow))
+			if (inside_part(model, shape, part, to_body(body, hand->cache.points[i]), grow))
 				memo->deep |= bit;
 		}
 		if (memo->deep & bit)
@@ -213,10 +214,10 @@ static inline bool hs_contact_axis_path_near(const hs_hand *hand, int a, int ste
 // its check lines lies finger_radius from that axis, so its ends now and a frame ago lie beyond
 // the face by more than HS_CULL_SLACK (the rounding of placing and transforming them is far below
 // the other HS_CULL_SLACK): sweep_clear_of_a_face would pass each one over.
-static inline bool hs_contact_segment_clear_of_a_face(const hs_world *world, int h, int a, const hs_frame *body,
+static inline bool hs_contact_segment_clear_of_a_face(const hs_contact_pass *cp, int h, int a, const hs_frame *body,
                                                       const hs_frame *before, const hs_shape *shape,
                                                       const hs_part *part) {
-	const hs_hand *hand = &world->state.hands[h];
+	const hs_hand *hand = &cp->hands[h];
 	if (part->face_count >= HS_FACE_TREE_MIN_FACES)
 		return false;
 	const hs_vec3 e[4] = {to_body(body, hand->cache.points[a]), to_body(body, hand->cache.points[a + 1]),
@@ -224,7 +225,7 @@ static inline bool hs_contact_segment_clear_of_a_face(const hs_world *world, int
 	if (!scan_beyond(shape, part, e, hand->model.def.finger_radius + 2.0 * HS_CULL_SLACK))
 		return false;
 #if defined(HS_SELFCHECK)
-	hs_contact_check_segment_clear(world, h, a, body, before, shape, part);
+	hs_contact_check_segment_clear(cp, h, a, body, before, shape, part);
 #endif
 	return true;
 }

@@ -8,19 +8,19 @@
 // 90 deg case (two adjoining cube faces) and two builds could disagree (docs/model.md §3).
 #define HS_GRASP_EPS 1e-9
 
-hs_vec3 hs_contact_rectify(const hs_world *world, hs_vec3 p) {
-	for (int i = 0; i < world->model.object_count; ++i) {
-		const hs_body *body = &world->state.bodies[i];
-		const hs_shape *shape = &world->model.shapes[body->shape];
+hs_vec3 hs_contact_rectify(const hs_world_model *model, const hs_body *bodies, hs_vec3 p) {
+	for (int i = 0; i < model->object_count; ++i) {
+		const hs_body *body = &bodies[i];
+		const hs_shape *shape = &model->shapes[body->shape];
 		if (hs_length_sq(hs_sub(p, body->pos)) > shape->radius * shape->radius)
 			continue;
 		hs_frame f = frame_of(body);
 		hs_vec3 b = to_body(&f, p);
 		for (int k = 0; k < shape->part_count; ++k) {
 			const hs_part *part = &shape->parts[k];
-			if (!inside_part(world, shape, part, b, 0.0))
+			if (!inside_part(model, shape, part, b, 0.0))
 				continue;
-			const hs_face *face = &shape->faces[nearest_face(world, shape, part, b)];
+			const hs_face *face = &shape->faces[nearest_face(model, shape, part, b)];
 			return to_world(&f, hs_mul_add(b, face->offset - hs_dot(face->normal, b), face->normal));
 		}
 	}

@@ -3,15 +3,15 @@
 // HS_FACE_TREE_MIN_FACES faces or more.
 #include "contact_part.h"
 
-bool hs_contact_inside_many(const hs_world *world, const hs_shape *shape, const hs_part *part, hs_vec3 p,
+bool hs_contact_inside_many(const hs_world_model *model, const hs_shape *shape, const hs_part *part, hs_vec3 p,
                             double grow) {
-	const hs_face_tree *tree = tree_of(world, shape);
+	const hs_face_tree *tree = tree_of(model, shape);
 	int root = hs_face_tree_root(tree, shape, part);
 	return root >= 0 ? hs_face_tree_inside(tree, root, shape, p, grow) : scan_inside(shape, part, p, grow);
 }
 
-int hs_contact_nearest_many(const hs_world *world, const hs_shape *shape, const hs_part *part, hs_vec3 p) {
-	const hs_face_tree *tree = tree_of(world, shape);
+int hs_contact_nearest_many(const hs_world_model *model, const hs_shape *shape, const hs_part *part, hs_vec3 p) {
+	const hs_face_tree *tree = tree_of(model, shape);
 	int root = hs_face_tree_root(tree, shape, part);
 	return root >= 0 ? hs_face_tree_nearest(tree, root, shape, part->first_face, p) : scan_nearest(shape, part, p);
 }

@@ -74,8 +74,14 @@ static HS_FORCE_INLINE double segment_distance_sq(hs_vec3 c, hs_vec3 p0, hs_vec3
 // Many-faced parts (HS_FACE_TREE_MIN_FACES or more) are searched through their normal-cone tree
 // (face_tree.h: the faces near the point, with the scan's answers), out of line (contact_part.c);
 // the others are scanned inline.
-static inline const hs_face_tree *tree_of(const hs_world *world, const hs_shape *shape) {
-	return &world->model.face_trees[shape - world->model.shapes];
+static inline const hs_face_tree *tree_of(const hs_world_model *model, const hs_shape *shape) {
+	return &model->face_trees[shape - model->shapes];
+}
+
+// What the model derived from `part`, a part of `shape`, the model's copy of one of its shapes
+// (hs_part_cache_of over the model alone).
+static inline const hs_part_cache *part_cache_in(const hs_world_model *model, const hs_shape *shape, const hs_part *part) {
+	return &model->part_cache[shape - model->shapes][part - shape->parts];
 }
 
 // The rule ([H] §3.2 (A)): a point is in a convex part when it lies behind every face plane, here
@@ -111,8 +117,8 @@ static inline bool scan_beyond(const hs_shape *shape, const hs_part *part, const
 }
 
 // The same through the part's face tree (contact_part.c), out of line.
-bool hs_contact_inside_many(const hs_world *world, const hs_shape *shape, const hs_part *part, hs_vec3 p, double grow);
-int hs_contact_nearest_many(const hs_world *world, const hs_shape *shape, const hs_part *part, hs_vec3 p);
+bool hs_contact_inside_many(const hs_world_model *model, const hs_shape *shape, const hs_part *part, hs_vec3 p, double grow);
+int hs_contact_nearest_many(const hs_world_model *model, const hs_shape *shape, const hs_part *part, hs_vec3 p);
 
 #if defined(HS_SELFCHECK)
 // Sanitizer builds: a box part's queries return what the scan of its faces returns.
@@ -158,29 +164,29 @@ static inline bool box_apart(const hs_shape *shape, const hs_part *part, const h
 #endif
 
 // Inside the part grown by `grow` (m; 0: the part itself); pc: the part's cache (part_cache.h).
-static inline bool inside_part_with(const hs_world *world, const hs_shape *shape, const hs_part *part,
+static inline bool inside_part_with(const hs_world_model *model, const hs_shape *shape, const hs_part *part,
                                     const hs_part_cache *pc, hs_vec3 p, double grow) {
 	if (part->face_count >= HS_FACE_TREE_MIN_FACES)
-		return hs_contact_inside_many(world, shape, part, p, grow);
+		return hs_contact_inside_many(model, shape, part, p, grow);
 	if (hs_part_is_box(pc) && hs_part_box_takes(p))
 		return box_inside(shape, part, pc, p, grow);
 	return scan_inside(shape, part, p, grow);
 }
 
-static inline int nearest_face_with(const hs_world *world, const hs_shape *shape, const hs_part *part,
+static inline int nearest_face_with(const hs_world_model *model, const hs_shape *shape, const hs_part *part,
                                     const hs_part_cache *pc, hs_vec3 p) {
 	if (part->face_count >= HS_FACE_TREE_MIN_FACES)
-		return hs_contact_nearest_many(world, shape, part, p);
+		return hs_contact_nearest_many(model, shape, part, p);
 	if (hs_part_is_box(pc) && hs_part_box_takes(p))
 		return box_nearest(shape, part, pc, p);
 	return scan_nearest(shape, part, p);
 }
 
 // hs_clip_segment, through the tree for a many-faced part: the same clip whenever it hits.
-static inline hs_clip clip_part_with(const hs_world *world, const hs_shape *shape, const hs_part *part,
+static inline hs_clip clip_part_with(const hs_world_model *model, const hs_shape *shape, const hs_part *part,
                                      const hs_part_cache *pc, hs_vec3 a, hs_vec3 b, double grow) {
 	if (part->face_count >= HS_FACE_TREE_MIN_FACES) {
-		const hs_face_tree *tree = tree_of(world, shape);
+		const hs_face_tree *tree = tree_of(model, shape);
 		int root = hs_face_tree_root(tree, shape, part);
 		if (root >= 0)
 			return hs_face_tree_clip(tree, root, shape, a, b, grow);
@@ -192,16 +198,16 @@ static inline hs_clip clip_part_with(const hs_world *world, const hs_shape *shap
 	return hs_clip_segment(shape, part, a, b, grow);
 }
 
-// The same three, the part's cache found from the world (where a caller does not hold it).
-static inline bool inside_part(const hs_world *world, const hs_shape *shape, const hs_part *part, hs_vec3 p, double grow) {
-	return inside_part_with(world, shape, part, hs_part_cache_of(world, shape, part), p, grow);
+// The same three, the part's cache found from the model (where a caller does not hold it).
+static inline bool inside_part(const hs_world_model *model, const hs_shape *shape, const hs_part *part, hs_vec3 p, double grow) {
+	return inside_part_with(model, shape, part, part_cache_in(model, shape, part), p, grow);
 }
-static inline int nearest_face(const hs_world *world, const hs_shape *shape, const hs_part *part, hs_vec3 p) {
-	return nearest_face_with(world, shape, part, hs_part_cache_of(world, shape, part), p);
+static inline int nearest_face(const hs_world_model *model, const hs_shape *shape, const hs_part *part, hs_vec3 p) {
+	return nearest_face_with(model, shape, part, part_cache_in(model, shape, part), p);
 }
-static inline hs_clip clip_part(const hs_world *world, const hs_shape *shape, const hs_part *part, hs_vec3 a, hs_vec3 b,
+static inline hs_clip clip_part(const hs_world_model *model, const hs_shape *shape, const hs_part *part, hs_vec3 a, hs_vec3 b,
                                 double grow) {
-	return clip_part_with(world, shape, part, hs_part_cache_of(world, shape, part), a, b, grow);
+	return clip_part_with(model, shape, part, part_cache_in(model, shape, part), a, b, grow);
 }
 
 #endif

@@ -22,23 +22,39 @@ static hs_vec3 friction_finger(hs_vec3 c, hs_vec3 d, hs_vec3 n) {
 	return hs_add(c, hs_mul_add(t > cap ? hs_scale(tan, cap / t) : tan, -in, n));
 }
 
+// hs_object_handle and hs_hand_handle (world_internal.h) from the model alone: the handles a
+// contact names its object and hand by.
+static inline hs_object_id object_handle(const hs_world_model *model, int i) {
+	hs_object_id id = {0, 0, 0};
+	if (i >= 0 && i < model->object_count)
+		id = (hs_object_id){(uint32_t)i + 1, model->tag, HS_GENERATION};
+	return id;
+}
+
+static inline hs_hand_id hand_handle(const hs_world_model *model, int h) {
+	hs_hand_id id = {0, 0, 0};
+	if (h >= 0 && h < model->hand_count)
+		id = (hs_hand_id){(uint32_t)h + 1, model->tag, HS_GENERATION};
+	return id;
+}
+
 // A contact found in the body frame `f`: C = `point` on the surface, B = `finger` where the part
 // drives it (eq. 1-2), `normal` the face normal or the edge's pseudo-normal.
-void hs_contact_push(hs_world *world, int object, int hand, int part, bool edge, int feature, const hs_frame *f,
+void hs_contact_push(const hs_contact_pass *cp, int object, int hand, int part, bool edge, int feature, const hs_frame *f,
                      hs_vec3 point, hs_vec3 normal, hs_vec3 finger, double t) {
-	if (world->out.contact_count >= world->out.contact_capacity) {
-		world->counters.dropped_contacts++;
+	if (cp->out->contact_count >= cp->out->contact_capacity) {
+		cp->counters->dropped_contacts++;
 		return;
 	}
-	hs_contact *c = &world->out.contacts[world->out.contact_count++];
-	c->object = hs_object_handle(world, object);
-	c->hand = hs_hand_handle(world, hand);
+	hs_contact *c = &cp->out->contacts[cp->out->contact_count++];
+	c->object = object_handle(cp->model, object);
+	c->hand = hand_handle(cp->model, hand);
 	c->part = part;
 	c->edge = edge;
 	c->feature = feature;
 	c->point = to_world(f, point);
 	c->normal = hs_mat3_mul(f->rot, normal);
-	if (!world->model.def.paper_contacts)
+	if (!cp->model->def.paper_contacts)
 		finger = friction_finger(point, hs_sub(finger, point), normal);
 	c->finger = to_world(f, finger);
 	c->t = t;
@@ -54,9 +70,9 @@ hs_vec3 hs_contact_edge_normal(const hs_shape *shape, int e) {
 
 // The part's first edge (in index order) between faces f1 and f2, or -1: among f1's own edges
 // (hs_face_edges), a cost that does not grow with the part's face count.
-static int edge_between(const hs_world *world, int shape_index, const hs_part *part, int f1, int f2) {
-	const hs_shape *shape = &world->model.shapes[shape_index];
-	const hs_face_edges *index = &world->model.face_edges[shape_index];
+static int edge_between(const hs_world_model *model, int shape_index, const hs_part *part, int f1, int f2) {
+	const hs_shape *shape = &model->shapes[shape_index];
+	const hs_face_edges *index = &model->face_edges[shape_index];
 	for (int k = index->first[f1]; k < index->first[f1 + 1]; ++k) {
 		int e = index->edges[k];
 		const hs_edge *edge = &shape->edges[e];
@@ -81,10 +97,10 @@ static hs_vec3 closest_on_first(hs_vec3 a, hs_vec3 b, hs_vec3 c, hs_vec3 d) {
 // when the faces meet at an edge (§3.2 (B)), else the face nearest its middle. `d`: NULL when
 // the line reached the object this frame (B = the line's point nearest C), else its motion
 // relative to the object since it touched last frame (sunk in).
-void hs_contact_line_across(hs_world *world, int object, int h, int j, const hs_part *part, const hs_frame *body,
+void hs_contact_line_across(const hs_contact_pass *cp, int object, int h, int j, const hs_part *part, const hs_frame *body,
                             hs_vec3 p0, hs_vec3 p1, hs_clip c, const hs_vec3 *d) {
-	const hs_shape *shape = &world->model.shapes[world->state.bodies[object].shape];
-	int feature = edge_between(world, world->state.bodies[object].shape, part, c.face_in, c.face_out);
+	const hs_shape *shape = &cp->model->shapes[cp->bodies[object].shape];
+	int feature = edge_between(cp->model, cp->bodies[object].shape, part, c.face_in, c.face_out);
 	bool edge = feature >= 0;
 	hs_vec3 point, normal;
 	if (edge) {
@@ -93,38 +109,38 @@ void hs_contact_line_across(hs_world *world, int object, int h, int j, const hs_
 		normal = hs_contact_edge_normal(shape, feature);
 	} else {
 		hs_vec3 mid = hs_lerp(p0, p1, 0.5 * (c.t_in + c.t_out));
-		feature = nearest_face(world, shape, part, mid);
+		feature = nearest_face(cp->model, shape, part, mid);
 		const hs_face *f = &shape->faces[feature];
 		point = hs_mul_add(mid, f->offset - hs_dot(f->normal, mid), f->normal);
 		normal = f->normal;
 	}
 	hs_vec3 finger = d ? hs_add(point, *d) : hs_segment_closest(p0, p1, point);
-	hs_contact_push(world, object, h, HS_HAND_POINTS + j, edge, feature, body, point, normal, finger, 0.0);
+	hs_contact_push(cp, object, h, HS_HAND_POINTS + j, edge, feature, body, point, normal, finger, 0.0);
 }
 
 // [H]'s letter (paper_contacts): a check point inside the part where it ends the frame touches the
 // face it entered through along its motion, or the nearest face when it was inside already, and
 // drives C to where it is.
-void hs_contact_paper_point(hs_world *world, int object, int h, int i, const hs_part *part, const hs_frame *body,
+void hs_contact_paper_point(const hs_contact_pass *cp, int object, int h, int i, const hs_part *part, const hs_frame *body,
                             hs_vec3 a, hs_vec3 b, double grow) {
-	const hs_shape *shape = &world->model.shapes[world->state.bodies[object].shape];
+	const hs_shape *shape = &cp->model->shapes[cp->bodies[object].shape];
 	hs_clip c = hs_clip_segment_all(shape, part, a, b, grow); // face_in read on a miss too
 	if (c.face_in >= 0) {
-		hs_contact_push(world, object, h, i, false, c.face_in, body, hs_lerp(a, b, c.t_in), shape->faces[c.face_in].normal,
+		hs_contact_push(cp, object, h, i, false, c.face_in, body, hs_lerp(a, b, c.t_in), shape->faces[c.face_in].normal,
 		                b, c.t_in);
 		return;
 	}
-	int face = nearest_face(world, shape, part, b);
+	int face = nearest_face(cp->model, shape, part, b);
 	const hs_face *f = &shape->faces[face];
-	hs_contact_push(world, object, h, i, false, face, body, hs_mul_add(b, f->offset - hs_dot(f->normal, b), f->normal),
+	hs_contact_push(cp, object, h, i, false, face, body, hs_mul_add(b, f->offset - hs_dot(f->normal, b), f->normal),
 	                f->normal, b, 0.0);
 }
 
 // How far contact c drives C in along its normal (friction_finger: the depth it pushes).
 static double push_depth(const hs_contact *c) { return -hs_dot(hs_sub(c->finger, c->point), c->normal); }
 
-static bool touched_before(const hs_world *world, const hs_contact *c) {
-	const hs_hand *hand = &world->state.hands[c->hand.index1 - 1];
+static bool touched_before(const hs_contact_pass *cp, const hs_contact *c) {
+	const hs_hand *hand = &cp->hands[c->hand.index1 - 1];
 	return c->part < HS_HAND_POINTS ? (hand->state.touch_points >> c->part & 1u)
 	                                : (hand->state.touch_lines >> (c->part - HS_HAND_POINTS) & 1u);
 }
@@ -136,22 +152,22 @@ static bool touched_before(const hs_world *world, const hs_contact *c) {
 // behind the tip, "reached" the face the tip was pushing away (`hand/push_off_centre`: state 3,
 // no more turn). A finger that curls or lies down onto the face goes in further than the part
 // already there and still touches.
-int hs_contact_drop_trailing(hs_world *world, int first) {
+int hs_contact_drop_trailing(const hs_contact_pass *cp, int first) {
 	int kept = first;
-	for (int k = first; k < world->out.contact_count; ++k) {
-		const hs_contact *c = &world->out.contacts[k];
+	for (int k = first; k < cp->out->contact_count; ++k) {
+		const hs_contact *c = &cp->out->contacts[k];
 		bool trails = false;
-		for (int m = first; m < world->out.contact_count && !trails && !c->edge && !touched_before(world, c); ++m) {
-			const hs_contact *l = &world->out.contacts[m];
+		for (int m = first; m < cp->out->contact_count && !trails && !c->edge && !touched_before(cp, c); ++m) {
+			const hs_contact *l = &cp->out->contacts[m];
 			trails = m != k && !l->edge && l->hand.index1 == c->hand.index1 &&
 			         hs_contact_finger_of(l->part) == hs_contact_finger_of(c->part) &&
-			         l->feature == c->feature && (touched_before(world, l) || (l->t >= 0.0 && l->t < c->t)) &&
+			         l->feature == c->feature && (touched_before(cp, l) || (l->t >= 0.0 && l->t < c->t)) &&
 			         push_depth(l) > push_depth(c);
 		}
 		if (!trails && kept++ != k) // (kept in place: no copy)
-			world->out.contacts[kept - 1] = *c;
+			cp->out->contacts[kept - 1] = *c;
 	}
-	world->out.contact_count = kept;
+	cp->out->contact_count = kept;
 	return kept - first;
 }
 
@@ -160,22 +176,22 @@ int hs_contact_drop_trailing(hs_world *world, int first) {
 // this frame: two fingertips pushing a box, one of them lifted off by glove noise, still push at
 // several points (3) rather than at one (1, which turns the box by eq. 2). Alone, it is none: the
 // object goes on by eq. 3 (a finger drawn back after a push does not stop what it pushed).
-int hs_contact_keep_hovering(hs_world *world, int first, int n) {
+int hs_contact_keep_hovering(const hs_contact_pass *cp, int first, int n) {
 	int kept = first;
 	for (int k = first; k < first + n; ++k) {
-		const hs_contact *c = &world->out.contacts[k];
+		const hs_contact *c = &cp->out->contacts[k];
 		bool keep = !(c->t < 0.0);
 		for (int m = first; m < first + n && !keep; ++m) {
-			const hs_contact *l = &world->out.contacts[m];
+			const hs_contact *l = &cp->out->contacts[m];
 			keep = !(l->t < 0.0) && l->hand.index1 == c->hand.index1 && push_depth(l) > 0.0;
 		}
 		if (!keep)
 			continue;
-		hs_contact *to = &world->out.contacts[kept++]; // a copy only when it moves (the one left behind
+		hs_contact *to = &cp->out->contacts[kept++]; // a copy only when it moves (the one left behind
 		if (to != c)                               // keeps its t for the later contacts' tests)
 			*to = *c;
 		to->t = to->t < 0.0 ? 0.0 : to->t;
 	}
-	world->out.contact_count = kept;
+	cp->out->contact_count = kept;
 	return kept - first;
 }

@@ -7,12 +7,12 @@
 
 // The first piece of check point i's path (relative to the object: body frame) that crosses into
 // the part; false when none does. `inside`: the point ends inside (the last piece may end there).
-bool hs_contact_path_enters(const hs_world *world, const hs_shape *shape, const hs_part *part, const hs_hand *hand, int i, int steps,
+bool hs_contact_path_enters(const hs_world_model *model, const hs_shape *shape, const hs_part *part, const hs_hand *hand, int i, int steps,
                             const hs_frame *body, hs_vec3 a, bool inside, hs_clip *hit, hs_vec3 *from, hs_vec3 *to,
                             double *when) {
 	for (int k = 1; k <= steps; ++k) {
 		hs_vec3 b = k == steps ? to_body(body, hand->cache.points[i]) : to_body(body, hand->cache.path_points[k - 1][i]);
-		hs_clip c = clip_part(world, shape, part, a, b, 0.0);
+		hs_clip c = clip_part(model, shape, part, a, b, 0.0);
 		if (c.face_in >= 0 && c.hit && (c.t_in < c.t_out || (k == steps && inside))) {
 			*hit = c;
 			*from = a;
@@ -68,11 +68,11 @@ static bool edge_through_sweep(hs_vec3 ea, hs_vec3 eb, const hs_vec3 q[2], const
 }
 
 // True when all four ends lie beyond one face plane of the part: the swept surface misses it.
-bool hs_contact_sweep_beyond_a_face(const hs_world *world, const hs_shape *shape, const hs_part *part, const hs_vec3 q[2],
+bool hs_contact_sweep_beyond_a_face(const hs_world_model *model, const hs_shape *shape, const hs_part *part, const hs_vec3 q[2],
                                     const hs_vec3 p[2]) {
 	const hs_vec3 ends[4] = {q[0], q[1], p[0], p[1]};
 	if (part->face_count >= HS_FACE_TREE_MIN_FACES) {
-		const hs_face_tree *tree = tree_of(world, shape);
+		const hs_face_tree *tree = tree_of(model, shape);
 		int root = hs_face_tree_root(tree, shape, part);
 		if (root >= 0)
 			return hs_face_tree_beyond(tree, root, shape, ends);
@@ -108,29 +108,29 @@ static inline void try_edge(const hs_shape *shape, int e, const hs_vec3 q[2], co
 // reaches (face_tree.h), in index order; any other edge lies on faces the sweep stays inside of,
 // so it misses, and the result is the loop over every edge's. -1 (nothing tried) when the part
 // has no tree.
-static HS_NOINLINE int sweep_edges(hs_world *world, const hs_shape *shape, const hs_part *part, const hs_vec3 q[2],
+static HS_NOINLINE int sweep_edges(const hs_contact_pass *cp, const hs_shape *shape, const hs_part *part, const hs_vec3 q[2],
                                    const hs_vec3 n[2], const hs_vec3 p[2], swept_hit *hit) {
-	const hs_face_tree *tree = tree_of(world, shape);
+	const hs_face_tree *tree = tree_of(cp->model, shape);
 	int root = hs_face_tree_root(tree, shape, part);
 	if (root < 0)
 		return -1;
 	const hs_vec3 ends[4] = {q[0], q[1], n[0], n[1]};
-	int faces = hs_face_tree_reached(tree, root, (int)(part - shape->parts), shape, ends, world->scratch.face_pick);
-	const hs_face_edges *index = &world->model.face_edges[shape - world->model.shapes];
+	int faces = hs_face_tree_reached(tree, root, (int)(part - shape->parts), shape, ends, cp->scratch->face_pick);
+	const hs_face_edges *index = &cp->model->face_edges[shape - cp->model->shapes];
 	int count = 0;
 	for (int k = 0; k < faces; ++k)
-		for (int j = index->first[world->scratch.face_pick[k]]; j < index->first[world->scratch.face_pick[k] + 1]; ++j) {
+		for (int j = index->first[cp->scratch->face_pick[k]]; j < index->first[cp->scratch->face_pick[k] + 1]; ++j) {
 			int e = index->edges[j];
-			if (e >= part->first_edge && e < part->first_edge + part->edge_count && !world->scratch.edge_mark[e]) {
-				world->scratch.edge_mark[e] = 1;
-				world->scratch.edge_pick[count++] = e;
+			if (e >= part->first_edge && e < part->first_edge + part->edge_count && !cp->scratch->edge_mark[e]) {
+				cp->scratch->edge_mark[e] = 1;
+				cp->scratch->edge_pick[count++] = e;
 			}
 		}
 	for (int k = 0; k < count; ++k)
-		world->scratch.edge_mark[world->scratch.edge_pick[k]] = 0;
-	hs_sort_indices(world->scratch.edge_pick, count);
+		cp->scratch->edge_mark[cp->scratch->edge_pick[k]] = 0;
+	hs_sort_indices(cp->scratch->edge_pick, count);
 	for (int k = 0; k < count; ++k)
-		try_edge(shape, world->scratch.edge_pick[k], q, n, p, hit);
+		try_edge(shape, cp->scratch->edge_pick[k], q, n, p, hit);
 	return count;
 }
 
@@ -139,14 +139,14 @@ static HS_NOINLINE int sweep_edges(hs_world *world, const hs_shape *shape, const
 // the part through the swept surface. A convex part meets that surface in one of these two ways
 // only. C where they met, B the line's point at the same place along it at the end of the frame
 // (p); the piece spans [t0, t0 + span] of the frame. False when it did not meet the part.
-static bool swept_line(hs_world *world, int object, int h, int j, const hs_part *part, const hs_frame *body,
+static bool swept_line(const hs_contact_pass *cp, int object, int h, int j, const hs_part *part, const hs_frame *body,
                        const hs_vec3 q[2], const hs_vec3 n[2], const hs_vec3 p[2], double t0, double span) {
-	const hs_shape *shape = &world->model.shapes[world->state.bodies[object].shape];
-	if (hs_contact_sweep_beyond_a_face(world, shape, part, q, n))
+	const hs_shape *shape = &cp->model->shapes[cp->bodies[object].shape];
+	if (hs_contact_sweep_beyond_a_face(cp->model, shape, part, q, n))
 		return false;
 	swept_hit hit = {INFINITY, -1, false, q[0], p[0]};
 	for (int k = 0; k < 2; ++k) {
-		hs_clip c = clip_part(world, shape, part, q[k], n[k], 0.0);
+		hs_clip c = clip_part(cp->model, shape, part, q[k], n[k], 0.0);
 		if (c.hit && c.face_in >= 0 && c.t_in < c.t_out && c.t_in < hit.best) {
 			hit.best = c.t_in;
 			hit.feature = c.face_in;
@@ -155,12 +155,12 @@ static bool swept_line(hs_world *world, int object, int h, int j, const hs_part 
 		}
 	}
 	// a many-faced part: only the edges of faces the sweep reaches; else every edge, in index order
-	if (part->face_count < HS_FACE_TREE_MIN_FACES || sweep_edges(world, shape, part, q, n, p, &hit) < 0)
+	if (part->face_count < HS_FACE_TREE_MIN_FACES || sweep_edges(cp, shape, part, q, n, p, &hit) < 0)
 		for (int e = part->first_edge; e < part->first_edge + part->edge_count; ++e)
 			try_edge(shape, e, q, n, p, &hit);
 	if (hit.feature < 0)
 		return false;
-	hs_contact_push(world, object, h, HS_HAND_POINTS + j, hit.edge, hit.feature, body, hit.point,
+	hs_contact_push(cp, object, h, HS_HAND_POINTS + j, hit.edge, hit.feature, body, hit.point,
 	                hit.edge ? hs_contact_edge_normal(shape, hit.feature) : shape->faces[hit.feature].normal, hit.finger,
 	                t0 + hit.best * span);
 	return true;
@@ -170,20 +170,20 @@ static bool swept_line(hs_world *world, int object, int h, int j, const hs_part 
 // frame that swept across the part makes the contact. Touching it at the start of a piece, it
 // had reached it before and left again: nothing. `start`: the line a frame ago, in the frame of the
 // object's pose before the step (transformed once, by detect_lines).
-void hs_contact_swept_path(hs_world *world, int object, int h, int j, const hs_part *part, const hs_frame *body,
+void hs_contact_swept_path(const hs_contact_pass *cp, int object, int h, int j, const hs_part *part, const hs_frame *body,
                            int steps, const hs_vec3 start[2], const hs_vec3 p[2]) {
-	const hs_shape *shape = &world->model.shapes[world->state.bodies[object].shape];
-	const hs_hand *hand = &world->state.hands[h];
+	const hs_shape *shape = &cp->model->shapes[cp->bodies[object].shape];
+	const hs_hand *hand = &cp->hands[h];
 	hs_vec3 q[2] = {start[0], start[1]};
 	for (int k = 1; k <= steps; ++k) {
-		if (clip_part(world, shape, part, q[0], q[1], 0.0).hit)
+		if (clip_part(cp->model, shape, part, q[0], q[1], 0.0).hit)
 			return;
 		hs_vec3 n[2] = {p[0], p[1]};
 		if (k < steps) {
 			n[0] = to_body(body, hand->cache.path_lines[k - 1][j][0]);
 			n[1] = to_body(body, hand->cache.path_lines[k - 1][j][1]);
 		}
-		if (swept_line(world, object, h, j, part, body, q, n, p, (double)(k - 1) / steps, 1.0 / steps))
+		if (swept_line(cp, object, h, j, part, body, q, n, p, (double)(k - 1) / steps, 1.0 / steps))
 			return;
 		q[0] = n[0];
 		q[1] = n[1];

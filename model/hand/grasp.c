@@ -144,8 +144,7 @@ static double whole_hand_opening(const hs_hand *hand) {
 	return spread + reach;
 }
 
-void hs_grasp_begin(hs_world *world, hs_body *body, int h, const hs_contact *cs, int n) {
-	const hs_hand *hand = &world->state.hands[h];
+void hs_grasp_begin(hs_body *body, const hs_hand *hand, int h, const hs_contact *cs, int n) {
 	body->grasped_by = h + 1;
 	hs_grasp_slip(body, hand); // the pose it has now, in the wrist frame
 	body->grip_fingers = 0;
@@ -156,27 +155,28 @@ void hs_grasp_begin(hs_world *world, hs_body *body, int h, const hs_contact *cs,
 	body->released_by = 0;
 }
 
-void hs_grasp_let_go_in_place(hs_world *world, int h) {
-	for (int i = 0; i < world->model.object_count; ++i) {
-		hs_body *b = &world->state.bodies[i];
+void hs_grasp_let_go_in_place(const hs_world_model *model, hs_body *bodies, hs_world_cache *cache, const hs_hand *hand,
+                               int h) {
+	for (int i = 0; i < model->object_count; ++i) {
+		hs_body *b = &bodies[i];
 		if (b->grasped_by != h + 1)
 			continue;
 		b->grasped_by = 0;
 		b->released_by = h + 1; // its fingers, still around it, do not take it again at once
-		b->grip_spread = whole_hand_opening(&world->state.hands[h]);
+		b->grip_spread = whole_hand_opening(hand);
 		b->prev = b->pos; // no velocity: it drops from where it is
 		b->rot_prev = b->rot;
 		b->spin = hs_quat_identity();
-		hs_wake(world->state.bodies, &world->cache, i);
-		hs_digest_stale(&world->cache, i);
+		hs_wake(bodies, cache, i);
+		hs_digest_stale(cache, i);
 	}
 }
 
 // True when the holder's contacts among cs[0..n) still hold: any of them when the grasp was made
 // by several fingers, else a grasping pair (§3.2 (2)).
-static bool holder_holds(const hs_world *world, const hs_contact *cs, int n, uint32_t holder, unsigned fingers) {
+static bool holder_holds(const hs_world_model *model, const hs_contact *cs, int n, uint32_t holder, unsigned fingers) {
 	if ((fingers & (fingers - 1u)) == 0)
-		return hs_contact_grasps(cs, n, holder, world->model.grasp_limit, world->model.def.grasp_any_contacts);
+		return hs_contact_grasps(cs, n, holder, model->grasp_limit, model->def.grasp_any_contacts);
 	for (int k = 0; k < n; ++k)
 		if (cs[k].hand.index1 == holder)
 			return true;
@@ -189,20 +189,19 @@ static bool holder_holds(const hs_world *world, const hs_contact *cs, int n, uin
 // wrist frame, so fingers that do not open still clamp it, though one has come off the surface.
 // Held by one finger (grasp_rule: any), the holder's contacts with the object grown by
 // grasp_release_mm must still grasp (§3.2 (2) with the margin). On true, the frame's contacts
-// (ungrown) are in world->out.contacts from `first` and *n says how many. The ungrown contacts are a
+// (ungrown) are in cp->out->contacts from `first` and *n says how many. The ungrown contacts are a
 // subset of the grown ones, so they are tried first: the grown test runs only when they do not
 // hold (a finger lifted off within the margin), which keeps a held object at one detection a frame.
-static bool grasp_continues(hs_world *world, int i, const hs_pose *before, int first, int *n) {
-	hs_body *body = &world->state.bodies[i];
-	if (world->model.def.paper_grasp_end) { // [H] §3.2: "successive instances in which grasping is recognized"
-		*n = hs_contact_detect(world, i, before);
-		return hs_contact_classify(&world->out.contacts[first], *n, world->model.grasp_limit, world->model.def.grasp_any_contacts) ==
+static bool grasp_continues(const hs_contact_pass *cp, hs_body *body, int i, const hs_pose *before, int first, int *n) {
+	if (cp->model->def.paper_grasp_end) { // [H] §3.2: "successive instances in which grasping is recognized"
+		*n = hs_contact_detect(cp, i, before);
+		return hs_contact_classify(&cp->out->contacts[first], *n, cp->model->grasp_limit, cp->model->def.grasp_any_contacts) ==
 		       HS_CONTACT_GRASP;
 	}
 	uint32_t holder = (uint32_t)body->grasped_by;
-	const hs_hand *hand = &world->state.hands[holder - 1];
+	const hs_hand *hand = &cp->hands[holder - 1];
 	unsigned fingers = body->grip_fingers;
-	double spread, reach, margin = world->model.def.grasp_open_mm * 1e-3;
+	double spread, reach, margin = cp->model->def.grasp_open_mm * 1e-3;
 	hand_opening(hand, fingers, &spread, &reach);
 	// measured from the most closed grip since the grasp began: a hand that closes on after the
 	// grasp and then opens lets go once it opened by the margin, not only past where it began
@@ -210,15 +209,15 @@ static bool grasp_continues(hs_world *world, int i, const hs_pose *before, int f
 	body->grip_reach = reach < body->grip_reach ? reach : body->grip_reach;
 	if (spread - body->grip_spread > margin || reach - body->grip_reach > margin)
 		return false;
-	*n = hs_contact_detect(world, i, before);
-	if (holder_holds(world, &world->out.contacts[first], *n, holder, fingers))
+	*n = hs_contact_detect(cp, i, before);
+	if (holder_holds(cp->model, &cp->out->contacts[first], *n, holder, fingers))
 		return true;
-	world->out.contact_count = first;
-	int grown = hs_contact_detect_grown(world, i, before, world->model.def.grasp_release_mm * 1e-3);
-	bool holds = holder_holds(world, &world->out.contacts[first], grown, holder, fingers);
-	world->out.contact_count = first;
+	cp->out->contact_count = first;
+	int grown = hs_contact_detect_grown(cp, i, before, cp->model->def.grasp_release_mm * 1e-3);
+	bool holds = holder_holds(cp->model, &cp->out->contacts[first], grown, holder, fingers);
+	cp->out->contact_count = first;
 	if (holds)
-		*n = hs_contact_detect(world, i, before);
+		*n = hs_contact_detect(cp, i, before);
 	return holds;
 }
 
@@ -228,16 +227,16 @@ static bool grasp_continues(hs_world *world, int i, const hs_pose *before, int f
 #define HS_RELEASE_CLEAR 0.02
 
 // True when a finger part of hand index + 1 `r` lies within HS_RELEASE_CLEAR of object i.
-static bool hand_within_margin(hs_world *world, int i, uint32_t r) {
-	bool near = hs_contact_hand_within(world, i, (int)r - 1, HS_RELEASE_CLEAR);
+static bool hand_within_margin(const hs_contact_pass *cp, int i, uint32_t r) {
+	bool near = hs_contact_hand_within(cp, i, (int)r - 1, HS_RELEASE_CLEAR);
 #if defined(HS_SELFCHECK)
 	// the rule it stands for: the grown test's contacts, one of them that hand's (then dropped)
-	int at = world->out.contact_count, n = hs_contact_detect_grown(world, i, NULL, HS_RELEASE_CLEAR);
+	int at = cp->out->contact_count, n = hs_contact_detect_grown(cp, i, NULL, HS_RELEASE_CLEAR);
 	bool any = false;
 	for (int k = 0; k < n; ++k)
-		any = any || world->out.contacts[at + k].hand.index1 == r;
-	world->out.contact_count = at;
-	if (any != near && world->out.contact_count + n < world->out.contact_capacity) {
+		any = any || cp->out->contacts[at + k].hand.index1 == r;
+	cp->out->contact_count = at;
+	if (any != near && cp->out->contact_count + n < cp->out->contact_capacity) {
 		fprintf(stderr, "selfcheck: hs_contact_hand_within differs from the grown test's contacts\n");
 		abort();
 	}
@@ -259,18 +258,17 @@ static bool hand_closing(const hs_world_def *def, const hs_hand *hand) {
 // those that held it touches it while the hand closes, or its five fingers close (whole_hand_opening) by grasp_open_mm
 // from the most open since the release (kept in grip_spread): it closes on the object again. Returns the
 // count of contacts left.
-static int set_aside_released(hs_world *world, int i, int first, int n) {
-	hs_body *body = &world->state.bodies[i];
+static int set_aside_released(const hs_contact_pass *cp, hs_world_cache *cache, hs_body *body, int i, int first, int n) {
 	if (!body->released_by)
 		return n;
 	uint32_t r = (uint32_t)body->released_by;
-	const hs_hand *hand = &world->state.hands[r - 1];
+	const hs_hand *hand = &cp->hands[r - 1];
 	double spread = whole_hand_opening(hand);
 	if (spread > body->grip_spread) { // the object may sleep meanwhile: its hash digest is stale
 		body->grip_spread = spread;
-		hs_digest_stale(&world->cache, i);
+		hs_digest_stale(cache, i);
 	}
-	hs_contact *cs = &world->out.contacts[first];
+	hs_contact *cs = &cp->out->contacts[first];
 	int kept = 0;
 	bool other_finger = false;
 	for (int k = 0; k < n; ++k) {
@@ -284,16 +282,16 @@ static int set_aside_released(hs_world *world, int i, int first, int n) {
 	// fingers brushing the object it just let go shoved it, and while a hand opens, some pairs of its
 	// tips come nearer as others part, so no pair's closing tells it
 	double closed = body->grip_spread - spread;
-	bool closes = (other_finger && (!(world->model.def.grasp_close_mm > 0.0) || closed >= HS_PAIR_STILL)) ||
-	              closed > world->model.def.grasp_open_mm * 1e-3;
-	if (kept == n && !closes && hand_within_margin(world, i, r))
+	bool closes = (other_finger && (!(cp->model->def.grasp_close_mm > 0.0) || closed >= HS_PAIR_STILL)) ||
+	              closed > cp->model->def.grasp_open_mm * 1e-3;
+	if (kept == n && !closes && hand_within_margin(cp, i, r))
 		return n; // the object falls clear of a finger it rested on: still that hand's release
 	if (kept == n || closes) { // the rule lapses
 		body->released_by = 0;
-		hs_digest_stale(&world->cache, i);
+		hs_digest_stale(cache, i);
 		return n;
 	}
-	world->out.contact_count = first + kept;
+	cp->out->contact_count = first + kept;
 	return kept;
 }
 
@@ -302,49 +300,50 @@ static int set_aside_released(hs_world *world, int i, int first, int n) {
 // points. A push by a closing hand becomes a grasp when the object grown by grasp_release_mm is
 // grasped (a pinch of a small object: the first fingertip to touch would push it away from the
 // others before they reach it).
-static hs_contact_state start_or_push(hs_world *world, int i, int first, int *n, hs_contact_state state) {
+static hs_contact_state start_or_push(const hs_contact_pass *cp, const hs_body *body, int i, int first, int *n,
+                                      hs_contact_state state) {
 	if (state == HS_CONTACT_GRASP)
-		return hs_grasp_starts(&world->model, world->state.hands, &world->out.contacts[first], *n, false) ? state : HS_CONTACT_PUSH_MANY;
-	if (state == HS_CONTACT_NONE || !(world->model.def.grasp_close_mm > 0.0) || world->state.bodies[i].released_by)
+		return hs_grasp_starts(cp->model, cp->hands, &cp->out->contacts[first], *n, false) ? state : HS_CONTACT_PUSH_MANY;
+	if (state == HS_CONTACT_NONE || !(cp->model->def.grasp_close_mm > 0.0) || body->released_by)
 		return state;
 	bool closing_hand = false;
 	for (int k = 0; k < *n && !closing_hand; ++k)
-		closing_hand = hand_closing(&world->model.def, &world->state.hands[world->out.contacts[first + k].hand.index1 - 1]);
+		closing_hand = hand_closing(&cp->model->def, &cp->hands[cp->out->contacts[first + k].hand.index1 - 1]);
 	if (!closing_hand)
 		return state;
-	world->out.contact_count = first;
-	int grown = hs_contact_detect_grown(world, i, NULL, world->model.def.grasp_release_mm * 1e-3);
-	if (hs_grasp_starts(&world->model, world->state.hands, &world->out.contacts[first], grown, false)) {
+	cp->out->contact_count = first;
+	int grown = hs_contact_detect_grown(cp, i, NULL, cp->model->def.grasp_release_mm * 1e-3);
+	if (hs_grasp_starts(cp->model, cp->hands, &cp->out->contacts[first], grown, false)) {
 		*n = grown;
 		return HS_CONTACT_GRASP;
 	}
-	world->out.contact_count = first;
-	*n = hs_contact_detect(world, i, NULL);
+	cp->out->contact_count = first;
+	*n = hs_contact_detect(cp, i, NULL);
 	return state;
 }
 
-hs_contact_state hs_grasp_detect(hs_world *world, int i, int first, int *n, bool *continues) {
-	hs_body *body = &world->state.bodies[i];
+hs_contact_state hs_grasp_detect(const hs_contact_pass *cp, hs_world_cache *cache, hs_body *body, int i, int first, int *n,
+                                 bool *continues) {
 	*continues = false;
 	if (body->grasped_by > 0 && !body->released_by) {
 		hs_pose before = {body->pos, body->rot};
-		hs_grasp_follow_wrist(body, &world->state.hands[body->grasped_by - 1]);
-		if (grasp_continues(world, i, &before, first, n)) {
+		hs_grasp_follow_wrist(body, &cp->hands[body->grasped_by - 1]);
+		if (grasp_continues(cp, body, i, &before, first, n)) {
 			*continues = true;
 			return HS_CONTACT_GRASP;
 		}
 		// the holder let go: the release rule starts. The fingers are judged against the object
 		// where the hand carried it this frame (they open around it, in the hand's frame); left
 		// where it was, a hand that lets go while moving fast would sweep through it.
-		body->released_by = world->model.def.paper_grasp_end ? 0 : body->grasped_by; // the letter sets no hand aside
-		body->grip_spread = whole_hand_opening(&world->state.hands[body->grasped_by - 1]);
+		body->released_by = cp->model->def.paper_grasp_end ? 0 : body->grasped_by; // the letter sets no hand aside
+		body->grip_spread = whole_hand_opening(&cp->hands[body->grasped_by - 1]);
 		// a hand that let go must close anew to grasp again: its pairs' peaks start from here
-		hs_grasp_reset_pairs(&world->state.hands[body->grasped_by - 1]);
-		*n = hs_contact_detect(world, i, &before);
-		*n = set_aside_released(world, i, first, *n);
+		hs_grasp_reset_pairs(&cp->hands[body->grasped_by - 1]);
+		*n = hs_contact_detect(cp, i, &before);
+		*n = set_aside_released(cp, cache, body, i, first, *n);
 		hs_contact_state state =
-		    hs_contact_classify(&world->out.contacts[first], *n, world->model.grasp_limit, world->model.def.grasp_any_contacts);
-		if (state == HS_CONTACT_GRASP && !hs_grasp_starts(&world->model, world->state.hands, &world->out.contacts[first], *n, true))
+		    hs_contact_classify(&cp->out->contacts[first], *n, cp->model->grasp_limit, cp->model->def.grasp_any_contacts);
+		if (state == HS_CONTACT_GRASP && !hs_grasp_starts(cp->model, cp->hands, &cp->out->contacts[first], *n, true))
 			state = HS_CONTACT_PUSH_MANY;
 		if (state == HS_CONTACT_NONE) { // it flies from its last held pose (manipulate.c, release)
 			body->pos = before.pos;
@@ -352,8 +351,8 @@ hs_contact_state hs_grasp_detect(hs_world *world, int i, int first, int *n, bool
 		}
 		return state;
 	}
-	*n = hs_contact_detect(world, i, NULL);
-	*n = set_aside_released(world, i, first, *n);
-	return start_or_push(world, i, first, n,
-	                     hs_contact_classify(&world->out.contacts[first], *n, world->model.grasp_limit, world->model.def.grasp_any_contacts));
+	*n = hs_contact_detect(cp, i, NULL);
+	*n = set_aside_released(cp, cache, body, i, first, *n);
+	return start_or_push(cp, body, i, first, n,
+	                     hs_contact_classify(&cp->out->contacts[first], *n, cp->model->grasp_limit, cp->model->def.grasp_any_contacts));
 }

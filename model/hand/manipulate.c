@@ -40,19 +40,19 @@ void hs_push_at_one_point(hs_body *body, hs_vec3 c, hs_vec3 b) {
 // The hand that holds a grasped object: the one already holding it while its own contacts still
 // grasp, else the first hand whose own contacts grasp, else the one with the most contacts (two
 // hands squeezing from either side; the lower index on a tie).
-static int grasping_hand(const hs_world *world, const hs_body *body, const hs_contact *cs, int n) {
-	double limit = world->model.grasp_limit;
-	bool any = world->model.def.grasp_any_contacts;
+static int grasping_hand(const hs_world_model *model, const hs_body *body, const hs_contact *cs, int n) {
+	double limit = model->grasp_limit;
+	bool any = model->def.grasp_any_contacts;
 	if (body->grasped_by > 0 && hs_contact_grasps(cs, n, (uint32_t)body->grasped_by, limit, any))
 		return body->grasped_by - 1;
-	for (int h = 0; h < world->model.hand_count; ++h)
+	for (int h = 0; h < model->hand_count; ++h)
 		if (hs_contact_grasps(cs, n, (uint32_t)h + 1, limit, any))
 			return h;
 	int counts[64] = {0};
 	for (int k = 0; k < n; ++k)
 		counts[cs[k].hand.index1 - 1]++;
 	int best = 0;
-	for (int h = 1; h < world->model.hand_count; ++h)
+	for (int h = 1; h < model->hand_count; ++h)
 		if (counts[h] > counts[best])
 			best = h;
 	return best;
@@ -82,43 +82,46 @@ typedef struct rigid_move {
 // that the tracker's noise tilted by 0.15 deg lost its contact on one side each frame and fell onto
 // the bar again; let go in such a frame, the bar no longer interfered with it and fell a frame
 // (3.4 cm at 12 frames/s) before the two met again.
-static void carry_along(hs_world *world, int moved, int current, rigid_move m) {
+static void carry_along(const hs_broadphase *bp, int moved, int current, rigid_move m) {
+	const hs_world_model *model = bp->model;
+	hs_body *bodies = bp->bodies;
+	hs_world_scratch *scratch = bp->scratch;
 	hs_vec3 d = hs_sub(m.to, m.from);
-	if (world->model.def.paper_carry) // [H] §4.3's letter: translated along with it
+	if (model->def.paper_carry) // [H] §4.3's letter: translated along with it
 		m.turn = hs_quat_identity();
 	bool turned = m.turn.x != 0.0 || m.turn.y != 0.0 || m.turn.z != 0.0;
-	if (world->model.def.stacking != HS_STACKING_PAPER || !(hs_length_sq(d) > 0.0 || turned))
+	if (model->def.stacking != HS_STACKING_PAPER || !(hs_length_sq(d) > 0.0 || turned))
 		return;
 	hs_quat back = hs_quat_conj(m.turn);
-	hs_broadphase bp = hs_broadphase_of(world);
 	int head = 0, tail = 0;
-	world->scratch.queue[tail++] = moved;
+	scratch->queue[tail++] = moved;
 	while (head < tail) {
-		int i = world->scratch.queue[head++];
-		const hs_body *moved_body = &world->state.bodies[i];
+		int i = scratch->queue[head++];
+		const hs_body *moved_body = &bodies[i];
 		// where i was before this move (its inverse motion about the mover's G)
 		hs_vec3 was = hs_add(m.from, hs_quat_rotate(back, hs_sub(moved_body->pos, m.to)));
 		hs_quat was_rot = hs_quat_normalize(hs_quat_mul(back, moved_body->rot));
-		double ra = world->model.shapes[moved_body->shape].radius;
-		int n = hs_grid_near_either(&bp, moved_body->pos, was, ra); // both are tested below
+		double ra = model->shapes[moved_body->shape].radius;
+		int n = hs_grid_near_either(bp, moved_body->pos, was, ra); // both are tested below
 		for (int k = 0; k < n; ++k) {
-			int j = world->scratch.near[k];
-			hs_body *b = &world->state.bodies[j];
+			int j = scratch->near[k];
+			hs_body *b = &bodies[j];
 			if (j == moved || b->held || b->carried)
 				continue;
 			// the sphere tests the two overlap tests begin with, both at once (i does not move in this
 			// loop: j is never i, which is moved or carried)
-			double r = ra + world->model.shapes[b->shape].radius;
+			double r = ra + model->shapes[b->shape].radius;
 			if (spheres_apart(r, moved_body->pos, b) && spheres_apart(r, was, b))
 				continue;
 			// interfering where i is now, or where it was before this move (an object resting on a
 			// held one that the hand lowers a little: under tracker noise it was left hovering)
-			bool now = bodies_overlap(world, i, j), before = overlap_at_pose(world, i, was, was_rot, j);
+			bool now = overlap_at_pose_in(model, bodies, bp->cache->box_memo, i, moved_body->pos, moved_body->rot, j);
+			bool before = overlap_at_pose_in(model, bodies, bp->cache->box_memo, i, was, was_rot, j);
 			if (!now && !before)
 				continue;
-			if (!before && hs_stack_pile_onto(&world->model, world->state.bodies, j, i)) { // met from the side below its G: piled on i
-				hs_wake(world->state.bodies, &world->cache, j);
-				hs_grid_update(&world->model, world->state.bodies, &world->cache, j);
+			if (!before && hs_stack_pile_onto(model, bodies, j, i)) { // met from the side below its G: piled on i
+				hs_wake(bodies, bp->cache, j);
+				hs_grid_update(model, bodies, bp->cache, j);
 				continue;
 			}
 			hs_vec3 at = hs_add(m.to, hs_quat_rotate(m.turn, hs_sub(b->pos, m.from)));
@@ -129,12 +132,12 @@ static void carry_along(hs_world *world, int moved, int current, rigid_move m) {
 				b->rot_prev = hs_quat_normalize(hs_quat_mul(m.turn, b->rot_prev));
 			}
 			b->carried = 1;
-			hs_wake(world->state.bodies, &world->cache, j);
-			hs_motion_keep_above_floor(&world->model, &world->scratch, b);
-			hs_grid_update(&world->model, world->state.bodies, &world->cache, j);
-			world->scratch.queue[tail++] = j;
+			hs_wake(bodies, bp->cache, j);
+			hs_motion_keep_above_floor(model, scratch, b);
+			hs_grid_update(model, bodies, bp->cache, j);
+			scratch->queue[tail++] = j;
 			if (j > current) // it may have come within a hand's reach: look at it this frame
-				add_candidate(&world->scratch, j);
+				add_candidate(scratch, j);
 		}
 	}
 }
@@ -242,24 +245,25 @@ static void release_motion(const hs_world_def *def, const hs_body *body, const h
 // mid-swing and a throw aimed 2 m away landed 1.11 m short. The spin is the wrist's mean turn over
 // those frames. Any other release (a push ends, `last` its contact state) flies on with the motion
 // and turn of its last frame (§4.1), unless it is left on the floor (push.c).
-static void release(hs_world *world, hs_body *body, hs_contact_state last) {
-	if (body->grasped_by > 0 && world->model.def.release_fit == HS_RELEASE_FIT_OBJECT) {
+static void release(const hs_motion_pass *mp, const hs_hand *hands, hs_body *body, hs_contact_state last) {
+	const hs_world_def *def = &mp->model->def;
+	if (body->grasped_by > 0 && def->release_fit == HS_RELEASE_FIT_OBJECT) {
 		// the letter: eq. 3 from its last two held positions (grasp.c left it at the last) and turn
 		body->spin = hs_quat_normalize(hs_quat_mul(body->rot, hs_quat_conj(body->rot_prev)));
 	} else if (body->grasped_by > 0) {
-		const hs_hand *hand = &world->state.hands[body->grasped_by - 1];
-		double dt = world->model.def.dt;
+		const hs_hand *hand = &hands[body->grasped_by - 1];
+		double dt = def->dt;
 		hs_vec3 v_dt;
 		hs_quat turn;
-		release_motion(&world->model.def, body, hand, &v_dt, &turn);
+		release_motion(def, body, hand, &v_dt, &turn);
 		// the fingers opened somewhere in this frame, which does not say where: taken as its middle,
 		// the object leaves this frame where the hand carried it (this frame's step adds v dt) with
 		// the velocity v + g dt / 2 it has half a frame after leaving the hand at v
-		body->prev = hs_add(hs_sub(body->pos, v_dt), hs_scale(world->model.def.gravity, dt * dt));
+		body->prev = hs_add(hs_sub(body->pos, v_dt), hs_scale(def->gravity, dt * dt));
 		body->spin = turn;
 	} else {
 		body->spin = hs_quat_normalize(hs_quat_mul(body->rot, hs_quat_conj(body->rot_prev)));
-		if (!world->model.def.paper_push_end && hs_push_release_on_floor(world, body, last == HS_CONTACT_PUSH_MANY)) { // it stays on the floor
+		if (!def->paper_push_end && hs_push_release_on_floor(mp, body, last == HS_CONTACT_PUSH_MANY)) { // it stays on the floor
 			body->grasped_by = 0;
 			return;
 		}
@@ -278,25 +282,28 @@ static bool untouched(const hs_body *b) {
 // The objects a hand may touch (the grid's cells near its path, then the bounding-sphere test the
 // narrow tests start with), those held last frame (they may be let go) and those under a release
 // rule, in index order.
-static void collect_candidates(hs_world *world) {
-	bool skip = world->model.skip_work;
+static void collect_candidates(const hs_broadphase *bp, const hs_hand *hands) {
+	const hs_world_model *model = bp->model;
+	const hs_world_cache *cache = bp->cache;
+	hs_body *bodies = bp->bodies;
+	hs_world_scratch *scratch = bp->scratch;
+	bool skip = model->skip_work;
 	// carried or held last frame means awake: only the awake list needs looking at
-	for (int k = 0, n = skip ? world->cache.awake_count : world->model.object_count; k < n; ++k)
-		world->state.bodies[skip ? world->cache.awake[k] : k].carried = 0;
-	world->scratch.candidate_count = 0;
-	for (int h = 0; h < world->model.hand_count; ++h) {
-		const hs_hand *hand = &world->state.hands[h];
-		hs_broadphase bp = hs_broadphase_of(world);
-		int n = hs_grid_near(&bp, hand->cache.sweep_center, hand->cache.sweep_radius);
+	for (int k = 0, n = skip ? cache->awake_count : model->object_count; k < n; ++k)
+		bodies[skip ? cache->awake[k] : k].carried = 0;
+	scratch->candidate_count = 0;
+	for (int h = 0; h < model->hand_count; ++h) {
+		const hs_hand *hand = &hands[h];
+		int n = hs_grid_near(bp, hand->cache.sweep_center, hand->cache.sweep_radius);
 		for (int k = 0; k < n; ++k) {
-			const hs_body *b = &world->state.bodies[world->scratch.near[k]];
-			if (!untouched(b) || hs_contact_hand_near(&world->model, b, hand, 0.0))
-				add_candidate(&world->scratch, world->scratch.near[k]);
+			const hs_body *b = &bodies[scratch->near[k]];
+			if (!untouched(b) || hs_contact_hand_near(model, b, hand, 0.0))
+				add_candidate(scratch, scratch->near[k]);
 		}
 	}
-	for (int k = 0; k < world->cache.awake_count; ++k) // a release rule lapses once its hand is clear (grasp.c)
-		if (world->state.bodies[world->cache.awake[k]].held || world->state.bodies[world->cache.awake[k]].released_by)
-			add_candidate(&world->scratch, world->cache.awake[k]);
+	for (int k = 0; k < cache->awake_count; ++k) // a release rule lapses once its hand is clear (grasp.c)
+		if (bodies[cache->awake[k]].held || bodies[cache->awake[k]].released_by)
+			add_candidate(scratch, cache->awake[k]);
 }
 
 static bool pose_changed(const hs_body *body, hs_pose was) {
@@ -309,24 +316,24 @@ static bool pose_changed(const hs_body *body, hs_pose was) {
 // motions while touching (3; the paper: their mean displacement over the frame, which also counts
 // the motion before a part reached the surface and shoves the object off the fingers).
 // A grasp that continues (grasp.c) has already moved the object with its wrist.
-static void move_by_contacts(hs_world *world, hs_body *body, hs_contact_state state, const hs_contact *cs, int n,
-                             bool continues) {
+static void move_by_contacts(const hs_motion_pass *mp, const hs_hand *hands, hs_body *body, hs_contact_state state,
+                             const hs_contact *cs, int n, bool continues) {
 	if (state == HS_CONTACT_GRASP) {
 		if (continues)
 			return;
-		int h = grasping_hand(world, body, cs, n);
-		hs_grasp_begin(world, body, h, cs, n); // fix the pose in the wrist frame (§3.2 (2))
-		hs_grasp_follow_wrist(body, &world->state.hands[h]);
+		int h = grasping_hand(mp->model, body, cs, n);
+		hs_grasp_begin(body, &hands[h], h, cs, n); // fix the pose in the wrist frame (§3.2 (2))
+		hs_grasp_follow_wrist(body, &hands[h]);
 	} else if (state == HS_CONTACT_PUSH_ONE) {
 		body->grasped_by = 0;
-		if (world->model.def.paper_floor_push || !hs_push_on_floor(world, body, cs[0].point, cs[0].finger)) // on the floor: model.md §4
+		if (mp->model->def.paper_floor_push || !hs_push_on_floor(mp, body, cs[0].point, cs[0].finger)) // on the floor: model.md §4
 			hs_push_at_one_point(body, cs[0].point, cs[0].finger);
 	} else {
 		body->grasped_by = 0;
 		hs_vec3 sum = hs_v3(0, 0, 0);
 		for (int k = 0; k < n; ++k) // each part's motion while touching (B - C: rectified, contact.c)
 			sum = hs_add(sum, hs_sub(cs[k].finger, cs[k].point));
-		hs_push_many(world, body, hs_scale(sum, 1.0 / n));
+		hs_push_many(mp, body, hs_scale(sum, 1.0 / n));
 	}
 }
 
@@ -435,7 +442,12 @@ static void begin_hand_pass(hs_hand *hands, int hand_count, bool chords_only) {
 void hs_manipulate(hs_world *world) {
 	world->out.contact_count = 0;
 	begin_hand_pass(world->state.hands, world->model.hand_count, world->model.def.paper_contacts);
-	collect_candidates(world);
+	// the contexts of the hand pass's concepts, made once: the broad phase's (the candidates, what a
+	// moved object carries along or wakes), the contact tests' and free motion's (a push)
+	hs_broadphase bp = hs_broadphase_of(world);
+	hs_contact_pass cp = hs_contact_pass_of(world);
+	hs_motion_pass mp = hs_motion_pass_of(world);
+	collect_candidates(&bp, world->state.hands);
 	// candidate_count may grow in the loop: carry_along adds objects it moved within reach
 	for (int c = 0; c < world->scratch.candidate_count; ++c) {
 		int i = world->scratch.candidates[c];
@@ -445,7 +457,7 @@ void hs_manipulate(hs_world *world) {
 		hs_quat old_rot = body->rot;
 		bool continues = false;
 		bool at_rest = body->prev.x == old_pos.x && body->prev.y == old_pos.y && body->prev.z == old_pos.z;
-		hs_contact_state state = hs_grasp_detect(world, i, first, &n, &continues);
+		hs_contact_state state = hs_grasp_detect(&cp, &world->cache, body, i, first, &n, &continues);
 		if (state == HS_CONTACT_PUSH_ONE && !at_rest && !body->grasped_by && !world->model.def.paper_push_end &&
 		    outruns(body, &world->out.contacts[first])) {
 			state = HS_CONTACT_NONE; // it turns on by its own motion (eq. 3), the finger left behind
@@ -459,10 +471,10 @@ void hs_manipulate(hs_world *world) {
 		body->held = 0;
 		if (state == HS_CONTACT_NONE) {
 			if (was_held)
-				release(world, body, last);
+				release(&mp, world->state.hands, body, last);
 			continue;
 		}
-		move_by_contacts(world, body, state, &world->out.contacts[first], n, continues);
+		move_by_contacts(&mp, world->state.hands, body, state, &world->out.contacts[first], n, continues);
 		hs_pose carried_to = {body->pos, body->rot};
 		hs_motion_keep_above_floor(&world->model, &world->scratch, body); // §4.2 for a pushed object; the trajectory shows its floor contacts
 		if (state == HS_CONTACT_GRASP && pose_changed(body, carried_to)) // pressed into the floor: it slid in the grip
@@ -476,9 +488,9 @@ void hs_manipulate(hs_world *world) {
 		body->grounded = 0;
 		hs_grid_update(&world->model, world->state.bodies, &world->cache, i);
 		if (world->model.def.stacking == HS_STACKING_SUPPORT) // what rested on it or against it looks again
-			hs_support_wake_neighbours(&(hs_broadphase){&world->model, world->state.bodies, &world->cache, &world->scratch}, i, body->prev);
+			hs_support_wake_neighbours(&bp, i, body->prev);
 		else
-			carry_along(world, i, i,
+			carry_along(&bp, i, i,
 			            (rigid_move){old_pos, body->pos, hs_quat_normalize(hs_quat_mul(body->rot, hs_quat_conj(old_rot)))});
 	}
 	note_touching(world->state.hands, world->model.hand_count, world->out.contacts, world->out.contact_count);

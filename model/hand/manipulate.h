@@ -9,7 +9,9 @@
 
 // Eq. 1-2: moves the surface point c of the body toward b (translation T ∥ CG, rotation about G).
 void hs_push_at_one_point(hs_body *body, hs_vec3 c, hs_vec3 b);
-// One frame of the hands: detect, classify, move touched objects, release the untouched.
+// One frame of the hands: detect, classify, move touched objects, release the untouched. The
+// stage the pipeline calls: takes the world and makes its steps' contexts once (the broad phase's,
+// the contact tests', free motion's; docs/architecture.md lists what each step takes).
 void hs_manipulate(hs_world *world);
 
 #endif

@@ -25,9 +25,9 @@
 // The object lies on the floor: a vertex, an edge or a face on it. One vertex is enough: a box
 // that a first fingertip tipped onto a corner was lifted off the floor by the next frame's push
 // at several points (its vertical part) and flew on by eq. 3 when the push ended.
-static bool lies_on_floor(hs_world *world, const hs_body *body, int *count) {
-	hs_motion_pose_vertices(&world->model, &world->scratch, body);
-	*count = hs_motion_floor_points(&world->model, &world->scratch, body);
+static bool lies_on_floor(const hs_motion_pass *m, const hs_body *body, int *count) {
+	hs_motion_pose_vertices(m->model, m->scratch, body);
+	*count = hs_motion_floor_points(m->model, m->scratch, body);
 	return *count >= 1;
 }
 
@@ -40,8 +40,8 @@ static bool held_by_floor(hs_vec3 d) {
 }
 
 // The floor point furthest along the horizontal u: the side a turn along u sinks into the floor.
-static hs_vec3 floor_point_along(const hs_world *world, int count, hs_vec3 u) {
-	const hs_vec2 *p = world->scratch.points;
+static hs_vec3 floor_point_along(const hs_world_scratch *scratch, int count, hs_vec3 u) {
+	const hs_vec2 *p = scratch->points;
 	int best = 0;
 	for (int i = 1; i < count; ++i)
 		if (p[i].x * u.x + p[i].y * u.y > p[best].x * u.x + p[best].y * u.y)
@@ -54,8 +54,8 @@ static hs_vec3 floor_point_along(const hs_world *world, int count, hs_vec3 u) {
 // on a floor edge tips about that edge: turned about a line a degree off it, a flicked pyramid
 // yawed by the tracker's noise stood on one corner and rocked back (docs/model.md §4).
 #define HS_PUSH_EDGE_DEG 20.0
-static hs_vec3 floor_edge_along(const hs_world *world, int count, hs_vec3 p, hs_vec3 a) {
-	const hs_vec2 *f = world->scratch.points;
+static hs_vec3 floor_edge_along(const hs_world_scratch *scratch, int count, hs_vec3 p, hs_vec3 a) {
+	const hs_vec2 *f = scratch->points;
 	double best = hs_cos(HS_PUSH_EDGE_DEG * (HS_PI / 180.0)); // the own cos: libm's may differ by a bit
 	hs_vec3 axis = a;
 	for (int i = 0; i < count; ++i) {
@@ -77,15 +77,15 @@ static hs_vec3 floor_edge_along(const hs_world *world, int count, hs_vec3 p, hs_
 // form about that line, θ = atan(|R'| / |PC|) = atan(((PC × r_swing) · a) / |PC|²), when the
 // push's torque about that line, (PC × CB) · a, lifts the object. False (nothing done) otherwise.
 // The floor points are those of the pose eq. 2's yaw turned and T slid: the edge it stands on.
-static bool tip_about_floor_edge(hs_world *world, hs_body *body, hs_vec3 c, hs_vec3 cb, hs_vec3 n_h,
+static bool tip_about_floor_edge(const hs_motion_pass *m, hs_body *body, hs_vec3 c, hs_vec3 cb, hs_vec3 n_h,
                                  hs_vec3 r_swing, hs_vec3 slid) {
-	hs_motion_pose_vertices(&world->model, &world->scratch, body);
-	int count = hs_motion_floor_points(&world->model, &world->scratch, body);
+	hs_motion_pose_vertices(m->model, m->scratch, body);
+	int count = hs_motion_floor_points(m->model, m->scratch, body);
 	if (count < 1)
 		return false;
 	hs_vec3 a = hs_normalize(n_h);
-	hs_vec3 p = floor_point_along(world, count, hs_cross(a, hs_v3(0, 0, 1)));
-	a = floor_edge_along(world, count, p, a);
+	hs_vec3 p = floor_point_along(m->scratch, count, hs_cross(a, hs_v3(0, 0, 1)));
+	a = floor_edge_along(m->scratch, count, p, a);
 	hs_vec3 pc = hs_sub(hs_add(c, slid), p); // C where T took it
 	pc = hs_mul_add(pc, -hs_dot(pc, a), a); // from the edge to C, normal to the edge
 	double lever_sq = hs_length_sq(pc);
@@ -107,9 +107,9 @@ static hs_quat yaw_part(hs_quat q, hs_vec3 n) {
 	return hs_quat_normalize(hs_q(q.w, 0.0, 0.0, q.z));
 }
 
-bool hs_push_on_floor(hs_world *world, hs_body *body, hs_vec3 c, hs_vec3 b) {
+bool hs_push_on_floor(const hs_motion_pass *m, hs_body *body, hs_vec3 c, hs_vec3 b) {
 	int count = 0;
-	if (!lies_on_floor(world, body, &count))
+	if (!lies_on_floor(m, body, &count))
 		return false;
 	hs_vec3 cb = hs_sub(b, c), cg = hs_sub(body->pos, c);
 	if (held_by_floor(cb))
@@ -135,7 +135,7 @@ bool hs_push_on_floor(hs_world *world, hs_body *body, hs_vec3 c, hs_vec3 b) {
 		return true; // no swing
 	hs_vec3 n_h = hs_v3(n.x, n.y, 0.0);
 	hs_vec3 r_swing = hs_scale(hs_cross(cg_unit, n_h), r_len);
-	if (tip_about_floor_edge(world, body, c, cb, n_h, r_swing, slid))
+	if (tip_about_floor_edge(m, body, c, cb, n_h, r_swing, slid))
 		return true;
 	// no tip: the swing slides instead, and T + R's swing share is CB less R's yaw share
 	hs_vec3 r_yaw = hs_scale(hs_cross(cg_unit, hs_v3(0, 0, 1)), r_len * n.z);
@@ -143,9 +143,9 @@ bool hs_push_on_floor(hs_world *world, hs_body *body, hs_vec3 c, hs_vec3 b) {
 	return true;
 }
 
-void hs_push_many(hs_world *world, hs_body *body, hs_vec3 d) {
+void hs_push_many(const hs_motion_pass *m, hs_body *body, hs_vec3 d) {
 	int count = 0;
-	if (!world->model.def.paper_floor_push && lies_on_floor(world, body, &count)) {
+	if (!m->model->def.paper_floor_push && lies_on_floor(m, body, &count)) {
 		if (held_by_floor(d))
 			return;
 		d.z = 0.0;
@@ -162,18 +162,17 @@ void hs_push_many(hs_world *world, hs_body *body, hs_vec3 d) {
 // leaves no turn for eq. 3 to carry on, so an object it leaves on the floor and not stable (a box
 // a first fingertip tipped a hair onto its edge) tips there by rules (1)-(3) instead of sliding a
 // frame on (1.3 cm at 17 frames/s). A one-point push's turn does carry on: a flick tips over so.
-bool hs_push_release_on_floor(hs_world *world, hs_body *body, bool many) {
+bool hs_push_release_on_floor(const hs_motion_pass *m, hs_body *body, bool many) {
 	int count = 0;
-	if (!lies_on_floor(world, body, &count))
+	if (!lies_on_floor(m, body, &count))
 		return false;
-	double dt = world->model.def.dt;
-	hs_vec3 gm = hs_add(hs_sub(body->pos, body->prev), hs_scale(world->model.def.gravity, dt * dt));
-	hs_motion_pass m = hs_motion_pass_of(world);
-	bool stable = hs_motion_settle(&m, body, count, 0.0, gm, many, NULL);
+	double dt = m->model->def.dt;
+	hs_vec3 gm = hs_add(hs_sub(body->pos, body->prev), hs_scale(m->model->def.gravity, dt * dt));
+	bool stable = hs_motion_settle(m, body, count, 0.0, gm, many, NULL);
 	if (!stable && !many)
 		return false;
 	body->rot_prev = body->rot;
 	body->grounded = 1;
-	body->floor_contacts = stable ? count : hs_motion_floor_points(&world->model, &world->scratch, body);
+	body->floor_contacts = stable ? count : hs_motion_floor_points(m->model, m->scratch, body);
 	return true;
 }

@@ -3,8 +3,10 @@
 // takes the parts of struct hs_world (world_internal.h) it reads and writes: the hands alone
 // (age_hands); the model, bodies and cache (file_objects); the object stages the model, bodies,
 // cache, scratch (and counters, fault words), from which they make the broad phase's context
-// (broadphase.h) and free motion's (motion.h) where they step an object; the hand stages still
-// take the world, whose hand pass reads and writes nearly all of it. Stages call the concepts below them and none calls back up here. They are forced inline: the
+// (broadphase.h) and free motion's (motion.h) where they step an object; track_hands the model,
+// hands, bodies and cache; the hand pass (hs_manipulate) the world, from which it makes the broad
+// phase's, the contact tests' (contact_pass.h) and free motion's contexts once. Stages call the
+// concepts below them and none calls back up here. They are forced inline: the
 // step's cost is read from what hs_step_hand calls (tool/bench_cmd.c's stage table), as it was
 // from hs_world_step's.
 #include "broadphase.h"
@@ -87,15 +89,16 @@ static HS_FORCE_INLINE void file_objects(const hs_world_model *model, const hs_b
 
 // docs/model.md §3 "Tracking loss": hands lost past tracking_hold_s let their grasps go. In: each
 // hand's tracked flag, the hold in frames, dt. Out: the hand's lost-frame count and placement; the
-// bodies it let go (a let-go alone reads the whole world: the bodies, the awake list, the digests).
-static HS_FORCE_INLINE void track_hands(hs_world *world) {
-	for (int h = 0; h < world->model.hand_count; ++h)
-		if (hs_tracking_update(&world->state.hands[h], world->model.hold_frames, world->model.def.dt))
-			hs_grasp_let_go_in_place(world, h);
+// bodies it let go, woken, their digests stale (cache).
+static HS_FORCE_INLINE void track_hands(const hs_world_model *model, hs_hand *hands, hs_body *bodies, hs_world_cache *cache) {
+	for (int h = 0; h < model->hand_count; ++h)
+		if (hs_tracking_update(&hands[h], model->hold_frames, model->def.dt))
+			hs_grasp_let_go_in_place(model, bodies, cache, &hands[h], h);
 }
 
 // §3.2 (Fig. 2-3, eq. 1-2): the hands' contacts, grasps and pushes move what they touch, and
 // (§4.3) what interferes with it. In: hands, bodies. Out: bodies moved, held or carried, contacts.
+// Takes the world: hs_manipulate makes its steps' contexts (docs/architecture.md, its step table).
 static HS_FORCE_INLINE void hands_move_objects(hs_world *world) {
 	if (world->model.hand_count > 0)
 		hs_manipulate(world);
@@ -179,10 +182,10 @@ void hs_step_hand(hs_world *world) {
 	hs_body *bodies = world->state.bodies;
 	hs_world_cache *cache = &world->cache;
 	hs_world_scratch *scratch = &world->scratch;
-	file_objects(model, bodies, cache); // Experiment 3: the broad phase
-	track_hands(world);                 // docs/model.md §3: tracking loss
-	hands_move_objects(world);          // §3.2: contacts, grasps, pushes
-	int fallen = 0;                     // paper mode: objects moved with a falling group
+	file_objects(model, bodies, cache);                   // Experiment 3: the broad phase
+	track_hands(model, world->state.hands, bodies, cache); // docs/model.md §3: tracking loss
+	hands_move_objects(world);                            // §3.2: contacts, grasps, pushes
+	int fallen = 0;                                       // paper mode: objects moved with a falling group
 	// §4.2-§4.3: free motion, floor, stacking
 	int moved = move_free_objects(model, bodies, cache, scratch, &world->counters, &world->state, &fallen);
 	wake_neighbours(model, bodies, cache, scratch, moved, fallen); // §4.3: what rested on a moved object looks again

@@ -129,7 +129,8 @@ hs_status hs_world_hand_rectified_points(const hs_world *world, hs_hand_id id, h
 	if (!hand || !points)
 		return HS_ERR_INVALID_ARGUMENT;
 	for (int i = 0; i < HS_HAND_POINTS; ++i)
-		points[i] = hand->state.touch_points >> i & 1u ? hs_contact_rectify(world, hand->cache.points[i]) : hand->cache.points[i];
+		points[i] = hand->state.touch_points >> i & 1u ? hs_contact_rectify(&world->model, world->state.bodies, hand->cache.points[i])
+		                                              : hand->cache.points[i];
 	if (touching)
 		*touching = hand->state.touch_points;
 	return HS_OK;
