@@ -90,8 +90,8 @@ static void test_finds_boxes(void **state) {
 	hs_shape_id id = hs_world_add_shape(w, l, NULL);
 	const hs_shape *copy = hs_world_shape(w, id);
 	assert_non_null(copy);
-	const hs_part_cache *kept = hs_part_cache_of(w, copy, &copy->parts[1]);
-	assert_true(hs_part_is_box(hs_part_cache_of(w, copy, &copy->parts[0])));
+	const hs_part_cache *kept = hs_part_cache_of(&w->model, copy, &copy->parts[1]);
+	assert_true(hs_part_is_box(hs_part_cache_of(&w->model, copy, &copy->parts[0])));
 	assert_true(kept->box_offset[0] == l1.box_offset[0]);
 	assert_true(kept->grow_reach == hs_part_grow_reach(l, &l->parts[1]));
 	assert_near(kept->grow_reach, sqrt(3.0), 1e-6);

@@ -387,7 +387,7 @@ static HS_FORCE_INLINE bool held_lines_clear_in(const hs_contact_pass *cp, int h
 	// the box's path whenever e0 and e1 do
 	if (!hs_part_box_takes(y) || !hs_part_box_takes(z))
 		return false;
-	const hs_part_cache *pc = part_cache_in(cp->model, shape, part);
+	const hs_part_cache *pc = hs_part_cache_of(cp->model, shape, part);
 	held_ends ends = {e0, e1, y, z, touching >> a & 1u, touching >> (a + 1) & 1u,
 	                  cp->model->def.grasp_release_mm * 1e-3 - HS_CULL_SLACK, grow, part->radius + pc->grow_reach * grow + HS_CULL_SLACK};
 #if HS_LANES4

@@ -78,12 +78,6 @@ static inline const hs_face_tree *tree_of(const hs_world_model *model, const hs_
 	return &model->face_trees[shape - model->shapes];
 }
 
-// What the model derived from `part`, a part of `shape`, the model's copy of one of its shapes
-// (hs_part_cache_of over the model alone).
-static inline const hs_part_cache *part_cache_in(const hs_world_model *model, const hs_shape *shape, const hs_part *part) {
-	return &model->part_cache[shape - model->shapes][part - shape->parts];
-}
-
 // The rule ([H] §3.2 (A)): a point is in a convex part when it lies behind every face plane, here
 // of the part grown by `grow` (m; 0: the part itself).
 static inline bool scan_inside(const hs_shape *shape, const hs_part *part, hs_vec3 p, double grow) {
@@ -200,14 +194,14 @@ static inline hs_clip clip_part_with(const hs_world_model *model, const hs_shape
 
 // The same three, the part's cache found from the model (where a caller does not hold it).
 static inline bool inside_part(const hs_world_model *model, const hs_shape *shape, const hs_part *part, hs_vec3 p, double grow) {
-	return inside_part_with(model, shape, part, part_cache_in(model, shape, part), p, grow);
+	return inside_part_with(model, shape, part, hs_part_cache_of(model, shape, part), p, grow);
 }
 static inline int nearest_face(const hs_world_model *model, const hs_shape *shape, const hs_part *part, hs_vec3 p) {
-	return nearest_face_with(model, shape, part, part_cache_in(model, shape, part), p);
+	return nearest_face_with(model, shape, part, hs_part_cache_of(model, shape, part), p);
 }
 static inline hs_clip clip_part(const hs_world_model *model, const hs_shape *shape, const hs_part *part, hs_vec3 a, hs_vec3 b,
                                 double grow) {
-	return clip_part_with(model, shape, part, part_cache_in(model, shape, part), a, b, grow);
+	return clip_part_with(model, shape, part, hs_part_cache_of(model, shape, part), a, b, grow);
 }
 
 #endif

@@ -22,22 +22,6 @@ static hs_vec3 friction_finger(hs_vec3 c, hs_vec3 d, hs_vec3 n) {
 	return hs_add(c, hs_mul_add(t > cap ? hs_scale(tan, cap / t) : tan, -in, n));
 }
 
-// hs_object_handle and hs_hand_handle (world_internal.h) from the model alone: the handles a
-// contact names its object and hand by.
-static inline hs_object_id object_handle(const hs_world_model *model, int i) {
-	hs_object_id id = {0, 0, 0};
-	if (i >= 0 && i < model->object_count)
-		id = (hs_object_id){(uint32_t)i + 1, model->tag, HS_GENERATION};
-	return id;
-}
-
-static inline hs_hand_id hand_handle(const hs_world_model *model, int h) {
-	hs_hand_id id = {0, 0, 0};
-	if (h >= 0 && h < model->hand_count)
-		id = (hs_hand_id){(uint32_t)h + 1, model->tag, HS_GENERATION};
-	return id;
-}
-
 // A contact found in the body frame `f`: C = `point` on the surface, B = `finger` where the part
 // drives it (eq. 1-2), `normal` the face normal or the edge's pseudo-normal.
 void hs_contact_push(const hs_contact_pass *cp, int object, int hand, int part, bool edge, int feature, const hs_frame *f,
@@ -47,8 +31,8 @@ void hs_contact_push(const hs_contact_pass *cp, int object, int hand, int part, 
 		return;
 	}
 	hs_contact *c = &cp->out->contacts[cp->out->contact_count++];
-	c->object = object_handle(cp->model, object);
-	c->hand = hand_handle(cp->model, hand);
+	c->object = hs_object_handle(cp->model, object);
+	c->hand = hs_hand_handle(cp->model, hand);
 	c->part = part;
 	c->edge = edge;
 	c->feature = feature;

@@ -188,7 +188,7 @@ void hs_spring_detach(hs_world *world, hs_spring_system *sys, bool classify, dou
 	int i = sys->attached;
 	hs_body *body = &world->state.bodies[i];
 	hs_release *r = &sys->release;
-	r->object = hs_object_handle(world, i);
+	r->object = hs_object_handle(&world->model, i);
 	r->time = time;
 	r->hand_speed = hs_length(sys->tracker.velocity);
 	if (classify && !sys->tracker.at_rest) { // §4.4 throw: the object takes the hand's velocity

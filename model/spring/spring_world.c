@@ -61,10 +61,10 @@ hs_status hs_world_spring_state(const hs_world *world, hs_spring_state *out) {
 		return HS_ERR_INVALID_ARGUMENT;
 	const hs_spring_system *sys = world->state.spring;
 	memset(out, 0, sizeof *out);
-	out->attached = hs_object_handle(world, sys->attached);
+	out->attached = hs_object_handle(&world->model, sys->attached);
 	out->attach_kind = sys->attach_kind;
 	out->technique = sys->attached >= 0 ? (hs_technique)sys->tech.hold : HS_TECHNIQUE_SPRING;
-	out->candidate = hs_object_handle(world, sys->candidate);
+	out->candidate = hs_object_handle(&world->model, sys->candidate);
 	out->stylus = sys->stylus;
 	out->stylus_orientation = sys->rot;
 	out->button = sys->button;
@@ -133,6 +133,6 @@ hs_status hs_world_spring_last_release(const hs_world *world, hs_release *out) {
 	if (!world || !world->state.spring || !out)
 		return HS_ERR_INVALID_ARGUMENT;
 	*out = world->state.spring->release;
-	out->object = hs_object_handle(world, (int)out->object.index1 - 1); // the state keeps the index only
+	out->object = hs_object_handle(&world->model, (int)out->object.index1 - 1); // the state keeps the index only
 	return HS_OK;
 }

@@ -24,7 +24,7 @@ hs_status hs_world_first_fault(const hs_world *world, long *frame, hs_object_id 
 	if (frame)
 		*frame = world->state.first_fault_frame;
 	if (object)
-		*object = hs_object_handle(world, world->state.first_fault_object);
+		*object = hs_object_handle(&world->model, world->state.first_fault_object);
 	return HS_OK;
 }
 

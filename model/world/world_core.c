@@ -286,7 +286,7 @@ hs_object_id hs_world_add_object(hs_world *world, const hs_object_def *def, hs_s
 	hs_wake(world->state.bodies, &world->cache, index); // new objects look at the world once
 	hs_digest_stale(&world->cache, index);
 	world->cache.grid_dirty = true;
-	return hs_object_handle(world, index);
+	return hs_object_handle(&world->model, index);
 }
 
 static const hs_body *body_of(const hs_world *world, hs_object_id id) {
@@ -311,7 +311,7 @@ int hs_world_object_count(const hs_world *world) { return world ? world->model.o
 
 hs_object_id hs_world_object_at(const hs_world *world, int i) {
 	hs_object_id none = {0, 0, 0};
-	return world ? hs_object_handle(world, i) : none;
+	return world ? hs_object_handle(&world->model, i) : none;
 }
 
 hs_shape_id hs_world_object_shape(const hs_world *world, hs_object_id id) {

@@ -41,12 +41,12 @@ hs_hand_id hs_world_add_hand(hs_world *world, const hs_hand_def *def, hs_status 
 	hs_hand_update_bounds(hand); // touches nothing until it is set
 	hs_set_status(status, HS_OK);
 	int index = world->model.hand_count++;
-	return hs_hand_handle(world, index);
+	return hs_hand_handle(&world->model, index);
 }
 
 hs_hand_id hs_world_hand_at(const hs_world *world, int i) {
 	hs_hand_id none = {0, 0, 0};
-	return world ? hs_hand_handle(world, i) : none;
+	return world ? hs_hand_handle(&world->model, i) : none;
 }
 
 static hs_hand *hand_of(const hs_world *world, hs_hand_id id) {

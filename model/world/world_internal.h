@@ -137,8 +137,8 @@ struct hs_world {
 };
 
 // What the world derived from `part`, a part of `shape`, the world's copy of one of its shapes.
-static inline const hs_part_cache *hs_part_cache_of(const hs_world *world, const hs_shape *shape, const hs_part *part) {
-	return &world->model.part_cache[shape - world->model.shapes][part - shape->parts];
+static inline const hs_part_cache *hs_part_cache_of(const hs_world_model *model, const hs_shape *shape, const hs_part *part) {
+	return &model->part_cache[shape - model->shapes][part - shape->parts];
 }
 
 // Every live handle has this generation: objects, shapes and hands are never removed, so no slot
@@ -156,17 +156,18 @@ static inline void hs_digest_stale(hs_world_cache *cache, int i) {
 // Any object may have changed (a load, a spring step, a test writing fields): all are digested again.
 static inline void hs_digest_all_stale(hs_world_cache *cache) { cache->all_stale = true; }
 
-static inline hs_object_id hs_object_handle(const hs_world *world, int i) {
+// The handles of object i and hand h (null out of range): the model's tag and the generation.
+static inline hs_object_id hs_object_handle(const hs_world_model *model, int i) {
 	hs_object_id id = {0, 0, 0};
-	if (i >= 0 && i < world->model.object_count)
-		id = (hs_object_id){(uint32_t)i + 1, world->model.tag, HS_GENERATION};
+	if (i >= 0 && i < model->object_count)
+		id = (hs_object_id){(uint32_t)i + 1, model->tag, HS_GENERATION};
 	return id;
 }
 
-static inline hs_hand_id hs_hand_handle(const hs_world *world, int h) {
+static inline hs_hand_id hs_hand_handle(const hs_world_model *model, int h) {
 	hs_hand_id id = {0, 0, 0};
-	if (h >= 0 && h < world->model.hand_count)
-		id = (hs_hand_id){(uint32_t)h + 1, world->model.tag, HS_GENERATION};
+	if (h >= 0 && h < model->hand_count)
+		id = (hs_hand_id){(uint32_t)h + 1, model->tag, HS_GENERATION};
 	return id;
 }
 
