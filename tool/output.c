@@ -27,6 +27,15 @@ static known_file *inputs;
 static int input_count;
 static int output_count; // outputs: below
 
+static void forget_files(void);
+
+// The registries live until the process exits; freed then, so a leak check sees nothing left.
+static void remember_at_exit(void) {
+	static bool registered;
+	if (!registered)
+		registered = atexit(forget_files) == 0;
+}
+
 static char *copy_of(const char *s) {
 	char *r = malloc(strlen(s) + 1);
 	if (r)
@@ -38,6 +47,7 @@ void output_input(const char *path) {
 	struct stat st;
 	if (!path || strcmp(path, "-") == 0 || stat(path, &st) != 0)
 		return;
+	remember_at_exit();
 	known_file *grown = realloc(inputs, (size_t)(input_count + 1) * sizeof *grown);
 	if (!grown)
 		return;
@@ -142,6 +152,7 @@ static bool claim(const char *target) {
 			free(p.name);
 			return false;
 		}
+	remember_at_exit();
 	place *grown = realloc(outputs, (size_t)(output_count + 1) * sizeof *grown);
 	if (!grown) {
 		free(p.name);
@@ -150,6 +161,18 @@ static bool claim(const char *target) {
 	outputs = grown;
 	outputs[output_count++] = p;
 	return true;
+}
+
+static void forget_files(void) {
+	for (int i = 0; i < input_count; ++i)
+		free(inputs[i].path);
+	for (int i = 0; i < output_count; ++i)
+		free(outputs[i].name);
+	free(inputs);
+	free(outputs);
+	inputs = NULL;
+	outputs = NULL;
+	input_count = output_count = 0;
 }
 
 // The temporary beside `target`: ".NAME.XXXXXX" in its folder, made by mkstemp (O_EXCL: never

@@ -7,7 +7,7 @@
 // the frame nearest --html-at. A mouse drag turns the view, the wheel zooms, a right-drag pans
 // (each changes the screenshot); the time slider moved to its end changes the screenshot, the
 // timeline marker's place and frame and the clock; step back and step move one frame; play moves on
-// and pause stops; play at 4x moves further than at 0.1x in the same time.
+// and pause stops; play at 4x moves further than at 0.1x in the same time (a clock the test drives).
 //   node view_test.mjs NODE_MODULES OUTDIR PAGE.html...
 import { createRequire } from 'node:module';
 import { writeFileSync } from 'node:fs';
@@ -215,15 +215,31 @@ async function testPage(file) {
 	check((await marker()).frame === run.frames[target - 1].f, 'step back shows the frame before');
 	await page.click('#step');
 	check((await marker()).frame === run.frames[target].f, 'step shows the frame after');
+	// from here the page's clock and its animation frames are the test's (a frame every 16 ms of
+	// that clock): how far play gets in 0.8 s depends on the speed alone, not on how busy the
+	// machine is (on a loaded one, real animation frames came too seldom to move at all)
+	await page.evaluate(() => {
+		let now = performance.now(), queue = [];
+		performance.now = () => now;
+		window.requestAnimationFrame = cb => queue.push(cb);
+		window.hsAdvance = ms => {
+			for (let t = 0; t < ms; t += 16) {
+				now += 16;
+				const due = queue;
+				queue = [];
+				for (const cb of due) cb(now);
+			}
+		};
+	});
 	const played = async (speed, ms) => {
 		await page.focus('#time');
 		await page.keyboard.press('Home');
 		await page.select('#speed', speed);
 		await page.click('#play');
-		await new Promise(r => setTimeout(r, ms));
+		await page.evaluate(t => window.hsAdvance(t), ms);
 		if (await page.$eval('#play', b => b.textContent) === 'pause') await page.click('#play'); // not at the end yet
 		const at = (await marker()).frame;
-		await new Promise(r => setTimeout(r, 300));
+		await page.evaluate(() => window.hsAdvance(300));
 		return { at, still: (await marker()).frame === at };
 	};
 	const slow = await played('0.1', 800), fast = await played('4', 800);
