@@ -3,7 +3,7 @@
 //
 // Left out, on purpose: the definition and what derives from it (def, the tracker's period, window
 // and speeds; each object's mass, x0, k, c come from hs_body and def), what lives in hs_body (the
-// world's walk visits it: position, velocity, ...), the frame-start scratch (saved_pos/vel, written
+// world's walk visits it: position, velocity, ...), the frame-start scratch (the world's scratch.spring, written
 // before each read), and the geometry cache, which a load empties so the next step rebuilds it from
 // the loaded orientations. A load's CHECK pass refuses what would make a later step read out of
 // bounds or compute with garbage: indices and enums out of range, flags not 0 or 1, non-finite
