@@ -255,6 +255,42 @@ static void test_line_across_and_line_ending_inside(void **state) {
 	hs_world_destroy(w);
 }
 
+// The release margin's question (hs_contact_hand_within): a check point inside the cube grown by
+// 2 cm, or a check line across it with both ends outside, answers yes; a part beyond the margin,
+// or a line with an end inside the grown cube (the check points' business), no. The answer is the
+// grown test's: it gives that hand a contact exactly then.
+static void test_hand_within_margin(void **state) {
+	(void)state;
+	const double grow = 0.02;
+	struct {
+		int kind; // 0: check point 3 at a, 1: check line 0 from a to b
+		hs_vec3 a, b;
+		bool within;
+	} cases[] = {
+	    {0, {0.1, 0.2, 2.515}, {0, 0, 0}, true},    // 1.5 cm above the top face
+	    {0, {0.1, 0.2, 2.53}, {0, 0, 0}, false},    // 3 cm above it
+	    {0, {0.515, 0.515, 2.0}, {0, 0, 0}, true},  // beside a vertical edge, 1.5 cm off two faces
+	    {1, {-1, 0, 2.51}, {1, 0, 2.51}, true},     // across the grown cube, 1 cm above the top
+	    {1, {-1, 0, 2.53}, {1, 0, 2.53}, false},    // above it
+	    {1, {-1, 0, 2.51}, {0, 0, 2.51}, false},    // ends inside the grown cube: no contact of its own
+	};
+	for (size_t k = 0; k < sizeof cases / sizeof cases[0]; ++k) {
+		hs_world *w = cube_world();
+		hs_hand *hand = &w->state.hands[0];
+		if (cases[k].kind == 0) {
+			move_point(w, 3, cases[k].a, cases[k].a);
+		} else {
+			hand->cache.lines[0][0] = hand->cache.prev_lines[0][0] = cases[k].a;
+			hand->cache.lines[0][1] = hand->cache.prev_lines[0][1] = cases[k].b;
+		}
+		bool within = hs_contact_hand_within(contacts_of(w), 0, 0, grow);
+		assert_int_equal(within, cases[k].within);
+		assert_int_equal(within, hs_contact_detect_grown(contacts_of(w), 0, NULL, grow) > 0);
+		assert_false(hs_contact_hand_within(contacts_of(w), 0, 0, 0.0)); // asked with a margin only
+		hs_world_destroy(w);
+	}
+}
+
 static hs_contact with_normal(hs_vec3 n) {
 	hs_contact c;
 	memset(&c, 0, sizeof c);
@@ -748,6 +784,7 @@ int main(void) {
 	    cmocka_unit_test(test_point_at_edge_and_surface),
 	    cmocka_unit_test(test_line_crosses_edge),
 	    cmocka_unit_test(test_line_across_and_line_ending_inside),
+	    cmocka_unit_test(test_hand_within_margin),
 	    cmocka_unit_test(test_classification),
 	    cmocka_unit_test(test_push_r_zero),
 	    cmocka_unit_test(test_push_t_zero),
