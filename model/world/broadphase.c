@@ -55,19 +55,10 @@ int hs_grid_query(const hs_world_model *model, const hs_world_cache *cache, hs_v
 // moves a few mm a frame reuses it for many frames. Every answer holds all the objects the
 // callers' own tests can pass, in index order: no result depends on the lists.
 
-// The parts of a world a neighbour query reads and writes (hs_grid_near_filed's arguments): the
-// broad phase's, its bodies read only.
-typedef struct query {
-	const hs_world_model *model;
-	const hs_body *bodies;
-	hs_world_cache *cache;
-	hs_world_scratch *scratch;
-} query;
-
 // Rounding allowance of the centre tests (m), far below any caller's tolerance.
 static double slack(hs_vec3 c, double reach) { return 1e-9 * (1.0 + fabs(c.x) + fabs(c.y) + reach); }
 
-static bool centre_near(const query *q, int i, hs_vec3 c, double r, double allow) {
+static bool centre_near(const hs_broadphase *q, int i, hs_vec3 c, double r, double allow) {
 	hs_vec3 p = q->bodies[i].pos;
 	double reach = r + q->cache->grid.half[i];
 	reach += allow * slack(c, reach);
@@ -76,7 +67,7 @@ static bool centre_near(const query *q, int i, hs_vec3 c, double r, double allow
 
 // Merges a list's objects with the awake list (both ascending; an object on both once), keeping
 // those near the query.
-static int list_answer(const query *q, const hs_near_list *l, hs_vec3 c, double r) {
+static int list_answer(const hs_broadphase *q, const hs_near_list *l, hs_vec3 c, double r) {
 	const int *awake = q->cache->awake;
 	int *found = q->scratch->found;
 	int n = 0, a = 0, b = 0, na = q->cache->awake_count;
@@ -118,7 +109,7 @@ static hs_near_list *list_holding(hs_near_lists *lists, hs_vec3 c, double r) {
 
 // Lists the resting objects near the query's box grown by the skin, in place of the least recently
 // used list; or, when more than a list holds, answers from the grid's answer alone (found).
-static int list_and_answer(const query *q, hs_vec3 c, double r) {
+static int list_and_answer(const hs_broadphase *q, hs_vec3 c, double r) {
 	hs_world_cache *cache = q->cache;
 	int *found = q->scratch->found;
 	double grown = r + cache->grid.cell0;
@@ -151,9 +142,9 @@ static int list_and_answer(const query *q, hs_vec3 c, double r) {
 }
 
 // (out of line: a world scanned whole pays no more than its test, inline in broadphase.h)
-int hs_grid_near_filed(const hs_world_model *model, const hs_body *bodies, hs_world_cache *cache,
-                       hs_world_scratch *scratch, hs_vec3 center, double radius) {
-	const query parts = {model, bodies, cache, scratch}, *q = &parts;
+int hs_grid_near_filed(const hs_broadphase *q, hs_vec3 center, double radius) {
+	hs_world_cache *cache = q->cache;
+	hs_world_scratch *scratch = q->scratch;
 	scratch->near = scratch->found;
 	if (cache->awake_count > HS_NEAR_AWAKE_MAX) // many in motion: the lists would hold few
 		return grid_answer(cache, center, radius, scratch->found);

@@ -57,8 +57,7 @@ static inline void hs_grid_update(const hs_world_model *model, const hs_body *bo
 int hs_grid_query(const hs_world_model *model, const hs_world_cache *cache, hs_vec3 center, double radius, int *out);
 // hs_grid_near of a world whose grid is built and read: the grid's (or a neighbour list's) answer
 // written to scratch->found.
-int hs_grid_near_filed(const hs_world_model *model, const hs_body *bodies, hs_world_cache *cache,
-                       hs_world_scratch *scratch, hs_vec3 center, double radius);
+int hs_grid_near_filed(const hs_broadphase *bp, hs_vec3 center, double radius);
 
 // A world scanned whole answers with every index, listed when the world was made: nothing written.
 static inline int hs_grid_every(const hs_broadphase *bp) {
@@ -71,15 +70,14 @@ static inline int hs_grid_every(const hs_broadphase *bp) {
 static inline int hs_grid_near(const hs_broadphase *bp, hs_vec3 center, double radius) {
 	if (hs_grid_scanned(bp->model, bp->cache))
 		return hs_grid_every(bp);
-	return hs_grid_near_filed(bp->model, bp->bodies, bp->cache, bp->scratch, center, radius);
+	return hs_grid_near_filed(bp, center, radius);
 }
 
 // hs_grid_near of the objects near either of two points (within radius plus their own).
 static inline int hs_grid_near_either(const hs_broadphase *bp, hs_vec3 a, hs_vec3 b, double radius) {
 	if (hs_grid_scanned(bp->model, bp->cache))
 		return hs_grid_every(bp);
-	return hs_grid_near_filed(bp->model, bp->bodies, bp->cache, bp->scratch, hs_scale(hs_add(a, b), 0.5),
-	                          radius + 0.5 * hs_length(hs_sub(b, a)));
+	return hs_grid_near_filed(bp, hs_scale(hs_add(a, b), 0.5), radius + 0.5 * hs_length(hs_sub(b, a)));
 }
 
 // hs_wake of an object not on the awake list: puts it there, in index order.
