@@ -166,6 +166,26 @@ static bool swept_line(const hs_contact_pass *cp, int object, int h, int j, cons
 	return true;
 }
 
+// True when a piece of a line's path, q0-q1 to n0-n1, lies beyond one face of a box part by more
+// than HS_CULL_SLACK (most pieces of a fast finger's path past a cube): then the line a piece ago
+// misses the part (its clip) and the piece sweeps clear of that face (swept_line finds nothing),
+// so neither is asked; the two are compared with this in self-check builds.
+static inline bool piece_clear_of_a_box_face(const hs_contact_pass *cp, const hs_shape *shape, const hs_part *part,
+                                             const hs_part_cache *pc, const hs_vec3 q[2], const hs_vec3 n[2]) {
+	const hs_vec3 ends[4] = {q[0], q[1], n[0], n[1]};
+	if (!hs_part_is_box(pc) || !hs_part_box_beyond4(pc, ends, HS_CULL_SLACK))
+		return false;
+#if defined(HS_SELFCHECK)
+	if (clip_part(cp->model, shape, part, q[0], q[1], 0.0).hit || !hs_contact_sweep_beyond_a_face(cp->model, shape, part, q, n)) {
+		fprintf(stderr, "selfcheck: a piece of a line's path clear of a box face meets the part\n");
+		abort();
+	}
+#else
+	(void)cp, (void)shape, (void)part;
+#endif
+	return true;
+}
+
 // A check line that misses the part now (p, body frame): the first piece of its path through the
 // frame that swept across the part makes the contact. Touching it at the start of a piece, it
 // had reached it before and left again: nothing. `start`: the line a frame ago, in the frame of the
@@ -174,17 +194,20 @@ void hs_contact_swept_path(const hs_contact_pass *cp, int object, int h, int j, 
                            int steps, const hs_vec3 start[2], const hs_vec3 p[2]) {
 	const hs_shape *shape = &cp->model->shapes[cp->bodies[object].shape];
 	const hs_hand *hand = &cp->hands[h];
+	const hs_part_cache *pc = hs_part_cache_of(cp->model, shape, part);
 	hs_vec3 q[2] = {start[0], start[1]};
 	for (int k = 1; k <= steps; ++k) {
-		if (clip_part(cp->model, shape, part, q[0], q[1], 0.0).hit)
-			return;
 		hs_vec3 n[2] = {p[0], p[1]};
 		if (k < steps) {
 			n[0] = to_body(body, hand->cache.path_lines[k - 1][j][0]);
 			n[1] = to_body(body, hand->cache.path_lines[k - 1][j][1]);
 		}
-		if (swept_line(cp, object, h, j, part, body, q, n, p, (double)(k - 1) / steps, 1.0 / steps))
-			return;
+		if (!piece_clear_of_a_box_face(cp, shape, part, pc, q, n)) {
+			if (clip_part_with(cp->model, shape, part, pc, q[0], q[1], 0.0).hit)
+				return;
+			if (swept_line(cp, object, h, j, part, body, q, n, p, (double)(k - 1) / steps, 1.0 / steps))
+				return;
+		}
 		q[0] = n[0];
 		q[1] = n[1];
 	}
