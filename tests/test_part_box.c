@@ -1,7 +1,8 @@
 // test_part_box.c — a part that is a box with axis-aligned faces (model/geometry/part_box.h): which
 // parts are found to be such boxes, the coordinate inside test and nearest face answer as the
 // scans of the faces do (on faces, at ±0, grown, NaN, ties), and two ends beyond one face by more than the slack make the
-// Cyrus-Beck clip miss, while ends beyond by less do not count as apart.
+// Cyrus-Beck clip miss, while ends beyond by less do not count as apart; the box's clip is the
+// clip's, bit for bit, and four ends beyond one face make every segment between them miss.
 #include <stdarg.h>
 #include <stddef.h>
 #include <stdint.h>
@@ -11,6 +12,7 @@
 #include <math.h>
 
 #include "clip.h"
+#include "face_tree.h"
 #include "part_box.h"
 #include "part_reach.h"
 #include "world_internal.h"
@@ -239,12 +241,98 @@ static void test_apart_means_the_clip_misses(void **state) {
 	hs_shape_destroy(box);
 }
 
+// The box's clip against hs_clip_segment on n segments about part p: every field the same, bit for
+// bit (the sampled ends sit on faces, at ±0 and parallel to faces often). Returns the hits.
+static int clips_as_the_scan(const hs_shape *shape, int p, uint64_t seed, int n) {
+	const hs_part *part = &shape->parts[p];
+	hs_part_cache pc = cache_of(shape, p);
+	assert_true(hs_part_is_box(&pc));
+	uint64_t rng = seed;
+	int hits = 0, parallel = 0;
+	for (int k = 0; k < n; ++k) {
+		double grow = k % 3 == 0 ? 1e-3 : 0.0;
+		hs_vec3 a = sample(&rng, &pc, grow), b = k % 5 == 0 ? hs_v3(a.x, sample(&rng, &pc, grow).y, a.z) : sample(&rng, &pc, grow);
+		hs_clip want = hs_clip_segment(shape, part, a, b, grow), got = hs_part_box_clip(&pc, part->first_face, a, b, grow);
+		assert_int_equal(got.hit, want.hit);
+		assert_int_equal(got.face_in, want.face_in);
+		assert_int_equal(got.face_out, want.face_out);
+		assert_memory_equal(&got.t_in, &want.t_in, sizeof got.t_in);
+		assert_memory_equal(&got.t_out, &want.t_out, sizeof got.t_out);
+		hits += want.hit;
+		parallel += a.x == b.x || a.y == b.y || a.z == b.z;
+	}
+	assert_true(parallel > n / 10);
+	return hits;
+}
+
+static void test_clip_matches_the_scan(void **state) {
+	(void)state;
+	hs_shape *box = hs_shape_box(hs_v3(0.3, 0.1, 0.2), NULL);
+	hs_shape *l = hs_shape_l_block(hs_v3(3, 1, 2), 1, NULL);
+	assert_non_null(box);
+	assert_non_null(l);
+	assert_true(clips_as_the_scan(box, 0, 91, 100000) > 10000);
+	assert_true(clips_as_the_scan(l, 1, 92, 100000) > 10000); // a part whose faces do not start at 0
+	// through the +x and -x faces along the x axis: in at -x, out at +x, at the box's own t
+	const hs_part *part = &box->parts[0];
+	hs_part_cache pc = cache_of(box, 0);
+	hs_clip c = hs_part_box_clip(&pc, part->first_face, hs_v3(-0.3, 0.0, 0.0), hs_v3(0.3, 0.0, 0.0), 0.0);
+	assert_true(c.hit);
+	assert_int_equal(c.face_in, pc.box_face[1]);
+	assert_int_equal(c.face_out, pc.box_face[0]);
+	assert_true(c.t_in == 0.25 && c.t_out == 0.75);
+	// parallel to the +y face, outside it: a miss at that face
+	assert_false(hs_part_box_clip(&pc, part->first_face, hs_v3(-0.3, 0.06, 0.0), hs_v3(0.3, 0.06, 0.0), 0.0).hit);
+	hs_shape_destroy(box);
+	hs_shape_destroy(l);
+}
+
+// Four ends beyond one face by more than the slack: every segment between two of them misses and the
+// face's beyond test holds; by less, or with a coordinate that is not finite, they are not beyond.
+static void test_four_beyond_a_face(void **state) {
+	(void)state;
+	hs_shape *box = hs_shape_box(hs_v3(0.3, 0.1, 0.2), NULL);
+	assert_non_null(box);
+	const hs_part *part = &box->parts[0];
+	hs_part_cache pc = cache_of(box, 0);
+	uint64_t rng = 93;
+	int beyond = 0;
+	for (int k = 0; k < 100000; ++k) {
+		hs_vec3 q[4], shift = hs_v3(0.0, 0.0, 0.0); // most sets moved off the box along an axis: many beyond
+		double *axis = k % 4 == 0 ? &shift.x : k % 4 == 1 ? &shift.y : &shift.z;
+		*axis = k % 8 < 4 ? 0.2 : -0.2;
+		for (int e = 0; e < 4; ++e)
+			q[e] = hs_add(sample(&rng, &pc, 0.0), k % 3 ? shift : hs_v3(0.0, 0.0, 0.0));
+		bool any = false;
+		for (int f = part->first_face; f < part->first_face + part->face_count; ++f)
+			any = any || hs_face_beyond_by(&box->faces[f], q, SLACK);
+		assert_int_equal(hs_part_box_beyond4(&pc, q, SLACK), any);
+		if (!any)
+			continue;
+		++beyond;
+		for (int i = 0; i < 4; ++i)
+			for (int j = i + 1; j < 4; ++j)
+				assert_false(hs_clip_segment(box, part, q[i], q[j], 0.0).hit);
+	}
+	assert_true(beyond > 1000);
+	hs_vec3 q[4] = {{0.16, 0.0, 0.0}, {0.16, 0.3, 0.0}, {0.2, -0.3, 0.1}, {0.16, 0.0, -0.4}};
+	assert_true(hs_part_box_beyond4(&pc, q, SLACK)); // beyond +x by 1 cm
+	q[2].x = 0.15 + 0.5 * SLACK;
+	assert_false(hs_part_box_beyond4(&pc, q, SLACK)); // one of them by less than the slack
+	q[2].x = 0.2;
+	q[3].y = NAN;
+	assert_false(hs_part_box_beyond4(&pc, q, SLACK)); // not finite: the caller's scan decides
+	hs_shape_destroy(box);
+}
+
 int main(void) {
 	const struct CMUnitTest tests[] = {
 	    cmocka_unit_test(test_finds_boxes),
 	    cmocka_unit_test(test_inside_matches_the_scan),
 	    cmocka_unit_test(test_nearest_matches_the_scan),
 	    cmocka_unit_test(test_apart_means_the_clip_misses),
+	    cmocka_unit_test(test_clip_matches_the_scan),
+	    cmocka_unit_test(test_four_beyond_a_face),
 	};
 	return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -18,6 +18,7 @@ void hs_part_box_find(const hs_shape *shape, const hs_part *part, hs_part_cache 
 	for (int k = 0; k < 6; ++k) {
 		pc->box_face[k] = -1;
 		pc->box_offset[k] = 0.0;
+		pc->box_axis[k] = -1;
 	}
 	if (part->face_count != 6 || part->first_face < 0 || part->first_face + 6 > shape->face_count)
 		return;
@@ -31,5 +32,6 @@ void hs_part_box_find(const hs_shape *shape, const hs_part *part, hs_part_cache 
 	for (int k = 0; k < 6; ++k) {
 		pc->box_face[k] = face[k];
 		pc->box_offset[k] = shape->faces[face[k]].offset;
+		pc->box_axis[face[k] - part->first_face] = k;
 	}
 }

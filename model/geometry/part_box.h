@@ -11,6 +11,7 @@
 
 #include <stdbool.h>
 
+#include "clip.h"
 #include "handspring.h"
 #include "part_cache.h"
 
@@ -89,6 +90,39 @@ static inline bool hs_part_box_apart(const hs_part_cache *pc, hs_vec3 a, hs_vec3
 	return (a.x > o[0] + g && b.x > o[0] + g) || (-a.x > o[1] + g && -b.x > o[1] + g) ||
 	       (a.y > o[2] + g && b.y > o[2] + g) || (-a.y > o[3] + g && -b.y > o[3] + g) ||
 	       (a.z > o[4] + g && b.z > o[4] + g) || (-a.z > o[5] + g && -b.z > o[5] + g);
+}
+
+// hs_clip_segment(shape, part, a, b, grow) of a box part (first_face: the part's), for a, b and
+// b - a whose coordinates are finite (hs_part_box_takes): each face's dot is the coordinate or its
+// negation (part_box.h's first comment), so its num and den are the clip's, and the faces are
+// visited in face order with its tie rule and early exits: the same clip, every field.
+static inline hs_clip hs_part_box_clip(const hs_part_cache *pc, int first_face, hs_vec3 a, hs_vec3 b, double grow) {
+	hs_clip c = {0.0, 1.0, -1, -1, false};
+	hs_vec3 d = hs_sub(b, a);
+	const double pa[6] = {a.x, -a.x, a.y, -a.y, a.z, -a.z}, pd[6] = {d.x, -d.x, d.y, -d.y, d.z, -d.z};
+	for (int i = 0; i < 6; ++i) {
+		int k = pc->box_axis[i], f = first_face + i;
+		double num = pc->box_offset[k] + grow - pa[k], den = pd[k];
+		if (den == 0.0) {
+			if (!(num > 0.0))
+				return c; // parallel and outside this face's plane
+			continue;
+		}
+		double t = num / den;
+		if (den < 0.0) { // entering through this face
+			if (t > c.t_in || (t == c.t_in && f < c.face_in)) {
+				c.t_in = t;
+				c.face_in = f;
+			}
+		} else if (t < c.t_out || (t == c.t_out && f < c.face_out)) {
+			c.t_out = t;
+			c.face_out = f;
+		}
+		if (c.t_in > c.t_out)
+			return c; // misses
+	}
+	c.hit = c.t_in <= c.t_out;
+	return c;
 }
 
 // True when the four points are finite and all lie beyond one face of the box by more than

@@ -11,6 +11,8 @@ typedef struct hs_part_cache {
 	// for any other part
 	int box_face[6];
 	double box_offset[6];
+	// and the normal k of each of its faces in face order (box_axis[f - first_face]), as the clip visits them
+	int box_axis[6];
 	// the part with its faces moved out by g lies within radius + g · grow_reach of its centre
 	// (√3 for a box: its corners move out diagonally)
 	double grow_reach;

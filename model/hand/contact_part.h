@@ -10,6 +10,7 @@
 #if defined(HS_SELFCHECK)
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 #endif
 
 #include "clip.h"
@@ -133,6 +134,16 @@ static inline bool box_apart(const hs_shape *shape, const hs_part *part, const h
 	}
 	return apart;
 }
+static inline hs_clip box_clip(const hs_shape *shape, const hs_part *part, const hs_part_cache *pc, hs_vec3 a, hs_vec3 b,
+                               double grow) {
+	hs_clip c = hs_part_box_clip(pc, part->first_face, a, b, grow), s = hs_clip_segment(shape, part, a, b, grow);
+	if (c.hit != s.hit || c.face_in != s.face_in || c.face_out != s.face_out || memcmp(&c.t_in, &s.t_in, sizeof c.t_in) != 0 ||
+	    memcmp(&c.t_out, &s.t_out, sizeof c.t_out) != 0) {
+		fprintf(stderr, "selfcheck: the box's clip differs from the scan's\n");
+		abort();
+	}
+	return c;
+}
 static inline int box_nearest(const hs_shape *shape, const hs_part *part, const hs_part_cache *pc, hs_vec3 p) {
 	int face = hs_part_box_nearest(pc, p);
 	if (face != scan_nearest(shape, part, p)) {
@@ -142,6 +153,11 @@ static inline int box_nearest(const hs_shape *shape, const hs_part *part, const 
 	return face;
 }
 #else
+static inline hs_clip box_clip(const hs_shape *shape, const hs_part *part, const hs_part_cache *pc, hs_vec3 a, hs_vec3 b,
+                               double grow) {
+	(void)shape;
+	return hs_part_box_clip(pc, part->first_face, a, b, grow);
+}
 static inline int box_nearest(const hs_shape *shape, const hs_part *part, const hs_part_cache *pc, hs_vec3 p) {
 	(void)shape, (void)part;
 	return hs_part_box_nearest(pc, p);
@@ -185,9 +201,13 @@ static inline hs_clip clip_part_with(const hs_world_model *model, const hs_shape
 		if (root >= 0)
 			return hs_face_tree_clip(tree, root, shape, a, b, grow);
 	}
-	if (hs_part_is_box(pc) && hs_part_box_takes(a) && hs_part_box_takes(b) && box_apart(shape, part, pc, a, b, grow)) {
-		hs_clip miss = {0.0, 1.0, -1, -1, false};
-		return miss;
+	if (hs_part_is_box(pc) && hs_part_box_takes(a) && hs_part_box_takes(b)) {
+		if (box_apart(shape, part, pc, a, b, grow)) {
+			hs_clip miss = {0.0, 1.0, -1, -1, false};
+			return miss;
+		}
+		if (hs_part_box_takes(hs_sub(b, a)))
+			return box_clip(shape, part, pc, a, b, grow);
 	}
 	return hs_clip_segment(shape, part, a, b, grow);
 }
