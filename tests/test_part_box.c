@@ -322,6 +322,12 @@ static void test_four_beyond_a_face(void **state) {
 	q[2].x = 0.2;
 	q[3].y = NAN;
 	assert_false(hs_part_box_beyond4(&pc, q, SLACK)); // not finite: the caller's scan decides
+	assert_int_equal(hs_part_box_beyond_n(&pc, q, 4, SLACK), -1);
+	q[3].y = 0.0;
+	assert_int_equal(hs_part_box_beyond_n(&pc, q, 4, SLACK), 1);
+	assert_int_equal(hs_part_box_beyond_n(&pc, q, 2, SLACK), 1); // the first two alone
+	q[1].x = 0.0;
+	assert_int_equal(hs_part_box_beyond_n(&pc, q, 4, SLACK), 0); // one of them inside the +x face's plane
 	hs_shape_destroy(box);
 }
 

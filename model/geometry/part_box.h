@@ -125,44 +125,50 @@ static inline hs_clip hs_part_box_clip(const hs_part_cache *pc, int first_face, 
 	return c;
 }
 
-// True when the four points are finite and all lie beyond one face of the box by more than
-// `slack`: the segment between any two of them misses (hs_part_box_apart), and so does the
-// surface a line sweeps between two of its positions (hs_face_beyond_by holds for that face: its
-// dot is the coordinate). Finite: their coordinates' sum is (else false: the caller's scan decides).
-static inline bool hs_part_box_beyond4(const hs_part_cache *pc, const hs_vec3 q[4], double slack) {
+// 1 when the n points (n even, at least 2) are finite and all lie beyond one face of the box by
+// more than `slack`: the segment between any two of them misses (hs_part_box_apart), and so does
+// the surface a line sweeps between two of its positions (hs_face_beyond_by holds for that face:
+// its dot is the coordinate); 0 when they are finite and do not (nor then do the face scans); -1
+// when a coordinate is not finite (their sum is not): the caller's scan decides.
+static inline int hs_part_box_beyond_n(const hs_part_cache *pc, const hs_vec3 *q, int n, double slack) {
 	const double *o = pc->box_offset;
 #if defined(__SSE2__)
-	__m128d x0 = _mm_set_pd(q[1].x, q[0].x), x1 = _mm_set_pd(q[3].x, q[2].x);
-	__m128d y0 = _mm_set_pd(q[1].y, q[0].y), y1 = _mm_set_pd(q[3].y, q[2].y);
-	__m128d z0 = _mm_set_pd(q[1].z, q[0].z), z1 = _mm_set_pd(q[3].z, q[2].z);
-	__m128d sum = _mm_add_pd(_mm_add_pd(_mm_add_pd(x0, x1), _mm_add_pd(y0, y1)), _mm_add_pd(z0, z1));
+	// lanes: points k and k + 1; lo/hi the least and greatest coordinate so far (all finite when the sum is)
+	__m128d lx = _mm_set_pd(q[1].x, q[0].x), ly = _mm_set_pd(q[1].y, q[0].y), lz = _mm_set_pd(q[1].z, q[0].z);
+	__m128d hx = lx, hy = ly, hz = lz, sum = _mm_add_pd(_mm_add_pd(lx, ly), lz);
+	for (int k = 2; k + 1 < n; k += 2) {
+		__m128d x = _mm_set_pd(q[k + 1].x, q[k].x), y = _mm_set_pd(q[k + 1].y, q[k].y), z = _mm_set_pd(q[k + 1].z, q[k].z);
+		sum = _mm_add_pd(sum, _mm_add_pd(_mm_add_pd(x, y), z));
+		lx = _mm_min_pd(lx, x), ly = _mm_min_pd(ly, y), lz = _mm_min_pd(lz, z);
+		hx = _mm_max_pd(hx, x), hy = _mm_max_pd(hy, y), hz = _mm_max_pd(hz, z);
+	}
 	double s = _mm_cvtsd_f64(_mm_add_sd(sum, _mm_unpackhi_pd(sum, sum)));
 	if (!(s - s == 0.0))
-		return false;
-	// -c > o + slack as c < -(o + slack): negation is exact
+		return -1;
+	// both lanes beyond: lo > o + slack for a + face, hi < -(o + slack) (-c > o + slack; negation is exact)
 	const __m128d px = _mm_set1_pd(o[0] + slack), nx = _mm_set1_pd(-(o[1] + slack)), py = _mm_set1_pd(o[2] + slack),
 	              ny = _mm_set1_pd(-(o[3] + slack)), pz = _mm_set1_pd(o[4] + slack), nz = _mm_set1_pd(-(o[5] + slack));
-	int beyond = _mm_movemask_pd(_mm_and_pd(_mm_cmpgt_pd(x0, px), _mm_cmpgt_pd(x1, px))) == 3 ||
-	             _mm_movemask_pd(_mm_and_pd(_mm_cmplt_pd(x0, nx), _mm_cmplt_pd(x1, nx))) == 3 ||
-	             _mm_movemask_pd(_mm_and_pd(_mm_cmpgt_pd(y0, py), _mm_cmpgt_pd(y1, py))) == 3 ||
-	             _mm_movemask_pd(_mm_and_pd(_mm_cmplt_pd(y0, ny), _mm_cmplt_pd(y1, ny))) == 3 ||
-	             _mm_movemask_pd(_mm_and_pd(_mm_cmpgt_pd(z0, pz), _mm_cmpgt_pd(z1, pz))) == 3 ||
-	             _mm_movemask_pd(_mm_and_pd(_mm_cmplt_pd(z0, nz), _mm_cmplt_pd(z1, nz))) == 3;
-	return beyond != 0;
+	return _mm_movemask_pd(_mm_cmpgt_pd(lx, px)) == 3 || _mm_movemask_pd(_mm_cmplt_pd(hx, nx)) == 3 ||
+	       _mm_movemask_pd(_mm_cmpgt_pd(ly, py)) == 3 || _mm_movemask_pd(_mm_cmplt_pd(hy, ny)) == 3 ||
+	       _mm_movemask_pd(_mm_cmpgt_pd(lz, pz)) == 3 || _mm_movemask_pd(_mm_cmplt_pd(hz, nz)) == 3;
 #else
 	double s = 0.0;
-	for (int k = 0; k < 4; ++k)
+	for (int k = 0; k < n; ++k)
 		s += q[k].x + q[k].y + q[k].z;
 	if (!(s - s == 0.0))
-		return false;
+		return -1;
 	bool b[6] = {true, true, true, true, true, true};
-	for (int k = 0; k < 4; ++k) {
+	for (int k = 0; k < n; ++k) {
 		b[0] = b[0] && q[k].x > o[0] + slack, b[1] = b[1] && -q[k].x > o[1] + slack;
 		b[2] = b[2] && q[k].y > o[2] + slack, b[3] = b[3] && -q[k].y > o[3] + slack;
 		b[4] = b[4] && q[k].z > o[4] + slack, b[5] = b[5] && -q[k].z > o[5] + slack;
 	}
 	return b[0] || b[1] || b[2] || b[3] || b[4] || b[5];
 #endif
+}
+
+static inline bool hs_part_box_beyond4(const hs_part_cache *pc, const hs_vec3 q[4], double slack) {
+	return hs_part_box_beyond_n(pc, q, 4, slack) == 1;
 }
 
 #endif

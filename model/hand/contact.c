@@ -119,6 +119,17 @@ static void detect_points(const hs_contact_pass *cp, const hs_world_model *model
 	}
 }
 
+// A free object's finger segment whose lines find nothing through the frame, seen from its axis
+// (contact_cull.h): a path of several pieces beyond a box face at every pose; one piece beyond a
+// face of the scan (a box's too: that scan's early exit costs less than the box's coordinates).
+static HS_FORCE_INLINE bool segment_clear(const hs_contact_pass *cp, int h, int a, const hs_frame *body, const hs_frame *before,
+                                          const hs_shape *shape, const hs_part *part, const hs_part_cache *pc, int steps) {
+	int box = steps > 1 && hs_part_is_box(pc) ? hs_contact_segment_path_clear_of_a_box_face(cp, h, a, body, before, pc, steps) : -1;
+	if (box >= 0)
+		return box == 1;
+	return steps == 1 && hs_contact_segment_clear_of_a_face(cp, h, a, body, before, shape, part);
+}
+
 static bool across(hs_clip c) {
 	return c.hit && c.face_in >= 0 && c.face_out >= 0;
 }
@@ -149,7 +160,7 @@ static void detect_lines(const hs_contact_pass *cp, const hs_world_model *model,
 		bool plain = swept && !(hand->state.embed_lines >> (4 * s) & 0xFu); // none of its lines embedded
 		if ((!(near >> s & 1u) && !hs_contact_axis_path_near(hand, a, steps, center, sb.rp)) ||
 		    (swept && hs_contact_ends_deep(model, hand, touching, a, body, shape, part, sb.deep, &memo)) ||
-		    (plain && !moved && steps == 1 && hs_contact_segment_clear_of_a_face(cp, h, a, body, before, shape, part)) ||
+		    (plain && !moved && segment_clear(cp, h, a, body, before, shape, part, pc, steps)) ||
 		    (plain && moved && hs_part_is_box(pc) && hs_contact_held_lines_clear(cp, h, s, a, body, shape, part, touching, grow, &turn)))
 			continue; // far, each line beside a touching point, or clear (seen before it is placed)
 		hs_hand_ready_segment(&cp->hands[h], s); // its lines are read from here on

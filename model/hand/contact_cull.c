@@ -138,6 +138,32 @@ void hs_contact_check_segment_clear(const hs_contact_pass *cp, int h, int a, con
 }
 #endif
 
+#if defined(HS_SELFCHECK)
+// Sanitizer builds: each line of a segment passed over as clear of a box face through its path lies
+// beyond one box face by the slack at each piece (its two positions) and misses the part at the end.
+void hs_contact_check_segment_path_clear(const hs_contact_pass *cp, int h, int a, const hs_frame *body, const hs_frame *before,
+                                         const hs_part_cache *pc, int steps) {
+	int s = a - a / 4; // the segment of first check point a (hs_segment_first_point)
+	hs_hand *hand = (hs_hand *)&cp->hands[h]; // placing lines changes no result (hand_internal.h)
+	hs_hand_ready_segment(hand, s);
+	for (int j = 4 * s; j < 4 * s + 4; ++j) {
+		hs_vec3 e[4];
+		line_to_body(before, hand->cache.prev_lines[j], e);
+		bool clear = true;
+		for (int k = 1; k <= steps; ++k) {
+			const hs_vec3 *l = k == steps ? hand->cache.lines[j] : hand->cache.path_lines[k - 1][j];
+			line_to_body(body, l, &e[2]);
+			clear = clear && hs_part_box_beyond4(pc, e, HS_CULL_SLACK);
+			e[0] = e[2], e[1] = e[3];
+		}
+		if (!clear) {
+			fprintf(stderr, "selfcheck: a segment passed over as clear of a box face through its path has line %d near the part\n", j);
+			abort();
+		}
+	}
+}
+#endif
+
 #if defined(__SSE2__)
 // segment_distance_sq(c, a, b) of both lanes: hs_segment_param's and the distance's operations in
 // their order, the division too (the same bits).

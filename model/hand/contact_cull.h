@@ -88,9 +88,12 @@ bool hs_contact_line_path_near(const hs_hand *hand, int j, int steps, hs_vec3 c,
 bool hs_contact_sweep_clear_of_a_face(const hs_contact_pass *cp, const hs_shape *shape, const hs_part *part,
                                       const hs_vec3 q[2], const hs_vec3 p[2]);
 #if defined(HS_SELFCHECK)
-// Self-check builds: each line of a segment passed over as clear of a face is so alone.
+// Self-check builds: each line of a segment passed over as clear of a face is so alone; through
+// the path, each line's every piece and its end (hs_contact_segment_path_clear_of_a_box_face).
 void hs_contact_check_segment_clear(const hs_contact_pass *cp, int h, int a, const hs_frame *body, const hs_frame *before,
                                     const hs_shape *shape, const hs_part *part);
+void hs_contact_check_segment_path_clear(const hs_contact_pass *cp, int h, int a, const hs_frame *body, const hs_frame *before,
+                                         const hs_part_cache *pc, int steps);
 #endif
 // The finger segments whose axis, and segment s's check lines whose line, lie within sqrt(r_sq) of c.
 uint32_t hs_contact_axes_near(const hs_hand *hand, hs_vec3 c, double r_sq, double d[16]);
@@ -228,6 +231,32 @@ static inline bool hs_contact_segment_clear_of_a_face(const hs_contact_pass *cp,
 	hs_contact_check_segment_clear(cp, h, a, body, before, shape, part);
 #endif
 	return true;
+}
+
+// The same for a box part through every pose of the frame's path (a frame ago, the path's pieces,
+// now: any number of pieces): the segment's axis beyond one face of the box by more than
+// finger_radius + 2 HS_CULL_SLACK at each of them, so each of its check lines at each pose lies beyond
+// that face by more than HS_CULL_SLACK: its clips miss at the frame's end, and every piece of its path
+// is clear of that face (swept_path's piece_clear_of_a_box_face), so detect_lines finds nothing.
+// 1: clear; 0: not (nor would segment_clear_of_a_face find it so: the box's coordinates are its
+// faces' dots); -1: a coordinate is not finite, the scan decides.
+static inline int hs_contact_segment_path_clear_of_a_box_face(const hs_contact_pass *cp, int h, int a, const hs_frame *body,
+                                                              const hs_frame *before, const hs_part_cache *pc, int steps) {
+	const hs_hand *hand = &cp->hands[h];
+	hs_vec3 e[2 * (HS_HAND_PATH_MAX + 1)];
+	e[0] = to_body(before, hand->cache.prev_points[a]);
+	e[1] = to_body(before, hand->cache.prev_points[a + 1]);
+	for (int k = 1; k <= steps; ++k) {
+		const hs_vec3 *p = k == steps ? hand->cache.points : hand->cache.path_points[k - 1];
+		e[2 * k] = to_body(body, p[a]);
+		e[2 * k + 1] = to_body(body, p[a + 1]);
+	}
+	int clear = hs_part_box_beyond_n(pc, e, 2 * (steps + 1), hand->model.def.finger_radius + 2.0 * HS_CULL_SLACK);
+#if defined(HS_SELFCHECK)
+	if (clear == 1)
+		hs_contact_check_segment_path_clear(cp, h, a, body, before, pc, steps);
+#endif
+	return clear;
 }
 
 #endif
