@@ -39,7 +39,8 @@ static bool same_pose(const hs_body *b) {
 // `model` is cp->model passed on its own, as in detect_lines: held in a register rather than read
 // through cp after every call (cp's other parts are read seldom); culls run when model->skip_work.
 static void detect_points(const hs_contact_pass *cp, const hs_world_model *model, int object, int h, const hs_part *part,
-                          const hs_part_cache *pc, const hs_frame *body, const hs_frame *before, bool moved, double grow, unsigned far) {
+                          const hs_part_cache *pc, const hs_frame *body, const hs_frame *before, const hs_body_points *bp, bool moved,
+                          double grow, unsigned far) {
 	const hs_shape *shape = &model->shapes[cp->bodies[object].shape];
 	const hs_hand *hand = &cp->hands[h];
 	hs_vec3 center = to_world(body, part->center); // cull before the transform
@@ -57,7 +58,7 @@ static void detect_points(const hs_contact_pass *cp, const hs_world_model *model
 		int i = hs_lowest_bit(todo);
 		if (!(near >> i & 1u) && !hs_contact_path_near(hand, i, steps, center, r_sq))
 			continue;
-		hs_vec3 b = to_body(body, hand->cache.points[i]);
+		hs_vec3 b = hs_body_point(bp, hand, body, i);
 		bool inside = inside_part_with(model, shape, part, pc, b, grow);
 		if (paper) {
 			if (inside)
@@ -138,7 +139,8 @@ static bool across(hs_clip c) {
 // since before it touched anything, as the check points in detect_points), or swept across it
 // during the frame. A line with an end inside is the check points' business.
 static void detect_lines(const hs_contact_pass *cp, const hs_world_model *model, int object, int h, const hs_part *part,
-                         const hs_part_cache *pc, const hs_frame *body, const hs_frame *before, bool moved, double grow, uint32_t touching, unsigned far) {
+                         const hs_part_cache *pc, const hs_frame *body, const hs_frame *before, const hs_body_points *bp, bool moved,
+                         double grow, uint32_t touching, unsigned far) {
 	const hs_shape *shape = &model->shapes[cp->bodies[object].shape];
 	const hs_hand *hand = &cp->hands[h];
 	hs_vec3 center = to_world(body, part->center);
@@ -159,9 +161,9 @@ static void detect_lines(const hs_contact_pass *cp, const hs_world_model *model,
 		double d_sq = model->skip_work ? d_axis[s] : 0.0;
 		bool plain = swept && !(hand->state.embed_lines >> (4 * s) & 0xFu); // none of its lines embedded
 		if ((!(near >> s & 1u) && !hs_contact_axis_path_near(hand, a, steps, center, sb.rp)) ||
-		    (swept && hs_contact_ends_deep(model, hand, touching, a, body, shape, part, sb.deep, &memo)) ||
+		    (swept && hs_contact_ends_deep(model, hand, touching, a, body, bp, shape, part, sb.deep, &memo)) ||
 		    (plain && !moved && segment_clear(cp, h, a, body, before, shape, part, pc, steps)) ||
-		    (plain && moved && hs_part_is_box(pc) && hs_contact_held_lines_clear(cp, h, s, a, body, shape, part, touching, grow, &turn)))
+		    (plain && moved && hs_part_is_box(pc) && hs_contact_held_lines_clear(cp, h, s, a, body, bp, shape, part, touching, grow, &turn)))
 			continue; // far, each line beside a touching point, or clear (seen before it is placed)
 		hs_hand_ready_segment(&cp->hands[h], s); // its lines are read from here on
 		bool all_near = (sb.ri > 0.0 && d_sq <= sb.ri * sb.ri) || (swept && !plain); // all within r now
@@ -248,6 +250,10 @@ int hs_contact_detect_grown(const hs_contact_pass *cp, int object, const hs_pose
 		bool fingers = model->skip_work && !before && grow == 0.0;
 		if (fingers)
 			hs_hand_finger_spheres(&hands[h]);
+		// a moved (held) object reads most check points, each several times: in its frame once
+		hs_body_points rows, *bp = before ? &rows : NULL;
+		if (bp)
+			hs_contact_points_to_body(hand, &now, bp);
 		for (int p = 0; p < shape->part_count; ++p) {
 			const hs_part *part = &shape->parts[p];
 			const hs_part_cache *pc = &model->part_cache[body->shape][p];
@@ -261,11 +267,11 @@ int hs_contact_detect_grown(const hs_contact_pass *cp, int object, const hs_pose
 				}
 			}
 			int from = out->contact_count;
-			detect_points(cp, model, object, h, part, pc, &now, &then, before != NULL, grow, far);
+			detect_points(cp, model, object, h, part, pc, &now, &then, bp, before != NULL, grow, far);
 			uint32_t touching = hand->state.touch_points; // touched last frame, or touch this part now
 			for (int k = from; k < out->contact_count; ++k)
 				touching |= 1u << out->contacts[k].part;
-			detect_lines(cp, model, object, h, part, pc, &now, &then, before != NULL, grow, touching, far);
+			detect_lines(cp, model, object, h, part, pc, &now, &then, bp, before != NULL, grow, touching, far);
 		}
 	}
 	if (grow == 0.0 && !model->def.paper_contacts)

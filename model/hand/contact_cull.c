@@ -79,6 +79,53 @@ uint32_t hs_contact_points_near(const hs_hand *hand, hs_vec3 c, double r_sq, dou
 	return near;
 }
 
+#if HS_LANES4
+// points_to_body four points at a time (AVX), from the point rows.
+HS_AVX static void points_to_body_avx(const hs_hand *hand, const hs_frame *f, hs_body_points *out) {
+	const hs_mat3 *m = &f->rot;
+	const __m256d px = _mm256_set1_pd(f->pos.x), py = _mm256_set1_pd(f->pos.y), pz = _mm256_set1_pd(f->pos.z);
+	for (int i = 0; i < HS_HAND_POINTS; i += 4) {
+		hs_lanes4 p = point_lanes(hand, i);
+		__m256d vx = _mm256_sub_pd(p.x, px), vy = _mm256_sub_pd(p.y, py), vz = _mm256_sub_pd(p.z, pz);
+		_mm256_storeu_pd(&out->x[i], _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(_mm256_set1_pd(m->r0.x), vx),
+		                                                         _mm256_mul_pd(_mm256_set1_pd(m->r1.x), vy)),
+		                                           _mm256_mul_pd(_mm256_set1_pd(m->r2.x), vz)));
+		_mm256_storeu_pd(&out->y[i], _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(_mm256_set1_pd(m->r0.y), vx),
+		                                                         _mm256_mul_pd(_mm256_set1_pd(m->r1.y), vy)),
+		                                           _mm256_mul_pd(_mm256_set1_pd(m->r2.y), vz)));
+		_mm256_storeu_pd(&out->z[i], _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(_mm256_set1_pd(m->r0.z), vx),
+		                                                         _mm256_mul_pd(_mm256_set1_pd(m->r1.z), vy)),
+		                                           _mm256_mul_pd(_mm256_set1_pd(m->r2.z), vz)));
+	}
+}
+#endif
+
+// Each check point's to_body(f, p): hs_mat3_tmul(rot, p - pos), its subtractions, products and sums
+// in their order in each lane (the same bits; self-check builds compare).
+void hs_contact_points_to_body(const hs_hand *hand, const hs_frame *f, hs_body_points *out) {
+	int i = 0;
+#if HS_LANES4
+	if (hs_cpu_has_avx()) {
+		points_to_body_avx(hand, f, out);
+		i = HS_HAND_POINTS;
+	}
+#endif
+	for (; i < HS_HAND_POINTS; ++i) {
+		hs_vec3 b = to_body(f, hand->cache.points[i]);
+		out->x[i] = b.x, out->y[i] = b.y, out->z[i] = b.z;
+	}
+#if defined(HS_SELFCHECK)
+	for (int k = 0; k < HS_HAND_POINTS; ++k) {
+		hs_vec3 b = to_body(f, hand->cache.points[k]);
+		const double want[3] = {b.x, b.y, b.z}, got[3] = {out->x[k], out->y[k], out->z[k]};
+		if (memcmp(want, got, sizeof want) != 0) {
+			fprintf(stderr, "selfcheck: the check points' body rows differ from to_body\n");
+			abort();
+		}
+	}
+#endif
+}
+
 // True when check line j's path through the frame may come within r of c: each piece's quad.
 bool hs_contact_line_path_near(const hs_hand *hand, int j, int steps, hs_vec3 c, double r) {
 	for (int k = 0; k < steps; ++k) {
@@ -395,10 +442,10 @@ HS_AVX static bool held_four_clear(const hs_part *part, const hs_part_cache *pc,
 // miss), or lie outside the part's bounding sphere. Box parts only (hs_part_is_box); the lines are
 // not embedded.
 static HS_FORCE_INLINE bool held_lines_clear_in(const hs_contact_pass *cp, int h, int s, int a, const hs_frame *body,
-                                                const hs_shape *shape, const hs_part *part, uint32_t touching, double grow,
-                                                hs_held_turn *turn, bool four) {
+                                                const hs_body_points *bp, const hs_shape *shape, const hs_part *part,
+                                                uint32_t touching, double grow, hs_held_turn *turn, bool four) {
 	const hs_hand *hand = &cp->hands[h];
-	hs_vec3 e0 = to_body(body, hand->cache.points[a]), e1 = to_body(body, hand->cache.points[a + 1]);
+	hs_vec3 e0 = hs_body_point(bp, hand, body, a), e1 = hs_body_point(bp, hand, body, a + 1);
 	if (!hs_part_box_takes(e0) || !hs_part_box_takes(e1))
 		return false;
 	hs_quat q = hand->cache.local.segment[s]; // its y and z axes: the rotation's second and third columns
@@ -434,15 +481,16 @@ static HS_FORCE_INLINE bool held_lines_clear_in(const hs_contact_pass *cp, int h
 	return true;
 }
 
-bool hs_contact_held_lines_clear_plain(const hs_contact_pass *cp, int h, int s, int a, const hs_frame *body, const hs_shape *shape,
-                                       const hs_part *part, uint32_t touching, double grow, hs_held_turn *turn) {
-	return held_lines_clear_in(cp, h, s, a, body, shape, part, touching, grow, turn, false);
+bool hs_contact_held_lines_clear_plain(const hs_contact_pass *cp, int h, int s, int a, const hs_frame *body, const hs_body_points *bp,
+                                       const hs_shape *shape, const hs_part *part, uint32_t touching, double grow, hs_held_turn *turn) {
+	return held_lines_clear_in(cp, h, s, a, body, bp, shape, part, touching, grow, turn, false);
 }
 
 #if HS_LANES4
-HS_AVX bool hs_contact_held_lines_clear_avx(const hs_contact_pass *cp, int h, int s, int a, const hs_frame *body, const hs_shape *shape,
-                                            const hs_part *part, uint32_t touching, double grow, hs_held_turn *turn) {
-	return held_lines_clear_in(cp, h, s, a, body, shape, part, touching, grow, turn, true);
+HS_AVX bool hs_contact_held_lines_clear_avx(const hs_contact_pass *cp, int h, int s, int a, const hs_frame *body,
+                                            const hs_body_points *bp, const hs_shape *shape, const hs_part *part, uint32_t touching,
+                                            double grow, hs_held_turn *turn) {
+	return held_lines_clear_in(cp, h, s, a, body, bp, shape, part, touching, grow, turn, true);
 }
 #endif
 

@@ -80,6 +80,19 @@ typedef struct hs_held_turn {
 } hs_held_turn;
 
 
+// The hand's check points in an object's body frame, as rows: to_body of each, the same bits (a
+// held object's detection reads most of them, several times: made once, four at a time with AVX).
+typedef struct hs_body_points {
+	double x[HS_HAND_POINTS], y[HS_HAND_POINTS], z[HS_HAND_POINTS];
+} hs_body_points;
+
+void hs_contact_points_to_body(const hs_hand *hand, const hs_frame *f, hs_body_points *out);
+
+// Check point i in the body frame: from the rows when made (bp), else transformed now.
+static HS_FORCE_INLINE hs_vec3 hs_body_point(const hs_body_points *bp, const hs_hand *hand, const hs_frame *f, int i) {
+	return bp ? hs_v3(bp->x[i], bp->y[i], bp->z[i]) : to_body(f, hand->cache.points[i]);
+}
+
 // The check points (bit i) within sqrt(r_sq) of c now, and in *kept those within sqrt(keep_sq).
 uint32_t hs_contact_points_near(const hs_hand *hand, hs_vec3 c, double r_sq, double keep_sq, uint32_t *kept);
 // Check line j's path through the frame may come within r of c.
@@ -100,20 +113,20 @@ uint32_t hs_contact_axes_near(const hs_hand *hand, hs_vec3 c, double r_sq, doubl
 unsigned hs_contact_lines_near(const hs_hand *hand, int s, hs_vec3 c, double r_sq);
 // A held object's finger segment s whose four check lines would find nothing (box parts): four
 // lines in four AVX lanes, or one by one.
-bool hs_contact_held_lines_clear_plain(const hs_contact_pass *cp, int h, int s, int a, const hs_frame *body, const hs_shape *shape,
-                                       const hs_part *part, uint32_t touching, double grow, hs_held_turn *turn);
+bool hs_contact_held_lines_clear_plain(const hs_contact_pass *cp, int h, int s, int a, const hs_frame *body, const hs_body_points *bp,
+                                       const hs_shape *shape, const hs_part *part, uint32_t touching, double grow, hs_held_turn *turn);
 #if HS_LANES4
-bool hs_contact_held_lines_clear_avx(const hs_contact_pass *cp, int h, int s, int a, const hs_frame *body, const hs_shape *shape,
-                                     const hs_part *part, uint32_t touching, double grow, hs_held_turn *turn);
+bool hs_contact_held_lines_clear_avx(const hs_contact_pass *cp, int h, int s, int a, const hs_frame *body, const hs_body_points *bp,
+                                     const hs_shape *shape, const hs_part *part, uint32_t touching, double grow, hs_held_turn *turn);
 #endif
 static inline bool hs_contact_held_lines_clear(const hs_contact_pass *cp, int h, int s, int a, const hs_frame *body,
-                                               const hs_shape *shape, const hs_part *part, uint32_t touching, double grow,
-                                               hs_held_turn *turn) {
+                                               const hs_body_points *bp, const hs_shape *shape, const hs_part *part,
+                                               uint32_t touching, double grow, hs_held_turn *turn) {
 #if HS_LANES4
 	if (hs_cpu_has_avx())
-		return hs_contact_held_lines_clear_avx(cp, h, s, a, body, shape, part, touching, grow, turn);
+		return hs_contact_held_lines_clear_avx(cp, h, s, a, body, bp, shape, part, touching, grow, turn);
 #endif
-	return hs_contact_held_lines_clear_plain(cp, h, s, a, body, shape, part, touching, grow, turn);
+	return hs_contact_held_lines_clear_plain(cp, h, s, a, body, bp, shape, part, touching, grow, turn);
 }
 // The fingers (bit f) far from a part's bounding sphere (centre c, radius `reach`) through the frame.
 // grow_reach: the part's (part_cache.h).
@@ -146,14 +159,14 @@ static inline uint32_t hs_contact_segments_embedded(const hs_hand *hand) {
 // now (the check points of a segment's line ends, end_touches). `memo` keeps each point's answer
 // for the rest of the part's lines.
 static inline bool hs_contact_ends_deep(const hs_world_model *model, const hs_hand *hand, uint32_t touching, int a,
-                                        const hs_frame *body, const hs_shape *shape, const hs_part *part, double grow,
-                                        hs_deep_memo *memo) {
+                                        const hs_frame *body, const hs_body_points *bp, const hs_shape *shape, const hs_part *part,
+                                        double grow, hs_deep_memo *memo) {
 	for (uint32_t ends = touching & 3u << a; ends; ends &= ends - 1u) { // a, then a + 1
 		int i = hs_lowest_bit(ends);
 		uint32_t bit = 1u << i;
 		if (!(memo->known & bit)) { // a check point ends two segments: tested once
 			memo->known |= bit;
-			if (inside_part(model, shape, part, to_body(body, hand->cache.points[i]), grow))
+			if (inside_part(model, shape, part, hs_body_point(bp, hand, body, i), grow))
 				memo->deep |= bit;
 		}
 		if (memo->deep & bit)
