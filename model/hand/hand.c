@@ -33,6 +33,7 @@
 #include "inline.h"
 
 #include "lanes2.h"
+#include "lanes4.h"
 
 // ---------------------------------------------------------------------------------------------
 // Defaults
@@ -341,13 +342,31 @@ void hs_hand_local_shape(const hs_hand_def *def, const uint8_t sensors[HS_GLOVE_
 	hs_hand_local_shape_with(def, NULL, sensors, points, lines);
 }
 
-// out[i] = w + m v[i] for n vectors: hs_add(w, hs_mat3_mul(m, v[i])); with `rows`, the same values
-// also as rows of x, y and z (the hand's point_rows). With SSE2, two vectors at a time, one in each
-// lane: each lane does that expression's products and sums in its order, so the bits are the same
-// (no fused multiply-add: -ffp-contract=off).
-static HS_FORCE_INLINE void place_vectors_rows(hs_mat3 m, hs_vec3 w, const hs_vec3 *v, hs_vec3 *out, int n,
-                                               double (*rows)[HS_HAND_POINTS + 4]) {
-	int i = 0;
+#if HS_LANES4
+// place_vectors_rows four vectors at a time, one in each lane of AVX registers (the same bits): the
+// first n - n % 4 of them.
+HS_AVX static void place_vectors_avx(const hs_mat3 *m, const hs_vec3 *w, const hs_vec3 *v, hs_vec3 *out, int n,
+                                     double (*rows)[HS_HAND_POINTS + 4]) {
+	const hs_mat3 mm = *m; // (copies: out cannot change them, their broadcasts leave the loop)
+	const hs_vec3 ww = *w;
+	for (int i = 0; i + 3 < n; i += 4) {
+		hs_lanes4 o = hs_lanes4_place(mm, ww, hs_lanes4_load(&v[i]));
+		hs_lanes4_store(o, &out[i]);
+		if (rows) {
+			_mm256_storeu_pd(&rows[0][i], o.x);
+			_mm256_storeu_pd(&rows[1][i], o.y);
+			_mm256_storeu_pd(&rows[2][i], o.z);
+		}
+	}
+}
+#endif
+
+// out[i] = w + m v[i] for n vectors (at most 2 HS_HAND_LINES): hs_add(w, hs_mat3_mul(m, v[i])); with
+// `rows`, the same values also as rows of x, y and z (the hand's point_rows). With SSE2, two vectors
+// at a time, one in each lane, with AVX four: each lane does that expression's products and sums in
+// its order, so the bits are the same (no fused multiply-add: -ffp-contract=off).
+static HS_FORCE_INLINE void place_vectors_two(hs_mat3 m, hs_vec3 w, const hs_vec3 *v, hs_vec3 *out, int i, int n,
+                                              double (*rows)[HS_HAND_POINTS + 4]) {
 #if defined(__SSE2__)
 	const __m128d r0x = _mm_set1_pd(m.r0.x), r0y = _mm_set1_pd(m.r0.y), r0z = _mm_set1_pd(m.r0.z);
 	const __m128d r1x = _mm_set1_pd(m.r1.x), r1y = _mm_set1_pd(m.r1.y), r1z = _mm_set1_pd(m.r1.z);
@@ -375,6 +394,46 @@ static HS_FORCE_INLINE void place_vectors_rows(hs_mat3 m, hs_vec3 w, const hs_ve
 			rows[2][i] = out[i].z;
 		}
 	}
+}
+
+#if HS_LANES4 && defined(HS_SELFCHECK)
+// Sanitizer builds: the four lanes' placement has the bits of the two-lane path's.
+static void check_place_four(hs_mat3 m, hs_vec3 w, const hs_vec3 *v, const hs_vec3 *out, int n,
+                             double (*rows)[HS_HAND_POINTS + 4]) {
+	hs_vec3 two[2 * HS_HAND_LINES];
+	double two_rows[3][HS_HAND_POINTS + 4];
+	if (n > 2 * HS_HAND_LINES || (rows && n > HS_HAND_POINTS + 4))
+		abort();
+	place_vectors_two(m, w, v, two, 0, n, rows ? two_rows : NULL);
+	bool same = memcmp(two, out, (size_t)n * sizeof two[0]) == 0;
+	for (int k = 0; rows && k < 3; ++k)
+		same = same && memcmp(two_rows[k], rows[k], (size_t)n * sizeof rows[k][0]) == 0;
+	if (!same) {
+		fprintf(stderr, "selfcheck: vectors placed in four lanes differ from the two-lane path\n");
+		abort();
+	}
+}
+#else
+static inline void check_place_four(hs_mat3 m, hs_vec3 w, const hs_vec3 *v, const hs_vec3 *out, int n,
+                                    double (*rows)[HS_HAND_POINTS + 4]) {
+	(void)m, (void)w, (void)v, (void)out, (void)n, (void)rows;
+}
+#endif
+
+static HS_FORCE_INLINE void place_vectors_rows(hs_mat3 m, hs_vec3 w, const hs_vec3 *v, hs_vec3 *out, int n,
+                                               double (*rows)[HS_HAND_POINTS + 4]) {
+	int i = 0;
+#if HS_LANES4
+	if (hs_cpu_has_avx()) {
+		place_vectors_avx(&m, &w, v, out, n, rows);
+		i = n - n % 4;
+	}
+#endif
+	place_vectors_two(m, w, v, out, i, n, rows);
+#if HS_LANES4
+	if (hs_cpu_has_avx())
+		check_place_four(m, w, v, out, n, rows);
+#endif
 }
 
 static HS_FORCE_INLINE void place_vectors(hs_mat3 m, hs_vec3 w, const hs_vec3 *v, hs_vec3 *out, int n) {
