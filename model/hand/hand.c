@@ -508,20 +508,24 @@ static inline void check_shape(const hs_hand *hand) { (void)hand; }
 void hs_hand_update_shape(hs_hand *hand) {
 	hs_hand_cache *c = &hand->cache;
 	hs_hand_pose *last = c->local; // the last shape made through the cache
-	if (c->local == c->prev_local) // the previous reading's shape stays in its buffer
+	bool moved = c->local == c->prev_local;
+	if (moved) // the previous reading's shape stays in its buffer
 		c->local = OTHER_POSE(c->local_buf, c->prev_local);
 	if (hand->model.def.joint_driven) {
 		hs_hand_joint_pose(&hand->model.def, hand->state.joints, c->local);
+		c->local_twins = 0;
 		c->local_ready = 0;
 		local_bounds(hand);
 		return;
 	}
 	unsigned same = local_pose(&hand->model.def, &hand->model.glove, hand->state.sensors, c->local, hand);
-	for (unsigned todo = c->local != last ? same : 0u; todo; todo &= todo - 1u) { // the fingers kept, not written
+	// the fingers kept (not written) that the other buffer does not hold already
+	for (unsigned todo = moved ? same & ~(unsigned)c->local_twins : 0u; todo; todo &= todo - 1u) {
 		int f = hs_lowest_bit(todo);
 		memcpy(&c->local->points[4 * f], &last->points[4 * f], 4 * sizeof last->points[0]);
 		memcpy(&c->local->segment[3 * f], &last->segment[3 * f], 3 * sizeof last->segment[0]);
 	}
+	c->local_twins = (uint8_t)(moved ? same : c->local_twins & same);
 	check_shape(hand);
 	hand->cache.local_ready = (uint16_t)(hand->cache.local_ready & hs_finger_parts(same, 3)); // a finger's lines as they were
 	local_bounds(hand);
@@ -534,6 +538,7 @@ void hs_hand_init_buffers(hs_hand *hand) {
 	hand->cache.prev_lines = hand->cache.line_buf[1];
 	hand->cache.local = &hand->cache.local_buf[0];
 	hand->cache.prev_local = &hand->cache.local_buf[1];
+	hand->cache.local_twins = 0;
 }
 
 void hs_hand_place_points(hs_hand *hand) {
@@ -562,6 +567,7 @@ static void unshare(hs_hand_cache *c) {
 	if (c->prev_local == c->local) {
 		c->prev_local = OTHER_POSE(c->local_buf, c->local);
 		*c->prev_local = *c->local;
+		c->local_twins = 31;
 	}
 }
 
@@ -687,6 +693,7 @@ void hs_hand_refresh(hs_hand *hand) {
 	hand->cache.prev_place_m = hs_mat3_from_quat(hand->state.prev_wrist_rot);
 	place_vectors(hand->cache.prev_place_m, hand->state.prev_wrist_pos, hand->cache.local->points, hand->cache.prev_points, HS_HAND_POINTS);
 	*hand->cache.prev_local = *hand->cache.local;
+	hand->cache.local_twins = 31;
 	hand->cache.prev_lines_ready = 0;
 	hand->cache.center = hs_add(hand->state.prev_wrist_pos, hs_quat_rotate(hand->state.prev_wrist_rot, hand->cache.local_center));
 	hand->cache.radius = hand->cache.local_radius + 1e-6;

@@ -129,6 +129,7 @@ typedef struct hs_hand_cache {
 	// the check points, each segment's frame, and the lines of the segments in local_ready
 	hs_hand_pose *local; // check points and segment frames
 	hs_hand_pose local_buf[2];
+	uint8_t local_twins; // fingers (bit f) whose points and frames local_buf holds twice, the same
 	hs_vec3 local_lines[HS_HAND_LINES][2];
 	uint16_t local_ready;
 	hs_vec3 local_center; // its bounding sphere in the wrist frame
