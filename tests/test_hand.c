@@ -326,6 +326,7 @@ static void test_left_hand_mirrors(void **state) {
 // the given side and its glove table.
 static void fresh_hand(hs_hand *hand, bool left) {
 	memset(hand, 0, sizeof *hand); // a hand's definition is fixed for its life (its caches follow it)
+	hs_hand_init_buffers(hand);
 	hand->model.def = hs_default_hand_def();
 	hand->model.def.left = left;
 	hs_glove_table_build(&hand->model.def, &hand->model.glove);
@@ -367,10 +368,10 @@ static void test_bounds_reach_the_farthest_end(void **state) {
 		// every line (the bounds compute none of them)
 		hs_vec3 points[HS_HAND_POINTS], lines[HS_HAND_LINES][2];
 		hs_hand_local_shape_with(&hand->model.def, &hand->model.glove, hand->state.sensors, points, lines);
-		assert_memory_equal(points, hand->cache.local.points, sizeof points);
+		assert_memory_equal(points, hand->cache.local->points, sizeof points);
 		double most = 0.0;
 		for (int i = 0; i < HS_HAND_POINTS; ++i) {
-			double d = hs_length_sq(hs_sub(hand->cache.local.points[i], hand->cache.local_center));
+			double d = hs_length_sq(hs_sub(hand->cache.local->points[i], hand->cache.local_center));
 			most = d > most ? d : most;
 		}
 		for (int j = 0; j < HS_HAND_LINES; ++j)
@@ -549,6 +550,68 @@ static void test_fingers_kept_between_readings(void **state) {
 		}
 		assert_true(kept > 100); // the middle finger's chain was reused that often
 	}
+	free(hand);
+}
+
+// The points and lines now and a frame ago live in two buffers each, and the shape in the wrist frame
+// too (hand_internal.h): the end of a step makes the current ones the previous ones without copying,
+// the next reading is written to the other buffer. Over frames set once, twice (the second reading
+// wins) or not at all (the hand stays where it was), some segments read in a frame and the others
+// not, the points, lines and shape now and a frame ago are the kinematics' bits for the readings they
+// belong to, on left and right hands.
+static void test_previous_kept_across_frames(void **state) {
+	(void)state;
+	hs_hand *hand = calloc(1, sizeof *hand);
+	assert_non_null(hand);
+	uint32_t x = 23u;
+	int shared = 0, apart = 0;
+	for (int side = 0; side < 2; ++side) {
+		fresh_hand(hand, side == 1);
+		uint8_t prev[HS_GLOVE_SENSORS];
+		hs_vec3 prev_at = hs_v3(0, 0, 0);
+		hs_quat prev_turn = hs_quat_identity();
+		for (int frame = 0; frame < 200; ++frame) {
+			int sets = frame == 0 ? 1 : (int)(lcg(&x) >> 30) % 3; // 0, 1 or 2 readings this frame
+			for (int k = 0; k < sets; ++k) {
+				for (int i = 0; i < HS_GLOVE_SENSORS; ++i) { // a few sensors move, as through a deadband
+					uint32_t r = lcg(&x);
+					if (frame == 0 || (r >> 29) == 0)
+						hand->state.sensors[i] = (uint8_t)(r >> 8);
+				}
+				hand->state.wrist_pos = hs_v3(0.001 * frame, -0.2, 0.3);
+				hand->state.wrist_rot = hs_quat_from_axis_angle(hs_normalize(hs_v3(1.0, -2.0, 0.5)), 0.01 * frame + 0.1 * k);
+				place_reading(hand);
+			}
+			if (frame == 0) { // a first placement: no motion before it
+				hs_hand_keep_previous(hand);
+				memcpy(prev, hand->state.sensors, sizeof prev);
+				prev_at = hand->state.wrist_pos;
+				prev_turn = hand->state.wrist_rot;
+			}
+			shared += hand->cache.points == hand->cache.prev_points;
+			apart += hand->cache.points != hand->cache.prev_points;
+			hs_hand_ready_segment(hand, (int)(lcg(&x) >> 28) % 15); // what a step reads of the lines
+			hs_vec3 points[HS_HAND_POINTS], lines[HS_HAND_LINES][2], prev_points[HS_HAND_POINTS], prev_lines[HS_HAND_LINES][2];
+			hs_hand_kinematics(&hand->model.def, hand->state.wrist_pos, hand->state.wrist_rot, hand->state.sensors, points, lines);
+			hs_hand_kinematics(&hand->model.def, prev_at, prev_turn, prev, prev_points, prev_lines);
+			assert_memory_equal(points, hand->cache.points, sizeof points);
+			assert_memory_equal(prev_points, hand->cache.prev_points, sizeof prev_points);
+			assert_memory_equal(hand->state.prev_sensors, prev, sizeof prev);
+			if (frame % 3 == 0) { // every line, now and a frame ago (else some wait for a later frame)
+				hs_hand_ready_all(hand);
+				assert_memory_equal(lines, hand->cache.lines, sizeof lines);
+				assert_memory_equal(prev_lines, hand->cache.prev_lines, sizeof prev_lines);
+			}
+			hs_vec3 local[HS_HAND_POINTS], local_lines[HS_HAND_LINES][2];
+			hs_hand_local_shape(&hand->model.def, hand->state.sensors, local, local_lines);
+			assert_memory_equal(local, hand->cache.local->points, sizeof local);
+			hs_hand_keep_previous(hand); // the end of the step
+			memcpy(prev, hand->state.sensors, sizeof prev);
+			prev_at = hand->state.wrist_pos;
+			prev_turn = hand->state.wrist_rot;
+		}
+	}
+	assert_true(shared > 50 && apart > 100); // frames not set and frames set were both tried
 	free(hand);
 }
 
@@ -1303,6 +1366,7 @@ int main(void) {
 	    cmocka_unit_test(test_finger_spheres_hold_the_fingers),
 	    cmocka_unit_test(test_sweep_pieces_follow_the_turn),
 	    cmocka_unit_test(test_fingers_kept_between_readings),
+	    cmocka_unit_test(test_previous_kept_across_frames),
 	    cmocka_unit_test(test_check_lines),
 	    cmocka_unit_test(test_thumb_opposition),
 	    cmocka_unit_test(test_grasp_width),

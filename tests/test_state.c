@@ -152,15 +152,19 @@ static void test_hand_world_continues_identically(void **state) {
 	drive_hand(&r, r.world, N_FRAMES); // the reading of the next frame is set: points and previous differ
 	assert_int_equal(hs_world_hand_points(r.world, r.hand, points), HS_OK);
 	hs_hand_ready_all(&r.world->state.hands[0]); // the lines are placed when read: all of them, to compare
-	hs_hand cached = r.world->state.hands[0];
+	hs_hand cached = r.world->state.hands[0]; // its points and lines copied too: the hand's own pointers
+	hs_vec3 cached_prev_points[HS_HAND_POINTS], cached_lines[HS_HAND_LINES][2], cached_prev_lines[HS_HAND_LINES][2];
+	memcpy(cached_prev_points, cached.cache.prev_points, sizeof cached_prev_points);
+	memcpy(cached_lines, cached.cache.lines, sizeof cached_lines);
+	memcpy(cached_prev_lines, cached.cache.prev_lines, sizeof cached_prev_lines);
 	unsigned char *set = save(r.world, &size);
 	assert_int_equal(hs_world_load_state(r.world, set, size), HS_OK);
 	assert_int_equal(hs_world_hand_points(r.world, r.hand, reloaded), HS_OK);
 	assert_memory_equal(points, reloaded, sizeof points); // the caches are rebuilt bit for bit
-	assert_memory_equal(cached.cache.prev_points, r.world->state.hands[0].cache.prev_points, sizeof cached.cache.prev_points);
+	assert_memory_equal(cached_prev_points, r.world->state.hands[0].cache.prev_points, sizeof cached_prev_points);
 	hs_hand_ready_all(&r.world->state.hands[0]);
-	assert_memory_equal(cached.cache.lines, r.world->state.hands[0].cache.lines, sizeof cached.cache.lines);
-	assert_memory_equal(cached.cache.prev_lines, r.world->state.hands[0].cache.prev_lines, sizeof cached.cache.prev_lines);
+	assert_memory_equal(cached_lines, r.world->state.hands[0].cache.lines, sizeof cached_lines);
+	assert_memory_equal(cached_prev_lines, r.world->state.hands[0].cache.prev_lines, sizeof cached_prev_lines);
 	assert_true(cached.cache.center.x == r.world->state.hands[0].cache.center.x && cached.cache.radius == r.world->state.hands[0].cache.radius);
 	free(set);
 	assert_int_equal(hs_world_load_state(r.world, buffer, size), HS_OK);
@@ -286,9 +290,9 @@ static void test_load_unset_hand_then_set(void **state) {
 	const hs_hand *a = &r.world->state.hands[0], *b = &fresh.world->state.hands[0];
 	hs_hand_ready_all(&r.world->state.hands[0]);
 	hs_hand_ready_all(&fresh.world->state.hands[0]);
-	assert_memory_equal(a->cache.points, b->cache.points, sizeof a->cache.points);
-	assert_memory_equal(a->cache.lines, b->cache.lines, sizeof a->cache.lines);
-	assert_memory_equal(a->cache.local.points, b->cache.local.points, sizeof a->cache.local.points);
+	assert_memory_equal(a->cache.points, b->cache.points, sizeof a->cache.point_buf[0]);
+	assert_memory_equal(a->cache.lines, b->cache.lines, sizeof a->cache.line_buf[0]);
+	assert_memory_equal(a->cache.local->points, b->cache.local->points, sizeof a->cache.local->points);
 	assert_true(a->cache.center.x == b->cache.center.x && a->cache.radius == b->cache.radius);
 	assert_true(hs_world_hash(r.world) == hs_world_hash(fresh.world));
 	free(unset);

@@ -291,7 +291,7 @@ uint32_t hs_contact_axes_near(const hs_hand *hand, hs_vec3 c, double r_sq, doubl
 // the line cull reads segment_distance_sq: !(d > r_sq), NaN near; two at a time with SSE2.
 unsigned hs_contact_lines_near(const hs_hand *hand, int s, hs_vec3 c, double r_sq) {
 	unsigned near = 0;
-	const hs_vec3(*l)[2] = &hand->cache.lines[4 * s];
+	const hs_vec3(*l)[2] = (const hs_vec3(*)[2])&hand->cache.lines[4 * s];
 #if defined(__SSE2__)
 	for (int k = 0; k < 4; k += 2) {
 		__m128d dist = segment_distance_sq2(hs_lanes2_load(&l[k][0], &l[k + 1][0]), hs_lanes2_load(&l[k][1], &l[k + 1][1]), c);
@@ -448,7 +448,7 @@ static HS_FORCE_INLINE bool held_lines_clear_in(const hs_contact_pass *cp, int h
 	hs_vec3 e0 = hs_body_point(bp, hand, body, a), e1 = hs_body_point(bp, hand, body, a + 1);
 	if (!hs_part_box_takes(e0) || !hs_part_box_takes(e1))
 		return false;
-	hs_quat q = hand->cache.local.segment[s]; // its y and z axes: the rotation's second and third columns
+	hs_quat q = hand->cache.local->segment[s]; // its y and z axes: the rotation's second and third columns
 	hs_vec3 y = hs_v3(2.0 * (q.x * q.y - q.w * q.z), 1.0 - 2.0 * (q.x * q.x + q.z * q.z), 2.0 * (q.y * q.z + q.w * q.x));
 	hs_vec3 z = hs_v3(2.0 * (q.x * q.z + q.w * q.y), 2.0 * (q.y * q.z - q.w * q.x), 1.0 - 2.0 * (q.x * q.x + q.y * q.y));
 	if (!turn->ready)

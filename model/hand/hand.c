@@ -33,6 +33,7 @@
 #include "inline.h"
 
 #include "lanes2.h"
+#include "lanes4.h"
 
 // ---------------------------------------------------------------------------------------------
 // Defaults
@@ -341,13 +342,31 @@ void hs_hand_local_shape(const hs_hand_def *def, const uint8_t sensors[HS_GLOVE_
 	hs_hand_local_shape_with(def, NULL, sensors, points, lines);
 }
 
-// out[i] = w + m v[i] for n vectors: hs_add(w, hs_mat3_mul(m, v[i])); with `rows`, the same values
-// also as rows of x, y and z (the hand's point_rows). With SSE2, two vectors at a time, one in each
-// lane: each lane does that expression's products and sums in its order, so the bits are the same
-// (no fused multiply-add: -ffp-contract=off).
-static HS_FORCE_INLINE void place_vectors_rows(hs_mat3 m, hs_vec3 w, const hs_vec3 *v, hs_vec3 *out, int n,
-                                               double (*rows)[HS_HAND_POINTS + 4]) {
-	int i = 0;
+#if HS_LANES4
+// place_vectors_rows four vectors at a time, one in each lane of AVX registers (the same bits): the
+// first n - n % 4 of them.
+HS_AVX static void place_vectors_avx(const hs_mat3 *m, const hs_vec3 *w, const hs_vec3 *v, hs_vec3 *out, int n,
+                                     double (*rows)[HS_HAND_POINTS + 4]) {
+	const hs_mat3 mm = *m; // (copies: out cannot change them, their broadcasts leave the loop)
+	const hs_vec3 ww = *w;
+	for (int i = 0; i + 3 < n; i += 4) {
+		hs_lanes4 o = hs_lanes4_place(mm, ww, hs_lanes4_load(&v[i]));
+		hs_lanes4_store(o, &out[i]);
+		if (rows) {
+			_mm256_storeu_pd(&rows[0][i], o.x);
+			_mm256_storeu_pd(&rows[1][i], o.y);
+			_mm256_storeu_pd(&rows[2][i], o.z);
+		}
+	}
+}
+#endif
+
+// out[i] = w + m v[i] for n vectors (at most 2 HS_HAND_LINES): hs_add(w, hs_mat3_mul(m, v[i])); with
+// `rows`, the same values also as rows of x, y and z (the hand's point_rows). With SSE2, two vectors
+// at a time, one in each lane, with AVX four: each lane does that expression's products and sums in
+// its order, so the bits are the same (no fused multiply-add: -ffp-contract=off).
+static HS_FORCE_INLINE void place_vectors_two(hs_mat3 m, hs_vec3 w, const hs_vec3 *v, hs_vec3 *out, int i, int n,
+                                              double (*rows)[HS_HAND_POINTS + 4]) {
 #if defined(__SSE2__)
 	const __m128d r0x = _mm_set1_pd(m.r0.x), r0y = _mm_set1_pd(m.r0.y), r0z = _mm_set1_pd(m.r0.z);
 	const __m128d r1x = _mm_set1_pd(m.r1.x), r1y = _mm_set1_pd(m.r1.y), r1z = _mm_set1_pd(m.r1.z);
@@ -375,6 +394,46 @@ static HS_FORCE_INLINE void place_vectors_rows(hs_mat3 m, hs_vec3 w, const hs_ve
 			rows[2][i] = out[i].z;
 		}
 	}
+}
+
+#if HS_LANES4 && defined(HS_SELFCHECK)
+// Sanitizer builds: the four lanes' placement has the bits of the two-lane path's.
+static void check_place_four(hs_mat3 m, hs_vec3 w, const hs_vec3 *v, const hs_vec3 *out, int n,
+                             double (*rows)[HS_HAND_POINTS + 4]) {
+	hs_vec3 two[2 * HS_HAND_LINES];
+	double two_rows[3][HS_HAND_POINTS + 4];
+	if (n > 2 * HS_HAND_LINES || (rows && n > HS_HAND_POINTS + 4))
+		abort();
+	place_vectors_two(m, w, v, two, 0, n, rows ? two_rows : NULL);
+	bool same = memcmp(two, out, (size_t)n * sizeof two[0]) == 0;
+	for (int k = 0; rows && k < 3; ++k)
+		same = same && memcmp(two_rows[k], rows[k], (size_t)n * sizeof rows[k][0]) == 0;
+	if (!same) {
+		fprintf(stderr, "selfcheck: vectors placed in four lanes differ from the two-lane path\n");
+		abort();
+	}
+}
+#else
+static inline void check_place_four(hs_mat3 m, hs_vec3 w, const hs_vec3 *v, const hs_vec3 *out, int n,
+                                    double (*rows)[HS_HAND_POINTS + 4]) {
+	(void)m, (void)w, (void)v, (void)out, (void)n, (void)rows;
+}
+#endif
+
+static HS_FORCE_INLINE void place_vectors_rows(hs_mat3 m, hs_vec3 w, const hs_vec3 *v, hs_vec3 *out, int n,
+                                               double (*rows)[HS_HAND_POINTS + 4]) {
+	int i = 0;
+#if HS_LANES4
+	if (hs_cpu_has_avx()) {
+		place_vectors_avx(&m, &w, v, out, n, rows);
+		i = n - n % 4;
+	}
+#endif
+	place_vectors_two(m, w, v, out, i, n, rows);
+#if HS_LANES4
+	if (hs_cpu_has_avx())
+		check_place_four(m, w, v, out, n, rows);
+#endif
 }
 
 static HS_FORCE_INLINE void place_vectors(hs_mat3 m, hs_vec3 w, const hs_vec3 *v, hs_vec3 *out, int n) {
@@ -408,7 +467,7 @@ void hs_hand_kinematics(const hs_hand_def *def, hs_vec3 wrist_position, hs_quat 
 static void ready_local(hs_hand *hand, int s) {
 	if ((unsigned)hand->cache.local_ready >> s & 1u)
 		return;
-	hs_hand_segment_lines(&hand->model.def, hand->cache.local.points, hand->cache.local.segment, s, &hand->cache.local_lines[4 * s]);
+	hs_hand_segment_lines(&hand->model.def, hand->cache.local->points, hand->cache.local->segment, s, &hand->cache.local_lines[4 * s]);
 	hand->cache.local_ready = (uint16_t)(hand->cache.local_ready | 1u << s);
 }
 
@@ -417,7 +476,7 @@ static void ready_local(hs_hand *hand, int s) {
 // finger_radius from a check point; the relative slack is far above rounding). The lines are not
 // computed for it: most frames the contact tests read a third of them.
 static void local_bounds(hs_hand *hand) {
-	const hs_vec3 *points = hand->cache.local.points;
+	const hs_vec3 *points = hand->cache.local->points;
 	hs_vec3 c = hs_v3(0, 0, 0);
 	for (int i = 0; i < HS_HAND_POINTS; ++i)
 		c = hs_add(c, points[i]);
@@ -433,7 +492,7 @@ static void local_bounds(hs_hand *hand) {
 static void check_shape(const hs_hand *hand) {
 	hand_pose fresh;
 	local_pose(&hand->model.def, &hand->model.glove, hand->state.sensors, &fresh, NULL);
-	if (memcmp(&fresh, &hand->cache.local, sizeof fresh) != 0) {
+	if (memcmp(&fresh, hand->cache.local, sizeof fresh) != 0) {
 		fprintf(stderr, "selfcheck: a hand's shape through its cache differs from the shape made afresh\n");
 		abort();
 	}
@@ -442,27 +501,79 @@ static void check_shape(const hs_hand *hand) {
 static inline void check_shape(const hs_hand *hand) { (void)hand; }
 #endif
 
+// The other one of a pair of buffers of points or lines (OTHER_BUF) or of shapes (OTHER_POSE).
+#define OTHER_BUF(buf, p) ((p) == (buf)[0] ? (buf)[1] : (buf)[0])
+#define OTHER_POSE(buf, p) ((p) == &(buf)[0] ? &(buf)[1] : &(buf)[0])
+
 void hs_hand_update_shape(hs_hand *hand) {
+	hs_hand_cache *c = &hand->cache;
+	hs_hand_pose *last = c->local; // the last shape made through the cache
+	bool moved = c->local == c->prev_local;
+	if (moved) // the previous reading's shape stays in its buffer
+		c->local = OTHER_POSE(c->local_buf, c->prev_local);
 	if (hand->model.def.joint_driven) {
-		hs_hand_joint_pose(&hand->model.def, hand->state.joints, &hand->cache.local);
-		hand->cache.local_ready = 0;
+		hs_hand_joint_pose(&hand->model.def, hand->state.joints, c->local);
+		c->local_twins = 0;
+		c->local_ready = 0;
 		local_bounds(hand);
 		return;
 	}
-	unsigned same = local_pose(&hand->model.def, &hand->model.glove, hand->state.sensors, &hand->cache.local, hand);
+	unsigned same = local_pose(&hand->model.def, &hand->model.glove, hand->state.sensors, c->local, hand);
+	// the fingers kept (not written) that the other buffer does not hold already
+	for (unsigned todo = moved ? same & ~(unsigned)c->local_twins : 0u; todo; todo &= todo - 1u) {
+		int f = hs_lowest_bit(todo);
+		memcpy(&c->local->points[4 * f], &last->points[4 * f], 4 * sizeof last->points[0]);
+		memcpy(&c->local->segment[3 * f], &last->segment[3 * f], 3 * sizeof last->segment[0]);
+	}
+	c->local_twins = (uint8_t)(moved ? same : c->local_twins & same);
 	check_shape(hand);
 	hand->cache.local_ready = (uint16_t)(hand->cache.local_ready & hs_finger_parts(same, 3)); // a finger's lines as they were
 	local_bounds(hand);
 }
 
+void hs_hand_init_buffers(hs_hand *hand) {
+	hand->cache.points = hand->cache.point_buf[0];
+	hand->cache.prev_points = hand->cache.point_buf[1];
+	hand->cache.lines = hand->cache.line_buf[0];
+	hand->cache.prev_lines = hand->cache.line_buf[1];
+	hand->cache.local = &hand->cache.local_buf[0];
+	hand->cache.prev_local = &hand->cache.local_buf[1];
+	hand->cache.local_twins = 0;
+}
+
 void hs_hand_place_points(hs_hand *hand) {
+	hs_hand_cache *c = &hand->cache;
+	if (c->points == c->prev_points) // the previous reading's points and lines stay in their buffers
+		c->points = OTHER_BUF(c->point_buf, c->prev_points);
+	if (c->lines == c->prev_lines)
+		c->lines = OTHER_BUF(c->line_buf, c->prev_lines);
 	hand->cache.place_m = hs_mat3_from_quat(hand->state.wrist_rot); // as hs_hand_place
-	place_vectors_rows(hand->cache.place_m, hand->state.wrist_pos, hand->cache.local.points, hand->cache.points, HS_HAND_POINTS, hand->cache.point_rows);
+	place_vectors_rows(hand->cache.place_m, hand->state.wrist_pos, hand->cache.local->points, hand->cache.points, HS_HAND_POINTS, hand->cache.point_rows);
 	hand->cache.lines_ready = 0;
 	hand->cache.finger_spheres_ready = false;
 }
 
+// The previous points, lines and shape in buffers of their own, a copy of the current ones where
+// they shared them: rare paths (a load, a test writing points), the cost is no matter.
+static void unshare(hs_hand_cache *c) {
+	if (c->prev_points == c->points) {
+		c->prev_points = OTHER_BUF(c->point_buf, c->points);
+		memcpy(c->prev_points, c->points, sizeof c->point_buf[0]);
+	}
+	if (c->prev_lines == c->lines) {
+		c->prev_lines = OTHER_BUF(c->line_buf, c->lines);
+		memcpy(c->prev_lines, c->lines, sizeof c->line_buf[0]);
+	}
+	if (c->prev_local == c->local) {
+		c->prev_local = OTHER_POSE(c->local_buf, c->local);
+		*c->prev_local = *c->local;
+		c->local_twins = 31;
+	}
+}
+
 void hs_hand_points_moved(hs_hand *hand) {
+	hand->cache.copy_previous = true;
+	unshare(&hand->cache);
 	for (int i = 0; i < HS_HAND_POINTS; ++i) {
 		hand->cache.point_rows[0][i] = hand->cache.points[i].x;
 		hand->cache.point_rows[1][i] = hand->cache.points[i].y;
@@ -479,7 +590,7 @@ void hs_hand_place_segment(hs_hand *hand, int s) {
 	}
 	if (!(hand->cache.prev_lines_ready & bit)) { // not read last frame: from the shape kept with it
 		hs_vec3 local[4][2];
-		hs_hand_segment_lines(&hand->model.def, hand->cache.prev_local.points, hand->cache.prev_local.segment, s, local);
+		hs_hand_segment_lines(&hand->model.def, hand->cache.prev_local->points, hand->cache.prev_local->segment, s, local);
 		place_vectors(hand->cache.prev_place_m, hand->state.prev_wrist_pos, &local[0][0], &hand->cache.prev_lines[4 * s][0], 8);
 		hand->cache.prev_lines_ready = (uint16_t)(hand->cache.prev_lines_ready | bit);
 	}
@@ -506,14 +617,19 @@ void hs_hand_keep_previous(hs_hand *hand) {
 	hand->cache.finger_spheres_ready = false;
 	hand->cache.prev_center = hand->cache.center;
 	hand->cache.prev_radius = hand->cache.radius;
-	memcpy(hand->cache.prev_points, hand->cache.points, sizeof hand->cache.points);
-	for (unsigned todo = hand->cache.lines_ready; todo; todo &= todo - 1u) { // the placed segments' lines
-		int s = hs_lowest_bit(todo);
-		memcpy(hand->cache.prev_lines[4 * s], hand->cache.lines[4 * s], sizeof hand->cache.lines[0] * 4);
+	if (hand->cache.copy_previous) {
+		memcpy(hand->cache.prev_points, hand->cache.points, HS_HAND_POINTS * sizeof hand->cache.points[0]);
+		for (unsigned todo = hand->cache.lines_ready; todo; todo &= todo - 1u) { // the placed segments' lines
+			int s = hs_lowest_bit(todo);
+			memcpy(hand->cache.prev_lines[4 * s], hand->cache.lines[4 * s], sizeof hand->cache.lines[0] * 4);
+		}
+	} else { // the same buffers: the next placement writes the other ones (hs_hand_place_points)
+		hand->cache.prev_points = hand->cache.points;
+		hand->cache.prev_lines = hand->cache.lines;
 	}
 	hand->cache.prev_lines_ready = hand->cache.lines_ready; // the others from the shape they would be placed from
 	hand->cache.prev_place_m = hand->cache.place_m;
-	hand->cache.prev_local = hand->cache.local;
+	hand->cache.prev_local = hand->cache.local; // the same shape (hs_hand_update_shape moves off it)
 	hand->state.prev_wrist_pos = hand->state.wrist_pos;
 	hand->state.prev_wrist_rot = hand->state.wrist_rot;
 	memcpy(hand->state.prev_sensors, hand->state.sensors, sizeof hand->state.sensors);
@@ -549,13 +665,13 @@ int hs_hand_older_capacity(double window_s, double dt) {
 }
 
 void hs_hand_refresh(hs_hand *hand) {
+	hs_hand_cache *c = &hand->cache;
+	unshare(c); // `local` keeps the last shape made through the cache
 	if (!hand->state.placed) { // as hs_world_add_hand left it
-		memset(hand->cache.points, 0, sizeof hand->cache.points);
-		memset(hand->cache.point_rows, 0, sizeof hand->cache.point_rows);
-		memset(hand->cache.prev_points, 0, sizeof hand->cache.prev_points);
-		memset(hand->cache.lines, 0, sizeof hand->cache.lines);
-		memset(hand->cache.prev_lines, 0, sizeof hand->cache.prev_lines);
-		memset(hand->cache.local.points, 0, sizeof hand->cache.local.points);
+		memset(c->point_buf, 0, sizeof c->point_buf);
+		memset(c->point_rows, 0, sizeof c->point_rows);
+		memset(c->line_buf, 0, sizeof c->line_buf);
+		memset(c->local->points, 0, sizeof c->local->points);
 		memset(hand->cache.local_lines, 0, sizeof hand->cache.local_lines);
 		hand->cache.palm_ready = false; // its shape is no longer the last one made through the cache
 		hand->cache.lines_ready = hand->cache.prev_lines_ready = hand->cache.local_ready = HS_HAND_ALL_SEGMENTS;
@@ -569,14 +685,15 @@ void hs_hand_refresh(hs_hand *hand) {
 	// the previous points and bounds: the same calls that placed them, on the previous reading;
 	// its lines from the shape kept for them
 	if (hand->model.def.joint_driven)
-		hs_hand_joint_pose(&hand->model.def, hand->state.prev_joints, &hand->cache.local);
+		hs_hand_joint_pose(&hand->model.def, hand->state.prev_joints, hand->cache.local);
 	else
-		local_pose(&hand->model.def, &hand->model.glove, hand->state.prev_sensors, &hand->cache.local, hand);
+		local_pose(&hand->model.def, &hand->model.glove, hand->state.prev_sensors, hand->cache.local, hand);
 	hand->cache.local_ready = 0;
 	local_bounds(hand);
 	hand->cache.prev_place_m = hs_mat3_from_quat(hand->state.prev_wrist_rot);
-	place_vectors(hand->cache.prev_place_m, hand->state.prev_wrist_pos, hand->cache.local.points, hand->cache.prev_points, HS_HAND_POINTS);
-	hand->cache.prev_local = hand->cache.local;
+	place_vectors(hand->cache.prev_place_m, hand->state.prev_wrist_pos, hand->cache.local->points, hand->cache.prev_points, HS_HAND_POINTS);
+	*hand->cache.prev_local = *hand->cache.local;
+	hand->cache.local_twins = 31;
 	hand->cache.prev_lines_ready = 0;
 	hand->cache.center = hs_add(hand->state.prev_wrist_pos, hs_quat_rotate(hand->state.prev_wrist_rot, hand->cache.local_center));
 	hand->cache.radius = hand->cache.local_radius + 1e-6;

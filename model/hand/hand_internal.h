@@ -101,22 +101,35 @@ typedef struct hs_hand_cache {
 	// them (hs_hand_ready_segment): bit s of lines_ready / prev_lines_ready says segment s's are
 	// there. Most frames the contact tests reach a third of the segments (the rest are culled by
 	// their check points), and the lines are most of what placing a hand costs.
-	hs_vec3 points[HS_HAND_POINTS], prev_points[HS_HAND_POINTS];
+	// Each pair lives in two buffers (point_buf, line_buf; hs_hand_init_buffers): the end of a step
+	// makes the current ones the previous ones by pointing prev_* at the same buffer, nothing copied
+	// (hs_hand_keep_previous), and the next placement writes the other buffer (hs_hand_place_points).
+	// Pointers into the hand itself: a hand copied by value shares its original's buffers.
+	hs_vec3 *points, *prev_points;
 	// the same points as rows of x, y and z (placed with them), for the four-lane culls (contact.c):
 	// finger f's four at [4 f, 4 f + 3]; the spare places are read past the last finger, never used
 	double point_rows[3][HS_HAND_POINTS + 4];
-	hs_vec3 lines[HS_HAND_LINES][2], prev_lines[HS_HAND_LINES][2];
+	hs_vec3 (*lines)[2], (*prev_lines)[2];
 	uint16_t lines_ready, prev_lines_ready;
+	// points written in place by their user (hs_hand_points_moved, the tests): the end of a step
+	// copies them and the placed lines into the previous ones, as a caller writing the current
+	// points next expects the previous ones to stay
+	bool copy_previous;
+	hs_vec3 point_buf[2][HS_HAND_POINTS];
+	hs_vec3 line_buf[2][HS_HAND_LINES][2];
 	// what a segment's lines are placed from: the wrist matrix, and for a frame ago the shape in the
-	// wrist frame too (prev_local; the current one is `local`)
+	// wrist frame too (prev_local; the current one is `local`), in local_buf: the same buffer while
+	// the glove reading stays, the other one once it changes (hs_hand_update_shape)
 	hs_mat3 place_m, prev_place_m;
-	hs_hand_pose prev_local;
+	hs_hand_pose *prev_local;
 	// bounding sphere of the check points and lines (radius < 0: touches nothing)
 	hs_vec3 center;
 	double radius;
 	// the shape in the wrist frame for `sensors`, recomputed only when the glove reading changes:
 	// the check points, each segment's frame, and the lines of the segments in local_ready
-	hs_hand_pose local; // check points and segment frames
+	hs_hand_pose *local; // check points and segment frames
+	hs_hand_pose local_buf[2];
+	uint8_t local_twins; // fingers (bit f) whose points and frames local_buf holds twice, the same
 	hs_vec3 local_lines[HS_HAND_LINES][2];
 	uint16_t local_ready;
 	hs_vec3 local_center; // its bounding sphere in the wrist frame
@@ -218,9 +231,13 @@ static inline double hs_hand_farthest_sq(hs_vec3 c, const hs_vec3 *v, int n, dou
 	return r_sq;
 }
 
+// Points the current and previous points, lines and shape at their own buffers (a new hand, after
+// memset: hs_world_add_hand).
+void hs_hand_init_buffers(hs_hand *hand);
 // Places the check points from the shape cache and the wrist pose; the lines wait (lines_ready 0).
 void hs_hand_place_points(hs_hand *hand);
-// Makes point_rows the points again: for code that writes a hand's points itself (the tests).
+// Makes point_rows the points again: for code that writes a hand's points itself (the tests); from
+// then on the end of a step copies the points into the previous ones (copy_previous).
 void hs_hand_points_moved(hs_hand *hand);
 #define HS_HAND_ALL_SEGMENTS 0x7fffu
 // The parts of the fingers in `fingers` (bit f) when each finger has `per` in a row: check points

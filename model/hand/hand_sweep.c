@@ -43,7 +43,7 @@ static double chain_turn_deg(const hs_hand *hand) {
 static double joint_turn_deg(const hs_hand *hand) {
 	double worst = 0.0;
 	for (int s = 0; s < 15; ++s) {
-		double a = hs_quat_angle(hs_quat_mul(hand->cache.local.segment[s], hs_quat_conj(hand->cache.prev_local.segment[s])));
+		double a = hs_quat_angle(hs_quat_mul(hand->cache.local->segment[s], hs_quat_conj(hand->cache.prev_local->segment[s])));
 		worst = a > worst ? a : worst;
 	}
 	return worst * (180.0 / HS_PI);

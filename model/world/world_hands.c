@@ -31,6 +31,7 @@ hs_hand_id hs_world_add_hand(hs_world *world, const hs_hand_def *def, hs_status 
 	}
 	hs_hand *hand = &world->state.hands[world->model.hand_count];
 	memset(hand, 0, sizeof *hand);
+	hs_hand_init_buffers(hand);
 	hand->model.def = *def;
 	hs_glove_table_build(&hand->model.def, &hand->model.glove);
 	hand->state.wrist_rot = hand->state.prev_wrist_rot = hs_quat_identity();
@@ -119,7 +120,7 @@ hs_status hs_world_hand_points(const hs_world *world, hs_hand_id id, hs_vec3 poi
 	const hs_hand *hand = hand_of(world, id);
 	if (!hand || !points)
 		return HS_ERR_INVALID_ARGUMENT;
-	memcpy(points, hand->cache.points, sizeof hand->cache.points);
+	memcpy(points, hand->cache.points, HS_HAND_POINTS * sizeof hand->cache.points[0]);
 	return HS_OK;
 }
 
