@@ -131,6 +131,25 @@ static HS_FORCE_INLINE bool segment_clear(const hs_contact_pass *cp, int h, int 
 	return steps == 1 && hs_contact_segment_clear_of_a_face(cp, h, a, body, before, shape, part);
 }
 
+// A line's sweep through one piece, q to p, beyond one face of the part by HS_CULL_SLACK
+// (hs_contact_sweep_clear_of_a_face): for a box, from its coordinates (the same answer when they
+// are finite: the dots are the coordinates); else, or when one is not, by the scan of its faces.
+static HS_FORCE_INLINE bool sweep_clear(const hs_contact_pass *cp, const hs_shape *shape, const hs_part *part,
+                                        const hs_part_cache *pc, const hs_vec3 q[2], const hs_vec3 p[2]) {
+	const hs_vec3 ends[4] = {q[0], q[1], p[0], p[1]};
+	int box = hs_part_is_box(pc) ? hs_part_box_beyond_n(pc, ends, 4, HS_CULL_SLACK) : -1;
+	if (box >= 0) {
+#if defined(HS_SELFCHECK)
+		if ((box == 1) != hs_contact_sweep_clear_of_a_face(cp, shape, part, q, p)) {
+			fprintf(stderr, "selfcheck: a box's sweep test differs from the scan's\n");
+			abort();
+		}
+#endif
+		return box == 1;
+	}
+	return hs_contact_sweep_clear_of_a_face(cp, shape, part, q, p);
+}
+
 static bool across(hs_clip c) {
 	return c.hit && c.face_in >= 0 && c.face_out >= 0;
 }
@@ -185,7 +204,7 @@ static void detect_lines(const hs_contact_pass *cp, const hs_world_model *model,
 				continue;
 			hs_vec3 q[2]; // the line a frame ago
 			line_to_body(before, m, q);
-			if (swept && !moved && !embedded && steps == 1 && hs_contact_sweep_clear_of_a_face(cp, shape, part, q, p))
+			if (swept && !moved && !embedded && steps == 1 && sweep_clear(cp, shape, part, pc, q, p))
 				continue; // missed it at both ends and swept nothing of it
 			if (swept && hs_contact_end_touches(model, hand->state.touch_points, a, shape, part, q))
 				continue; // or at its start
