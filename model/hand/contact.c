@@ -38,9 +38,8 @@ static bool same_pose(const hs_body *b) {
 // (a held object): points are culled where they end (their motion relative to it is small).
 // `model` is cp->model passed on its own, as in detect_lines: held in a register rather than read
 // through cp after every call (cp's other parts are read seldom); culls run when model->skip_work.
-static void detect_points(const hs_contact_pass *cp, const hs_world_model *model, int object, int h, const hs_part *part,
-                          const hs_part_cache *pc, const hs_frame *body, const hs_frame *before, const hs_body_points *bp, bool moved,
-                          double grow, unsigned far) {
+static void detect_points(const hs_contact_pass *cp, const hs_world_model *model, int object, int h, const hs_part *part, const hs_part_cache *pc,
+                          const hs_frame *body, const hs_frame *before, const hs_body_points *bp, bool moved, double grow, unsigned far) {
 	const hs_shape *shape = &model->shapes[cp->bodies[object].shape];
 	const hs_hand *hand = &cp->hands[h];
 	hs_vec3 center = to_world(body, part->center); // cull before the transform
@@ -157,9 +156,8 @@ static bool across(hs_clip c) {
 // (B) check lines against the part: across it now (reached it this frame, sunk in, or across it
 // since before it touched anything, as the check points in detect_points), or swept across it
 // during the frame. A line with an end inside is the check points' business.
-static void detect_lines(const hs_contact_pass *cp, const hs_world_model *model, int object, int h, const hs_part *part,
-                         const hs_part_cache *pc, const hs_frame *body, const hs_frame *before, const hs_body_points *bp, bool moved,
-                         double grow, uint32_t touching, unsigned far) {
+static void detect_lines(const hs_contact_pass *cp, const hs_world_model *model, int object, int h, const hs_part *part, const hs_part_cache *pc,
+                         const hs_frame *body, const hs_frame *before, const hs_body_points *bp, bool moved, double grow, uint32_t touching, unsigned far) {
 	const hs_shape *shape = &model->shapes[cp->bodies[object].shape];
 	const hs_hand *hand = &cp->hands[h];
 	hs_vec3 center = to_world(body, part->center);
