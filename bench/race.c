@@ -376,7 +376,7 @@ static void instr_text(char *out, size_t size, double instr) {
 
 // One peer: its radius matched, then timed in interleaved pairs with handspring's honest frame.
 static bool race_one(const race_engine *e, const race_job *proto, long hs_touches, const bench_opts *opts, FILE *csv,
-                     double hs_instr, double *ratio) {
+                     double hs_instr, double *ratio, double *instr_ratio) {
 	double radius;
 	void *state = race_make(e, proto, hs_touches, &radius);
 	if (!state)
@@ -405,6 +405,7 @@ static bool race_one(const race_engine *e, const race_job *proto, long hs_touche
 	         p.ratio, p.ratio_min, p.ratio_max, ratio_i, job.touches, hs_touches, radius);
 	bench_summary_add("race", e->name, value, BENCH_INFO);
 	*ratio = p.ratio;
+	*instr_ratio = instr > 0.0 && hs_instr > 0.0 ? instr / hs_instr : -1.0;
 	return true;
 }
 
@@ -440,14 +441,16 @@ void bench_race(const bench_opts *opts, bench_shared *shared) {
 	fprintf(csv, "engine,radius_m,pairs,handspring_pairs,extra_pairs,missing_pairs,contacts,frames_agreeing_pct,"
 	             "us_per_frame,us_min,us_max,handspring_us,peer_over_handspring,ratio_min,ratio_max,instr_per_frame,"
 	             "instr_over_handspring\n");
-	double worst = INFINITY;
+	double worst = INFINITY, ode_instr = -1.0; // ODE's instructions over handspring's whole frame: the aim's figure
 	int peers = 0;
 	for (const race_engine *e = engines; e->name; ++e) {
-		double ratio;
-		if (!race_one(e, &proto, hs_touches, opts, csv, hs_instr, &ratio))
+		double ratio, instr_ratio;
+		if (!race_one(e, &proto, hs_touches, opts, csv, hs_instr, &ratio, &instr_ratio))
 			continue;
 		peers++;
 		worst = ratio < worst ? ratio : worst;
+		if (strcmp(e->key, "ode") == 0)
+			ode_instr = instr_ratio;
 		shared->checksum ^= (uint64_t)(ratio > 0.0) * 0x9E3779B97F4A7C15ull;
 	}
 	fclose(csv);
@@ -458,13 +461,13 @@ void bench_race(const bench_opts *opts, bench_shared *shared) {
 #ifndef HS_BENCH_MUJOCO
 	printf("MuJoCo: not built (libmujoco-dev not installed: sh scripts/deps.sh bench): skipped\n");
 #endif
-	if (peers == 0) {
-		bench_summary_add("target", "race: >= 10x faster than ODE and MuJoCo (contacts only)", "peers not built",
-		                  BENCH_UNKNOWN);
+	const char *aim = "race: ODE's contacts alone >= 4x the instructions of handspring's whole honest frame";
+	if (peers == 0 || ode_instr < 0.0) {
+		bench_summary_add("target", aim, peers == 0 ? "peers not built" : "ODE not built or valgrind missing", BENCH_UNKNOWN);
 		return;
 	}
 	char value[160];
-	snprintf(value, sizeof value, "fastest peer %.2fx handspring's honest frame (CPU time, interleaved)", worst);
-	bench_summary_add("target", "race: >= 10x faster than ODE and MuJoCo (contacts only)", value,
-	                  peers == 2 && worst >= 10.0 ? BENCH_MET : BENCH_NOT_MET);
+	snprintf(value, sizeof value, "ODE %.2fx handspring's instructions; fastest peer %.2fx its CPU time (interleaved)", ode_instr,
+	         worst);
+	bench_summary_add("target", aim, value, ode_instr >= 4.0 ? BENCH_MET : BENCH_NOT_MET);
 }
